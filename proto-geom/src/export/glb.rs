@@ -1,0 +1,271 @@
+//! Binary glTF 2.0 (.glb) writer, on the `gltf-json` document model.
+
+use std::collections::BTreeMap;
+use std::io::{self, Write};
+use std::string::{String, ToString};
+use std::vec::Vec;
+
+use gltf_json as json;
+use json::validation::{Checked, USize64};
+
+use super::Scene;
+use crate::math::{Rotation, Vec3};
+
+/// The rotation from the Webots/vehicle frame (x forward, y left, z up) to glTF's (y up,
+/// z forward, x left): glTF (x, y, z) = vehicle (y, z, x), a turn of −2π/3 about (1, 1, 1).
+pub fn vehicle_to_gltf() -> Rotation<f64> {
+    Rotation::from_xyzw([-0.5, -0.5, -0.5, 0.5])
+}
+
+fn u64_len(n: usize) -> USize64 {
+    USize64(u64::try_from(n).unwrap_or(u64::MAX))
+}
+
+fn index_u32<T>(i: usize) -> json::Index<T> {
+    json::Index::new(u32::try_from(i).unwrap_or(u32::MAX))
+}
+
+/// Appends `data` to the binary buffer as a new buffer view, 4-byte aligned.
+fn push_view(
+    root: &mut json::Root,
+    bin: &mut Vec<u8>,
+    data: &[u8],
+    target: json::buffer::Target,
+) -> json::Index<json::buffer::View> {
+    while !bin.len().is_multiple_of(4) {
+        bin.push(0);
+    }
+    let offset = bin.len();
+    bin.extend_from_slice(data);
+    root.push(json::buffer::View {
+        buffer: json::Index::new(0),
+        byte_length: u64_len(data.len()),
+        byte_offset: Some(u64_len(offset)),
+        byte_stride: None,
+        name: None,
+        target: Some(Checked::Valid(target)),
+        extensions: None,
+        extras: Default::default(),
+    })
+}
+
+fn accessor(
+    view: json::Index<json::buffer::View>,
+    count: usize,
+    component: json::accessor::ComponentType,
+    type_: json::accessor::Type,
+    bounds: Option<([f32; 3], [f32; 3])>,
+) -> json::Accessor {
+    let (min, max) = match bounds {
+        Some((lo, hi)) => (
+            Some(json::Value::from(lo.to_vec())),
+            Some(json::Value::from(hi.to_vec())),
+        ),
+        None => (None, None),
+    };
+    json::Accessor {
+        buffer_view: Some(view),
+        byte_offset: None,
+        count: u64_len(count),
+        component_type: Checked::Valid(json::accessor::GenericComponentType(component)),
+        extensions: None,
+        extras: Default::default(),
+        type_: Checked::Valid(type_),
+        min,
+        max,
+        name: None,
+        normalized: false,
+        sparse: None,
+    }
+}
+
+fn f32_bytes(values: impl Iterator<Item = f32>) -> Vec<u8> {
+    values.flat_map(f32::to_le_bytes).collect()
+}
+
+impl Scene {
+    /// Builds the glTF document and its binary buffer.
+    fn gltf(&self) -> (json::Root, Vec<u8>) {
+        use json::accessor::{ComponentType, Type};
+        use json::buffer::Target;
+
+        let mut root = json::Root {
+            asset: json::Asset {
+                generator: Some("proto-geom".to_string()),
+                ..Default::default()
+            },
+            ..Default::default()
+        };
+        let mut bin = Vec::new();
+
+        for m in &self.materials {
+            let [r, g, b] = m.base_color;
+            root.push(json::Material {
+                name: Some(m.name.clone()),
+                pbr_metallic_roughness: json::material::PbrMetallicRoughness {
+                    base_color_factor: json::material::PbrBaseColorFactor([r, g, b, 1.0]),
+                    metallic_factor: json::material::StrengthFactor(m.metalness),
+                    roughness_factor: json::material::StrengthFactor(m.roughness),
+                    ..Default::default()
+                },
+                ..Default::default()
+            });
+        }
+
+        for sm in &self.meshes {
+            let mesh = &sm.mesh;
+            let n = mesh.vertices.len();
+            let positions = f32_bytes(mesh.vertices.iter().flat_map(|v| v.position));
+            let view = push_view(&mut root, &mut bin, &positions, Target::ArrayBuffer);
+            let pos = root.push(accessor(
+                view,
+                n,
+                ComponentType::F32,
+                Type::Vec3,
+                Some(mesh.bounds()),
+            ));
+            let normals = f32_bytes(mesh.vertices.iter().flat_map(|v| v.normal));
+            let view = push_view(&mut root, &mut bin, &normals, Target::ArrayBuffer);
+            let nor = root.push(accessor(view, n, ComponentType::F32, Type::Vec3, None));
+            let mut attributes = BTreeMap::new();
+            attributes.insert(Checked::Valid(json::mesh::Semantic::Positions), pos);
+            attributes.insert(Checked::Valid(json::mesh::Semantic::Normals), nor);
+            if mesh.has_tex_coords {
+                // glTF puts the texture origin at the top left, VRML at the bottom left.
+                let uv = f32_bytes(
+                    mesh.vertices
+                        .iter()
+                        .flat_map(|v| [v.tex_coord[0], 1.0 - v.tex_coord[1]]),
+                );
+                let view = push_view(&mut root, &mut bin, &uv, Target::ArrayBuffer);
+                let tex = root.push(accessor(view, n, ComponentType::F32, Type::Vec2, None));
+                attributes.insert(Checked::Valid(json::mesh::Semantic::TexCoords(0)), tex);
+            }
+            let indices: Vec<u8> = mesh.indices.iter().flat_map(|i| i.to_le_bytes()).collect();
+            let view = push_view(&mut root, &mut bin, &indices, Target::ElementArrayBuffer);
+            let ind = root.push(accessor(
+                view,
+                mesh.indices.len(),
+                ComponentType::U32,
+                Type::Scalar,
+                None,
+            ));
+            let primitive = json::mesh::Primitive {
+                attributes,
+                extensions: None,
+                extras: Default::default(),
+                indices: Some(ind),
+                material: (sm.material < self.materials.len()).then(|| index_u32(sm.material)),
+                mode: Checked::Valid(json::mesh::Mode::Triangles),
+                targets: None,
+            };
+            root.push(json::Mesh {
+                extensions: None,
+                extras: Default::default(),
+                name: Some(sm.name.clone()),
+                primitives: std::vec![primitive],
+                weights: None,
+            });
+        }
+
+        let f = |v: Vec3<f64>| [v.x as f32, v.y as f32, v.z as f32];
+        let node = |name: String,
+                    translation: Vec3<f64>,
+                    rotation: Rotation<f64>,
+                    mesh: Option<usize>,
+                    children: &[usize]| json::Node {
+            camera: None,
+            children: (!children.is_empty())
+                .then(|| children.iter().map(|&c| index_u32(c)).collect()),
+            extensions: None,
+            extras: Default::default(),
+            matrix: None,
+            mesh: mesh.map(index_u32),
+            name: Some(name),
+            rotation: Some(json::scene::UnitQuaternion(
+                rotation.to_xyzw().map(|c| c as f32),
+            )),
+            scale: None,
+            translation: Some(f(translation)),
+            skin: None,
+            weights: None,
+        };
+        for n in &self.nodes {
+            root.push(node(
+                n.name.clone(),
+                n.transform.translation,
+                n.transform.rotation,
+                n.mesh,
+                &n.children,
+            ));
+        }
+        // A last node turns the z-up vehicle frame into glTF's y-up frame.
+        let up = root.push(node(
+            "webots_to_gltf".to_string(),
+            Vec3::ZERO,
+            vehicle_to_gltf(),
+            None,
+            &self.roots,
+        ));
+        let scene = root.push(json::Scene {
+            extensions: None,
+            extras: Default::default(),
+            name: Some("scene".to_string()),
+            nodes: std::vec![up],
+        });
+        root.scene = Some(scene);
+        while !bin.len().is_multiple_of(4) {
+            bin.push(0);
+        }
+        if !bin.is_empty() {
+            root.push(json::Buffer {
+                byte_length: u64_len(bin.len()),
+                name: None,
+                uri: None,
+                extensions: None,
+                extras: Default::default(),
+            });
+        }
+        (root, bin)
+    }
+
+    /// The scene as a binary glTF 2.0 file (.glb): one buffer, one mesh per [`super::SceneMesh`]
+    /// (positions, normals, texture coordinates for the tyre, `u32` indices), metallic-roughness
+    /// materials, the node tree under a root node that turns the z-up vehicle frame into glTF's
+    /// y-up frame.
+    ///
+    /// # Errors
+    /// A JSON serialisation failure or a file larger than 4 GiB, as [`io::Error`].
+    pub fn to_glb(&self) -> io::Result<Vec<u8>> {
+        let (root, bin) = self.gltf();
+        let mut json_bytes = json::serialize::to_vec(&root).map_err(io::Error::other)?;
+        while !json_bytes.len().is_multiple_of(4) {
+            json_bytes.push(b' ');
+        }
+        let total = 12 + 8 + json_bytes.len() + if bin.is_empty() { 0 } else { 8 + bin.len() };
+        let len32 = |n: usize| {
+            u32::try_from(n).map_err(|_| io::Error::other("glTF binary larger than 4 GiB"))
+        };
+        let mut out = Vec::with_capacity(total);
+        out.extend_from_slice(b"glTF");
+        out.extend_from_slice(&2u32.to_le_bytes());
+        out.extend_from_slice(&len32(total)?.to_le_bytes());
+        out.extend_from_slice(&len32(json_bytes.len())?.to_le_bytes());
+        out.extend_from_slice(b"JSON");
+        out.extend_from_slice(&json_bytes);
+        if !bin.is_empty() {
+            out.extend_from_slice(&len32(bin.len())?.to_le_bytes());
+            out.extend_from_slice(b"BIN\0");
+            out.extend_from_slice(&bin);
+        }
+        Ok(out)
+    }
+
+    /// Writes [`Scene::to_glb`] to `w`.
+    ///
+    /// # Errors
+    /// As [`Scene::to_glb`], plus any error of `w`.
+    pub fn write_glb<W: Write>(&self, w: &mut W) -> io::Result<()> {
+        w.write_all(&self.to_glb()?)
+    }
+}

@@ -1,0 +1,14 @@
+//! The Webots `VehicleWheel` PROTO: fields, validation, shipped wheels, collision and mass.
+
+mod collision;
+mod params;
+mod preset;
+mod validate;
+
+pub use collision::{BoundingCylinder, MassProperties};
+pub use params::{PbrAppearance, WheelParams, WheelPhysics, WheelShape, WheelSide, slot_name};
+pub use preset::WheelPreset;
+pub use validate::{
+    MAX_EDGE_SUBDIVISION, MAX_RIM_BEAM_NUMBER, MAX_SUBDIVISION, MAX_WHEEL_WARNINGS, ValidWheel,
+    WheelField, WheelRule, WheelWarning, WheelWarnings,
+};

@@ -1,0 +1,184 @@
+//! OBJ and glTF export, parsed back.
+#![cfg(feature = "std")]
+// Test helpers outside #[test] functions unwrap too: a failed lookup is a failed test.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use proto_geom::export::{ChassisBox, Scene, vehicle_to_gltf};
+use proto_geom::{RenderMesh, ShippedVehicle, TriMesh, Vec3, WheelPreset};
+
+fn bmw_wheel() -> proto_geom::ValidWheel<f64> {
+    WheelPreset::BmwX5Wheel.params::<f64>().validate().0
+}
+
+#[test]
+fn render_mesh_splits_only_sharp_edges() {
+    let w = bmw_wheel();
+    let id = proto_geom::Isometry::IDENTITY;
+    // Tyre: smooth, one normal per vertex → Webots' 370 vertices.
+    let tyre = RenderMesh::from_mesh(&w.tyre(), &id);
+    assert_eq!((tyre.vertices.len(), tyre.triangle_count()), (370, 648));
+    // Rim contour: the two inner rings carry an annulus and a cylinder normal:
+    // 4·37 + 2·37 = 222 vertices.
+    let rim = RenderMesh::from_mesh(&w.rim_contour(), &id);
+    assert_eq!((rim.vertices.len(), rim.triangle_count()), (222, 216));
+    // Rim centre: flat, three vertices per triangle (85 triangles).
+    let hub = RenderMesh::from_mesh(&w.rim_centre(), &id);
+    assert_eq!((hub.vertices.len(), hub.triangle_count()), (255, 85));
+}
+
+#[test]
+fn wheel_obj_has_three_named_objects() {
+    let w = bmw_wheel();
+    let scene = Scene::wheel(&w);
+    let mut out = Vec::new();
+    scene.write_obj(&mut out, Some("wheel.mtl")).unwrap();
+    let text = String::from_utf8(out).unwrap();
+    let objects: Vec<_> = text.lines().filter_map(|l| l.strip_prefix("o ")).collect();
+    assert_eq!(objects, ["tyre", "rim", "hub"]);
+    assert!(text.contains("mtllib wheel.mtl"));
+    let count = |p: &str| text.lines().filter(|l| l.starts_with(p)).count();
+    assert_eq!(count("f "), 648 + 216 + 85);
+    assert_eq!(count("v "), 370 + 222 + 255);
+    assert_eq!(count("vn "), count("v "));
+    // The largest radius written is the tread, 0.374 m.
+    let max_r = text
+        .lines()
+        .filter_map(|l| l.strip_prefix("v "))
+        .map(|l| {
+            let c: Vec<f64> = l.split(' ').map(|x| x.parse().unwrap()).collect();
+            c[1].hypot(c[2])
+        })
+        .fold(0.0, f64::max);
+    assert!((max_r - 0.374).abs() < 1e-6);
+    let mut mtl = Vec::new();
+    scene.write_mtl(&mut mtl).unwrap();
+    let mtl = String::from_utf8(mtl).unwrap();
+    assert!(mtl.contains("newmtl tyre") && mtl.contains("newmtl rim"));
+    // BmwX5Wheel rim: baseColor 0.7, roughness 0.5.
+    assert!(mtl.contains("Kd 0.7 0.7 0.7") && mtl.contains("Pr 0.5"));
+}
+
+/// Parses a .glb with the `gltf` crate (which validates the document) and returns, per mesh,
+/// its name, vertex count and triangle count, read from the buffers.
+fn parse_glb(bytes: &[u8]) -> (gltf::Gltf, Vec<(String, usize, usize)>) {
+    let doc = gltf::Gltf::from_slice(bytes).expect("valid glTF");
+    let blob = doc.blob.clone().expect("binary chunk");
+    let mut meshes = Vec::new();
+    for mesh in doc.meshes() {
+        let prim = mesh.primitives().next().unwrap();
+        assert_eq!(prim.mode(), gltf::mesh::Mode::Triangles);
+        let reader = prim.reader(|_| Some(&blob));
+        let positions: Vec<[f32; 3]> = reader.read_positions().unwrap().collect();
+        let normals: Vec<[f32; 3]> = reader.read_normals().unwrap().collect();
+        assert_eq!(normals.len(), positions.len());
+        for n in &normals {
+            let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            assert!((l - 1.0).abs() < 1e-5);
+        }
+        let indices: Vec<u32> = reader.read_indices().unwrap().into_u32().collect();
+        assert!(indices.iter().all(|&i| (i as usize) < positions.len()));
+        meshes.push((
+            mesh.name().unwrap().to_string(),
+            positions.len(),
+            indices.len() / 3,
+        ));
+    }
+    (doc, meshes)
+}
+
+#[test]
+fn wheel_glb_round_trip() {
+    let w = bmw_wheel();
+    let glb = Scene::wheel(&w).to_glb().unwrap();
+    let (doc, meshes) = parse_glb(&glb);
+    assert_eq!(
+        meshes,
+        [
+            ("tyre".to_string(), 370, w.tyre().triangle_count()),
+            ("rim".to_string(), 222, w.rim_contour().triangle_count()),
+            ("hub".to_string(), 255, w.rim_centre().triangle_count()),
+        ]
+    );
+    // The tyre has texture coordinates; v is flipped to glTF's top-left origin (1 − 10·i/S).
+    let tyre = doc.meshes().next().unwrap().primitives().next().unwrap();
+    let blob = doc.blob.clone().unwrap();
+    let uv: Vec<[f32; 2]> = tyre
+        .reader(|_| Some(&blob))
+        .read_tex_coords(0)
+        .unwrap()
+        .into_f32()
+        .collect();
+    assert_eq!(uv[0], [0.0, 1.0]);
+    assert_eq!(uv[369], [1.0, -9.0]);
+    // Materials: tyre and rim (the hub shares the rim's).
+    assert_eq!(doc.materials().count(), 2);
+}
+
+#[test]
+fn vehicle_glb_round_trip() {
+    let layout = ShippedVehicle::BmwX5.layout::<f64>();
+    let chassis = ChassisBox::from_extents(-1.0, 3.85, 1.75, 0.0, 1.45);
+    let scene = Scene::vehicle("BmwX5", &layout, &chassis);
+    // 4 identical wheels share their meshes: chassis + tyre + rim + hub.
+    assert_eq!(scene.meshes.len(), 4);
+    assert_eq!(scene.instance_triangle_count(), 12 + 4 * (648 + 216 + 85));
+    let (doc, meshes) = parse_glb(&scene.to_glb().unwrap());
+    let names: Vec<_> = meshes.iter().map(|m| m.0.as_str()).collect();
+    assert_eq!(names, ["chassis", "tyre", "rim", "hub"]);
+    assert_eq!((meshes[0].1, meshes[0].2), (24, 12));
+    // Node placement: the front-right wheel at (L, −Tf/2, 0) = (2.995, −0.814, 0) in the
+    // vehicle frame, under a root that turns z-up into glTF's y-up.
+    let fr = doc
+        .nodes()
+        .find(|n| n.name() == Some("front_right_wheel"))
+        .unwrap();
+    let (t, _, _) = fr.transform().decomposed();
+    assert_eq!(t, [2.995, -0.814, 0.0]);
+    let scene_root = doc.default_scene().unwrap().nodes().next().unwrap();
+    assert_eq!(scene_root.name(), Some("webots_to_gltf"));
+    let (_, r, _) = scene_root.transform().decomposed();
+    assert_eq!(r, [-0.5, -0.5, -0.5, 0.5]);
+    // That rotation maps vehicle up (+z) to glTF up (+y) and forward (+x) to glTF +z.
+    let q = vehicle_to_gltf();
+    assert!((q.rotate(Vec3::Z) - Vec3::Y).length() < 1e-15);
+    assert!((q.rotate(Vec3::X) - Vec3::Z).length() < 1e-15);
+    // Every wheel node has tyre, rim and hub children; left tyres are turned by π about z.
+    let fl = doc
+        .nodes()
+        .find(|n| n.name() == Some("front_left_wheel"))
+        .unwrap();
+    let tyre = fl.children().find(|c| c.name() == Some("tyre")).unwrap();
+    let (_, r, _) = tyre.transform().decomposed();
+    assert!((r[2].abs() - 1.0).abs() < 1e-6 && r[3].abs() < 1e-6);
+    assert_eq!(fl.children().count(), 3);
+}
+
+#[test]
+fn every_shipped_vehicle_exports() {
+    for v in ShippedVehicle::ALL {
+        let layout = v.layout::<f64>();
+        let d = layout.dimensions();
+        let chassis = ChassisBox::from_extents(-0.5, d.wheelbase + 0.5, d.track_front, 0.0, 1.0);
+        let scene = Scene::vehicle(v.proto_name(), &layout, &chassis);
+        if v == ShippedVehicle::CitroenCZero {
+            // Chassis, then front and rear wheel meshes: the rear-right front wheel (6 kg)
+            // shares the front wheels' meshes.
+            assert_eq!(scene.meshes.len(), 7);
+        }
+        let (_, meshes) = parse_glb(&scene.to_glb().unwrap());
+        assert!(meshes.len() >= 2, "{v:?}");
+        // Non-VehicleWheel wheels are a single cylinder: 4S triangles (Tractor: S = 24).
+        if v == ShippedVehicle::Tractor {
+            let tyre_triangles: Vec<_> = meshes.iter().skip(1).map(|m| m.2).collect();
+            assert_eq!(tyre_triangles, [96, 96]);
+        }
+    }
+}
+
+#[test]
+fn f32_meshes_export_too() {
+    let (w, _) = WheelPreset::TruckWheel.params::<f32>().validate();
+    let glb = Scene::wheel(&w).to_glb().unwrap();
+    let (_, meshes) = parse_glb(&glb);
+    assert_eq!(meshes[2].2, w.rim_centre().triangle_count());
+}

@@ -1,0 +1,330 @@
+//! Parameter validation (invalid → default + warning) and setting fields by Webots name.
+
+use vehicle_model::{
+    CarField, CarParams, DriveType, EngineType, FieldError, FieldKind, FieldValue, Model,
+    ParamWarning, Wheel, WheelPhysics, WiperRange,
+};
+
+fn value(field: CarField, value: f64, used: f64) -> ParamWarning {
+    ParamWarning::Value { field, value, used }
+}
+
+#[test]
+fn each_scalar_rule_falls_back_with_a_warning() {
+    let mut p = Model::BmwX5.params::<f64>();
+    p.track_front = 0.0;
+    p.track_rear = -1.0;
+    p.wheels_damping_constant = 0.0;
+    p.max_steering_torque = -5.0;
+    p.suspension_rear_spring_constant = f64::INFINITY;
+    p.engine_sound_rpm_reference = f64::NAN;
+    p.time_0_to_100 = -7.0;
+    p.max_velocity = 0.0;
+    p.engine.hybrid_power_split_ratio = 1.5;
+    p.engine.hybrid_power_split_rpm = 0.0;
+    p.body.mass = -1.0;
+    let report = p.validate();
+    let expected = [
+        value(CarField::TrackFront, 0.0, 1.7),
+        value(CarField::TrackRear, -1.0, 1.7),
+        value(
+            CarField::SuspensionRearSpringConstant,
+            f64::INFINITY,
+            100_000.0,
+        ),
+        value(CarField::WheelsDampingConstant, 0.0, 5.0),
+        value(CarField::MaxSteeringTorque, -5.0, 10_000.0),
+        value(CarField::Time0To100, -7.0, 10.0),
+        value(CarField::MaxVelocity, 0.0, 50.0),
+        value(CarField::HybridPowerSplitRatio, 1.5, 0.25),
+        value(CarField::HybridPowerSplitRpm, 0.0, 3000.0),
+        value(CarField::Mass, -1.0, 1500.0),
+    ];
+    // The NaN reference is reported too (NaN ≠ NaN, so compared separately).
+    assert_eq!(report.len(), expected.len() + 1);
+    for w in &expected {
+        assert!(report.iter().any(|r| r == w), "missing {w:?}");
+    }
+    assert!(matches!(
+        report.get(CarField::EngineSoundRpmReference),
+        Some(ParamWarning::Value { value, used: 1000.0, .. }) if value.is_nan()
+    ));
+    assert_eq!(p.track_front, 1.7);
+    assert_eq!(p.max_steering_torque, 10_000.0);
+    assert_eq!(p.engine_sound_rpm_reference, 1000.0);
+    // Validating again finds nothing.
+    assert!(p.validate().is_empty());
+}
+
+#[test]
+fn engine_rpm_range_and_lists() {
+    let mut p = CarParams::<f64>::default();
+    p.engine.min_rpm = 2000.0;
+    p.engine.max_rpm = 1500.0; // ≤ min: older Webots rule, 5 × min
+    p.engine.function_coefficients = [1.0, f64::NAN, 0.0];
+    p.gear_ratios.clear();
+    p.gear_ratios.push(-5.0).unwrap();
+    let report = p.validate();
+    let r = report.as_slice();
+    assert_eq!(r.len(), 3);
+    assert_eq!(r[0], value(CarField::EngineMaxRpm, 1500.0, 10_000.0));
+    assert!(matches!(
+        r[1],
+        ParamWarning::Element { field: CarField::EngineFunctionCoefficients, index: 1, value }
+            if value.is_nan()
+    ));
+    assert_eq!(
+        r[2],
+        ParamWarning::Length {
+            field: CarField::GearRatio,
+            len: 1
+        }
+    );
+    assert_eq!(p.engine.max_rpm, 10_000.0);
+    assert_eq!(p.engine.function_coefficients, [150.0, 0.1, 0.0]);
+    assert_eq!(p.gear_ratios.len(), 6);
+
+    let mut p = CarParams::<f64>::default();
+    p.gear_ratios[2] = 0.0;
+    let report = p.validate();
+    assert_eq!(
+        report.as_slice(),
+        &[ParamWarning::Element {
+            field: CarField::GearRatio,
+            index: 2,
+            value: 0.0
+        }]
+    );
+    assert_eq!(
+        report.as_slice()[0].to_string(),
+        "Warning: invalid 'gearRatio' element 2 value 0 (needs 2 to 16 finite, non-zero ratios), \
+         used the default instead."
+    );
+}
+
+#[test]
+fn steering_limits_rotation_inertia_wipers_and_wheels() {
+    let mut p = Model::BmwX5.params::<f64>();
+    p.min_steering_angle = 0.5;
+    p.max_steering_angle = 0.2;
+    p.rotation = [0.0, 0.0, 0.0, 1.0];
+    p.translation[1] = f64::NEG_INFINITY;
+    p.body.inertia = Some([1.0, 1.0, 5.0, 0.0, 0.0, 0.0]);
+    p.body.center_of_mass[2] = f64::NAN;
+    p.wipers = Some(WiperRange { min: 1.0, max: 1.0 });
+    p.wheels[Wheel::FrontLeft].tire_radius = -0.3;
+    let report = p.validate();
+    assert_eq!((p.min_steering_angle, p.max_steering_angle), (-1.0, 1.0));
+    assert_eq!(p.rotation, [0.0, 0.0, 1.0, 0.0]);
+    assert_eq!(p.translation, [0.0, 0.0, 0.4]);
+    assert_eq!(p.body.inertia, None);
+    assert_eq!(p.body.center_of_mass, [2.995 / 2.0, 0.0, 0.0]);
+    assert_eq!(p.wipers, None);
+    assert_eq!(p.wheels[Wheel::FrontLeft].tire_radius, 0.4);
+    assert!(report.get(CarField::Rotation).is_some());
+    assert!(report.get(CarField::InertiaMatrix).is_some());
+    assert!(
+        report
+            .iter()
+            .any(|w| matches!(w, ParamWarning::WiperRange { .. }))
+    );
+    let wheel = report
+        .iter()
+        .find(|w| matches!(w, ParamWarning::Wheel { .. }))
+        .unwrap();
+    assert!(matches!(
+        wheel,
+        ParamWarning::Wheel {
+            slot: Wheel::FrontLeft,
+            ..
+        }
+    ));
+    assert!(
+        wheel
+            .to_string()
+            .starts_with("Warning: wheelFrontLeft: 'tireRadius'")
+    );
+}
+
+#[test]
+fn report_capacity_counts_the_overflow() {
+    let mut p = CarParams::<f32>::default();
+    for w in p.wheels.iter_mut() {
+        w.thickness = -1.0;
+        w.tire_radius = -1.0;
+        w.curvature_factor = 7.0;
+        w.rim_beam_width = -1.0;
+        w.central_inner_radius = -1.0;
+        w.central_outer_radius = -1.0;
+        w.rim_beam_thickness = -1.0;
+        w.subdivision = 0;
+        w.edge_subdivision = 0;
+        w.rim_beam_number = 0;
+    }
+    let report = p.validate();
+    assert_eq!(report.len(), vehicle_model::MAX_PARAM_WARNINGS);
+    assert!(report.dropped() > 0);
+    assert_eq!(report.total(), report.len() + report.dropped());
+    assert!(!report.is_empty());
+    // Like Webots, a `subdivision` of 8 (the fallback) still triggers its message; nothing
+    // else is left to repair.
+    let again = p.validate();
+    assert_eq!(again.len(), 4);
+    assert!(
+        again
+            .iter()
+            .all(|w| w.to_string().contains("'subdivision'"))
+    );
+}
+
+#[test]
+fn set_field_by_webots_name() {
+    let mut p = CarParams::<f64>::default();
+    p.set_field("trackFront", FieldValue::Number(1.5)).unwrap();
+    p.set_field("engineMinRPM", FieldValue::Number(900.0))
+        .unwrap();
+    p.set_field("engineType", FieldValue::Text("parallel hybrid"))
+        .unwrap();
+    p.set_field("type", FieldValue::Text("propulsion")).unwrap();
+    p.set_field("engineSound", FieldValue::Text("")).unwrap();
+    p.set_field("translation", FieldValue::Numbers(&[1.0, 2.0, 0.5]))
+        .unwrap();
+    p.set_field(
+        "inertiaMatrix",
+        FieldValue::Numbers(&[1.0, 2.0, 2.5, 0.0, 0.0, 0.0]),
+    )
+    .unwrap();
+    p.set_field("wheelRearLeft.mass", FieldValue::Number(12.0))
+        .unwrap();
+    p.set_field("wheels.subdivision", FieldValue::Number(48.0))
+        .unwrap();
+    assert_eq!(p.track_front, 1.5);
+    assert_eq!(p.engine.min_rpm, 900.0);
+    assert_eq!(p.engine.engine_type, EngineType::ParallelHybrid);
+    assert_eq!(p.drive_type, DriveType::Propulsion);
+    assert!(p.engine_sound.is_none());
+    assert_eq!(p.translation, [1.0, 2.0, 0.5]);
+    assert_eq!(p.body.inertia, Some([1.0, 2.0, 2.5, 0.0, 0.0, 0.0]));
+    assert_eq!(p.wheels[Wheel::RearLeft].physics, WheelPhysics::Mass(12.0));
+    assert!(p.wheels.iter().all(|w| w.subdivision == 48));
+    assert!(p.clone().validate().is_empty());
+
+    // Every listed name is accepted with a value of its kind.
+    for field in CarField::ALL {
+        let name = field.webots_name();
+        assert!(CarParams::<f64>::FIELD_NAMES.contains(&name));
+        let mut q = CarParams::<f64>::default();
+        let numbers = [1.0, 2.0, 2.5, 0.0, 0.0, 0.0];
+        let v = match field.kind() {
+            FieldKind::Number => FieldValue::Number(1.0),
+            FieldKind::Numbers { min, .. } => FieldValue::Numbers(&numbers[..min]),
+            FieldKind::Text => FieldValue::Text(match field {
+                CarField::Type => "4x4",
+                CarField::EngineType => "electric",
+                _ => "a.wav",
+            }),
+        };
+        assert_eq!(q.set_field(name, v), Ok(()), "{name}");
+    }
+    for name in CarParams::<f64>::WHEEL_FIELD_NAMES {
+        let mut q = CarParams::<f64>::default();
+        assert_eq!(
+            q.set_field(&format!("wheelFrontRight.{name}"), FieldValue::Number(9.0)),
+            Ok(())
+        );
+    }
+}
+
+#[test]
+fn set_field_errors_leave_params_unchanged() {
+    let mut p = CarParams::<f64>::default();
+    let before = p.clone();
+    assert_eq!(
+        p.set_field("wheelBase", FieldValue::Number(1.0)),
+        Err(FieldError::UnknownField)
+    );
+    assert_eq!(
+        p.set_field("", FieldValue::Number(1.0)),
+        Err(FieldError::UnknownField)
+    );
+    assert_eq!(
+        p.set_field("wheelMiddle.tireRadius", FieldValue::Number(1.0)),
+        Err(FieldError::UnknownField)
+    );
+    assert_eq!(
+        p.set_field("wheels.color", FieldValue::Number(1.0)),
+        Err(FieldError::UnknownField)
+    );
+    assert_eq!(
+        p.set_field("wheelbase", FieldValue::Text("long")),
+        Err(FieldError::WrongKind {
+            field: "wheelbase",
+            expected: FieldKind::Number
+        })
+    );
+    assert_eq!(
+        p.set_field("gearRatio", FieldValue::Numbers(&[1.0])),
+        Err(FieldError::WrongLength {
+            field: "gearRatio",
+            expected: FieldKind::Numbers { min: 2, max: 16 },
+            len: 1
+        })
+    );
+    assert!(
+        p.set_field("gearRatio", FieldValue::Numbers(&[1.0; 17]))
+            .is_err()
+    );
+    assert!(
+        p.set_field("translation", FieldValue::Numbers(&[1.0, 2.0]))
+            .is_err()
+    );
+    assert_eq!(
+        p.set_field("type", FieldValue::Text("4X4")),
+        Err(FieldError::InvalidText {
+            field: "type",
+            rule: CarField::Type.rule()
+        })
+    );
+    assert!(
+        p.set_field("engineType", FieldValue::Text("diesel"))
+            .is_err()
+    );
+    assert!(
+        p.set_field("engineSound", FieldValue::Text(&"x".repeat(64)))
+            .is_err()
+    );
+    assert_eq!(
+        p.set_field("wheels.subdivision", FieldValue::Number(10.5)),
+        Err(FieldError::NotAnInteger {
+            field: "subdivision",
+            value: 10.5
+        })
+    );
+    assert!(
+        p.set_field("wheels.rimBeamNumber", FieldValue::Number(f64::NAN))
+            .is_err()
+    );
+    assert!(
+        p.set_field("wheels.edgeSubdivision", FieldValue::Number(1e12))
+            .is_err()
+    );
+    assert!(
+        p.set_field("wheels.mass", FieldValue::Numbers(&[1.0]))
+            .is_err()
+    );
+    assert_eq!(p, before);
+    // Numbers are stored unvalidated; `validate` repairs them.
+    p.set_field("wheelbase", FieldValue::Number(f64::NAN))
+        .unwrap();
+    assert!(p.wheelbase.is_nan());
+    assert_eq!(p.validate().len(), 1);
+    assert_eq!(
+        FieldError::WrongLength {
+            field: "rotation",
+            expected: FieldKind::Numbers { min: 4, max: 4 },
+            len: 3
+        }
+        .to_string(),
+        "field 'rotation' takes a list of 4 numbers, got 3"
+    );
+}

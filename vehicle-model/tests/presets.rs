@@ -1,0 +1,248 @@
+//! Every shipped model validates without warnings and matches the spec §5 tables.
+
+use vehicle_model::{
+    CarParams, DriveType, Driver, EngineType, Model, Wheel, WheelPhysics, is_physical_inertia,
+};
+
+/// One row of spec §5 (`None` = the `Car` default applies and is checked elsewhere).
+struct Row {
+    model: Model,
+    drive: DriveType,
+    engine: EngineType,
+    time0to100: f64,
+    torque: f64,
+    power: f64,
+    rpm: (f64, f64),
+    gears: &'static [f64],
+    brake: f64,
+    tracks: (f64, f64),
+    wheelbase: f64,
+    steering: f64,
+    wheels_damping: f64,
+    max_velocity: f64,
+    radii: (f64, f64),
+    body_mass: f64,
+    com: [f64; 3],
+    sound: bool,
+}
+
+const DEF_GEARS: &[f64] = &[-12.0, 10.0, 6.5, 4.5, 3.5, 2.75];
+
+#[rustfmt::skip]
+fn table() -> Vec<Row> {
+    use DriveType::{FourByFour as X4, Propulsion as P, Traction as T};
+    use EngineType::{Combustion as C, Electric as E, PowerSplitHybrid as S};
+    vec![
+        Row { model: Model::BmwX5, drive: T, engine: C, time0to100: 7.0, torque: 250.0, power: 50_000.0, rpm: (1000.0, 6500.0), gears: &[-12.5, 12.5, 8.0, 5.35, 4.3, 4.0], brake: 1800.0, tracks: (1.628, 1.628), wheelbase: 2.995, steering: 1.0, wheels_damping: 2.0, max_velocity: 50.0, radii: (0.374, 0.374), body_mass: 2000.0, com: [1.2975, 0.0, 0.1], sound: true },
+        Row { model: Model::CitroenCZero, drive: P, engine: E, time0to100: 17.5, torque: 150.0, power: 75_000.0, rpm: (1000.0, 8000.0), gears: &[-6.2329, 6.2329], brake: 580.0, tracks: (1.31, 1.27), wheelbase: 2.55, steering: 0.631, wheels_damping: 1.55, max_velocity: 50.0, radii: (0.28475, 0.28475), body_mass: 1200.0, com: [1.180, -0.002, 0.248], sound: false },
+        Row { model: Model::ToyotaPrius, drive: T, engine: S, time0to100: 10.7, torque: 350.0, power: 33_000.0, rpm: (1200.0, 6500.0), gears: &[-6.0, 6.0], brake: 700.0, tracks: (1.628, 1.628), wheelbase: 2.8, steering: 1.0, wheels_damping: 1.0, max_velocity: 50.0, radii: (0.317, 0.317), body_mass: 1805.0, com: [1.2975, 0.0, 0.1], sound: true },
+        Row { model: Model::LincolnMKZ, drive: X4, engine: C, time0to100: 4.97, torque: 250.0, power: 298_000.0, rpm: (1000.0, 5500.0), gears: &[-2.94, 4.58, 2.96, 1.91, 1.45, 1.00, 0.75], brake: 1400.0, tracks: (1.64, 1.64), wheelbase: 2.94, steering: 1.0, wheels_damping: 2.0, max_velocity: 50.0, radii: (0.358, 0.358), body_mass: 1950.0, com: [1.6, 0.0, 0.2], sound: true },
+        Row { model: Model::RangeRoverSportSVR, drive: X4, engine: C, time0to100: 4.7, torque: 680.0, power: 50_000.0, rpm: (1000.0, 5500.0), gears: &[-3.0, 4.696, 3.130, 2.104, 1.667, 1.285, 1.000, 0.839, 0.667], brake: 1000.0, tracks: (1.64, 1.64), wheelbase: 2.71, steering: 1.0, wheels_damping: 5.0, max_velocity: 50.0, radii: (0.358, 0.358), body_mass: 2700.0, com: [1.6, 0.0, 0.2], sound: true },
+        Row { model: Model::TeslaModel3, drive: P, engine: E, time0to100: 4.0, torque: 639.0, power: 147_000.0, rpm: (1000.0, 25_000.0), gears: &[-6.3, 9.0], brake: 2000.0, tracks: (1.72, 1.72), wheelbase: 2.94, steering: 1.0, wheels_damping: 3.0, max_velocity: 50.0, radii: (0.36, 0.36), body_mass: 1847.0, com: [1.27, 0.0, 0.0], sound: false },
+        Row { model: Model::MercedesBenzSprinter, drive: T, engine: C, time0to100: 14.0, torque: 250.0, power: 50_000.0, rpm: (800.0, 4000.0), gears: DEF_GEARS, brake: 3500.0, tracks: (1.7, 1.7), wheelbase: 4.325, steering: 1.0, wheels_damping: 5.0, max_velocity: 29.18, radii: (0.4, 0.4), body_mass: 4500.0, com: [1.5, 0.0, 0.0], sound: true },
+        Row { model: Model::GreenPowerEVStar, drive: T, engine: E, time0to100: 24.0, torque: 1200.0, power: 150_000.0, rpm: (1200.0, 4000.0), gears: &[-2.0, 2.0], brake: 3500.0, tracks: (1.7, 1.5), wheelbase: 4.325, steering: 1.0, wheels_damping: 5.0, max_velocity: 40.0, radii: (0.4445, 0.4445), body_mass: 6500.0, com: [1.5, 0.0, 0.0], sound: true },
+        Row { model: Model::Bus, drive: T, engine: C, time0to100: 25.0, torque: 250.0, power: 50_000.0, rpm: (700.0, 2250.0), gears: &[-14.0, 16.0, 11.0, 7.0, 4.5, 3.0, 1.9, 1.2], brake: 3500.0, tracks: (2.5, 2.5), wheelbase: 4.5, steering: 0.4, wheels_damping: 20.0, max_velocity: 50.0, radii: (0.56, 0.56), body_mass: 8000.0, com: [2.25, 0.0, 0.1], sound: true },
+        Row { model: Model::Truck, drive: X4, engine: C, time0to100: 25.0, torque: 250.0, power: 50_000.0, rpm: (700.0, 2250.0), gears: &[-14.77, 16.0, 13.0, 11.0, 9.0, 7.0, 6.0, 4.5, 3.7, 3.0, 2.4, 1.9, 1.5, 1.2, 1.0], brake: 5000.0, tracks: (2.2, 2.2), wheelbase: 5.25, steering: 0.4, wheels_damping: 30.0, max_velocity: 50.0, radii: (0.5, 0.5), body_mass: 8000.0, com: [4.5, 0.0, 0.1], sound: true },
+        Row { model: Model::Tractor, drive: X4, engine: C, time0to100: 20.0, torque: 250.0, power: 50_000.0, rpm: (1000.0, 4500.0), gears: DEF_GEARS, brake: 700.0, tracks: (1.4, 1.4), wheelbase: 1.76, steering: 0.94, wheels_damping: 5.0, max_velocity: 50.0, radii: (0.38, 0.6), body_mass: 1000.0, com: [0.945_069_02, 0.0, 0.460_817_86], sound: true },
+    ]
+}
+
+#[test]
+fn every_model_validates_without_warnings() {
+    for model in Model::ALL {
+        let (p, report) = model.params::<f64>().validated();
+        assert!(report.is_empty(), "{model}: {:?}", report.as_slice());
+        assert_eq!(p, model.params(), "{model}: validation changed nothing");
+        assert!(p.geometry().is_ok() && p.engine().is_ok() && p.gearbox().is_ok());
+        let (_, report) = Driver::new(model.params::<f32>(), 16);
+        assert!(report.is_empty(), "{model} in f32: {:?}", report.as_slice());
+        assert!(is_physical_inertia(&p.body_inertia()), "{model}");
+    }
+}
+
+#[test]
+fn models_match_the_spec_tables() {
+    let rows = table();
+    assert_eq!(rows.len(), Model::ALL.len() - 1);
+    for r in rows {
+        let p = r.model.params::<f64>();
+        let m = r.model;
+        assert_eq!(p.drive_type, r.drive, "{m}");
+        assert_eq!(p.engine.engine_type, r.engine, "{m}");
+        assert_eq!(p.time_0_to_100, r.time0to100, "{m}");
+        assert_eq!(
+            (p.engine.max_torque, p.engine.max_power),
+            (r.torque, r.power),
+            "{m}"
+        );
+        assert_eq!((p.engine.min_rpm, p.engine.max_rpm), r.rpm, "{m}");
+        assert_eq!(p.gear_ratios.as_slice(), r.gears, "{m}");
+        assert_eq!(p.brake_coefficient, r.brake, "{m}");
+        assert_eq!((p.track_front, p.track_rear), r.tracks, "{m}");
+        assert_eq!(p.wheelbase, r.wheelbase, "{m}");
+        assert_eq!(
+            (p.min_steering_angle, p.max_steering_angle),
+            (-r.steering, r.steering)
+        );
+        assert_eq!(p.wheels_damping_constant, r.wheels_damping, "{m}");
+        assert_eq!(p.max_velocity, r.max_velocity, "{m}");
+        assert_eq!((p.radius_front(), p.radius_rear()), r.radii, "{m}");
+        assert_eq!(p.body.mass, r.body_mass, "{m}");
+        assert_eq!(p.body.center_of_mass, r.com, "{m}");
+        assert_eq!(!p.engine_sound.is_none(), r.sound, "{m}");
+        assert_eq!(Model::from_name(m.webots_name()), Some(m));
+    }
+}
+
+#[test]
+fn derived_wheel_motor_values() {
+    // Spec §5 "derived acc / vmax": (1000/36)/time0To100/r and maxVelocity/r.
+    for (model, acc, vmax) in [
+        (Model::BmwX5, 10.61, 133.69),
+        (Model::CitroenCZero, 5.574, 175.59),
+        (Model::ToyotaPrius, 8.189, 157.73),
+        (Model::LincolnMKZ, 15.61, 139.66),
+        (Model::RangeRoverSportSVR, 16.51, 139.66),
+        (Model::TeslaModel3, 19.29, 138.89),
+    ] {
+        let p = model.params::<f64>();
+        let wheel = if p.drive_type.front_driven() {
+            Wheel::FrontLeft
+        } else {
+            Wheel::RearLeft
+        };
+        let m = p.wheel_motor(wheel);
+        assert!(
+            (m.acceleration - acc).abs() < 0.006,
+            "{model}: {}",
+            m.acceleration
+        );
+        assert!(
+            (m.max_velocity - vmax).abs() < 0.006,
+            "{model}: {}",
+            m.max_velocity
+        );
+    }
+    // The Tractor's axles differ: front 3.655, rear 2.315 rad/s².
+    let t = Model::Tractor.params::<f64>().wheel_motors();
+    assert!((t[Wheel::FrontRight].unwrap().acceleration - 3.655).abs() < 1e-3);
+    assert!((t[Wheel::RearRight].unwrap().acceleration - 2.315).abs() < 1e-3);
+    // Only driven wheels have motors.
+    let bmw = Model::BmwX5.params::<f64>().wheel_motors();
+    assert!(bmw[Wheel::FrontRight].is_some() && bmw[Wheel::RearLeft].is_none());
+}
+
+#[test]
+fn engines_curves_and_inertias() {
+    let bmw = Model::BmwX5.params::<f64>();
+    assert_eq!(
+        bmw.engine.function_coefficients,
+        [34.11, 0.136, -0.000_014_61]
+    );
+    assert_eq!(
+        bmw.body.inertia,
+        Some([1125.07, 4473.54, 4346.1, 0.0, 846.89, 0.0])
+    );
+    assert_eq!(bmw.wipers.map(|w| (w.min, w.max)), Some((0.0, 1.6)));
+    assert_eq!(
+        bmw.wheels[Wheel::RearLeft].physics,
+        WheelPhysics::Mass(30.0)
+    );
+
+    let prius = Model::ToyotaPrius.params::<f64>();
+    assert_eq!(
+        prius.engine.function_coefficients,
+        [65.0, 0.0225, -0.000_002_5]
+    );
+    assert_eq!(
+        (
+            prius.engine.hybrid_power_split_ratio,
+            prius.engine.hybrid_power_split_rpm
+        ),
+        (0.2778, 3000.0)
+    );
+    assert_eq!(prius.body.inertia.unwrap()[3], -300.0);
+    assert_eq!(prius.wipers, None);
+
+    // C-Zero, read from a Y-up file: inertia [2645 2534 200] (x left, y up, z forward)
+    // becomes [200, 2645, 2534] in x forward, y left, z up.
+    let czero = Model::CitroenCZero.params::<f64>();
+    assert_eq!(
+        czero.body.inertia,
+        Some([200.0, 2645.0, 2534.0, 0.0, 0.0, 0.0])
+    );
+    assert_eq!(
+        (
+            czero.suspension_front_spring_constant,
+            czero.suspension_rear_damping_constant
+        ),
+        (30_000.0, 5000.0)
+    );
+    // The rear-right slot holds a front wheel (radius 0.28475) with the rear wheels' 6 kg.
+    assert_eq!(czero.wheels[Wheel::RearRight].tire_radius, 0.28475);
+    assert_eq!(
+        czero.wheels[Wheel::RearRight].physics,
+        WheelPhysics::Mass(6.0)
+    );
+    assert_eq!(czero.wheels[Wheel::RearLeft].tire_radius, 0.28675);
+
+    let tesla = Model::TeslaModel3.params::<f64>();
+    assert_eq!(tesla.body.inertia.unwrap()[4], -3204.91);
+    let tractor = Model::Tractor.params::<f64>();
+    assert_eq!(tractor.body.inertia.unwrap()[4], -792.289_08);
+    assert_eq!(tractor.rotation, [0.0, 1.0, 0.0, 0.13]);
+    assert_eq!(tractor.translation, [0.0, 0.0, 0.6]);
+    for m in [Model::Bus, Model::Truck] {
+        assert_eq!(
+            m.params::<f64>().engine.function_coefficients,
+            [-600.0, 5.45, -0.0023]
+        );
+    }
+    let sprinter = Model::MercedesBenzSprinter.params::<f64>();
+    assert_eq!(sprinter.engine.function_coefficients, [600.0, 0.2, 0.0]);
+    assert_eq!(sprinter.max_steering_torque, 13_000.0);
+    assert_eq!(
+        Model::GreenPowerEVStar.params::<f64>().max_steering_torque,
+        15_000.0
+    );
+}
+
+#[test]
+fn derived_inertia_for_models_without_one() {
+    // LincolnMKZ: 1950 kg box of l = 1.6·2.94 = 4.704, w = 1.64, h = 1.23:
+    // Ixx = 1950/12·(1.64² + 1.23²) = 683.4 kg·m², Izz = 1950/12·(4.704² + 1.64²) = 4032.7.
+    let p = Model::LincolnMKZ.params::<f64>();
+    assert_eq!(p.body.inertia, None);
+    let i = p.body_inertia();
+    assert!((i[0] - 1950.0 / 12.0 * (1.64_f64.powi(2) + 1.23_f64.powi(2))).abs() < 1e-9);
+    assert!((i[2] - 1950.0 / 12.0 * (4.704_f64.powi(2) + 1.64_f64.powi(2))).abs() < 1e-9);
+    // Webots' default Physics {}: density 1000 over the 0.358 × 0.22 m cylinder (88.58 kg).
+    assert_eq!(
+        p.wheels[Wheel::FrontLeft].physics,
+        WheelPhysics::Density(1000.0)
+    );
+}
+
+#[test]
+fn sensor_slots_and_plain_car() {
+    let bmw = Model::BmwX5.params::<f64>();
+    let slots = bmw.sensor_slots.unwrap();
+    assert_eq!(slots.front.translation.to_array(), [3.85, 0.0, 0.45]);
+    // Y-up (0, 1.35, 1.075) → (1.075, 0, 1.35).
+    let czero = Model::CitroenCZero.params::<f64>().sensor_slots.unwrap();
+    assert_eq!(czero.top.translation.to_array(), [1.075, 0.0, 1.35]);
+    assert_eq!(Model::Tractor.params::<f64>().sensor_slots, None);
+
+    let car = Model::Car.params::<f64>();
+    assert_eq!(car, CarParams::default());
+    assert_eq!(Model::from_name("Car"), Some(Model::Car));
+    assert_eq!(
+        (car.wheelbase, car.track_front, car.radius_front()),
+        (4.0, 1.7, 0.4)
+    );
+    assert_eq!(car.gear_ratios.as_slice(), DEF_GEARS);
+    assert_eq!(car.brake_coefficient, 700.0);
+    assert_eq!(car.engine_sound.as_str(), "sounds/engine.wav");
+    assert_eq!(Model::from_name("Sedan"), None);
+    assert_eq!(Model::ALL.len(), 12);
+}
