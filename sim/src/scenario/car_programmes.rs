@@ -1,0 +1,442 @@
+//! The car scenarios: each drives a fresh car through the driver library and measures it.
+
+use vehicle_model::{AutoShiftParams, Wheel};
+
+use crate::world_file::{CarDescription, WorldDescription};
+
+use super::car::{CarRig, KMH};
+use super::lane::{TRACK_LENGTH, double_lane_change, reference_y};
+use super::{Metric, Scenario, ScenarioError, ScenarioResult, fit_circle, limit};
+
+/// 100 km/h in m/s.
+const V100: f64 = 100.0 / KMH;
+/// How far below 100 km/h the cruise-control scenario counts 100 km/h as reached (km/h): a
+/// tyre that transmits a drive force creeps, so a car whose wheels turn at exactly 100 km/h
+/// settles a few tenths of a km/h below it and would never cross 100.
+const CRUISE_TOLERANCE_KMH: f64 = 1.0;
+/// The car counts as stopped below this speed (m/s).
+const STOPPED: f64 = 0.01;
+/// Largest drift (m) over the half second before the end of the brake scenario for the car
+/// to count as at rest: 2 cm/s on average.
+const REST_DRIFT: f64 = 0.01;
+/// Steering angle of the circle scenario (rad, to the right).
+const CIRCLE_STEERING: f64 = 0.2;
+/// Speed of the circle scenario (km/h).
+const CIRCLE_SPEED_KMH: f64 = 10.0;
+/// Speed of the lane-change scenario (km/h).
+const LANE_CHANGE_SPEED_KMH: f64 = 60.0;
+/// Lateral offset of the lane-change's middle lane (m, to the left).
+const LANE_OFFSET: f64 = 3.5;
+/// Window of the moving average applied to the lateral acceleration (s): the body's
+/// acceleration is a finite difference of the solver's velocities, whose step-to-step jitter
+/// is not a vehicle behaviour.
+const ACCEL_WINDOW: f64 = 0.1;
+
+type Progress<'a> = &'a mut dyn FnMut(f64, f64);
+
+/// Runs the single car scenario `scenario` on a fresh world.
+pub(crate) fn run(
+    world: &WorldDescription,
+    car: &CarDescription,
+    scenario: Scenario,
+    progress: Progress<'_>,
+) -> Result<ScenarioResult, ScenarioError> {
+    let t0100 = car.params.time_0_to_100;
+    let expected = match scenario {
+        Scenario::AccelSpeed | Scenario::AccelTorque => t0100 + 1.5,
+        Scenario::Brake => t0100 + 8.0,
+        Scenario::Circle => 40.0,
+        _ => 0.6 * t0100 + 12.0,
+    };
+    let rig = CarRig::new(world, car, limit(scenario, world), expected)?;
+    match scenario {
+        Scenario::AccelSpeed => accel_speed(rig, progress),
+        Scenario::AccelTorque => accel_torque(rig, progress),
+        Scenario::Brake => brake(rig, progress),
+        Scenario::Circle => circle(rig, progress),
+        _ => lane_change(rig, progress),
+    }
+}
+
+/// The time (s) at which the speed first reached `target` (m/s), interpolated between the
+/// last two samples, if it just did.
+fn crossing(rig: &CarRig, target: f64) -> Option<f64> {
+    let s = rig.samples();
+    let (prev, now) = (s.get(s.len().checked_sub(2)?)?, s.last()?);
+    let (v0, v1) = (prev.speed_kmh / KMH, now.speed_kmh / KMH);
+    (v0 < target && v1 >= target)
+        .then(|| prev.time + (now.time - prev.time) * (target - v0) / (v1 - v0))
+}
+
+/// Runs until the speed crosses `target` (m/s; then one more second), returning the crossing
+/// time; gives up when the speed has settled below it.
+fn time_to(
+    rig: &mut CarRig,
+    target: f64,
+    progress: Progress<'_>,
+) -> Result<Option<f64>, ScenarioError> {
+    let mut reached = None;
+    while rig.running() {
+        rig.step(progress)?;
+        if reached.is_none() {
+            reached = crossing(rig, target);
+            if reached.is_none() && steady(rig, 0.0) && rig.speed() > 1.0 {
+                break;
+            }
+        }
+        if reached.is_some_and(|t| rig.time() >= t + 1.0) {
+            break;
+        }
+    }
+    Ok(reached)
+}
+
+fn accel_speed(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult, ScenarioError> {
+    rig.driver_mut()?.set_cruising_speed(100.0);
+    let t = time_to(&mut rig, V100 - CRUISE_TOLERANCE_KMH / KMH, progress)?;
+    let nominal = rig.driver()?.params().time_0_to_100;
+    let top = rig
+        .samples()
+        .iter()
+        .map(|s| s.speed_kmh)
+        .fold(0.0, f64::max);
+    let metrics = vec![
+        Metric::maybe(
+            "time_0_100_s",
+            "0-100 km/h (cruise control, 99 km/h)",
+            "s",
+            t,
+        ),
+        Metric::number(
+            "time_0_100_nominal_s",
+            "0-100 km/h nominal (time0To100)",
+            "s",
+            nominal,
+        ),
+        Metric::number("max_speed_kmh", "highest speed reached", "km/h", top),
+    ];
+    Ok(rig.finish(Scenario::AccelSpeed, metrics))
+}
+
+fn accel_torque(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult, ScenarioError> {
+    let auto = AutoShiftParams::for_engine(rig.driver()?.powertrain().engine());
+    if let Err(e) = rig.driver_mut()?.set_automatic_gearbox(Some(auto)) {
+        rig.note(format!("automatic gearbox refused ({e}): first gear only"));
+    }
+    rig.driver_mut()?.set_gear(1);
+    rig.driver_mut()?.set_throttle(1.0);
+    let t = time_to(&mut rig, V100, progress)?;
+    let samples = rig.samples();
+    let top_gear = samples.iter().filter_map(|s| s.gear).max().unwrap_or(0);
+    let max_rpm = samples.iter().filter_map(|s| s.rpm).fold(0.0, f64::max);
+    let metrics = vec![
+        Metric::maybe("time_0_100_s", "0-100 km/h (full throttle)", "s", t),
+        Metric::number("top_gear", "highest gear engaged", "", f64::from(top_gear)),
+        Metric::number("max_rpm", "highest engine speed", "rpm", max_rpm),
+    ];
+    Ok(rig.finish(Scenario::AccelTorque, metrics))
+}
+
+/// The deceleration (m/s²) the brakes alone give the car, limited by the ground friction:
+/// `min(4·brakeCoefficient/r / m, μ·g)` with `m` the whole car's mass.
+fn expected_deceleration(rig: &CarRig) -> Result<f64, ScenarioError> {
+    let spec = rig.spec();
+    let mass = spec.chassis.mass + Wheel::ALL.iter().map(|&w| spec.wheels[w].mass).sum::<f64>();
+    let p = rig.driver()?.params();
+    let force: f64 = Wheel::ALL
+        .iter()
+        .map(|&w| p.brake_coefficient / p.axle_radius(w))
+        .sum();
+    let (friction, gravity) = rig.ground();
+    Ok((force / mass).min(friction * gravity))
+}
+
+/// True once the speed has reached 90 % of `target` (m/s) and changed by less than 0.1 km/h
+/// over the last second: the cruise control has settled (the car's steady speed may differ
+/// from the target by the tyres' slip).
+fn steady(rig: &CarRig, target: f64) -> bool {
+    let samples = rig.samples();
+    let (Some(now), Some(dt)) = (samples.last(), Some(rig.time_step())) else {
+        return false;
+    };
+    let back = (1.0 / dt).round() as usize;
+    let Some(before) = samples
+        .len()
+        .checked_sub(back + 1)
+        .and_then(|i| samples.get(i))
+    else {
+        return false;
+    };
+    now.speed_kmh >= 0.9 * target * KMH && (now.speed_kmh - before.speed_kmh).abs() < 0.1
+}
+
+/// Cruises at `target` (m/s) until the speed is steady, for at most `max_time` (s).
+fn cruise_until_steady(
+    rig: &mut CarRig,
+    target: f64,
+    max_time: f64,
+    progress: Progress<'_>,
+) -> Result<(), ScenarioError> {
+    rig.driver_mut()?.set_cruising_speed(target * KMH);
+    while rig.running() && rig.time() < max_time && !steady(rig, target) {
+        rig.step(progress)?;
+    }
+    Ok(())
+}
+
+fn brake(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult, ScenarioError> {
+    let run_up = 2.0 * rig.driver()?.params().time_0_to_100 + 10.0;
+    cruise_until_steady(&mut rig, V100, run_up, progress)?;
+    // Off the cruise control (its wheel motors would overpower the brakes), brake fully.
+    rig.driver_mut()?.set_throttle(0.0);
+    rig.driver_mut()?.set_brake_intensity(1.0);
+    let (t0, v0, yaw0) = (rig.time(), rig.speed(), rig.yaw());
+    let mut travelled = 0.0;
+    let mut last = rig.state().position;
+    // (time, distance) when the speed first fell below STOPPED.
+    let mut stopped: Option<(f64, f64)> = None;
+    // Where the car was half a second after stopping: the body still rocks on its springs
+    // before that, which moves the reference point back and forth by millimetres.
+    let mut settled_at: Option<[f64; 3]> = None;
+    let mut at_rest = false;
+    while rig.running() {
+        rig.step(progress)?;
+        let p = rig.state().position;
+        travelled += (p[0] - last[0]).hypot(p[1] - last[1]);
+        last = p;
+        match stopped {
+            None if rig.speed().abs() < STOPPED => stopped = Some((rig.time(), travelled)),
+            None => {}
+            Some((ts, _)) => {
+                if rig.time() >= ts + 0.5 {
+                    let q = *settled_at.get_or_insert(p);
+                    at_rest = (p[0] - q[0]).hypot(p[1] - q[1]) < REST_DRIFT;
+                }
+                if rig.time() >= ts + 1.0 {
+                    break;
+                }
+            }
+        }
+    }
+    let yaw_change = (rig.yaw() - yaw0 + core::f64::consts::PI).rem_euclid(core::f64::consts::TAU)
+        - core::f64::consts::PI;
+    let decel = expected_deceleration(&rig)?;
+    let distance = stopped.map(|(_, d)| d);
+    let metrics = vec![
+        Metric::number(
+            "initial_speed_kmh",
+            "speed when braking starts",
+            "km/h",
+            v0 * KMH,
+        ),
+        Metric::maybe("stop_distance_m", "stopping distance", "m", distance),
+        Metric::maybe(
+            "stop_time_s",
+            "stopping time",
+            "s",
+            stopped.map(|(t, _)| t - t0),
+        ),
+        Metric::number(
+            "stop_distance_expected_m",
+            "stopping distance from brake torque, v0^2/2a",
+            "m",
+            v0 * v0 / (2.0 * decel),
+        ),
+        Metric::number(
+            "yaw_change_rad",
+            "heading change while braking",
+            "rad",
+            yaw_change,
+        ),
+        Metric::flag(
+            "at_rest",
+            "at rest 1 s after stopping",
+            at_rest && stopped.is_some_and(|(ts, _)| rig.time() >= ts + 1.0 - 1e-9),
+        ),
+    ];
+    Ok(rig.finish(Scenario::Brake, metrics))
+}
+
+fn circle(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult, ScenarioError> {
+    rig.driver_mut()?.set_steering_angle(CIRCLE_STEERING);
+    rig.driver_mut()?.set_cruising_speed(CIRCLE_SPEED_KMH);
+    let wheelbase = rig.driver()?.params().wheelbase;
+    let expected_radius = wheelbase / CIRCLE_STEERING.tan();
+    // Settle (speed ramp, steering, body roll), then record one lap of the expected circle.
+    let settle = 5.0 + 0.1 * rig.driver()?.params().time_0_to_100;
+    let lap = 2.0 * core::f64::consts::PI * expected_radius / (CIRCLE_SPEED_KMH / KMH);
+    let end = settle + lap;
+    rig.expected = end;
+    let mut points = Vec::new();
+    while rig.running() && rig.time() < end {
+        rig.step(progress)?;
+        if rig.time() >= settle {
+            let p = rig.state().position;
+            points.push([p[0], p[1]]);
+        }
+    }
+    let fit = fit_circle(&points);
+    let radius = fit.map(|c| c.radius);
+    let metrics = vec![
+        Metric::maybe(
+            "turn_radius_m",
+            "turn radius of the rear-axle centre",
+            "m",
+            radius,
+        ),
+        Metric::number(
+            "turn_radius_expected_m",
+            "expected radius L/tan(delta)",
+            "m",
+            expected_radius,
+        ),
+        Metric::maybe(
+            "turn_radius_error_percent",
+            "radius error",
+            "%",
+            radius.map(|r| 100.0 * (r - expected_radius) / expected_radius),
+        ),
+        Metric::maybe(
+            "circle_fit_rms_m",
+            "circle fit RMS residual",
+            "m",
+            fit.map(|c| c.rms_residual),
+        ),
+    ];
+    Ok(rig.finish(Scenario::Circle, metrics))
+}
+
+/// Pure-pursuit steering (rad, Webots sign: positive = right) that takes the rear-axle centre
+/// at `(x, y)` with heading `yaw` (track frame) towards the point `lookahead` metres ahead on
+/// the reference path of a track entered at `entry` (track x).
+fn pure_pursuit(x: f64, y: f64, yaw: f64, lookahead: f64, entry: f64, wheelbase: f64) -> f64 {
+    let target_x = x + lookahead;
+    let target_y = reference_y(target_x - entry, LANE_OFFSET);
+    let alpha = (target_y - y).atan2(target_x - x) - yaw;
+    let distance = (target_x - x).hypot(target_y - y);
+    -(2.0 * wheelbase * alpha.sin() / distance).atan()
+}
+
+fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult, ScenarioError> {
+    let p = rig.driver()?.params();
+    let wheelbase = p.wheelbase;
+    let width = p.track_front.max(p.track_rear)
+        + Wheel::ALL
+            .iter()
+            .map(|&w| p.wheels[w].thickness)
+            .fold(0.0, f64::max);
+    let gates = double_lane_change(width, LANE_OFFSET);
+    // The track frame: origin at the start, x along the starting heading.
+    let origin = rig.state().position;
+    let rig_yaw0 = rig.yaw();
+    let (s, c) = (-rig_yaw0).sin_cos();
+    let to_track = |p: [f64; 3]| {
+        let (dx, dy) = (p[0] - origin[0], p[1] - origin[1]);
+        [c * dx - s * dy, s * dx + c * dy]
+    };
+    let v = LANE_CHANGE_SPEED_KMH / KMH;
+    let lookahead = (0.6 * v).clamp(4.0, 15.0);
+    rig.driver_mut()?.set_cruising_speed(LANE_CHANGE_SPEED_KMH);
+    // Run-in: the track starts 20 m after the speed has settled.
+    let mut entry: Option<f64> = None;
+    let mut max_lateral: f64 = 0.0;
+    let mut max_excursion: f64 = 0.0;
+    let mut max_steering: f64 = 0.0;
+    let window = (ACCEL_WINDOW / rig.time_step()).round().max(1.0) as usize;
+    let mut recent: Vec<f64> = Vec::with_capacity(window);
+    while rig.running() {
+        let [x, y] = to_track(rig.state().position);
+        let yaw = rig.yaw() + s.atan2(c);
+        let steering = pure_pursuit(
+            x,
+            y,
+            yaw,
+            lookahead,
+            entry.unwrap_or(f64::INFINITY),
+            wheelbase,
+        );
+        rig.driver_mut()?.set_steering_angle(steering);
+        rig.step(progress)?;
+        let [x, y] = to_track(rig.state().position);
+        let yaw = rig.yaw() + s.atan2(c);
+        match entry {
+            None => {
+                if steady(&rig, v) {
+                    entry = Some(x + 20.0);
+                }
+            }
+            Some(e) if x >= e => {
+                if recent.len() == window {
+                    recent.remove(0);
+                }
+                recent.push(rig.state().lateral_acceleration);
+                let mean = recent.iter().sum::<f64>() / recent.len() as f64;
+                max_lateral = max_lateral.max(mean.abs());
+                max_steering = max_steering.max(rig.driver()?.commanded_steering_angle().abs());
+                // The footprint's corners: rear and front axle, ± half the width.
+                let (sy, cy) = yaw.sin_cos();
+                for axle in [0.0, wheelbase] {
+                    for side in [-0.5 * width, 0.5 * width] {
+                        let cx = x + axle * cy - side * sy - e;
+                        let cyy = y + axle * sy + side * cy;
+                        for g in &gates {
+                            max_excursion = max_excursion.max(g.excursion(cx, cyy));
+                        }
+                    }
+                }
+                if x >= e + TRACK_LENGTH + 10.0 {
+                    break;
+                }
+            }
+            Some(_) => {}
+        }
+    }
+    if let Some(e) = entry {
+        // The cone lines, back in the world frame.
+        let (sw, cw) = rig_yaw0.sin_cos();
+        let to_world = |x: f64, y: f64| {
+            [
+                origin[0] + cw * (x + e) - sw * y,
+                origin[1] + sw * (x + e) + cw * y,
+            ]
+        };
+        for g in &gates {
+            for side in [-0.5, 0.5] {
+                let y = g.center + side * g.width;
+                rig.guide(vec![to_world(g.start, y), to_world(g.end, y)]);
+            }
+        }
+    }
+    let completed = entry.is_some_and(|e| to_track(rig.state().position)[0] >= e + TRACK_LENGTH);
+    if !completed {
+        rig.note(
+            "the car did not complete the lane-change track within the time limit".to_string(),
+        );
+    }
+    let metrics = vec![
+        Metric::maybe(
+            "max_lateral_accel_mps2",
+            "peak lateral acceleration (0.1 s mean)",
+            "m/s^2",
+            completed.then_some(max_lateral),
+        ),
+        Metric::flag(
+            "left_track",
+            "left the lanes",
+            !completed || max_excursion > 0.0,
+        ),
+        Metric::maybe(
+            "max_lane_excursion_m",
+            "largest excursion past the cones",
+            "m",
+            completed.then_some(max_excursion),
+        ),
+        Metric::maybe(
+            "max_steering_rad",
+            "largest steering angle",
+            "rad",
+            completed.then_some(max_steering),
+        ),
+    ];
+    Ok(rig.finish(Scenario::LaneChange, metrics))
+}

@@ -1,0 +1,162 @@
+//! A world plus one Webots driver library per car, stepped like a Webots controller calling
+//! `wbu_driver_step()`.
+
+use vehicle_model::{CarParams, ControlMode, Driver, Gear, ParamReport, Sensors};
+
+use crate::error::SimError;
+use crate::vehicle::{VehicleId, VehiclePlacement, VehicleSpec, VehicleState};
+use crate::world::World;
+
+/// One car's driver and whether it has had its first step.
+struct Controlled {
+    id: VehicleId,
+    driver: Driver<f64>,
+    sampled: bool,
+}
+
+/// What a data logger records of a driven car at one instant.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CarTelemetry {
+    /// Simulated time (s).
+    pub time: f64,
+    /// The physical state measured on the bodies (pose, velocities, wheels, steering).
+    pub state: VehicleState,
+    /// Chassis speed (m/s, signed, positive forward), from the rigid body: not the driver's
+    /// wheel-based estimate.
+    pub speed: f64,
+    /// The driver library's own speed estimate from the driven wheels (km/h; NaN during its
+    /// first two steps). Webots: `wbu_driver_get_current_speed`.
+    pub estimated_speed_kmh: f64,
+    /// Engine speed (rpm) in torque mode, `None` in the other modes (Webots warns there).
+    pub rpm: Option<f64>,
+    /// Engaged gear in torque mode, `None` in the other modes.
+    pub gear: Option<Gear>,
+    /// The control mode.
+    pub control_mode: ControlMode,
+    /// Throttle (0 to 1).
+    pub throttle: f64,
+    /// Brake intensity (0 to 1).
+    pub brake: f64,
+}
+
+/// A [`World`] whose cars are each driven by a `vehicle_model::Driver<f64>`.
+///
+/// [`Simulation::step`] does what `wbu_driver_step()` does in a Webots controller: each driver
+/// steps with the sensor readings at the current time `t` (the state after the previous
+/// physics step; unsampled, i.e. NaN, at a car's first step), its commands are applied, then
+/// the world advances by one `basicTimeStep`.
+///
+/// ```
+/// use sim::{Simulation, VehiclePlacement, World, WorldConfig};
+/// use vehicle_model::Model;
+/// let mut sim = Simulation::new(World::new(WorldConfig::default())?);
+/// let (id, report) = sim.add_car(Model::BmwX5.params(), VehiclePlacement::default())?;
+/// assert!(report.is_empty());
+/// sim.driver_mut(id)?.set_cruising_speed(20.0); // km/h, as in Webots
+/// for _ in 0..100 {
+///     sim.step()?;
+/// }
+/// assert!(sim.telemetry(id)?.speed > 0.5); // m/s after 1 s
+/// # Ok::<(), sim::SimError>(())
+/// ```
+pub struct Simulation {
+    world: World,
+    cars: Vec<Controlled>,
+}
+
+impl Simulation {
+    /// A simulation of `world` (which may already hold cars and robots; only cars added with
+    /// [`Simulation::add_car`] have a driver).
+    pub fn new(world: World) -> Self {
+        Simulation {
+            world,
+            cars: Vec::new(),
+        }
+    }
+
+    /// Validates `params` (invalid fields take their Webots default and are reported, as
+    /// `Driver::new` does), builds the car at `placement` and gives it a driver running at the
+    /// world's `basicTimeStep`.
+    pub fn add_car(
+        &mut self,
+        params: CarParams<f64>,
+        placement: VehiclePlacement,
+    ) -> Result<(VehicleId, ParamReport), SimError> {
+        let (driver, report) = Driver::new(params, self.world.config().basic_time_step_ms);
+        let spec = VehicleSpec::from_car(driver.params())?;
+        let id = self.world.add_vehicle(spec, placement)?;
+        self.cars.push(Controlled {
+            id,
+            driver,
+            sampled: false,
+        });
+        Ok((id, report))
+    }
+
+    fn car(&self, id: VehicleId) -> Result<&Controlled, SimError> {
+        self.cars
+            .iter()
+            .find(|c| c.id == id)
+            .ok_or(SimError::UnknownVehicle(id.index()))
+    }
+
+    /// The driver of car `id`.
+    pub fn driver(&self, id: VehicleId) -> Result<&Driver<f64>, SimError> {
+        self.car(id).map(|c| &c.driver)
+    }
+
+    /// The driver of car `id`, to set throttle, steering, gear… (Webots: `wbu_driver_set_*`).
+    pub fn driver_mut(&mut self, id: VehicleId) -> Result<&mut Driver<f64>, SimError> {
+        self.cars
+            .iter_mut()
+            .find(|c| c.id == id)
+            .map(|c| &mut c.driver)
+            .ok_or(SimError::UnknownVehicle(id.index()))
+    }
+
+    /// The world.
+    pub fn world(&self) -> &World {
+        &self.world
+    }
+
+    /// The world, e.g. to command DifferentialWheels robots or cars without a driver.
+    pub fn world_mut(&mut self) -> &mut World {
+        &mut self.world
+    }
+
+    /// Runs every driver with the current sensor readings, applies their commands and advances
+    /// the world by one `basicTimeStep`.
+    pub fn step(&mut self) -> Result<(), SimError> {
+        let t = self.world.time();
+        for car in &mut self.cars {
+            let sensors = if car.sampled {
+                self.world.vehicle(car.id)?.sensors(t)
+            } else {
+                // Webots sensors deliver their first sample after the first step.
+                Sensors::unsampled(t)
+            };
+            car.sampled = true;
+            let commands = *car.driver.step(&sensors);
+            self.world.vehicle_mut(car.id)?.set_commands(&commands);
+        }
+        self.world.step()
+    }
+
+    /// The telemetry of car `id` after the last step.
+    pub fn telemetry(&self, id: VehicleId) -> Result<CarTelemetry, SimError> {
+        let driver = &self.car(id)?.driver;
+        let state = *self.world.vehicle(id)?.state();
+        let torque = driver.control_mode() == ControlMode::Torque;
+        Ok(CarTelemetry {
+            time: self.world.time(),
+            state,
+            speed: state.forward_speed,
+            estimated_speed_kmh: driver.current_speed(),
+            rpm: if torque { driver.rpm().ok() } else { None },
+            gear: if torque { driver.gear().ok() } else { None },
+            control_mode: driver.control_mode(),
+            throttle: driver.throttle(),
+            brake: driver.brake_intensity(),
+        })
+    }
+}

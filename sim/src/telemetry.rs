@@ -1,0 +1,123 @@
+//! Per-step telemetry of a scenario run and its CSV form.
+
+use std::fmt::Write as _;
+
+/// One sample, taken after a world step. Car-only quantities are `None` for a
+/// DifferentialWheels robot, and `rpm`/`gear` are `None` in speed (cruise-control) mode,
+/// where Webots has no engine model.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Sample {
+    /// Time since the scenario started (s).
+    pub time: f64,
+    /// Position of the vehicle origin (rear-axle centre, or the robot's axle midpoint), m.
+    pub x: f64,
+    /// Position of the vehicle origin, m.
+    pub y: f64,
+    /// Heading (rad, counter-clockwise about +z).
+    pub yaw: f64,
+    /// Speed of the vehicle origin along its heading, measured on the body (km/h).
+    pub speed_kmh: f64,
+    /// The driver library's speed estimate from the wheel encoders (km/h; Webots:
+    /// `wbu_driver_get_current_speed`).
+    pub driver_speed_kmh: Option<f64>,
+    /// Engine speed (rpm; Webots: `wbu_driver_get_rpm`).
+    pub rpm: Option<f64>,
+    /// Engaged gear (−1 reverse, 0 neutral, 1… forward; Webots: `wbu_driver_get_gear`).
+    pub gear: Option<i32>,
+    /// Commanded central steering angle (rad, positive = right).
+    pub steering_command: Option<f64>,
+    /// Measured steering angle, the mean of both front wheels (rad, positive = right).
+    pub steering: Option<f64>,
+    /// Throttle (dimensionless, [0, 1]).
+    pub throttle: Option<f64>,
+    /// Brake intensity (dimensionless, [0, 1]).
+    pub brake: Option<f64>,
+    /// Lateral acceleration of the body (m/s², positive to the left).
+    pub lateral_accel: Option<f64>,
+    /// Longitudinal acceleration of the body (m/s², positive forward).
+    pub longitudinal_accel: Option<f64>,
+}
+
+/// The CSV header written by [`write_csv`].
+pub const CSV_HEADER: &str = "scenario,time_s,x_m,y_m,yaw_rad,speed_kmh,driver_speed_kmh,rpm,gear,\
+steering_command_rad,steering_rad,throttle,brake,lateral_accel_mps2,longitudinal_accel_mps2";
+
+/// A scenario's samples, in time order.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Telemetry {
+    /// Name of the scenario that produced them.
+    pub scenario: String,
+    /// The samples.
+    pub samples: Vec<Sample>,
+}
+
+fn cell(out: &mut String, v: Option<f64>) {
+    out.push(',');
+    if let Some(v) = v.filter(|v| v.is_finite()) {
+        // Six significant decimals are below any quantity's measurement noise here.
+        let _ = write!(out, "{}", (v * 1e6).round() / 1e6);
+    }
+}
+
+/// Writes `runs` as one CSV table (header [`CSV_HEADER`]), one row per sample, the scenario
+/// name in the first column. Missing values are empty cells.
+pub fn write_csv<'a>(runs: impl IntoIterator<Item = &'a Telemetry>) -> String {
+    let mut out = String::from(CSV_HEADER);
+    out.push('\n');
+    for run in runs {
+        for s in &run.samples {
+            out.push_str(&run.scenario);
+            for v in [
+                Some(s.time),
+                Some(s.x),
+                Some(s.y),
+                Some(s.yaw),
+                Some(s.speed_kmh),
+            ] {
+                cell(&mut out, v);
+            }
+            cell(&mut out, s.driver_speed_kmh);
+            cell(&mut out, s.rpm);
+            cell(&mut out, s.gear.map(f64::from));
+            for v in [
+                s.steering_command,
+                s.steering,
+                s.throttle,
+                s.brake,
+                s.lateral_accel,
+                s.longitudinal_accel,
+            ] {
+                cell(&mut out, v);
+            }
+            out.push('\n');
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn csv_rows_and_blank_cells() {
+        let t = Telemetry {
+            scenario: "brake".into(),
+            samples: vec![Sample {
+                time: 0.01,
+                x: 1.0 / 3.0,
+                speed_kmh: 100.0,
+                gear: Some(2),
+                rpm: Some(f64::NAN),
+                ..Sample::default()
+            }],
+        };
+        let csv = write_csv([&t]);
+        let mut lines = csv.lines();
+        assert_eq!(lines.next(), Some(CSV_HEADER));
+        let row = lines.next().unwrap();
+        assert_eq!(row, "brake,0.01,0.333333,0,0,100,,,2,,,,,,");
+        assert_eq!(row.split(',').count(), CSV_HEADER.split(',').count());
+        assert_eq!(lines.next(), None);
+    }
+}

@@ -1,0 +1,243 @@
+//! The physical description of a car as the simulator builds it: resolved masses, positions and
+//! joint constants in f64 SI units.
+
+use ackermann::{PerWheel, Wheel};
+use proto_geom::{VehicleDimensions, VehicleLayout};
+use vehicle_model::CarParams;
+
+use crate::error::ParamError;
+
+/// Mass properties and collision box of the car body (without wheels), in the car frame
+/// (x forward, y left, z up, origin at the rear-axle centre at wheel-centre height).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ChassisSpec {
+    /// Body mass (kg, > 0). Webots: `Physics.mass` of the Car.
+    pub mass: f64,
+    /// Centre of mass (m). Webots: `Physics.centerOfMass`.
+    pub center_of_mass: [f64; 3],
+    /// Inertia about the centre of mass, `[Ixx, Iyy, Izz, Ixy, Ixz, Iyz]` (kg·m²), the entries
+    /// of the symmetric tensor. Webots: `Physics.inertiaMatrix`.
+    pub inertia: [f64; 6],
+    /// Centre of the chassis collision box (m).
+    pub box_center: [f64; 3],
+    /// Half lengths of the chassis collision box (m, > 0).
+    pub box_half_extents: [f64; 3],
+}
+
+/// One wheel: where its centre is and what it is made of.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WheelSpec {
+    /// Wheel centre in the car frame at rest with unloaded springs (m): `(L, ∓Tf/2, 0)` for
+    /// the front wheels, `(0, ∓Tr/2, 0)` for the rear ones.
+    pub position: [f64; 3],
+    /// Tyre radius (m, > 0). Webots: `VehicleWheel.tireRadius`.
+    pub radius: f64,
+    /// Tyre width (m, > 0): the cylinder's length along the spin axis. Webots:
+    /// `VehicleWheel.thickness`.
+    pub width: f64,
+    /// Wheel mass (kg, > 0); its spin inertia is that of a solid cylinder, `m·r²/2`.
+    pub mass: f64,
+}
+
+/// A linear spring-damper (Webots suspension of an `AckermannVehicle` axle).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpringDamper {
+    /// Spring constant (N/m, > 0). Webots: `suspension…SpringConstant`.
+    pub stiffness: f64,
+    /// Damping constant (N·s/m, ≥ 0). Webots: `suspension…DampingConstant`.
+    pub damping: f64,
+}
+
+/// The front steering motors (Webots `right_steer`, `left_steer`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SteeringSpec {
+    /// Lowest steering angle (rad, ≤ 0 normally; negative = left). Webots: `minSteeringAngle`.
+    pub min_angle: f64,
+    /// Highest steering angle (rad; positive = right). Webots: `maxSteeringAngle`.
+    pub max_angle: f64,
+    /// Torque of each steering motor (N·m, ≥ 0). Webots: `maxSteeringTorque`.
+    pub max_torque: f64,
+}
+
+/// Everything the simulator needs to build one car.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct VehicleSpec {
+    /// The body.
+    pub chassis: ChassisSpec,
+    /// The four wheels, in Webots order FR, FL, RR, RL.
+    pub wheels: PerWheel<WheelSpec>,
+    /// Front suspension (both front wheels).
+    pub front_suspension: SpringDamper,
+    /// Rear suspension (both rear wheels).
+    pub rear_suspension: SpringDamper,
+    /// Steering motors.
+    pub steering: SteeringSpec,
+    /// Viscous damping of each wheel's spin joint (N·m·s/rad, ≥ 0). Webots:
+    /// `wheelsDampingConstant`.
+    pub wheels_damping: f64,
+    /// Range of the kinematic wiper joint `[parked, fully swept]` (rad); `None` = no wipers.
+    pub wiper_range: Option<[f64; 2]>,
+}
+
+/// Mass of the steering knuckle that carries a front wheel, as a fraction of that wheel's mass.
+///
+/// Webots' `Hinge2Joint` has two axes on one joint; rapier's generic joint cannot free two
+/// angular axes in sequence, so a small intermediate body carries the steering axis. Its mass
+/// is taken from the chassis so the car's total mass is unchanged.
+pub(crate) const KNUCKLE_MASS_FRACTION: f64 = 0.25;
+
+impl VehicleSpec {
+    /// Checks every field: positive masses, lengths and spring constants, a physical inertia
+    /// tensor, finite positions, `min_angle ≤ max_angle`, and a chassis heavy enough to give
+    /// the knuckles their mass.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        let c = &self.chassis;
+        ParamError::positive("physics.mass", c.mass)?;
+        for v in c.center_of_mass {
+            ParamError::finite("physics.centerOfMass", v)?;
+        }
+        for v in c.box_center {
+            ParamError::finite("chassis.box_center", v)?;
+        }
+        for v in c.box_half_extents {
+            ParamError::positive("chassis.box_half_extents", v)?;
+        }
+        let [xx, yy, zz, xy, xz, yz] = c.inertia;
+        let det = xx * (yy * zz - yz * yz) - xy * (xy * zz - yz * xz) + xz * (xy * yz - yy * xz);
+        ParamError::check(
+            "physics.inertiaMatrix",
+            det,
+            "a finite positive-definite tensor (determinant shown)",
+            |d| {
+                c.inertia.iter().all(|v| v.is_finite())
+                    && xx > 0.0
+                    && xx * yy - xy * xy > 0.0
+                    && d > 0.0
+            },
+        )?;
+        for w in Wheel::ALL {
+            let s = &self.wheels[w];
+            for v in s.position {
+                ParamError::finite("wheel.position", v)?;
+            }
+            ParamError::positive("tireRadius", s.radius)?;
+            ParamError::positive("thickness", s.width)?;
+            ParamError::positive("wheel.mass", s.mass)?;
+        }
+        for (k, c) in [
+            (
+                "suspensionFrontSpringConstant",
+                self.front_suspension.stiffness,
+            ),
+            (
+                "suspensionRearSpringConstant",
+                self.rear_suspension.stiffness,
+            ),
+        ] {
+            ParamError::positive(k, c)?;
+        }
+        ParamError::non_negative(
+            "suspensionFrontDampingConstant",
+            self.front_suspension.damping,
+        )?;
+        ParamError::non_negative(
+            "suspensionRearDampingConstant",
+            self.rear_suspension.damping,
+        )?;
+        ParamError::finite("minSteeringAngle", self.steering.min_angle)?;
+        ParamError::check(
+            "maxSteeringAngle",
+            self.steering.max_angle,
+            "finite and >= minSteeringAngle",
+            |v| v.is_finite() && v >= self.steering.min_angle,
+        )?;
+        ParamError::non_negative("maxSteeringTorque", self.steering.max_torque)?;
+        ParamError::non_negative("wheelsDampingConstant", self.wheels_damping)?;
+        if let Some([lo, hi]) = self.wiper_range {
+            ParamError::finite("wiper.min", lo)?;
+            ParamError::check("wiper.max", hi, "finite and > wiper.min", |v| {
+                v.is_finite() && v > lo
+            })?;
+        }
+        let knuckles = 2.0
+            * KNUCKLE_MASS_FRACTION
+            * self.wheels[Wheel::FrontRight]
+                .mass
+                .max(self.wheels[Wheel::FrontLeft].mass);
+        ParamError::check(
+            "physics.mass",
+            c.mass,
+            "more than twice the steering-knuckle mass (half a front wheel)",
+            |m| m > 2.0 * knuckles,
+        )?;
+        Ok(())
+    }
+}
+
+impl VehicleSpec {
+    /// The physical description of a car from its (validated) parameters: the proto-geom
+    /// wheel layout, the tyre radius, width and mass of each `VehicleWheel` (a wheel without
+    /// mass of its own gets the Webots default `Physics {}`: 1000 kg/m³ over its bounding
+    /// cylinder), the body's mass properties, the suspension, steering and damping fields and
+    /// the wipers.
+    ///
+    /// The chassis collision box spans the wheelbase plus one tyre radius at each end, the
+    /// wider track, and from wheel-centre height up to `0.75·track` (the proportions
+    /// `vehicle-model` uses for a body without inertia data)..
+    pub fn from_car(params: &CarParams<f64>) -> Result<VehicleSpec, ParamError> {
+        let dims = VehicleDimensions {
+            wheelbase: params.wheelbase,
+            track_front: params.track_front,
+            track_rear: params.track_rear,
+        };
+        let (layout, _) = VehicleLayout::new(dims, params.wheels);
+        let wheels = PerWheel::from_fn(|w| {
+            let valid = layout.wheel(w);
+            let p = valid.params();
+            let c = layout.frame(w).centre();
+            let mass = valid.mass().unwrap_or(
+                1000.0 * core::f64::consts::PI * p.tire_radius * p.tire_radius * p.thickness,
+            );
+            WheelSpec {
+                position: [c.x, c.y, c.z],
+                radius: p.tire_radius,
+                width: p.thickness,
+                mass,
+            }
+        });
+        let (rf, rr) = (
+            wheels[Wheel::FrontRight].radius,
+            wheels[Wheel::RearRight].radius,
+        );
+        let l = params.wheelbase;
+        let track = params.track_front.max(params.track_rear);
+        let height = 0.75 * track;
+        let spec = VehicleSpec {
+            chassis: ChassisSpec {
+                mass: params.body.mass,
+                center_of_mass: params.body.center_of_mass,
+                inertia: params.body_inertia(),
+                box_center: [(l + rf - rr) / 2.0, 0.0, height / 2.0],
+                box_half_extents: [(l + rf + rr) / 2.0, track / 2.0, height / 2.0],
+            },
+            wheels,
+            front_suspension: SpringDamper {
+                stiffness: params.suspension_front_spring_constant,
+                damping: params.suspension_front_damping_constant,
+            },
+            rear_suspension: SpringDamper {
+                stiffness: params.suspension_rear_spring_constant,
+                damping: params.suspension_rear_damping_constant,
+            },
+            steering: SteeringSpec {
+                min_angle: params.min_steering_angle,
+                max_angle: params.max_steering_angle,
+                max_torque: params.max_steering_torque,
+            },
+            wheels_damping: params.wheels_damping_constant,
+            wiper_range: params.wipers.map(|r| [r.min, r.max]),
+        };
+        spec.validate()?;
+        Ok(spec)
+    }
+}

@@ -1,0 +1,154 @@
+//! `[differential_wheels]`: the legacy Webots robot, its mode, noise seed and placement.
+
+use crate::diff_wheels::{DifferentialWheelsParams, RobotBody, RobotMode, RobotPlacement};
+
+use super::error::{WorldFileError, WorldFileErrorKind};
+use super::read::Section;
+use super::statics::yaw_of;
+
+/// The `DifferentialWheels` node fields, by their Webots names.
+pub(crate) const NODE_FIELDS: [&str; 10] = [
+    "motorConsumption",
+    "axleLength",
+    "wheelRadius",
+    "maxSpeed",
+    "maxAcceleration",
+    "speedUnit",
+    "slipNoise",
+    "encoderNoise",
+    "encoderResolution",
+    "maxForce",
+];
+
+/// Every key of `[differential_wheels]`: the node fields, then the simulator's own.
+pub(crate) const KEYS: [&str; 17] = [
+    "motorConsumption",
+    "axleLength",
+    "wheelRadius",
+    "maxSpeed",
+    "maxAcceleration",
+    "speedUnit",
+    "slipNoise",
+    "encoderNoise",
+    "encoderResolution",
+    "maxForce",
+    "physics",
+    "seed",
+    "translation",
+    "rotation",
+    "bodyMass",
+    "wheelMass",
+    "wheelWidth",
+];
+
+/// A DifferentialWheels robot as a world file describes it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RobotDescription {
+    /// The node fields (validated), including the noise seed.
+    pub params: DifferentialWheelsParams,
+    /// Kinematics, or physics with the body's masses.
+    pub mode: RobotMode,
+    /// Where the robot starts.
+    pub placement: RobotPlacement,
+}
+
+impl Default for RobotDescription {
+    /// The Webots defaults in kinematics mode, at the origin facing +x.
+    fn default() -> Self {
+        RobotDescription {
+            params: DifferentialWheelsParams::default(),
+            mode: RobotMode::Kinematics,
+            placement: RobotPlacement::default(),
+        }
+    }
+}
+
+/// Reads `[differential_wheels]`.
+pub(crate) fn read_robot(s: &Section<'_, '_>) -> Result<RobotDescription, WorldFileError> {
+    s.check_keys(&KEYS)?;
+    let mut p = DifferentialWheelsParams::default();
+    for key in NODE_FIELDS {
+        if let Some(v) = s.number(key)? {
+            *field_mut(&mut p, key) = v;
+        }
+    }
+    if let Some(seed) = s.unsigned("seed")? {
+        p.seed = seed;
+    }
+    p.validate().map_err(|e| {
+        s.error(
+            e.field,
+            WorldFileErrorKind::InvalidValue(format!("{}: must be {}", e.value, e.rule)),
+        )
+    })?;
+
+    let physics = s.boolean("physics")?.unwrap_or(false);
+    let mode = if physics {
+        let mut body = RobotBody::default();
+        for (key, slot) in [
+            ("bodyMass", &mut body.body_mass),
+            ("wheelMass", &mut body.wheel_mass),
+            ("wheelWidth", &mut body.wheel_width),
+        ] {
+            if let Some(v) = s.number(key)? {
+                if !(v.is_finite() && v > 0.0) {
+                    return Err(s.error(
+                        key,
+                        WorldFileErrorKind::InvalidValue(format!("{v}: must be finite and > 0")),
+                    ));
+                }
+                *slot = v;
+            }
+        }
+        RobotMode::Physics(body)
+    } else {
+        if let Some(key) = ["bodyMass", "wheelMass", "wheelWidth"]
+            .into_iter()
+            .find(|k| s.key_span(k).is_some())
+        {
+            return Err(s.error(
+                key,
+                WorldFileErrorKind::Structure(format!(
+                    "'{}' only applies with physics = true",
+                    s.key_path(key)
+                )),
+            ));
+        }
+        RobotMode::Kinematics
+    };
+
+    let [x, y, z] = s.array::<3>("translation")?.unwrap_or([0.0; 3]);
+    if let Some(bad) = [x, y, z].into_iter().find(|v| !v.is_finite()) {
+        return Err(s.error(
+            "translation",
+            WorldFileErrorKind::InvalidValue(format!("{bad}: every coordinate must be finite")),
+        ));
+    }
+    let placement = RobotPlacement {
+        x,
+        y,
+        z,
+        heading: yaw_of(s)?,
+    };
+    Ok(RobotDescription {
+        params: p,
+        mode,
+        placement,
+    })
+}
+
+/// The field of `p` with Webots name `key` (one of [`NODE_FIELDS`]).
+fn field_mut<'p>(p: &'p mut DifferentialWheelsParams, key: &str) -> &'p mut f64 {
+    match key {
+        "motorConsumption" => &mut p.motor_consumption,
+        "axleLength" => &mut p.axle_length,
+        "wheelRadius" => &mut p.wheel_radius,
+        "maxSpeed" => &mut p.max_speed,
+        "maxAcceleration" => &mut p.max_acceleration,
+        "speedUnit" => &mut p.speed_unit,
+        "slipNoise" => &mut p.slip_noise,
+        "encoderNoise" => &mut p.encoder_noise,
+        "encoderResolution" => &mut p.encoder_resolution,
+        _ => &mut p.max_force,
+    }
+}

@@ -1,0 +1,168 @@
+//! The world itself: `WorldInfo`-like top-level keys, `[ground]`, `[[box]]` and `[[ramp]]`.
+
+use crate::config::{Obstacle, WorldConfig};
+
+use super::error::{WorldFileError, WorldFileErrorKind};
+use super::read::Section;
+
+/// Keys of `[ground]`.
+pub(crate) const GROUND_KEYS: [&str; 1] = ["friction"];
+/// Keys of each `[[box]]`.
+pub(crate) const BOX_KEYS: [&str; 4] = ["translation", "size", "rotation", "friction"];
+/// Keys of each `[[ramp]]`.
+pub(crate) const RAMP_KEYS: [&str; 6] =
+    ["start", "rotation", "length", "width", "height", "friction"];
+
+/// Reads `basicTimeStep`, `gravity`, `[ground]`, `[[box]]` and `[[ramp]]` into a validated
+/// [`WorldConfig`]; absent keys keep the defaults of [`WorldConfig::default`].
+pub(crate) fn read_world(root: &Section<'_, '_>) -> Result<WorldConfig, WorldFileError> {
+    let mut config = WorldConfig::default();
+    if let Some(ms) = root.number("basicTimeStep")? {
+        config.basic_time_step_ms = whole_ms(ms).ok_or_else(|| {
+            root.error(
+                "basicTimeStep",
+                WorldFileErrorKind::InvalidValue(format!(
+                    "{ms} ms: must be a whole number of milliseconds from 1 to 1000"
+                )),
+            )
+        })?;
+    }
+    if let Some(g) = root.number("gravity")? {
+        if !g.is_finite() {
+            return Err(root.error(
+                "gravity",
+                WorldFileErrorKind::InvalidValue(format!("{g} m/s²: must be finite")),
+            ));
+        }
+        config.gravity = [0.0, 0.0, -g];
+    }
+    if let Some(ground) = root.table("ground")? {
+        ground.check_keys(&GROUND_KEYS)?;
+        if let Some(mu) = ground.number("friction")? {
+            config.ground_friction = mu;
+            located(&ground, "friction", &config)?;
+        }
+    }
+    for b in root.tables("box")? {
+        b.check_keys(&BOX_KEYS)?;
+        let center = required_array::<3>(&b, "translation")?;
+        let size = required_array::<3>(&b, "size")?;
+        let yaw = yaw_of(&b)?;
+        config.obstacles.push(Obstacle::Box {
+            center,
+            half_extents: size.map(|s| s / 2.0),
+            yaw,
+            friction: b.number("friction")?,
+        });
+        validate_last_obstacle(&b, &config)?;
+    }
+    for r in root.tables("ramp")? {
+        r.check_keys(&RAMP_KEYS)?;
+        let start = required_array::<2>(&r, "start")?;
+        let yaw = yaw_of(&r)?;
+        let mut dims = [0.0; 3];
+        for (d, key) in dims.iter_mut().zip(["length", "width", "height"]) {
+            *d = r.number(key)?.ok_or_else(|| missing(&r, key))?;
+        }
+        let [length, width, height] = dims;
+        config.obstacles.push(Obstacle::Ramp {
+            start,
+            yaw,
+            length,
+            width,
+            height,
+            friction: r.number("friction")?,
+        });
+        validate_last_obstacle(&r, &config)?;
+    }
+    config.validate().map_err(|e| {
+        root.src.error(
+            None,
+            Some(e.field.to_string()),
+            WorldFileErrorKind::InvalidValue(e.to_string()),
+        )
+    })?;
+    Ok(config)
+}
+
+/// `ms` as a whole number of milliseconds in 1..=1000.
+fn whole_ms(ms: f64) -> Option<u32> {
+    (ms.fract() == 0.0 && (1.0..=1000.0).contains(&ms)).then_some(ms as u32)
+}
+
+/// Runs the world's validation and, on failure, blames `key` of `section`.
+fn located(
+    section: &Section<'_, '_>,
+    key: &str,
+    config: &WorldConfig,
+) -> Result<(), WorldFileError> {
+    config.validate().map_err(|e| {
+        section.error(
+            key,
+            WorldFileErrorKind::InvalidValue(format!("{}: must be {}", e.value, e.rule)),
+        )
+    })
+}
+
+/// Validates the obstacle just pushed (alone, so an earlier error cannot be blamed on it) and,
+/// on failure, blames the key of `section` that the simulator's field name points to.
+fn validate_last_obstacle(
+    section: &Section<'_, '_>,
+    config: &WorldConfig,
+) -> Result<(), WorldFileError> {
+    let alone = WorldConfig {
+        obstacles: config.obstacles.last().cloned().into_iter().collect(),
+        ..WorldConfig::default()
+    };
+    alone.validate().map_err(|e| {
+        let key = match e.field.rsplit('.').next().unwrap_or("") {
+            "center" => "translation",
+            "half_extents" => "size",
+            "yaw" => "rotation",
+            other => other,
+        };
+        let message = match key {
+            // The simulator checks half sizes; the file gives full sizes.
+            "size" => format!("{} m: every size must be finite and > 0", 2.0 * e.value),
+            _ => format!("{}: must be {}", e.value, e.rule),
+        };
+        section.error(key, WorldFileErrorKind::InvalidValue(message))
+    })
+}
+
+fn missing(section: &Section<'_, '_>, key: &str) -> WorldFileError {
+    section.src.error(
+        section.span(),
+        Some(section.key_path(key)),
+        WorldFileErrorKind::Structure(format!("missing key '{}'", section.key_path(key))),
+    )
+}
+
+fn required_array<const N: usize>(
+    section: &Section<'_, '_>,
+    key: &str,
+) -> Result<[f64; N], WorldFileError> {
+    section
+        .array::<N>(key)?
+        .ok_or_else(|| missing(section, key))
+}
+
+/// The heading (rad) of a Webots `rotation` (axis x, y, z, angle) about the vertical axis;
+/// 0 when absent.
+pub(crate) fn yaw_of(section: &Section<'_, '_>) -> Result<f64, WorldFileError> {
+    let Some([x, y, z, angle]) = section.array::<4>("rotation")? else {
+        return Ok(0.0);
+    };
+    let norm = (x * x + y * y + z * z).sqrt();
+    let vertical = norm.is_finite() && norm > 0.0 && (x * x + y * y).sqrt() <= 1e-9 * norm;
+    if !vertical || !angle.is_finite() {
+        return Err(section.error(
+            "rotation",
+            WorldFileErrorKind::InvalidValue(format!(
+                "[{x}, {y}, {z}, {angle}]: only finite rotations about the vertical axis \
+                 ([0, 0, 1, angle]) are supported here"
+            )),
+        ));
+    }
+    Ok(angle * z.signum())
+}

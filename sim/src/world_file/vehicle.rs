@@ -1,0 +1,289 @@
+//! `[vehicle]`: a car model and overrides of its `Car` / `AckermannVehicle` fields by their
+//! Webots names.
+
+use core::ops::Range;
+
+use toml::de::DeValue;
+use vehicle_model::{
+    CarField, CarParams, FieldError, FieldKind, FieldValue, Model, ParamWarning, Wheel,
+};
+
+use super::error::{WorldFileError, WorldFileErrorKind, WorldWarning, closest};
+use super::read::{Section, as_f64, describe};
+
+/// A car as a world file describes it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CarDescription {
+    /// The model the parameters start from (`model`; the plain `Car` when absent).
+    pub model: Model,
+    /// The model's parameters with the file's overrides, validated: every invalid value was
+    /// replaced by its default and reported in [`WorldDescription::warnings`](
+    /// super::WorldDescription::warnings).
+    pub params: CarParams<f64>,
+}
+
+impl CarDescription {
+    /// The validated parameters of `model` and the messages of its validation (none for the
+    /// shipped models).
+    pub fn of_model(model: Model) -> (Self, Vec<String>) {
+        let (params, report) = model.params::<f64>().validated();
+        let messages = report.iter().map(message).collect();
+        (CarDescription { model, params }, messages)
+    }
+}
+
+/// The text of a validation warning without Webots' `Warning: ` prefix (the caller labels it).
+fn message(w: &ParamWarning) -> String {
+    let text = w.to_string();
+    text.strip_prefix("Warning: ").unwrap_or(&text).to_string()
+}
+
+/// The names of every shipped model, for suggestions.
+pub(crate) fn model_names() -> impl Iterator<Item = &'static str> {
+    Model::ALL.into_iter().map(Model::webots_name)
+}
+
+/// Every key of `[vehicle]` that is not a wheel slot.
+fn top_keys() -> impl Iterator<Item = &'static str> {
+    core::iter::once("model").chain(CarParams::<f64>::FIELD_NAMES)
+}
+
+/// Reads `[vehicle]`, appending the validation warnings to `warnings`.
+pub(crate) fn read_vehicle(
+    s: &Section<'_, '_>,
+    warnings: &mut Vec<WorldWarning>,
+) -> Result<CarDescription, WorldFileError> {
+    let model = match s.string("model")? {
+        None => Model::Car,
+        Some(name) => Model::from_name(name).ok_or_else(|| {
+            s.error(
+                "model",
+                WorldFileErrorKind::UnknownModel {
+                    name: name.to_string(),
+                    suggestions: closest(name, model_names()),
+                },
+            )
+        })?,
+    };
+    let mut params = model.params::<f64>();
+    for (key, value, key_span, _) in s.entries() {
+        if key == "model" {
+            continue;
+        }
+        if CarParams::<f64>::WHEEL_SLOT_NAMES.contains(&key) {
+            if !matches!(value, DeValue::Table(_)) {
+                return Err(s.error_at(
+                    key,
+                    key_span,
+                    WorldFileErrorKind::WrongType {
+                        expected: "a table of VehicleWheel fields".to_string(),
+                        found: describe(value),
+                    },
+                ));
+            }
+            read_wheel_slot(s, key, &mut params)?;
+            continue;
+        }
+        if CarField::from_webots_name(key).is_none() && !is_wheel_path(key) {
+            let candidates: Vec<&str> = top_keys()
+                .chain(CarParams::<f64>::WHEEL_SLOT_NAMES)
+                .collect();
+            return Err(s.error_at(
+                key,
+                key_span,
+                WorldFileErrorKind::UnknownKey {
+                    suggestions: closest(key, candidates),
+                },
+            ));
+        }
+        set(s, key, key, value, key_span, &mut params)?;
+    }
+    let report = params.validate();
+    for w in &report {
+        let (key, span) = match warning_field(w) {
+            Some((slot, Some(field))) => locate_wheel_field(s, slot, field),
+            Some((name, None)) => (Some(s.key_path(name)), s.key_span(name)),
+            None => (None, None),
+        };
+        warnings.push(s.src.warning(span, key, message(w)));
+    }
+    if report.dropped() > 0 {
+        warnings.push(s.src.warning(
+            s.span(),
+            None,
+            format!(
+                "{} more invalid vehicle fields were replaced by their defaults",
+                report.dropped()
+            ),
+        ));
+    }
+    Ok(CarDescription { model, params })
+}
+
+/// True for a quoted key `"<slot>.<field>"` naming a wheel field.
+fn is_wheel_path(key: &str) -> bool {
+    key.split_once('.').is_some_and(|(slot, field)| {
+        CarParams::<f64>::WHEEL_SLOT_NAMES.contains(&slot)
+            && CarParams::<f64>::WHEEL_FIELD_NAMES.contains(&field)
+    })
+}
+
+/// Reads the `VehicleWheel` fields of the sub-table `[vehicle.<slot>]` (or `slot.field = …`).
+fn read_wheel_slot(
+    s: &Section<'_, '_>,
+    slot: &str,
+    params: &mut CarParams<f64>,
+) -> Result<(), WorldFileError> {
+    let Some(t) = s.table(slot)? else {
+        return Ok(());
+    };
+    t.check_keys(&CarParams::<f64>::WHEEL_FIELD_NAMES)?;
+    for (field, value, key_span, _) in t.entries() {
+        set(
+            &t,
+            field,
+            &format!("{slot}.{field}"),
+            value,
+            key_span,
+            params,
+        )?;
+    }
+    Ok(())
+}
+
+/// Sets the field `name` (a Webots name for [`CarParams::set_field`]) from the TOML `value`
+/// found at `key` of `s`.
+fn set(
+    s: &Section<'_, '_>,
+    key: &str,
+    name: &str,
+    value: &DeValue<'_>,
+    key_span: Range<usize>,
+    params: &mut CarParams<f64>,
+) -> Result<(), WorldFileError> {
+    let kind = CarField::from_webots_name(name).map_or(FieldKind::Number, CarField::kind);
+    let wrong = |expected: String| {
+        s.error_at(
+            key,
+            key_span.clone(),
+            WorldFileErrorKind::WrongType {
+                expected,
+                found: describe(value),
+            },
+        )
+    };
+    let numbers: Vec<f64>;
+    let field_value = match (kind, value) {
+        (FieldKind::Number, v) => {
+            FieldValue::Number(as_f64(v).ok_or_else(|| wrong(kind.to_string()))?)
+        }
+        (FieldKind::Numbers { .. }, DeValue::Array(items)) => {
+            numbers = items
+                .iter()
+                .map(|i| as_f64(i.get_ref()))
+                .collect::<Option<Vec<f64>>>()
+                .ok_or_else(|| wrong(kind.to_string()))?;
+            FieldValue::Numbers(&numbers)
+        }
+        (FieldKind::Text, DeValue::String(text)) => FieldValue::Text(text.as_ref()),
+        _ => return Err(wrong(kind.to_string())),
+    };
+    params.set_field(name, field_value).map_err(|e| match e {
+        FieldError::WrongKind { expected, .. } | FieldError::WrongLength { expected, .. } => {
+            wrong(expected.to_string())
+        }
+        FieldError::InvalidText { rule, .. } => s.error_at(
+            key,
+            key_span.clone(),
+            WorldFileErrorKind::InvalidValue(format!("{} {rule}", describe_value(value))),
+        ),
+        FieldError::NotAnInteger { value, .. } => s.error_at(
+            key,
+            key_span.clone(),
+            WorldFileErrorKind::InvalidValue(format!("{value}: must be an integer")),
+        ),
+        _ => s.error_at(
+            key,
+            key_span.clone(),
+            WorldFileErrorKind::UnknownKey {
+                suggestions: Vec::new(),
+            },
+        ),
+    })
+}
+
+/// A short rendering of a string value for messages.
+fn describe_value(v: &DeValue<'_>) -> String {
+    match v {
+        DeValue::String(s) => format!("\"{s}\""),
+        other => describe(other),
+    }
+}
+
+/// What a validation warning is about: a car field `(name, None)`, or a wheel field
+/// `(slot, Some(field))` with the world-file names of the field (`mass` and `density` for
+/// the wheel's `physics`).
+fn warning_field(w: &ParamWarning) -> Option<(&'static str, Option<&'static [&'static str]>)> {
+    match *w {
+        ParamWarning::Value { field, .. }
+        | ParamWarning::Element { field, .. }
+        | ParamWarning::Length { field, .. }
+        | ParamWarning::List { field } => Some((field.webots_name(), None)),
+        ParamWarning::Wheel { slot, warning } => {
+            let names: &'static [&'static str] = match warning.field.webots_name() {
+                "physics" => &["mass", "density"],
+                "subdivision" => &["subdivision"],
+                "edgeSubdivision" => &["edgeSubdivision"],
+                "rimBeamNumber" => &["rimBeamNumber"],
+                "thickness" => &["thickness"],
+                "rimBeamThickness" => &["rimBeamThickness"],
+                "tireRadius" => &["tireRadius"],
+                "curvatureFactor" => &["curvatureFactor"],
+                "rimRadius" => &["rimRadius"],
+                "rimBeamWidth" => &["rimBeamWidth"],
+                "centralInnerRadius" => &["centralInnerRadius"],
+                "centralOuterRadius" => &["centralOuterRadius"],
+                "rimBeamOffset" => &["rimBeamOffset"],
+                _ => &[],
+            };
+            Some((slot_name(slot), Some(names)))
+        }
+        _ => None,
+    }
+}
+
+/// The dotted key and span of the entry that set wheel field `field` (one of its names) of
+/// `slot`: `[vehicle.<slot>]` or `slot.field`, then the same for `wheels` (all four); the
+/// key `vehicle.<slot>` without a span when the file did not set it.
+fn locate_wheel_field(
+    s: &Section<'_, '_>,
+    slot: &str,
+    field: &[&str],
+) -> (Option<String>, Option<Range<usize>>) {
+    for table in [slot, "wheels"] {
+        if let Ok(Some(t)) = s.table(table) {
+            for f in field {
+                if let Some(span) = t.key_span(f) {
+                    return (Some(t.key_path(f)), Some(span));
+                }
+            }
+        }
+        for f in field {
+            let quoted = format!("{table}.{f}");
+            if let Some(span) = s.key_span(&quoted) {
+                return (Some(s.key_path(&quoted)), Some(span));
+            }
+        }
+    }
+    (Some(s.key_path(slot)), None)
+}
+
+/// The Webots field name of a wheel slot.
+fn slot_name(w: Wheel) -> &'static str {
+    match w {
+        Wheel::FrontRight => "wheelFrontRight",
+        Wheel::FrontLeft => "wheelFrontLeft",
+        Wheel::RearRight => "wheelRearRight",
+        Wheel::RearLeft => "wheelRearLeft",
+    }
+}

@@ -1,0 +1,210 @@
+//! The `vehicle-sim` binary: help, usage errors and their exit code, JSON output and the files
+//! it writes. Scenarios are kept short with a world `duration`.
+
+// Helpers outside #[test] functions unwrap too: a failure is a test failure.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn vehicle_sim(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_vehicle-sim"))
+        .args(args)
+        .output()
+        .expect("vehicle-sim runs")
+}
+
+/// A fresh scratch directory for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("vehicle-sim-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+#[test]
+fn help_lists_options_scenarios_and_models() {
+    let out = vehicle_sim(&["--help"]);
+    assert_eq!(out.status.code(), Some(0));
+    let help = text(&out.stdout);
+    for word in [
+        "--world",
+        "--scenario",
+        "--out",
+        "--json",
+        "test-track",
+        "lane-change",
+        "square",
+        "BmwX5",
+    ] {
+        assert!(help.contains(word), "help lacks {word}:\n{help}");
+    }
+}
+
+#[test]
+fn unknown_option_is_a_usage_error() {
+    let out = vehicle_sim(&["--fastest"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    let err = text(&out.stderr);
+    assert!(err.contains("unknown option '--fastest'"), "{err}");
+    assert!(err.contains("--help"), "{err}");
+    assert_eq!(vehicle_sim(&["--scenario", "drift"]).status.code(), Some(2));
+    assert_eq!(vehicle_sim(&["--world"]).status.code(), Some(2));
+}
+
+#[test]
+fn world_errors_exit_1_with_the_location() {
+    let dir = scratch("bad-world");
+    let world = dir.join("w.toml");
+    std::fs::write(&world, "[vehicle]\nmodel = \"BmwX5\"\nmaxVelocty = 30\n").unwrap();
+    let out = vehicle_sim(&[
+        "--world",
+        world.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = text(&out.stderr);
+    assert!(
+        err.contains(&format!(
+            "{}:3:1: unknown key 'vehicle.maxVelocty'; did you mean 'maxVelocity'?",
+            world.display()
+        )),
+        "{err}"
+    );
+    let out = vehicle_sim(&["--world", "DifferentialWheels"]);
+    assert_eq!(out.status.code(), Some(1));
+    // A car scenario on a robot world.
+    let robot = dir.join("r.toml");
+    std::fs::write(&robot, "[differential_wheels]\n").unwrap();
+    let out = vehicle_sim(&["--world", robot.to_str().unwrap(), "--scenario", "brake"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(text(&out.stderr).contains("needs a car"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+fn json_of(out: &Output) -> serde_json::Value {
+    assert_eq!(out.status.code(), Some(0), "stderr: {}", text(&out.stderr));
+    serde_json::from_slice(&out.stdout).unwrap_or_else(|e| panic!("{e}: {}", text(&out.stdout)))
+}
+
+fn assert_files(dir: &Path, names: &[&str]) {
+    for n in names {
+        let p = dir.join(n);
+        let len = std::fs::metadata(&p).map(|m| m.len()).unwrap_or(0);
+        assert!(len > 0, "{} missing or empty", p.display());
+    }
+}
+
+#[test]
+fn json_metrics_of_a_short_car_run() {
+    let dir = scratch("json-car");
+    let world = dir.join("short.toml");
+    // One simulated second: the car cannot reach 100 km/h, so the time is null.
+    std::fs::write(&world, "duration = 1.0\n[vehicle]\nmodel = \"BmwX5\"\n").unwrap();
+    let out_dir = dir.join("out");
+    let out = vehicle_sim(&[
+        "--world",
+        world.to_str().unwrap(),
+        "--scenario",
+        "accel-speed",
+        "--json",
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    let j = json_of(&out);
+    assert_eq!(j["vehicle"], "BmwX5");
+    assert_eq!(j["scenario"], "accel-speed");
+    for key in ["sim_seconds", "wall_seconds", "realtime_factor"] {
+        assert!(j[key].is_number(), "{key}: {j}");
+    }
+    assert!(
+        (j["sim_seconds"].as_f64().unwrap() - 1.0).abs() < 1e-9,
+        "{j}"
+    );
+    let m = &j["scenarios"]["accel-speed"];
+    assert!(m["time_0_100_s"].is_null(), "{m}");
+    assert_eq!(m["time_0_100_nominal_s"], 7.0);
+    assert!(m["max_speed_kmh"].as_f64().unwrap() > 5.0, "{m}");
+    assert_files(
+        &out_dir,
+        &[
+            "telemetry.csv",
+            "metrics.json",
+            "speed.svg",
+            "trajectory.svg",
+        ],
+    );
+    let csv = std::fs::read_to_string(out_dir.join("telemetry.csv")).unwrap();
+    // Header plus one row per 10 ms step.
+    assert_eq!(csv.lines().count(), 1 + 100);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn json_metrics_of_a_robot_run_and_the_table() {
+    let dir = scratch("json-robot");
+    let world = dir.join("robot.toml");
+    std::fs::write(
+        &world,
+        "basicTimeStep = 16\n[differential_wheels]\nslipNoise = 0\naxleLength = 0.1\nwheelRadius = 0.05\n",
+    )
+    .unwrap();
+    let out_dir = dir.join("out");
+    let args = |json: bool| {
+        let mut a = vec![
+            "--world",
+            world.to_str().unwrap(),
+            "--scenario",
+            "spin",
+            "--out",
+            out_dir.to_str().unwrap(),
+        ];
+        if json {
+            a.push("--json");
+        }
+        a.into_iter().map(String::from).collect::<Vec<_>>()
+    };
+    let out = Command::new(env!("CARGO_BIN_EXE_vehicle-sim"))
+        .args(args(true))
+        .output()
+        .unwrap();
+    let j = json_of(&out);
+    let m = &j["scenarios"]["spin"];
+    for key in [
+        "turns",
+        "turns_expected",
+        "position_drift_m",
+        "final_x_m",
+        "final_y_m",
+        "final_heading_rad",
+    ] {
+        assert!(m[key].is_number(), "{key}: {m}");
+    }
+    // No noise: the robot turns on the spot as the kinematics predict.
+    let (turns, expected) = (
+        m["turns"].as_f64().unwrap(),
+        m["turns_expected"].as_f64().unwrap(),
+    );
+    assert!(
+        (turns - expected).abs() < 0.01 * expected,
+        "{turns} vs {expected}"
+    );
+    assert!(m["position_drift_m"].as_f64().unwrap() < 1e-6);
+    // Without --json: the summary table.
+    let out = Command::new(env!("CARGO_BIN_EXE_vehicle-sim"))
+        .args(args(false))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let table = text(&out.stdout);
+    assert!(table.contains("DifferentialWheels"), "{table}");
+    assert!(table.contains("turns made"), "{table}");
+    assert!(table.contains("x real time"), "{table}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

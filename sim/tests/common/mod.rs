@@ -1,0 +1,51 @@
+//! Shared helpers of the car tests.
+#![allow(dead_code, clippy::unwrap_used, clippy::panic)]
+
+use sim::{Simulation, VehicleId, VehiclePlacement, World, WorldConfig};
+use vehicle_model::Model;
+
+/// Tyre–ground friction of the speed tests. With Webots' default 1, the front-driven BmwX5
+/// (3.97 m/s² needs 8.4 kN of traction from about 8.0 kN of front-axle load) and the
+/// rear-driven TeslaModel3 (6.94 m/s²) are traction-limited: 1.5 lets every model follow its
+/// motor ramp.
+pub const GRIPPY: f64 = 1.5;
+
+/// A simulation with one `model` on flat ground of friction `mu`, settled for 1 s.
+pub fn settled(model: Model, mu: f64) -> (Simulation, VehicleId) {
+    let world = World::new(WorldConfig {
+        ground_friction: mu,
+        ..WorldConfig::default()
+    })
+    .unwrap();
+    let mut sim = Simulation::new(world);
+    let (id, report) = sim
+        .add_car(model.params(), VehiclePlacement::default())
+        .unwrap();
+    assert!(report.is_empty(), "{report:?}");
+    run(&mut sim, 1.0);
+    (sim, id)
+}
+
+/// Steps `sim` for `seconds` (s).
+pub fn run(sim: &mut Simulation, seconds: f64) {
+    let steps = (seconds / sim.world().dt()).round() as usize;
+    for _ in 0..steps {
+        sim.step().unwrap();
+    }
+}
+
+/// Steps until `done` holds or `limit` seconds have passed; returns the elapsed time (s).
+pub fn run_until(
+    sim: &mut Simulation,
+    limit: f64,
+    mut done: impl FnMut(&Simulation) -> bool,
+) -> Option<f64> {
+    let t0 = sim.world().time();
+    while sim.world().time() - t0 < limit {
+        sim.step().unwrap();
+        if done(sim) {
+            return Some(sim.world().time() - t0);
+        }
+    }
+    None
+}
