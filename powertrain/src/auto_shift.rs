@@ -22,7 +22,9 @@ pub struct AutoShiftParams<T: Real> {
 impl<T: Real> AutoShiftParams<T> {
     /// Defaults derived from an engine's speed range `[min, max]` (rpm): up-shift at
     /// `min + 0.85·(max − min)`, down-shift at `min + 0.25·(max − min)`, at most one shift per
-    /// second. Always valid for that engine.
+    /// second. Valid for that engine unless `engineMinRPM` and `engineMaxRPM` are so close
+    /// that `T` cannot represent distinct thresholds between them (e.g. 1000 and 1000.0001 rpm
+    /// in `f32`); [`AutoShift::new`] then reports it.
     pub fn for_engine(engine: &Engine<T>) -> Self {
         let min = engine.min_rpm();
         let span = engine.max_rpm() - min;

@@ -137,13 +137,14 @@ impl<T: Real> Powertrain<T> {
     /// The wheel speed (rad/s, > 0) at which the engine reaches `engineMaxRPM` in `gear`:
     /// `engineMaxRPM·2π/60/|ratio|`. Above it the rpm estimate saturates and the output torque
     /// is 0, so this is the top speed of the gear (multiply by the tyre radius for m/s).
-    /// `None` in neutral.
+    /// `None` in neutral. Saturates at `T::MAX` when the quotient overflows (a ratio so close
+    /// to 0 that the gear has no representable top speed), so it is never ∞.
     pub fn saturation_wheel_speed(&self, gear: Gear) -> Option<T> {
         if gear.is_neutral() {
             return None;
         }
         let w = self.engine.max_rpm() * T::TAU / T::from_f64(60.0) / self.gearbox.ratio(gear).abs();
-        Some(w)
+        Some(w.min(T::MAX))
     }
 
     /// The speed-mode "virtual gear" and engine speed Webots uses for the engine sound

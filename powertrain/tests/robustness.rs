@@ -188,3 +188,33 @@ fn every_gear_table_from_two_to_sixteen_ratios_is_usable() {
         }
     }
 }
+
+#[test]
+fn saturation_speed_of_a_near_zero_ratio_is_finite() {
+    // f32: 4500 rpm · 2π/60 / 1e-38 = 4.7e40 rad/s overflows f32 (max 3.4e38): saturated.
+    let pt = Powertrain::new(
+        Engine::<f32>::default(),
+        Gearbox::new(&[-1e-38, 1e-38]).unwrap(),
+    );
+    assert_eq!(pt.saturation_wheel_speed(Gear::FIRST), Some(f32::MAX));
+    assert_eq!(pt.saturation_wheel_speed(Gear::REVERSE), Some(f32::MAX));
+    // f64, smallest subnormal ratio: saturated as well.
+    let pt = Powertrain::new(
+        Engine::<f64>::default(),
+        Gearbox::new(&[-5e-324, 5e-324]).unwrap(),
+    );
+    assert_eq!(pt.saturation_wheel_speed(Gear::FIRST), Some(f64::MAX));
+}
+
+#[test]
+fn auto_shift_defaults_for_an_unrepresentably_narrow_engine_are_reported() {
+    // 1000 and the next f32 above 1000.0001: 1000 + 0.85·6.1e-5 rounds to engineMaxRPM itself.
+    let engine = Engine::new(EngineParams {
+        min_rpm: 1000.0_f32,
+        max_rpm: 1000.0001,
+        ..EngineParams::default()
+    })
+    .unwrap();
+    let err = AutoShift::new(AutoShiftParams::for_engine(&engine), &engine).unwrap_err();
+    assert_eq!(err.field(), Some(powertrain::Field::UpshiftRpm));
+}

@@ -109,14 +109,12 @@ impl<T: Real> Vec3<T> {
         self.x.is_finite() && self.y.is_finite() && self.z.is_finite()
     }
 
-    /// Converts the components to `f32` (rounding to nearest).
+    /// Converts the components to `f32` (rounding to nearest); an `f64` component beyond the
+    /// `f32` range saturates at ±`f32::MAX` instead of becoming ±∞.
     #[inline]
     pub fn to_f32(self) -> [f32; 3] {
-        [
-            self.x.to_f64() as f32,
-            self.y.to_f64() as f32,
-            self.z.to_f64() as f32,
-        ]
+        let limit = f64::from(f32::MAX);
+        [self.x, self.y, self.z].map(|c| c.to_f64().clamp(-limit, limit) as f32)
     }
 }
 
@@ -382,6 +380,15 @@ mod tests {
 
     fn close(a: Vec3<f64>, b: Vec3<f64>) -> bool {
         (a - b).length() < 1e-12
+    }
+
+    #[test]
+    fn to_f32_rounds_and_saturates() {
+        assert_eq!(Vec3::new(0.1_f64, -2.5, 0.0).to_f32(), [0.1_f32, -2.5, 0.0]);
+        assert_eq!(
+            Vec3::new(1e200_f64, -1e39, 3.0e38).to_f32(),
+            [f32::MAX, -f32::MAX, 3.0e38]
+        );
     }
 
     #[test]

@@ -9,7 +9,7 @@ use common::{
     boundary_edges, double_areas, polygonal_revolution_volume, radial, vehicle_wheels,
     welded_boundary_edges,
 };
-use proto_geom::{CylinderMesh, TriMesh, ValidWheel, Vec3, WheelParams, WheelPreset};
+use proto_geom::{CylinderMesh, TriMesh, ValidWheel, Vec3, WheelParams, WheelPhysics, WheelPreset};
 
 #[test]
 fn no_degenerate_triangles() {
@@ -293,4 +293,53 @@ fn cylinder_mesh_is_closed_and_exact() {
     // Volume of the inscribed 24-gon prism: (S/2)·r²·sin(2π/S)·h.
     let expected = 12.0 * 0.38 * 0.38 * (std::f64::consts::TAU / 24.0).sin() * 0.19;
     assert!((m.signed_volume() - expected).abs() < 1e-14);
+}
+
+#[test]
+fn absurd_but_valid_sizes_give_finite_measures() {
+    // A 1e20 m tyre is valid (finite and > 0), but π·r²·h = 9.4e39 m³ and the sidewall area
+    // 2·π·(1e20)² = 6.3e40 m² exceed f32::MAX = 3.4e38: they saturate, the masses that
+    // cannot be represented are `None`, and nothing is ∞ or NaN.
+    let huge = |physics| {
+        WheelParams::<f32> {
+            tire_radius: 1e20,
+            physics,
+            ..Default::default()
+        }
+        .validate()
+    };
+    let (w, warnings) = huge(WheelPhysics::Density(1000.0));
+    assert!(warnings.is_empty());
+    assert_eq!(w.bounding_cylinder().unwrap().volume(), f32::MAX);
+    assert_eq!(w.mass(), None); // 1000 kg/m³ × 9.4e39 m³
+    assert_eq!(w.mass_properties(), None);
+    let (w, _) = huge(WheelPhysics::Mass(30.0));
+    assert_eq!(w.mass(), Some(30.0));
+    assert_eq!(w.mass_properties(), None); // axial 30·1e40/2 kg·m²
+    let tyre = w.tyre();
+    assert_eq!(tyre.area(), f32::MAX);
+    assert!(tyre.signed_volume().is_finite());
+    for m in [
+        &tyre as &dyn TriMesh<f32>,
+        &w.rim_contour(),
+        &w.rim_centre(),
+    ] {
+        assert!(m.area().is_finite() && m.signed_volume().is_finite());
+    }
+
+    // The same in f64 with a 1e200 m tyre (sidewall area 6.3e400 m² > f64::MAX).
+    let (w, _) = WheelParams::<f64> {
+        tire_radius: 1e200,
+        ..Default::default()
+    }
+    .validate();
+    assert_eq!(w.tyre().area(), f64::MAX);
+    assert!(w.tyre().signed_volume().is_finite());
+    assert_eq!(w.mass_properties(), None);
+
+    // Ordinary wheels keep the direct computation: the default tyre's area is unchanged by
+    // the fallback (the sum of the triangle areas, computed here independently).
+    let (w, _) = WheelParams::<f64>::default().validate();
+    let expected: f64 = double_areas(&w.tyre()).iter().sum::<f64>() / 2.0;
+    assert_eq!(w.tyre().area(), expected);
 }

@@ -130,3 +130,32 @@ pub struct Commands<T: Real> {
     /// Engine and blinker sounds of the `engine_speaker`.
     pub sound: Sounds<T>,
 }
+
+impl<T: Real> Commands<T> {
+    /// True if every number is finite: steering targets, drive commands, brake torques,
+    /// cockpit positions, wiper command and engine-sound volume and pitch. Always true for the
+    /// commands of a [`Driver`](crate::Driver); a host or firmware can assert it cheaply.
+    pub fn is_finite(&self) -> bool {
+        let drive_finite = |d: &WheelDrive<T>| match *d {
+            WheelDrive::Free => true,
+            WheelDrive::Torque(t) => t.is_finite(),
+            WheelDrive::Velocity {
+                target,
+                acceleration,
+                max_velocity,
+            } => target.is_finite() && acceleration.is_finite() && max_velocity.is_finite(),
+        };
+        let k = &self.cockpit;
+        self.steering.right.is_finite()
+            && self.steering.left.is_finite()
+            && self.drive.iter().all(drive_finite)
+            && self.brake_torque.iter().all(|t| t.is_finite())
+            && k.steering_wheel.is_finite()
+            && k.rpm_needle.is_finite()
+            && k.speed_needle.is_finite()
+            && k.wipers
+                .is_none_or(|w| w.target.is_finite() && w.velocity.is_finite())
+            && self.sound.engine.volume.is_finite()
+            && self.sound.engine.pitch.is_finite()
+    }
+}

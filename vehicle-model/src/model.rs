@@ -8,9 +8,9 @@
 
 use core::fmt;
 
-use ackermann::{DriveType, Real, Wheel};
+use ackermann::{DriveType, Real};
 use powertrain::{EngineParams, EngineType};
-use proto_geom::{ShippedVehicle, WheelPhysics};
+use proto_geom::ShippedVehicle;
 
 use crate::params::{BodyPhysics, CarParams, EngineSound, gear_ratios};
 use crate::wipers::WiperRange;
@@ -181,9 +181,8 @@ impl Model {
                 p.suspension_rear_damping_constant = f(5000.0);
                 p.wheels_damping_constant = f(1.55);
                 p.engine_sound = EngineSound::none();
-                // The PROTO puts a front wheel in the rear-right slot but gives it the rear
-                // wheels' Physics node (6 kg).
-                p.wheels[Wheel::RearRight].physics = WheelPhysics::Mass(f(6.0));
+                // The rear-right slot's front wheel with the rear wheels' 6 kg comes from
+                // `ShippedVehicle::wheel_params`.
                 // Y-up (-0.002, 0.248, 1.180) and [2645 2534 200 / 0 0 0].
                 p.body = body(
                     1200.0,

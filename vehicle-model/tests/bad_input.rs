@@ -387,3 +387,70 @@ fn invalid_params_fall_back_to_defaults() {
     assert_eq!(d.basic_time_step_ms(), 32);
     assert_eq!(report.len(), 4);
 }
+
+#[test]
+fn extreme_valid_params_keep_the_motor_limits_finite() {
+    // Positive and finite, so validation keeps them; the derived limits would overflow f32:
+    // (1000/36)/1e-38/0.374 ≈ 7.4e39 and 3e38/0.374 ≈ 8.0e38 > f32::MAX ≈ 3.4e38.
+    let mut p = Model::BmwX5.params::<f32>();
+    p.time_0_to_100 = 1e-38;
+    p.max_velocity = 3e38;
+    let (mut d, report) = Driver::new(p, 10);
+    assert!(report.is_empty(), "{:?}", report.as_slice());
+    let m = d.params().wheel_motor(Wheel::FrontLeft);
+    assert_eq!((m.acceleration, m.max_velocity), (f32::MAX, f32::MAX));
+    assert!(all_finite(d.commands()));
+    let mut plant = Plant::new(&d);
+    d.set_cruising_speed(50.0);
+    for _ in 0..5 {
+        plant.run(&mut d);
+        assert!(all_finite(d.commands()), "{:?}", d.commands().drive);
+    }
+    // A tiny tyre (1e-38 m, also accepted) overflows both quotients the same way.
+    let mut p = Model::TeslaModel3.params::<f32>();
+    for w in Wheel::ALL {
+        p.wheels[w].tire_radius = 1e-38;
+    }
+    let (mut d, _) = Driver::new(p, 10);
+    d.set_cruising_speed(-30.0);
+    let mut plant = Plant::new(&d);
+    plant.run(&mut d);
+    let c = *d.commands();
+    assert!(all_finite(&c), "{:?}", c.drive);
+    assert_eq!(
+        c.drive[Wheel::RearLeft],
+        vehicle_model::WheelDrive::Velocity {
+            target: -f32::MAX,
+            acceleration: f32::MAX,
+            max_velocity: f32::MAX,
+        }
+    );
+}
+
+#[test]
+fn commands_is_finite_sees_every_number() {
+    let mut d = bmw();
+    d.set_cruising_speed(20.0);
+    let good = *d.step(&Sensors::unsampled(0.0));
+    assert!(good.is_finite());
+    let poisoned: [fn(&mut vehicle_model::Commands<f64>); 7] = [
+        |c| c.steering.left = f64::NAN,
+        |c| {
+            c.drive[Wheel::FrontRight] = vehicle_model::WheelDrive::Velocity {
+                target: 1.0,
+                acceleration: f64::INFINITY,
+                max_velocity: 1.0,
+            }
+        },
+        |c| c.drive[Wheel::RearLeft] = vehicle_model::WheelDrive::Torque(f64::NAN),
+        |c| c.brake_torque[Wheel::RearRight] = f64::INFINITY,
+        |c| c.cockpit.speed_needle = f64::NAN,
+        |c| c.cockpit.wipers.as_mut().unwrap().target = f64::NEG_INFINITY,
+        |c| c.sound.engine.pitch = f64::NAN,
+    ];
+    for (i, poison) in poisoned.iter().enumerate() {
+        let mut c = good;
+        poison(&mut c);
+        assert!(!c.is_finite(), "case {i}");
+    }
+}

@@ -246,3 +246,129 @@ fn sensor_slots_and_plain_car() {
     assert_eq!(Model::from_name("Sedan"), None);
     assert_eq!(Model::ALL.len(), 12);
 }
+
+#[test]
+fn wheel_masses_of_every_model() {
+    // Spec §5 "wheel mass" rows (kg), per slot FR, FL, RR, RL; `None` = Webots' default
+    // `Physics {}` (density 1000 kg/m³ over the bounding cylinder).
+    let mass = |m: f64| WheelPhysics::Mass(m);
+    let density = WheelPhysics::Density(1000.0);
+    for (model, expected) in [
+        (Model::BmwX5, [mass(30.0); 4]),
+        // The rear-right slot holds a front wheel with the rear wheels' Physics node.
+        (
+            Model::CitroenCZero,
+            [mass(5.0), mass(5.0), mass(6.0), mass(6.0)],
+        ),
+        (Model::ToyotaPrius, [mass(8.0); 4]),
+        (Model::LincolnMKZ, [density; 4]),
+        (Model::RangeRoverSportSVR, [density; 4]),
+        (Model::TeslaModel3, [mass(10.4); 4]),
+        (Model::MercedesBenzSprinter, [density; 4]),
+        (
+            Model::GreenPowerEVStar,
+            [mass(10.0), mass(10.0), mass(20.0), mass(20.0)],
+        ),
+        (Model::Bus, [mass(80.0); 4]),
+        (Model::Truck, [mass(100.0); 4]),
+        (
+            Model::Tractor,
+            [mass(30.0), mass(30.0), mass(60.0), mass(60.0)],
+        ),
+    ] {
+        let p = model.params::<f64>();
+        for (w, e) in Wheel::ALL.into_iter().zip(expected) {
+            assert_eq!(p.wheels[w].physics, e, "{model} {w:?}");
+        }
+    }
+    // Wheel geometry of the per-axle wheels: EVStar tyres 0.4445 m, Tractor front 0.38 m ×
+    // 0.19 m and rear 0.6 m × 0.37 m.
+    let ev = Model::GreenPowerEVStar.params::<f64>();
+    assert_eq!((ev.radius_front(), ev.radius_rear()), (0.4445, 0.4445));
+    let tractor = Model::Tractor.params::<f64>();
+    let (front, rear) = (
+        tractor.wheels[Wheel::FrontLeft],
+        tractor.wheels[Wheel::RearLeft],
+    );
+    assert_eq!((front.tire_radius, front.thickness), (0.38, 0.19));
+    assert_eq!((rear.tire_radius, rear.thickness), (0.6, 0.37));
+}
+
+#[test]
+fn suspensions_steering_torques_and_translations_of_every_model() {
+    // (front spring N/m, front damping N·s/m, rear spring, rear damping, maxSteeringTorque
+    // N·m, translation z m) from spec §5; the Car defaults are 100000 / 4000 / 10000 / 0.4.
+    #[rustfmt::skip]
+    let rows = [
+        (Model::Car,                  100_000.0,  4000.0, 100_000.0,  4000.0, 10_000.0, 0.4),
+        (Model::BmwX5,                100_000.0,  4000.0, 100_000.0,  4000.0, 10_000.0, 0.4),
+        (Model::CitroenCZero,          30_000.0,  5000.0,  30_000.0,  5000.0, 10_000.0, 0.4),
+        (Model::ToyotaPrius,          100_000.0,  4000.0, 100_000.0,  4000.0, 10_000.0, 0.4),
+        (Model::LincolnMKZ,           100_000.0,  4000.0, 100_000.0,  4000.0, 10_000.0, 0.4),
+        (Model::RangeRoverSportSVR,   100_000.0,  4000.0, 100_000.0,  4000.0, 10_000.0, 0.4),
+        (Model::TeslaModel3,           60_000.0, 10_000.0,  60_000.0, 10_000.0, 10_000.0, 0.4),
+        (Model::MercedesBenzSprinter, 200_000.0,  5000.0, 600_000.0,  5000.0, 13_000.0, 0.4445),
+        // Y-up translation (0, 0.4445, 0).
+        (Model::GreenPowerEVStar,     200_000.0,  6000.0, 750_000.0,  6000.0, 15_000.0, 0.4445),
+        (Model::Bus,                    1.0e6,   10_000.0,   1.0e6,  10_000.0, 10_000.0, 0.55),
+        (Model::Truck,                  1.0e6,   10_000.0,   1.0e6,  10_000.0, 10_000.0, 0.5),
+        (Model::Tractor,              200_000.0,  4000.0,  30_000.0,  2000.0, 10_000.0, 0.6),
+    ];
+    assert_eq!(rows.len(), Model::ALL.len());
+    for (model, fs, fd, rs, rd, torque, z) in rows {
+        let p = model.params::<f64>();
+        assert_eq!(
+            (
+                p.suspension_front_spring_constant,
+                p.suspension_front_damping_constant,
+                p.suspension_rear_spring_constant,
+                p.suspension_rear_damping_constant,
+            ),
+            (fs, fd, rs, rd),
+            "{model}"
+        );
+        assert_eq!(p.max_steering_torque, torque, "{model}");
+        assert_eq!(p.translation, [0.0, 0.0, z], "{model}");
+    }
+}
+
+#[test]
+fn sensor_slots_of_every_model() {
+    // Spec §4.5; the Y-up figures (x left, y up, z forward) read as FLU = (z, x, y).
+    /// Model, front, top and rear slot positions (m).
+    type Row = (Model, [f64; 3], [f64; 3], [f64; 3]);
+    #[rustfmt::skip]
+    let rows: [Row; 9] = [
+        (Model::BmwX5, [3.85, 0.0, 0.45], [1.0, 0.0, 1.45], [-1.0, 0.0, 0.3]),
+        (Model::ToyotaPrius, [3.635, 0.0, 0.4], [1.1, 0.0, 1.3], [-0.85, 0.0, 0.3]),
+        (Model::TeslaModel3, [3.79, 0.0, 0.142], [1.11, 0.0, 1.16], [-1.05, 0.0, 0.2]),
+        (Model::MercedesBenzSprinter, [5.31, 0.0, 0.47], [2.99, 0.0, 2.3], [-1.62, 0.0, 0.19]),
+        (Model::Bus, [11.5, 0.0, 0.2], [2.5, 0.0, 5.3], [-6.2, 0.0, 1.0]),
+        (Model::Truck, [6.75, 0.0, 1.1], [4.3, 0.0, 4.15], [-7.3, 0.0, 2.7]),
+        // Y-up (0, 0.05, 3.075) / (0, 1.35, 1.075) / (0, 0.3, −0.425).
+        (Model::CitroenCZero, [3.075, 0.0, 0.05], [1.075, 0.0, 1.35], [-0.425, 0.0, 0.3]),
+        // Y-up (0, 0.142, 3.944) / (0, 1.16, 1.11) / (0, 0.33, −1.06).
+        (Model::LincolnMKZ, [3.944, 0.0, 0.142], [1.11, 0.0, 1.16], [-1.06, 0.0, 0.33]),
+        // Y-up (0, 0.5, 3.5) / (0, 1.3, 1.4) / (0, 0.33, −1.06).
+        (Model::RangeRoverSportSVR, [3.5, 0.0, 0.5], [1.4, 0.0, 1.3], [-1.06, 0.0, 0.33]),
+    ];
+    for (model, front, top, rear) in rows {
+        let s = model.params::<f64>().sensor_slots.unwrap();
+        assert_eq!(s.front.translation.to_array(), front, "{model}");
+        assert_eq!(s.top.translation.to_array(), top, "{model}");
+        assert_eq!(s.rear.translation.to_array(), rear, "{model}");
+        assert_eq!(s.centre.translation.to_array(), [0.0; 3], "{model}");
+        // The rear slot faces backward: +x maps to −x.
+        let back = s
+            .rear
+            .rotation
+            .rotate(proto_geom::Vec3::from_array([1.0, 0.0, 0.0]));
+        assert!(
+            (back.to_array()[0] + 1.0).abs() < 1e-12 && back.to_array()[1].abs() < 1e-12,
+            "{model}: {back:?}"
+        );
+    }
+    for model in [Model::Car, Model::GreenPowerEVStar, Model::Tractor] {
+        assert_eq!(model.params::<f64>().sensor_slots, None, "{model}");
+    }
+}

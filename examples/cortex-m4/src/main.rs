@@ -19,9 +19,7 @@ use ackermann::{Odometry, PerWheel, Real, SpeedSource};
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprint, hprintln};
 use panic_semihosting as _;
-use vehicle_model::{
-    AutoShiftParams, Commands, ControlMode, Driver, IndicatorState, Model, WheelAngles, WheelDrive,
-};
+use vehicle_model::{AutoShiftParams, ControlMode, Driver, IndicatorState, Model, WheelAngles};
 
 use plant::{Environment, Plant};
 
@@ -158,7 +156,7 @@ impl Car {
     fn step(&mut self) {
         let sensors = self.plant.sensors();
         let commands = self.driver.step(&sensors);
-        self.log.non_finite |= !commands_finite(commands);
+        self.log.non_finite |= !commands.is_finite();
         self.log.blink(commands.lights.right_indicator);
         self.plant.step(commands, STEP_MS);
 
@@ -267,29 +265,6 @@ impl Car {
         self.log.plant_bytes = core::mem::size_of::<Plant>();
         self.log
     }
-}
-
-/// True if every number in `commands` is finite (the driver promises it).
-fn commands_finite(commands: &Commands<f32>) -> bool {
-    let drive_finite = |d: &WheelDrive<f32>| match *d {
-        WheelDrive::Free => true,
-        WheelDrive::Torque(t) => t.is_finite(),
-        WheelDrive::Velocity {
-            target,
-            acceleration,
-            max_velocity,
-        } => target.is_finite() && acceleration.is_finite() && max_velocity.is_finite(),
-    };
-    let cockpit = &commands.cockpit;
-    commands.steering.right.is_finite()
-        && commands.steering.left.is_finite()
-        && commands.drive.iter().all(drive_finite)
-        && commands.brake_torque.iter().all(|b| b.is_finite())
-        && cockpit.steering_wheel.is_finite()
-        && cockpit.rpm_needle.is_finite()
-        && cockpit.speed_needle.is_finite()
-        && commands.sound.engine.pitch.is_finite()
-        && commands.sound.engine.volume.is_finite()
 }
 
 /// What the run measured.

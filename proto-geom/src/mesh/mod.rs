@@ -195,27 +195,76 @@ pub trait TriMesh<T: Real> {
 
     /// Signed volume enclosed by the triangles, `Σ p0·(p1 × p2) / 6` (m³): the volume of a
     /// closed, outward-wound surface; for an open surface, the volume of the cone it spans
-    /// from the origin.
+    /// from the origin. For finite positions the result is finite: a volume beyond the range
+    /// of `T` saturates at ±`T::MAX`.
     fn signed_volume(&self) -> T {
-        let mut v = T::ZERO;
-        for t in 0..self.triangle_count() {
-            if let Some([a, b, c]) = self.triangle_positions(t) {
-                v += a.dot(b.cross(c));
-            }
+        let direct = triple_product_sum(self, T::ONE) / T::from_f64(6.0);
+        if direct.is_finite() {
+            return direct;
         }
-        v / T::from_f64(6.0)
+        let scale = max_abs_coordinate(self);
+        let scaled = triple_product_sum(self, scale) / T::from_f64(6.0);
+        saturating_mul(saturating_mul(saturating_mul(scaled, scale), scale), scale)
     }
 
-    /// Total surface area (m²).
+    /// Total surface area (m²). For finite positions the result is finite: an area beyond the
+    /// range of `T` saturates at `T::MAX`.
     fn area(&self) -> T {
-        let mut s = T::ZERO;
-        for t in 0..self.triangle_count() {
-            if let Some([a, b, c]) = self.triangle_positions(t) {
-                s += (b - a).cross(c - a).length();
-            }
+        let direct = double_area_sum(self, T::ONE) * T::HALF;
+        if direct.is_finite() {
+            return direct;
         }
-        s * T::HALF
+        let scale = max_abs_coordinate(self);
+        let scaled = double_area_sum(self, scale) * T::HALF;
+        saturating_mul(saturating_mul(scaled, scale), scale)
     }
+}
+
+// Sizes near the range of `T` (e.g. a 10²⁰ m wheel in `f32`) overflow the products of
+// `signed_volume` and `area` into ∞ or ∞ − ∞ = NaN. The fallback divides every coordinate by
+// the largest magnitude, so each product stays below ~10, and scales the sum back with
+// saturation. The direct sum runs first so that ordinary meshes get bit-identical results.
+
+/// `Σ p0·(p1 × p2)` over the triangles, with every coordinate divided by `scale`.
+fn triple_product_sum<T: Real, M: TriMesh<T> + ?Sized>(mesh: &M, scale: T) -> T {
+    let mut v = T::ZERO;
+    for t in 0..mesh.triangle_count() {
+        if let Some([a, b, c]) = mesh.triangle_positions(t) {
+            let [a, b, c] = [a, b, c].map(|p| Vec3::new(p.x / scale, p.y / scale, p.z / scale));
+            v += a.dot(b.cross(c));
+        }
+    }
+    v
+}
+
+/// `Σ |(p1 − p0) × (p2 − p0)|` over the triangles, with every coordinate divided by `scale`.
+fn double_area_sum<T: Real, M: TriMesh<T> + ?Sized>(mesh: &M, scale: T) -> T {
+    let mut s = T::ZERO;
+    for t in 0..mesh.triangle_count() {
+        if let Some([a, b, c]) = mesh.triangle_positions(t) {
+            let [a, b, c] = [a, b, c].map(|p| Vec3::new(p.x / scale, p.y / scale, p.z / scale));
+            s += (b - a).cross(c - a).length();
+        }
+    }
+    s
+}
+
+/// The largest coordinate magnitude of the mesh's vertices (m), at least `T::EPSILON` so that
+/// dividing by it is safe.
+fn max_abs_coordinate<T: Real, M: TriMesh<T> + ?Sized>(mesh: &M) -> T {
+    let mut m = T::EPSILON;
+    for i in 0..mesh.vertex_count() {
+        if let Some(p) = mesh.position(i) {
+            m = m.max(p.x.abs()).max(p.y.abs()).max(p.z.abs());
+        }
+    }
+    m
+}
+
+/// `a·b` limited to ±`T::MAX` (finite operands give a finite result, never NaN).
+#[inline]
+fn saturating_mul<T: Real>(a: T, b: T) -> T {
+    (a * b).clamp(-T::MAX, T::MAX)
 }
 
 /// Index of `i` in a `u32` index buffer. Mesh sizes are bounded by the wheel validation limits,

@@ -37,9 +37,17 @@ impl<T: Real> BoundingCylinder<T> {
         Rotation::from_axis_angle(Vec3::Y, T::FRAC_PI_2)
     }
 
-    /// Volume `π·r²·h` (m³).
+    /// Volume `π·r²·h` (m³), saturated at `T::MAX` for dimensions whose volume `T` cannot
+    /// represent (never ∞).
     #[inline]
     pub fn volume(&self) -> T {
+        self.unsaturated_volume().min(T::MAX)
+    }
+
+    /// `π·r²·h` (m³), ∞ on overflow: the mass must see the overflow rather than a saturated
+    /// volume that a density below 1 would turn back into a plausible-looking number.
+    #[inline]
+    fn unsaturated_volume(&self) -> T {
         T::PI * self.radius * self.radius * self.height
     }
 
@@ -76,27 +84,31 @@ impl<T: Real> ValidWheel<T> {
 
     /// The wheel's mass (kg): the `physics` mass, or density × bounding-cylinder volume
     /// (`Physics {}`: 1000 kg/m³ × π·0.4²·0.3 m³ ≈ 150.8 kg for the default wheel). `None`
-    /// with `physics NULL` or `boundingObject FALSE`.
+    /// with `physics NULL` or `boundingObject FALSE`, and when density × volume overflows `T`
+    /// (absurd dimensions, e.g. a 10²⁰ m tyre in `f32`): never ∞.
     pub fn mass(&self) -> Option<T> {
         let cylinder = self.bounding_cylinder()?;
-        match self.params().physics {
-            WheelPhysics::None => None,
-            WheelPhysics::Mass(m) => Some(m),
-            WheelPhysics::Density(d) => Some(d * cylinder.volume()),
-        }
+        let mass = match self.params().physics {
+            WheelPhysics::None => return None,
+            WheelPhysics::Mass(m) => m,
+            WheelPhysics::Density(d) => d * cylinder.unsaturated_volume(),
+        };
+        mass.is_finite().then_some(mass)
     }
 
     /// Mass (kg) and moments of inertia (kg·m²) of the uniform bounding cylinder, as Webots
     /// computes them when the `Physics` node has no `inertiaMatrix`. `None` when
-    /// [`ValidWheel::mass`] is `None`.
+    /// [`ValidWheel::mass`] is `None` or a moment of inertia is not representable in `T`
+    /// (absurd dimensions): never NaN or ∞.
     pub fn mass_properties(&self) -> Option<MassProperties<T>> {
         let c = self.bounding_cylinder()?;
         let m = self.mass()?;
         let r2 = c.radius * c.radius;
-        Some(MassProperties {
+        let props = MassProperties {
             mass: m,
             axial: m * r2 * T::HALF,
             transverse: m * (T::from_f64(3.0) * r2 + c.height * c.height) / T::from_f64(12.0),
-        })
+        };
+        (props.axial.is_finite() && props.transverse.is_finite()).then_some(props)
     }
 }

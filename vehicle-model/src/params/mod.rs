@@ -241,11 +241,14 @@ impl<T: Real> CarParams<T> {
     /// The speed-mode motor limits of a wheel on the axle of `wheel` (whether driven or not):
     /// acceleration `(1000/36)/time0To100/r` (rad/s²) and velocity limit `maxVelocity/r`
     /// (rad/s), with `r` that axle's tyre radius (Webots: the `Car` PROTO's wheel motors).
+    ///
+    /// A quotient beyond the float range (e.g. `time0To100 = 1e-38` s in `f32`, which
+    /// validation accepts as positive) saturates at `T::MAX` instead of becoming +∞.
     pub fn wheel_motor(&self, wheel: Wheel) -> WheelMotor<T> {
         let r = self.axle_radius(wheel);
         WheelMotor {
-            acceleration: T::from_f64(1000.0 / 36.0) / self.time_0_to_100 / r,
-            max_velocity: self.max_velocity / r,
+            acceleration: (T::from_f64(1000.0 / 36.0) / self.time_0_to_100 / r).min(T::MAX),
+            max_velocity: (self.max_velocity / r).min(T::MAX),
         }
     }
 
