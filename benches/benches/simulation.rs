@@ -1,0 +1,145 @@
+//! Criterion benchmarks of one physics step of the `sim` world (cars, the DifferentialWheels
+//! robot) beside rapier's own ray-cast car, with a summary of the ratios printed at the end.
+#![allow(
+    clippy::unwrap_used,
+    reason = "bench setup from constant, valid fixtures: a failure is a fixture bug and must stop the run"
+)]
+
+use std::hint::black_box;
+use std::time::{Duration, SystemTime};
+
+use benches::control::LoopMode;
+use benches::peer::{PeerParams, RayCastCar};
+use benches::report::{self, format_ns};
+use benches::scenes::{BASIC_TIME_STEP_MS, CarScene, RobotScene};
+use criterion::measurement::WallTime;
+use criterion::{BenchmarkGroup, BenchmarkId, Criterion, criterion_group};
+use sim::RobotMode;
+
+fn config() -> Criterion {
+    Criterion::default()
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(2))
+        .sample_size(30)
+}
+
+const PEER: &str = "simulation/peer_raycast_car/1";
+
+fn peer(g: &mut BenchmarkGroup<'_, WallTime>) {
+    let mut car = RayCastCar::new(&PeerParams::default());
+    g.bench_function(BenchmarkId::new("peer_raycast_car", 1), |b| {
+        b.iter(|| {
+            let f = car.cruise_force(10.0);
+            car.step(black_box(f), black_box(0.1));
+        })
+    });
+}
+
+/// Steps run before measuring, so the cars cruise on their circles (3 s).
+const SETTLE_STEPS: usize = 300;
+/// Car counts of the scaling benchmarks.
+const CAR_COUNTS: [usize; 3] = [1, 8, 64];
+
+fn mode_name(mode: LoopMode) -> &'static str {
+    match mode {
+        LoopMode::Speed => "car_speed",
+        LoopMode::Torque => "car_torque",
+    }
+}
+
+fn cars(g: &mut BenchmarkGroup<'_, WallTime>) {
+    for mode in [LoopMode::Speed, LoopMode::Torque] {
+        for n in CAR_COUNTS {
+            let mut scene = CarScene::new(n, mode).unwrap();
+            // Test mode (`cargo test --benches`) runs each benchmark once: no need to settle.
+            let settle = if report::is_bench_run() {
+                SETTLE_STEPS
+            } else {
+                0
+            };
+            for _ in 0..settle {
+                scene.step().unwrap();
+            }
+            g.bench_function(BenchmarkId::new(mode_name(mode), n), |b| {
+                b.iter(|| scene.step().unwrap())
+            });
+        }
+    }
+}
+
+fn robots(g: &mut BenchmarkGroup<'_, WallTime>) {
+    for (mode, mut scene) in [
+        (
+            "kinematics",
+            RobotScene::new(RobotMode::Kinematics).unwrap(),
+        ),
+        ("physics", RobotScene::physics().unwrap()),
+    ] {
+        g.bench_function(BenchmarkId::new("differential_wheels", mode), |b| {
+            b.iter(|| scene.step().unwrap())
+        });
+    }
+}
+
+fn simulation(c: &mut Criterion) {
+    let mut g = c.benchmark_group("simulation");
+    peer(&mut g);
+    cars(&mut g);
+    robots(&mut g);
+    g.finish();
+}
+
+criterion_group! {
+    name = benches;
+    config = config();
+    targets = simulation
+}
+
+/// Prints the ratios the README tracks, from the medians criterion just wrote.
+fn summary(since: SystemTime) {
+    let dir = report::criterion_dir();
+    let median = |id: &str| report::median_ns(&dir, id, since);
+    println!("\nsimulation summary (criterion medians, basicTimeStep {BASIC_TIME_STEP_MS} ms):");
+    let Some(peer) = median(PEER) else {
+        println!("  no result for {PEER} in {}", dir.display());
+        return;
+    };
+    println!("  peer ray-cast car step: {}", format_ns(peer));
+    let step_ns = f64::from(BASIC_TIME_STEP_MS) * 1e6;
+    for mode in [LoopMode::Speed, LoopMode::Torque] {
+        let name = mode_name(mode);
+        let Some(one) = median(&format!("simulation/{name}/1")) else {
+            continue;
+        };
+        println!(
+            "  {name}, 1 car: {} = {:.0}x real time (target >= 500x), {:.2}x the peer (target <= 6x)",
+            format_ns(one),
+            step_ns / one,
+            one / peer
+        );
+        for n in CAR_COUNTS.into_iter().skip(1) {
+            if let Some(t) = median(&format!("simulation/{name}/{n}")) {
+                println!(
+                    "  {name}, {n} cars: {} = {} per car, {:.2}x of {n} x 1 car (target <= 1)",
+                    format_ns(t),
+                    format_ns(t / n as f64),
+                    t / (n as f64 * one)
+                );
+            }
+        }
+    }
+    for mode in ["kinematics", "physics"] {
+        if let Some(t) = median(&format!("simulation/differential_wheels/{mode}")) {
+            println!("  differential_wheels, {mode}: {}", format_ns(t));
+        }
+    }
+}
+
+fn main() {
+    let since = SystemTime::now();
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+    if report::is_bench_run() {
+        summary(since);
+    }
+}
