@@ -60,8 +60,15 @@ impl<T: Real> Geometry<T> {
             DriveType::Traction | DriveType::Propulsion => (T::ONE, T::ONE),
         };
         // Saturating after every product keeps each operand finite, so no ∞·0 can make a NaN.
+        // The operands are finite, so a finite plain result means no product overflowed and
+        // every saturation would have been the identity: only the rare overflow pays for them.
         let target = |ratio: T, share: T, radius: T| {
-            saturate(saturate(saturate(two_v * ratio) * share) / radius)
+            let plain = two_v * ratio * share / radius;
+            if plain.is_finite() {
+                plain
+            } else {
+                saturate(saturate(saturate(two_v * ratio) * share) / radius)
+            }
         };
         let front_driven = drive.front_driven();
         let rear_driven = drive.rear_driven();

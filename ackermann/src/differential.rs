@@ -96,9 +96,13 @@ impl<T: Real> Geometry<T> {
             return DifferentialRatios::EVEN;
         }
         let (s, c) = sin_cos(delta);
+        self.ratios_from(s, c, angles.right.sin(), angles.left.sin())
+    }
 
-        let sin_right = angles.right.sin();
-        let sin_left = angles.left.sin();
+    /// The ratios of [`Geometry::differential_ratios`] from `sin δ`, `cos δ` (δ ≠ 0, effective)
+    /// and the sines of the two front-wheel angles.
+    #[inline]
+    fn ratios_from(&self, s: T, c: T, sin_right: T, sin_left: T) -> DifferentialRatios<T> {
         let sum = sin_right + sin_left;
         let front = if sum == T::ZERO {
             T::HALF
@@ -124,9 +128,56 @@ impl<T: Real> Geometry<T> {
         }
     }
 
+    /// [`Geometry::wheel_angles`] and [`Geometry::differential_ratios`] of the central steering
+    /// angle `delta` (rad, positive = right) in one evaluation: what Webots'
+    /// `wbu_driver_set_steering_angle` leaves the driver library with.
+    ///
+    /// The same numbers as the two calls (to a few units in the last place) for about half the
+    /// cost: `sin δ` and `cos δ` are evaluated once, and the sines of the wheel angles come
+    /// from the `atan2` arguments instead of a `sin` of the angles,
+    /// `sin δR = sin δ / √(sin²δ + (cos δ − k·sin δ)²)` (likewise δL with `+k`), `k = Tf/(2L)`.
+    /// For geometries so extreme that this root would leave the normal range (track more than
+    /// ~10⁸ wheelbases in `f64`) the sines are taken of the angles, as in
+    /// [`Geometry::differential_ratios`].
+    ///
+    /// ```
+    /// use ackermann::Geometry;
+    /// let g = Geometry::new(2.995_f64, 1.628, 1.628, 0.374, 0.374).unwrap();
+    /// let (angles, ratios) = g.ackermann_steering(0.2);
+    /// assert_eq!(angles, g.wheel_angles(0.2));
+    /// let slow = g.differential_ratios(0.2, angles);
+    /// assert!((ratios.front - slow.front).abs() < 1e-15);
+    /// assert_eq!((ratios.rear, ratios.central), (slow.rear, slow.central));
+    /// ```
+    pub fn ackermann_steering(&self, delta: T) -> (WheelAngles<T>, DifferentialRatios<T>) {
+        let (s, c) = sin_cos(delta);
+        let ks = self.half_track_ratio_times(s);
+        let (x_right, x_left) = (c - ks, c + ks);
+        let angles = WheelAngles {
+            right: s.atan2(x_right),
+            left: s.atan2(x_left),
+        };
+        if effective_steering_angle(delta) == T::ZERO {
+            return (angles, DifferentialRatios::EVEN);
+        }
+        // sin(atan2(s, x)) = s/√(s² + x²); `ks` may be ±∞ for absurd tracks, so check the root.
+        let sine = |x: T, angle: T| {
+            let r2 = s * s + x * x;
+            if r2 > T::EPSILON && r2.is_finite() {
+                s / r2.sqrt()
+            } else {
+                angle.sin()
+            }
+        };
+        let ratios = self.ratios_from(s, c, sine(x_right, angles.right), sine(x_left, angles.left));
+        (angles, ratios)
+    }
+
     /// [`Geometry::differential_ratios`] with the Ackermann wheel angles of `delta`
     /// ([`Geometry::wheel_angles`]): what Webots uses after `wbu_driver_set_steering_angle`.
+    ///
+    /// Evaluated as [`Geometry::ackermann_steering`].
     pub fn ackermann_ratios(&self, delta: T) -> DifferentialRatios<T> {
-        self.differential_ratios(delta, self.wheel_angles(delta))
+        self.ackermann_steering(delta).1
     }
 }

@@ -58,7 +58,7 @@ impl<T: Real> Geometry<T> {
     /// `k·x` with `k = Tf / (2L)` (dimensionless), in an order that keeps it finite or ±∞ but
     /// never NaN (`Tf·x` is finite for |x| ≤ 1, and 0 stays 0 even if `2L` overflows).
     #[inline]
-    fn half_track_ratio_times(&self, x: T) -> T {
+    pub(crate) fn half_track_ratio_times(&self, x: T) -> T {
         self.track_front() * x / (T::TWO * self.wheelbase())
     }
 

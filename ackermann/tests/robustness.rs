@@ -347,3 +347,63 @@ fn f32_agrees_with_f64() {
         }
     }
 }
+
+#[test]
+fn ackermann_steering_matches_the_separate_calls() {
+    // The one-pass evaluation takes sin δR, sin δL from the atan2 arguments; the angles must be
+    // bit-identical to `wheel_angles` and the ratios equal to `differential_ratios` of those
+    // angles to rounding (rear and central use the same sin δ, cos δ: bit-identical).
+    let g = bmw::<f64>();
+    for i in -1600..=1600 {
+        let delta = f64::from(i) * 1e-3;
+        let (angles, r) = g.ackermann_steering(delta);
+        assert_eq!(angles, g.wheel_angles(delta), "δ = {delta}");
+        let slow = g.differential_ratios(delta, angles);
+        assert!((r.front - slow.front).abs() < 4e-16, "δ = {delta}");
+        assert_eq!(
+            (r.rear, r.central),
+            (slow.rear, slow.central),
+            "δ = {delta}"
+        );
+        assert_eq!(g.ackermann_ratios(delta), r);
+    }
+    let g32 = bmw::<f32>();
+    for i in -1600..=1600 {
+        let delta = i as f32 * 1e-3;
+        let (angles, r) = g32.ackermann_steering(delta);
+        assert_eq!(angles, g32.wheel_angles(delta), "δ = {delta}");
+        let slow = g32.differential_ratios(delta, angles);
+        assert!((r.front - slow.front).abs() < 2e-7, "δ = {delta}");
+        assert_eq!(
+            (r.rear, r.central),
+            (slow.rear, slow.central),
+            "δ = {delta}"
+        );
+    }
+    // Degenerate inputs behave as the separate calls: NaN and 0 steer straight with an even
+    // split, ±∞ is the pivot.
+    for delta in [
+        0.0,
+        -0.0,
+        f64::NAN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        1e-300,
+    ] {
+        let (angles, r) = g.ackermann_steering(delta);
+        assert_eq!(angles, g.wheel_angles(delta));
+        assert_eq!(r, g.differential_ratios(delta, angles), "δ = {delta}");
+    }
+    // A track 10¹⁰ wheelbases wide: at δ = 0.3, k·sin δ overflows the fast root and the sines
+    // of the angles are used, as in `differential_ratios`.
+    let wide = Geometry::new(1e-300_f64, 1e10, 1.0, 0.3, 0.3).unwrap();
+    for delta in [0.3, -1.0] {
+        let (angles, r) = wide.ackermann_steering(delta);
+        assert_eq!(r, wide.differential_ratios(delta, angles), "δ = {delta}");
+    }
+    // At δ = 1e-300, k·sin δ = 1e10·1e-300/2e-300 = 5e9: the inner wheel's angle rounds to π,
+    // whose sine (1.2e-16) is not the 2e-310 of the geometry, so only the one-pass form gives
+    // the true split (5e9 − 1)/((5e9 − 1) + (5e9 + 1)) = 0.4999999999.
+    let (_, r) = wide.ackermann_steering(1e-300);
+    assert!((r.front - 0.499_999_999_9).abs() < 1e-14, "{r:?}");
+}

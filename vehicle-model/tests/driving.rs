@@ -409,3 +409,59 @@ fn f32_control_loop_matches_f64() {
     let v32 = f64::from(d32.current_speed());
     assert!(v32 > 5.0 && close(v32, d64.current_speed(), 1e-3), "{v32}");
 }
+
+#[test]
+fn repeated_and_direct_steering_keep_the_torque_split_current() {
+    // Range Rover Sport SVR (4x4) in torque mode, all wheels turning alike so the limited slip
+    // stays at 0 and the front torques split exactly by the geometric front ratio
+    // ρf = sin δL / (sin δR + sin δL).
+    let frame = |k: f64| Sensors {
+        time: 0.01 * k,
+        wheel_angles: PerWheel::splat(0.2 * k),
+        steering: WheelAngles::STRAIGHT,
+        wiper: None,
+    };
+    let front_share = |c: &vehicle_model::Commands<f64>| {
+        let fr = c.drive[Wheel::FrontRight].torque().unwrap();
+        let fl = c.drive[Wheel::FrontLeft].torque().unwrap();
+        fr / (fr + fl)
+    };
+    let mut once = driver(Model::RangeRoverSportSVR);
+    let mut every = driver(Model::RangeRoverSportSVR);
+    for d in [&mut once, &mut every] {
+        d.set_gear(1);
+        d.set_throttle(0.5);
+        d.set_steering_angle(0.2);
+    }
+    let g = *once.geometry();
+    let ackermann = g.wheel_angles(0.2);
+    let expected = ackermann.left.sin() / (ackermann.right.sin() + ackermann.left.sin());
+    // Re-sending the same angle every step changes nothing.
+    for k in 0..5 {
+        every.set_steering_angle(0.2);
+        let (a, b) = (
+            *once.step(&frame(f64::from(k))),
+            *every.step(&frame(f64::from(k))),
+        );
+        assert_eq!(a, b);
+        assert!(
+            close(front_share(&a), expected, 1e-12),
+            "{}",
+            front_share(&a)
+        );
+    }
+    // Steering the right wheel directly re-splits the torque at once (the driver's angle is
+    // unchanged): ρf = sin δL / (sin 0.5 + sin δL).
+    once.set_right_steering_angle(0.5);
+    let direct = ackermann.left.sin() / (0.5_f64.sin() + ackermann.left.sin());
+    assert!(close(front_share(once.step(&frame(5.0))), direct, 1e-12));
+    // The same driver angle again restores the Ackermann angles and split.
+    once.set_steering_angle(0.2);
+    let c = *once.step(&frame(6.0));
+    assert_eq!(c.steering, ackermann);
+    assert!(close(front_share(&c), expected, 1e-12));
+    // −0 is a new command (the wheels go to −0), not a repeat of 0.
+    once.set_steering_angle(0.0);
+    once.set_steering_angle(-0.0);
+    assert!(once.commanded_wheel_angles().right.is_sign_negative());
+}

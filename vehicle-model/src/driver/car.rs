@@ -117,6 +117,11 @@ impl<T: Real> Driver<T> {
     ) -> Option<Warning> {
         if angle.is_finite() {
             set(&mut self.wheel_angles, angle);
+            self.wheel_angles_direct = true;
+            self.ratios = self
+                .car
+                .geometry
+                .differential_ratios(self.steering_angle, self.wheel_angles);
             None
         } else {
             Some(self.warn(Warning::InvalidArgument {

@@ -1,6 +1,6 @@
 //! The driver library's commands and getters (Webots `wbu_driver_*`).
 
-use ackermann::{DriveType, Real, Wheel};
+use ackermann::{DriveType, PerWheel, Real, Wheel};
 use powertrain::{AutoShift, AutoShiftParams, Gear, GearWarning, PowertrainError};
 
 use super::Driver;
@@ -35,10 +35,18 @@ impl<T: Real> Driver<T> {
                 value: angle.to_f64(),
             }));
         }
-        self.steering_angle = angle;
-        self.wheel_angles = self.car.geometry.wheel_angles(angle);
-        if self.mode == ControlMode::Speed {
-            self.update_speed_targets();
+        // Controllers re-send the same angle every step: the angles, ratios and speed targets
+        // it gave are still in place unless the wheels were steered directly since. The bits
+        // are compared so that −0 (which steers the wheels to −0) counts as a change from 0.
+        let unchanged = !self.wheel_angles_direct
+            && angle.to_f64().to_bits() == self.steering_angle.to_f64().to_bits();
+        if !unchanged {
+            self.steering_angle = angle;
+            (self.wheel_angles, self.ratios) = self.car.geometry.ackermann_steering(angle);
+            self.wheel_angles_direct = false;
+            if self.mode == ControlMode::Speed {
+                self.update_speed_targets();
+            }
         }
         if self.indicator_auto_disabling {
             self.auto_cancel_indicator(angle);
@@ -105,13 +113,13 @@ impl<T: Real> Driver<T> {
         None
     }
 
-    /// Recomputes the speed-mode wheel targets from the cruising speed and the stored angles.
-    pub(super) fn update_speed_targets(&mut self) {
-        let g = &self.car.geometry;
-        let ratios = g.differential_ratios(self.steering_angle, self.wheel_angles);
+    /// Recomputes the speed-mode wheel targets from the cruising speed and the stored ratios.
+    fn update_speed_targets(&mut self) {
         let speed = self.cruising_speed / T::from_f64(KMH_PER_MS);
-        self.speed_targets = g
-            .wheel_speed_targets(speed, self.car.drive, ratios)
+        self.speed_targets = self
+            .car
+            .geometry
+            .wheel_speed_targets(speed, self.car.drive, self.ratios)
             .map(|t| t.unwrap_or(T::ZERO));
     }
 
@@ -126,7 +134,11 @@ impl<T: Real> Driver<T> {
     /// for 4x4. 0 until the wheel speeds are measurable (Webots: NaN for two steps).
     /// Webots: `wbu_driver_get_current_speed`.
     pub fn current_speed(&self) -> T {
-        let s = self.wheel_speeds.speeds();
+        self.speed_kmh(&self.wheel_speeds.speeds())
+    }
+
+    /// [`Driver::current_speed`] from the wheel speeds `s` (rad/s).
+    pub(super) fn speed_kmh(&self, s: &PerWheel<T>) -> T {
         let g = &self.car.geometry;
         let front = s[Wheel::FrontRight] + s[Wheel::FrontLeft];
         let rear = s[Wheel::RearRight] + s[Wheel::RearLeft];

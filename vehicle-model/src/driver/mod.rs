@@ -7,7 +7,7 @@ mod step;
 
 use core::cell::Cell;
 
-use ackermann::{DriveType, Geometry, PerWheel, Real, Wheel, WheelAngles};
+use ackermann::{DifferentialRatios, DriveType, Geometry, PerWheel, Real, Wheel, WheelAngles};
 use powertrain::{AutoShift, Brake, Engine, Gear, Gearbox, LimitedSlip, Powertrain};
 
 use crate::io::{Cockpit, Commands, WheelDrive};
@@ -75,6 +75,12 @@ pub struct Driver<T: Real> {
     steering_angle: T,
     /// Stored right/left wheel angles (rad) used by the front differential ratio.
     wheel_angles: WheelAngles<T>,
+    /// True once `wheel_angles` were set directly (car library) since the last Ackermann
+    /// evaluation of `steering_angle`.
+    wheel_angles_direct: bool,
+    /// Geometric differential ratios of `steering_angle` and `wheel_angles` (dimensionless),
+    /// recomputed only when either changes: torque mode applies them every step.
+    ratios: DifferentialRatios<T>,
     /// Cruise-control target (km/h).
     cruising_speed: T,
     /// Speed-mode velocity targets of the driven wheels (rad/s), as last computed.
@@ -132,6 +138,8 @@ impl<T: Real> Driver<T> {
             mode: ControlMode::Undefined,
             steering_angle: T::ZERO,
             wheel_angles: WheelAngles::STRAIGHT,
+            wheel_angles_direct: false,
+            ratios: DifferentialRatios::EVEN,
             cruising_speed: T::ZERO,
             speed_targets: PerWheel::splat(T::ZERO),
             throttle: T::ZERO,
@@ -169,7 +177,8 @@ impl<T: Real> Driver<T> {
             warnings: Cell::new(0),
             params,
         };
-        driver.commands = driver.assemble_commands(&PerWheel::splat(T::ZERO));
+        driver.commands =
+            driver.assemble_commands(&PerWheel::splat(T::ZERO), driver.current_speed());
         (driver, report)
     }
 
@@ -238,15 +247,15 @@ impl<T: Real> Driver<T> {
         })
     }
 
-    /// The commands implied by the current state and the torque-mode wheel torques `torques`
-    /// (N·m).
-    fn assemble_commands(&self, torques: &PerWheel<T>) -> Commands<T> {
+    /// The commands implied by the current state, the torque-mode wheel torques `torques`
+    /// (N·m) and the estimated vehicle speed `speed_kmh` ([`Driver::current_speed`], km/h).
+    fn assemble_commands(&self, torques: &PerWheel<T>, speed_kmh: T) -> Commands<T> {
         let brake_torque = if self.brake > T::ZERO {
             PerWheel::splat(self.car.brake.torque(self.brake))
         } else {
             PerWheel::splat(T::ZERO)
         };
-        let speed = self.current_speed().abs();
+        let speed = speed_kmh.abs();
         let eleven_thousand = T::from_f64(11_000.0);
         let speed_full_scale = T::from_f64(220.0);
         Commands {

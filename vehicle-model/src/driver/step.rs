@@ -27,14 +27,15 @@ impl<T: Real> Driver<T> {
         }
         let time = self.time;
 
-        // 1. Indicators, rewritten every step.
-        let on = blink_on(time, self.indicator_period);
+        // 1. Indicators, rewritten every step (the blink clock only read while one is on).
+        let on = || blink_on(time, self.indicator_period);
         let (right, left) = if self.hazard_flashers {
+            let on = on();
             (on, on)
         } else {
             match self.indicator {
-                IndicatorState::Right => (on, false),
-                IndicatorState::Left => (false, on),
+                IndicatorState::Right => (on(), false),
+                IndicatorState::Left => (false, on()),
                 IndicatorState::Off => (false, false),
             }
         };
@@ -83,11 +84,7 @@ impl<T: Real> Driver<T> {
                 self.gear,
                 self.wheel_speeds.max_acceleration(),
             );
-            let ratios = self
-                .car
-                .geometry
-                .differential_ratios(self.steering_angle, self.wheel_angles);
-            split_torque(out, self.car.drive, &self.limited_slip.apply(&ratios))
+            split_torque(out, self.car.drive, &self.limited_slip.apply(&self.ratios))
         } else {
             PerWheel::splat(T::ZERO)
         };
@@ -95,6 +92,7 @@ impl<T: Real> Driver<T> {
         // 7. Brakes are part of the assembled commands (a friction torque while intensity > 0).
 
         // 8. Engine sound.
+        let speed_kmh = self.speed_kmh(&speeds);
         self.engine_sound = if self.car.engine_sound {
             let input = EngineSoundInput {
                 mode: self.mode,
@@ -102,7 +100,7 @@ impl<T: Real> Driver<T> {
                 throttle: self.throttle,
                 wheel_speeds: self.wheel_speeds.all_measured().then_some(&speeds),
                 cruising_speed: self.cruising_speed,
-                current_speed: self.current_speed(),
+                current_speed: speed_kmh,
             };
             engine_sound(powertrain, self.car.sound_rpm_reference, &input)
                 .unwrap_or(self.engine_sound)
@@ -110,7 +108,7 @@ impl<T: Real> Driver<T> {
             SoundCommand::STOPPED
         };
 
-        self.commands = self.assemble_commands(&torques);
+        self.commands = self.assemble_commands(&torques, speed_kmh);
         &self.commands
     }
 }
