@@ -298,12 +298,18 @@ pub const MAX_SUBSTEPS: usize = 8;
 /// price, joint coordinates integrated from a velocity without this step's tyre friction, only
 /// affects the wheel angles, which are therefore integrated from the solved spin rates
 /// (`VehicleState::wheel_angles`).
+///
+/// The friction is therefore solved only in the unbiased sweeps, `friction_iterations` of them
+/// per substep (see [`SolverSettings::friction_iterations`](crate::SolverSettings)): rapier's
+/// multibody contacts solve the two friction axes separately in a world-fixed basis, which a
+/// single sweep gets badly wrong for a wheel heading away from the world axes.
 fn integration_parameters(config: &WorldConfig) -> IntegrationParameters {
     IntegrationParameters {
         dt: config.dt() as f32,
         num_solver_iterations: config.solver.iterations,
         num_internal_pgs_iterations: config.solver.pgs_iterations,
         contact_recycling: false,
+        num_internal_stabilization_iterations: config.solver.friction_iterations,
         ..IntegrationParameters::default()
     }
 }

@@ -205,7 +205,11 @@ fn brake(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult, Scen
         travelled += (p[0] - last[0]).hypot(p[1] - last[1]);
         last = p;
         match stopped {
-            None if rig.speed().abs() < STOPPED => stopped = Some((rig.time(), travelled)),
+            // The ground speed, not the forward speed: a car that spins while it brakes
+            // (locked rear wheels) passes through zero forward speed while sliding sideways.
+            None if rig.state().velocity[0].hypot(rig.state().velocity[1]) < STOPPED => {
+                stopped = Some((rig.time(), travelled))
+            }
             None => {}
             Some((ts, _)) => {
                 if rig.time() >= ts + 0.5 {

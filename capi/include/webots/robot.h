@@ -1,0 +1,54 @@
+/*
+ * webots/robot.h: the subset of the Webots Robot C API provided by this simulator.
+ *
+ * Part of the `capi` crate (libcar.so / libdriver.so). SPDX-License-Identifier: MIT OR Apache-2.0
+ *
+ * The world is chosen by the VEHICLE_WORLD environment variable (a shipped model name such as
+ * "BmwX5" or "TeslaModel3", or the path of a world file); unset means the default world, a BmwX5
+ * on flat ground with basicTimeStep 10 ms. Functions are declared with empty parentheses exactly
+ * as Webots declares them.
+ */
+
+#ifndef WB_ROBOT_H
+#define WB_ROBOT_H
+
+#include <webots/types.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/*
+ * Connects the controller to the simulation and loads the world. Must be called before any
+ * other wb_robot_* function (wbu_car_init() and wbu_driver_init() call it themselves); further
+ * calls do nothing. Returns 1 on success (Webots returns an int too; old controllers ignore it).
+ */
+int wb_robot_init();
+
+/*
+ * Advances the simulation by `duration` milliseconds (rounded to whole basic time steps) and
+ * exchanges sensor and actuator values. Returns 0 while the simulation goes on and -1 when it
+ * has ended and the controller should clean up and exit.
+ */
+int wb_robot_step(int duration);
+
+/* Simulation time in seconds (s) elapsed since the world was loaded. */
+double wb_robot_get_time();
+
+/* The world's basicTimeStep field, in milliseconds (ms). */
+double wb_robot_get_basic_time_step();
+
+/* Disconnects the controller from the simulation; call once just before exiting. */
+void wb_robot_cleanup();
+
+/*
+ * Looks a device up by its exact name (for example "right_steer" or "engine_speaker").
+ * Returns its tag, or 0 if the robot has no device of that name.
+ */
+WbDeviceTag wb_robot_get_device(const char *name);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* WB_ROBOT_H */

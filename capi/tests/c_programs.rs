@@ -1,0 +1,139 @@
+//! The C and C++ test programs of `capi/tests/` (see `README.md` there), as Webots controllers
+//! use the API: `capi/stage.sh` stages the headers and the libraries, each program is compiled
+//! with the system compiler (`cc`, `c++`) against the staged tree and run with its
+//! `VEHICLE_WORLD`, and must exit 0 with exactly the stderr lines Webots prints. Also the
+//! header checks of `check_headers.sh`.
+//!
+//! Needs `cc` and `c++` on the PATH.
+
+mod common;
+
+use std::process::Command;
+
+use common::*;
+
+#[test]
+fn cruise_bmw() {
+    run_exact("cruise_bmw", None, &shared_link_flags(), &[]);
+}
+
+#[test]
+fn torque_combustion() {
+    run_exact(
+        "torque_combustion",
+        Some("BmwX5"),
+        &shared_link_flags(),
+        &[],
+    );
+}
+
+#[test]
+fn torque_electric() {
+    run_exact(
+        "torque_electric",
+        Some("TeslaModel3"),
+        &shared_link_flags(),
+        &[],
+    );
+}
+
+/// `lights` is built with the flags of the staged pkg-config file (read directly, so that the
+/// test does not need pkg-config itself).
+#[test]
+fn lights_built_with_the_pkg_config_flags() {
+    let pc = std::fs::read_to_string(prefix().join("lib/pkgconfig/webots-vehicle.pc")).unwrap();
+    let field = |name: &str| {
+        pc.lines()
+            .find_map(|l| l.strip_prefix(&format!("{name}: ")))
+            .unwrap_or_else(|| panic!("no {name} in webots-vehicle.pc"))
+            .replace("${includedir}", &include_dir().display().to_string())
+            .replace("${libdir}", &lib_dir().display().to_string())
+    };
+    assert_eq!(field("Cflags"), format!("-I{}", include_dir().display()));
+    let libs: Vec<String> = field("Libs").split_whitespace().map(String::from).collect();
+    run_exact(
+        "lights",
+        None,
+        &libs,
+        &[
+            "Warning: Deprecated 'wbu_driver_set_brake' use 'wbu_driver_set_brake_intensity' instead.",
+            "Warning: Deprecated 'wbu_driver_get_brake' use 'wbu_driver_get_brake_intensity' instead.",
+            "Warning: Deprecated 'wbu_driver_set_brake' use 'wbu_driver_set_brake_intensity' instead.",
+        ],
+    );
+}
+
+#[test]
+fn bad_input() {
+    // 12 calls before init, 4 gears, 6 throttle/brake clamps, 3 NaN steerings, 5 wheel
+    // indices, 2 SPEED-mode getters, 2 after cleanup: 34 announced texts.
+    run_announcing("bad_input", None, 34);
+}
+
+#[test]
+fn differential_wheels() {
+    run_announcing("differential_wheels", Some(&differential_wheels_world()), 7);
+}
+
+/// The C++ wrapper, linked with the libraries in the other order (`-lcar -ldriver`).
+#[test]
+fn cpp_wrapper() {
+    let lib = lib_dir().display().to_string();
+    let link = [
+        format!("-L{lib}"),
+        "-lcar".into(),
+        "-ldriver".into(),
+        format!("-Wl,-rpath,{lib}"),
+    ];
+    let exe = compile(
+        "c++",
+        "c++17",
+        &tests_dir().join("cpp_wrapper.cpp"),
+        "cpp_wrapper",
+        &link,
+    );
+    let r = run(&exe, None);
+    assert_passed("cpp_wrapper", r.status, &r.stdout);
+    let lines: Vec<&str> = r.stderr.lines().collect();
+    assert_eq!(
+        lines,
+        [
+            "Warning: Deprecated 'setWipersMode' use 'setWiperMode' instead.",
+            "Warning: Deprecated 'getWipersMode' use 'getWiperMode' instead.",
+            "Warning: Deprecated 'setBrake' use 'setBrakeIntensity' instead.",
+            "Warning: Deprecated 'setBrake' use 'setBrakeIntensity' instead.",
+        ]
+    );
+}
+
+/// Every header alone in every C and C++ standard, and the programs' syntax.
+#[test]
+fn check_headers() {
+    let out = Command::new("bash")
+        .arg(tests_dir().join("check_headers.sh"))
+        .arg(include_dir())
+        .env("CC", "cc")
+        .env("CXX", "c++")
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "check_headers.sh failed:\n{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn announced_stderr_checker() {
+    let ok = "p: start\np: call: x -> stderr: Warning: a\nWarning: a\np: ok: 1\n\
+              p: call: y -> stderr: Warning: no newline\nWarning: no newlinep: ok: 2\n\
+              p: call: z\nlibrary's own text\np: PASS (2 checks)\n";
+    assert_eq!(check_announced_stderr("p", ok), Ok(2));
+    let extra = "p: call: x -> stderr: W\nW\nsurprise\np: PASS\n";
+    assert!(check_announced_stderr("p", extra).is_err());
+    let missing = "p: call: x -> stderr: W\np: PASS\n";
+    assert!(check_announced_stderr("p", missing).is_err());
+    let stray = "p: start\nstray\n";
+    assert!(check_announced_stderr("p", stray).is_err());
+}
