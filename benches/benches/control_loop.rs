@@ -7,19 +7,11 @@
 )]
 
 use std::hint::black_box;
-use std::time::Duration;
 
 use benches::control::{ControlLoop, LoopMode};
 use criterion::measurement::WallTime;
 use criterion::{BenchmarkGroup, BenchmarkId, Criterion, criterion_group, criterion_main};
 use vehicle_model::Real;
-
-fn config() -> Criterion {
-    Criterion::default()
-        .warm_up_time(Duration::from_millis(500))
-        .measurement_time(Duration::from_secs(2))
-        .sample_size(30)
-}
 
 fn driver_step<T: Real>(g: &mut BenchmarkGroup<'_, WallTime>, mode: LoopMode, scalar: &str) {
     let name = match mode {
@@ -43,7 +35,7 @@ fn control_loop(c: &mut Criterion) {
 
 criterion_group! {
     name = benches;
-    config = config();
+    config = benches::report::criterion_config();
     targets = control_loop
 }
 criterion_main!(benches);

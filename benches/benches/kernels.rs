@@ -6,21 +6,12 @@
 )]
 
 use std::hint::black_box;
-use std::time::Duration;
 
 use ackermann::{DriveType, Real};
 use benches::fixtures;
 use criterion::measurement::WallTime;
 use criterion::{BenchmarkGroup, BenchmarkId, Criterion, criterion_group, criterion_main};
 use powertrain::{EngineType, LimitedSlip, split_torque};
-
-/// Short settings: the whole `cargo bench -p benches` must finish in minutes on 2 cores.
-fn config() -> Criterion {
-    Criterion::default()
-        .warm_up_time(Duration::from_millis(500))
-        .measurement_time(Duration::from_secs(2))
-        .sample_size(30)
-}
 
 fn wheel_angles<T: Real>(g: &mut BenchmarkGroup<'_, WallTime>, name: &str) {
     let geometry = fixtures::bmw_x5::<T>().unwrap();
@@ -65,7 +56,7 @@ fn kernels(c: &mut Criterion) {
 
 criterion_group! {
     name = benches;
-    config = config();
+    config = benches::report::criterion_config();
     targets = kernels
 }
 criterion_main!(benches);

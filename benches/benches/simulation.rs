@@ -6,7 +6,7 @@
 )]
 
 use std::hint::black_box;
-use std::time::{Duration, SystemTime};
+use std::time::SystemTime;
 
 use benches::control::LoopMode;
 use benches::peer::{PeerParams, RayCastCar};
@@ -15,13 +15,6 @@ use benches::scenes::{BASIC_TIME_STEP_MS, CarScene, RobotScene};
 use criterion::measurement::WallTime;
 use criterion::{BenchmarkGroup, BenchmarkId, Criterion, criterion_group};
 use sim::RobotMode;
-
-fn config() -> Criterion {
-    Criterion::default()
-        .warm_up_time(Duration::from_millis(500))
-        .measurement_time(Duration::from_secs(2))
-        .sample_size(30)
-}
 
 const PEER: &str = "simulation/peer_raycast_car/1";
 
@@ -92,7 +85,7 @@ fn simulation(c: &mut Criterion) {
 
 criterion_group! {
     name = benches;
-    config = config();
+    config = report::criterion_config();
     targets = simulation
 }
 
