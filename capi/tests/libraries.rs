@@ -83,6 +83,14 @@ fn exported_symbols_match_the_headers() {
     assert_eq!(exported, expected);
 }
 
+/// Runs the python3 `script` with the staged library directory as its argument and no
+/// `VEHICLE_WORLD`.
+fn run_python(script: &str) -> Run {
+    let mut cmd = Command::new("python3");
+    cmd.arg("-c").arg(script).arg(lib_dir());
+    run_command(cmd, None)
+}
+
 /// Webots' Python binding opens `libcar.so` and `libdriver.so` one by one with ctypes: both
 /// must share one car. Initialised through libdriver, read through libcar, and back.
 #[test]
@@ -127,17 +135,13 @@ assert driver.wbu_driver_get_control_mode() == -1
 assert car.wbu_car_get_indicator_period() == 0.34
 print("ctypes: PASS")
 "#;
-    let out = Command::new("python3")
-        .arg("-c")
-        .arg(script)
-        .arg(lib_dir())
-        .env_remove("VEHICLE_WORLD")
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    let stderr = String::from_utf8_lossy(&out.stderr);
+    let Run {
+        status,
+        stdout,
+        stderr,
+    } = run_python(script);
     assert!(
-        out.status.success() && stdout.contains("ctypes: PASS"),
+        status.success() && stdout.contains("ctypes: PASS"),
         "{stdout}{stderr}"
     );
     // The two "before init" calls after the cleanup are the only messages.
@@ -162,17 +166,13 @@ assert driver.wbu_driver_get_gear() == 2
 assert car.wbu_car_get_wheelbase() == 2.995
 print("reverse: PASS")
 "#;
-    let out = Command::new("python3")
-        .arg("-c")
-        .arg(reverse)
-        .arg(lib_dir())
-        .env_remove("VEHICLE_WORLD")
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    let stderr = String::from_utf8_lossy(&out.stderr);
+    let Run {
+        status,
+        stdout,
+        stderr,
+    } = run_python(reverse);
     assert!(
-        out.status.success() && stdout.contains("reverse: PASS") && stderr.is_empty(),
+        status.success() && stdout.contains("reverse: PASS") && stderr.is_empty(),
         "{stdout}{stderr}"
     );
 }

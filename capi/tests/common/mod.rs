@@ -117,7 +117,11 @@ pub struct Run {
 
 /// Runs `exe` with `VEHICLE_WORLD` set to `world` (or unset), stdout and stderr apart.
 pub fn run(exe: &Path, world: Option<&str>) -> Run {
-    let mut cmd = Command::new(exe);
+    run_command(Command::new(exe), world)
+}
+
+/// Runs `cmd` with `VEHICLE_WORLD` set to `world` (or unset), stdout and stderr apart.
+pub fn run_command(mut cmd: Command, world: Option<&str>) -> Run {
     match world {
         Some(w) => cmd.env("VEHICLE_WORLD", w),
         None => cmd.env_remove("VEHICLE_WORLD"),

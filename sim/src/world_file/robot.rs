@@ -20,18 +20,8 @@ pub(crate) const NODE_FIELDS: [&str; 10] = [
     "maxForce",
 ];
 
-/// Every key of `[differential_wheels]`: the node fields, then the simulator's own.
-pub(crate) const KEYS: [&str; 17] = [
-    "motorConsumption",
-    "axleLength",
-    "wheelRadius",
-    "maxSpeed",
-    "maxAcceleration",
-    "speedUnit",
-    "slipNoise",
-    "encoderNoise",
-    "encoderResolution",
-    "maxForce",
+/// The keys of `[differential_wheels]` that are the simulator's own, not node fields.
+const SIM_KEYS: [&str; 7] = [
     "physics",
     "seed",
     "translation",
@@ -65,7 +55,8 @@ impl Default for RobotDescription {
 
 /// Reads `[differential_wheels]`.
 pub(crate) fn read_robot(s: &Section<'_, '_>) -> Result<RobotDescription, WorldFileError> {
-    s.check_keys(&KEYS)?;
+    let keys: Vec<&str> = NODE_FIELDS.iter().chain(&SIM_KEYS).copied().collect();
+    s.check_keys(&keys)?;
     let mut p = DifferentialWheelsParams::default();
     for key in NODE_FIELDS {
         if let Some(v) = s.number(key)? {
