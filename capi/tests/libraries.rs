@@ -280,9 +280,9 @@ fn car_library_alone() {
         .split_whitespace()
         .map(|x| x.parse().unwrap())
         .collect();
-    // Steering reached within 0.01 rad (a 10 000 N·m motor against the tyres); the parked
-    // front wheel turned by less than 0.05 rad (its motor holds 0 rad/s while the knuckle
-    // steers); no driver step, so no wheel speed; 1 s elapsed; traction (0).
+    // Steering reached within 0.01 rad (a 10 000 N·m motor); the parked front wheel turned by
+    // less than 0.05 rad while it steered; no driver step, so no wheel speed; 1 s elapsed;
+    // traction (0).
     assert_eq!(v.len(), 6, "{}", r.stdout);
     assert!(
         (v[0] - 0.1).abs() < 0.01 && (v[1] + 0.05).abs() < 0.01,

@@ -67,8 +67,6 @@ impl std::error::Error for ParamError {}
 pub enum BodyPart {
     /// A car's chassis body.
     Chassis,
-    /// The steering knuckle carrying a front wheel.
-    Knuckle(Wheel),
     /// A car wheel.
     Wheel(Wheel),
     /// The body of a DifferentialWheels robot.

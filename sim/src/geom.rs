@@ -68,8 +68,6 @@ pub(crate) fn unwrap_delta(previous: f64, current: f64, predicted: f64) -> f64 {
 pub(crate) const G_STATIC: Group = Group::GROUP_1;
 /// Collision group of car chassis.
 pub(crate) const G_CAR_BODY: Group = Group::GROUP_2;
-/// Collision group of car wheels.
-pub(crate) const G_CAR_WHEEL: Group = Group::GROUP_3;
 /// Collision group of DifferentialWheels bodies (with their casters).
 pub(crate) const G_ROBOT_BODY: Group = Group::GROUP_4;
 /// Collision group of DifferentialWheels wheels.
@@ -77,17 +75,13 @@ pub(crate) const G_ROBOT_WHEEL: Group = Group::GROUP_5;
 
 /// The interaction groups of a collider in group `g`.
 ///
-/// Wheels touch only static geometry (and car wheels also robot bodies), so a wheel never
-/// collides with its own chassis; chassis and robot bodies collide with each other.
+/// Robot wheels touch only static geometry, so a wheel never collides with its own body; car
+/// chassis and robot bodies collide with each other. (Car wheels are rays, not colliders.)
 pub(crate) fn groups(g: Group) -> InteractionGroups {
     let filter = if g == G_STATIC {
         Group::ALL
-    } else if g == G_CAR_BODY {
+    } else if g == G_CAR_BODY || g == G_ROBOT_BODY {
         G_STATIC | G_CAR_BODY | G_ROBOT_BODY
-    } else if g == G_CAR_WHEEL {
-        G_STATIC | G_ROBOT_BODY
-    } else if g == G_ROBOT_BODY {
-        G_STATIC | G_CAR_BODY | G_CAR_WHEEL | G_ROBOT_BODY
     } else {
         G_STATIC
     };

@@ -15,37 +15,28 @@
 //!
 //! # Physics choices
 //!
-//! * Cars are rapier **multibodies** (exact joints) of chassis, two steering knuckles and four
-//!   cylindrical wheels; see the `vehicle` module docs (on [`Vehicle`]) for the joint layout
-//!   and how each Webots device maps onto it.
-//! * One rapier step with one solver substep per `basicTimeStep`: rapier computes the contact
-//!   points at the start of a step and re-evaluates them as body-fixed points only between
-//!   solver substeps, which a spinning wheel breaks (at 100 km/h with 2 substeps the car sank
-//!   by 3 cm and ran 4 % slow). [`World::step`] splits a step into up to [`MAX_SUBSTEPS`] rapier
-//!   steps only when a wheel would turn more than [`MAX_WHEEL_ROTATION_PER_SUBSTEP`] in it
-//!   (above 134 km/h for a 0.374 m tyre at 10 ms).
-//! * Tyre friction gets 16 solver sweeps per step ([`SolverSettings::friction_iterations`]):
-//!   rapier solves a multibody contact's friction one world axis at a time (x, then y on flat
-//!   ground, no coupling term), exact only while a wheel points along a world axis. A wheel is
-//!   light along its heading (it spins) and heavy across it, so at other headings one sweep
-//!   overshoots by up to 2×: with one sweep a free wheel at 20 km/h jumped between 7.5 and
-//!   21 rad/s from step to step. With 16 it rolls within 1.1 % of its kinematic rate in a
-//!   turn (the scrub of the tyre's two tread edges) and within 0.05 % straight at 45°.
-//! * The wheel position sensors integrate the solved wheel speeds (see
-//!   [`VehicleState::wheel_angles`]), not rapier's joint coordinates.
+//! * A car is one rapier rigid body (the chassis, with the whole car's mass properties) on
+//!   four ray-cast wheels whose suspension, tyre friction, brakes and spin this crate solves
+//!   itself, as velocity constraints between the chassis and the wheel spins (exact at any
+//!   heading, the friction limited to a circle of radius μ·N); see the `vehicle` module docs
+//!   (on [`Vehicle`]) for how each Webots device maps onto it. rapier integrates the chassis
+//!   and resolves its collisions with walls, ramps, other cars and robots.
+//! * One rapier step with one solver substep per `basicTimeStep`. A physics-mode
+//!   DifferentialWheels robot's wheels are rapier bodies: rapier computes the contact points
+//!   at the start of a step and re-evaluates them as body-fixed points only between solver
+//!   substeps, which a spinning wheel breaks, so [`World::step`] splits a step into up to
+//!   [`MAX_SUBSTEPS`] rapier steps only when a robot wheel would turn more than
+//!   [`MAX_WHEEL_ROTATION_PER_SUBSTEP`] in it.
 //! * Every body is created in a fixed order and never sleeps; nothing iterates a hash map: the
 //!   same world and commands give bit-identical results on the same machine.
 //! * A body whose state stops being finite ends the simulation with [`SimError::NonFinite`].
 //!
 //! # Cost
 //!
-//! One BmwX5 step (10 ms) takes about 50 µs at rest and 55 µs at 50 or 100 km/h on the 2-core
-//! development machine (release build, `cargo run --release -p sim --example step_cost`), and
-//! 8 cars cost 8 times one. The 16 friction sweeps take 11 µs of it (38 and 43 µs with one
-//! sweep). Most of the rest is rapier's multibody bookkeeping for the car's 16 degrees of
-//! freedom (7 links): the dense mass-matrix update (Jᵀ·M·J per link), an LU solve per contact
-//! and motor row to build the constraints, the link Jacobians and the forward kinematics; the
-//! narrow phase is about 5 %.
+//! One BmwX5 step (10 ms: the driver step, the four wheel rays, the tyre solve and one rapier
+//! step) takes about 5 µs at rest, 50 or 100 km/h on the 2-core development machine (release
+//! build, `cargo run --release -p sim --example step_cost`), about 2000 times real time; 8
+//! cars cost about 3.8 µs each. `benches` measures it with criterion.
 //!
 //! ```
 //! use sim::{Simulation, VehiclePlacement, World, WorldConfig};

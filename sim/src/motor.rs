@@ -168,14 +168,6 @@ pub(crate) fn set_rigid_velocity_motor(
         .set_motor_max_force(axis, max_force.max(0.0) as f32);
 }
 
-/// Switches the motor of `axis` off (no force), keeping the axis free.
-pub(crate) fn set_motor_off(joint: &mut GenericJoint, axis: JointAxis) {
-    joint
-        .set_motor_model(axis, MotorModel::ForceBased)
-        .set_motor(axis, 0.0, 0.0, 0.0, 0.0)
-        .set_motor_max_force(axis, 0.0);
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -60,6 +60,9 @@ impl World {
             config,
         };
         world.build_static();
+        // The ground and obstacles enter rapier's query structure in a step; the car wheels
+        // look for them before the first one. Nothing moves in this step.
+        world.physics.step();
         Ok(world)
     }
 
@@ -219,21 +222,21 @@ impl World {
 
     /// The number of rapier steps that make up the coming `basicTimeStep`.
     ///
-    /// One rapier step with one solver substep is exact for a rolling wheel whatever its speed:
-    /// rapier computes the contact points at the start of the step and only re-evaluates them
-    /// (as points fixed to each body) between solver substeps, which a spinning wheel would
-    /// break (at 80 rad/s a wheel turns 0.4 rad in a 5 ms substep and its contact point rises
-    /// by r·(1 − cos 0.4) = 3 cm in the solver's eyes). What still depends on the rotation per
-    /// step is rapier's implicit gyroscopic term, first order in ω·dt: as a margin, a step in
-    /// which a wheel would turn more than [`MAX_WHEEL_ROTATION_PER_SUBSTEP`] (judged from the
-    /// wheel speeds of the previous step: above 100 rad/s at 10 ms, 134 km/h on a 0.374 m tyre)
-    /// is split into equal rapier steps; at most [`MAX_SUBSTEPS`].
+    /// One rapier step with one solver substep is exact for a rolling wheel of a physics-mode
+    /// DifferentialWheels robot whatever its speed: rapier computes the contact points at the
+    /// start of the step and only re-evaluates them (as points fixed to each body) between
+    /// solver substeps, which a spinning wheel would break (at 80 rad/s a wheel turns 0.4 rad in
+    /// a 5 ms substep and its contact point rises by r·(1 − cos 0.4) = 3 cm in the solver's
+    /// eyes). What still depends on the rotation per step is rapier's implicit gyroscopic term,
+    /// first order in ω·dt: as a margin, a step in which a robot wheel would turn more than
+    /// [`MAX_WHEEL_ROTATION_PER_SUBSTEP`] (judged from the wheel speeds of the previous step) is
+    /// split into equal rapier steps; at most [`MAX_SUBSTEPS`]. Car wheels are not rapier
+    /// bodies (their spin does not enter rapier) and never split a step.
     fn substeps(&self, dt: f64) -> usize {
         let rotation = self
-            .vehicles
+            .robots
             .iter()
-            .map(|v| v.max_wheel_rotation(dt))
-            .chain(self.robots.iter().map(|r| r.max_wheel_rotation(dt)))
+            .map(|r| r.max_wheel_rotation(dt))
             .fold(0.0_f64, f64::max);
         let n = (rotation / MAX_WHEEL_ROTATION_PER_SUBSTEP).ceil();
         if n.is_finite() && n > 1.0 {
@@ -288,21 +291,14 @@ pub const MAX_SUBSTEPS: usize = 8;
 
 /// rapier's parameters for `config`.
 ///
-/// Contact recycling is off: it would reuse a wheel's contact points for several steps while
-/// the wheel rolls (they move with the tyre), which makes the ride bumpy; the ground contacts
-/// are few and cheap to recompute (turning it on saves nothing measurable).
+/// Contact recycling is off: it would reuse a robot wheel's contact points for several steps
+/// while the wheel rolls (they move with the tyre), which makes the ride bumpy; the ground
+/// contacts are few and cheap to recompute.
 ///
 /// Friction stays out of the biased pass (`friction_in_bias_pass: false`, rapier's default):
 /// with it in, the friction also answers the contacts' position-correction velocities, which
-/// let a speed-mode tyre slip by 10 % above 70 rad/s and made the brakes 10 % too strong. The
-/// price, joint coordinates integrated from a velocity without this step's tyre friction, only
-/// affects the wheel angles, which are therefore integrated from the solved spin rates
-/// (`VehicleState::wheel_angles`).
-///
-/// The friction is therefore solved only in the unbiased sweeps, `friction_iterations` of them
-/// per substep (see [`SolverSettings::friction_iterations`](crate::SolverSettings)): rapier's
-/// multibody contacts solve the two friction axes separately in a world-fixed basis, which a
-/// single sweep gets badly wrong for a wheel heading away from the world axes.
+/// makes a driven wheel slip and a braked one grip too hard. It is solved in the
+/// `friction_iterations` unbiased sweeps (see [`SolverSettings`](crate::SolverSettings)).
 fn integration_parameters(config: &WorldConfig) -> IntegrationParameters {
     IntegrationParameters {
         dt: config.dt() as f32,

@@ -1,10 +1,10 @@
 //! Tyre contact: free and coasting wheels roll at the kinematic rate of the chassis at every
 //! step, whatever the car's heading.
 //!
-//! rapier solves a multibody contact's friction one world axis at a time; a wheel (light along
-//! its heading, heavy across it) pointing away from the world axes made one friction sweep
-//! overshoot and the free wheels chatter between 7.5 and 21 rad/s at 20 km/h
-//! (`SolverSettings::friction_iterations`).
+//! The first car model (a rapier multibody) got this wrong: rapier solves a multibody
+//! contact's friction one world axis at a time, and a wheel pointing away from the world axes
+//! chattered between 7.5 and 21 rad/s at 20 km/h. The tyre solve works in each tyre's own
+//! frame; these tests keep it honest.
 
 // Helpers outside `#[test]` functions unwrap too: clippy.toml only exempts test bodies.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -52,9 +52,8 @@ const REAR: [Wheel; 2] = [Wheel::RearRight, Wheel::RearLeft];
 /// BmwX5 (front drive) in cruise control at 20 km/h with the steering at 0.2 rad: once the
 /// turn is steady (v ≈ 5.1 m/s, yaw rate ≈ −0.37 rad/s, the heading sweeping 1.9 rad in the
 /// 5 s measured), each free rear wheel turns at (v − ω·y)/r, about 13.7 rad/s (right, inside)
-/// and 15.2 rad/s (left), within 2 % at every step. The two tread edges of the 0.25 m wide
-/// rigid tyre need rates ω·0.25/v ≈ 1.8 % apart, so about 1 % of scrub remains. One friction
-/// sweep gave 65 %.
+/// and 15.2 rad/s (left), within 2 % at every step (measured: 0.05 %; the multibody model
+/// with one friction sweep gave 65 %).
 #[test]
 fn bmw_x5_free_rear_wheels_roll_smoothly_in_a_turn() {
     let (mut sim, id) = common::settled(Model::BmwX5, 1.0);
@@ -66,10 +65,9 @@ fn bmw_x5_free_rear_wheels_roll_smoothly_in_a_turn() {
     assert!(e < 0.02, "rear wheel off its rolling rate by {e}");
 }
 
-/// BmwX5 cruising straight at 20 km/h heading 45° from the world x axis, the worst heading
-/// for rapier's world-axis friction solve: the free rear wheels roll at v/r = 5.556/0.374 =
-/// 14.85 rad/s within 0.5 % at every step (one friction sweep gave 27 %; at heading 0 it gives
-/// 0.2 %).
+/// BmwX5 cruising straight at 20 km/h heading 45° from the world x axis (the worst heading
+/// for a world-axis friction solve): the free rear wheels roll at v/r = 5.556/0.374 =
+/// 14.85 rad/s within 0.5 % at every step.
 #[test]
 fn bmw_x5_free_wheels_roll_smoothly_at_45_degrees() {
     let mut sim = Simulation::new(World::new(WorldConfig::default()).unwrap());
@@ -89,8 +87,8 @@ fn bmw_x5_free_wheels_roll_smoothly_at_45_degrees() {
 
 /// TeslaModel3 (rear drive) as in the C API's torque test: first gear at throttle 0.15 for
 /// 3 s, a 0.25 rad turn for 1 s, straight for 1 s, then neutral. Coasting (no torque on any
-/// wheel), all four wheels roll at (v − ω·y)/r within 2 % at every step (one friction sweep:
-/// 127 %, the rear wheels between 1.6 and 37 rad/s), and the car decelerates smoothly.
+/// wheel), all four wheels roll at (v − ω·y)/r within 2 % at every step, and the car
+/// decelerates smoothly.
 #[test]
 fn tesla_model_3_wheels_roll_smoothly_when_coasting() {
     let (mut sim, id) = common::settled(Model::TeslaModel3, 1.0);

@@ -1,55 +1,55 @@
-//! Cars on rapier joints: the Webots `AckermannVehicle` rebuilt from rigid bodies.
+//! Cars on rapier: one rigid chassis on four ray-cast wheels, with Webots motor semantics.
 //!
 //! # Layout
 //!
-//! * **chassis**: one dynamic body with the model's mass, centre of mass and inertia tensor and
-//!   a collision box ([`ChassisSpec`]). Its rapier frame sits at its centre of mass; the car
-//!   frame (origin at the rear-axle centre at wheel-centre height, x forward, y left, z up) is
-//!   derived from it;
-//! * **front wheels** (Webots `Hinge2Joint`): chassis → *knuckle* joint with the suspension on
-//!   LinZ and the steering on AngZ, then knuckle → wheel spin joint on AngY. rapier cannot free
-//!   two angular axes of one joint in sequence, hence the knuckle, a small body (a quarter of
-//!   the wheel mass, taken from the chassis so the car's mass and centre of mass are kept);
-//! * **rear wheels** (Webots `HingeJoint`): one chassis → wheel joint, suspension on LinZ and
-//!   spin on AngY;
-//! * **wheels**: solid cylinders (radius `tireRadius`, length `thickness`, the wheel mass) whose
-//!   axis is rapier's local y, the spin axis. They touch only static geometry.
+//! * **chassis**: one dynamic rapier body whose frame is the car frame (origin at the rear-axle
+//!   centre at wheel-centre height, x forward, y left, z up), with the mass properties of the
+//!   whole car (the model's body plus four solid-cylinder wheels at their unloaded positions)
+//!   and a collision box ([`ChassisSpec`]) that meets walls, ramps and other cars;
+//! * **wheels**: no rapier bodies. Each step a ray from one tyre radius above the wheel's hard
+//!   point (its centre at the unloaded spring length) down the chassis' −z axis, two radii long,
+//!   finds the static ground under the wheel; the wheel touches it when it lies within a radius
+//!   of the hard point. Each wheel keeps its own spin rate and, at the front, a steering angle.
 //!
-//! All joints form one rapier **multibody** (reduced coordinates) rooted at the chassis. Impulse
-//! joints were tried first: cheaper, but their iterative solution between a 2-tonne chassis,
-//! 8 kg knuckles and 30 kg wheels left a steering offset of up to 0.07 rad and a creep of
-//! 0.1 m/s at rest, and made the heavier cars wander. Multibody joints are exact, give the
-//! joint coordinates directly (continuous wheel angles, steering angles, suspension travel)
-//! and carry per-DoF implicit springs, damping and dry friction.
+//! Webots builds the same car from ODE joints (`Hinge2Joint` at the front, `HingeJoint` at the
+//! rear) and cylinder contacts. A rapier multibody of chassis, knuckles and cylinders was this
+//! crate's first model: exact, but 56 µs per step, and rapier solves a multibody contact's
+//! friction one world axis at a time, which made wheels away from the world axes chatter. The
+//! wheels here are the same joints written as constraints of a small solver of our own
+//! (`tyre`), exact at any heading and about ten times cheaper; what changes is listed in
+//! `COMPATIBILITY.md` (no wheel hop, wheels see the ground along one ray).
 //!
-//! # Actuators
+//! # Actuators and the step
 //!
-//! * **suspension** (LinZ): an implicit joint spring `k` with its rest position at the unloaded
-//!   wheel height plus implicit DoF damping `c` (Webots: the ODE suspension's `erp`/`cfm` from
-//!   `k` and `c`); no stops, as in Webots;
-//! * **steering** (AngZ): the Webots position controller ([`PositionServo`]: P = 10, at most
-//!   10 rad/s) sets a rigid velocity motor limited to `maxSteeringTorque`; the joint angle is
-//!   −steering (positive steering turns right, a rotation about −z);
-//! * **wheel spin** (AngY): implicit DoF damping `wheelsDampingConstant` (exactly Webots' joint
-//!   damping) and, per step, from the [`WheelDrive`] command:
-//!   * `Velocity`: the ramped command of a [`VelocityRamp`] on a rigid velocity motor of
-//!     10⁸ N·m (Webots `maxTorque`); brakes and damping are overpowered, as in Webots;
-//!   * `Torque(τ)`: `τ` applied with `add_torque` to the wheel and its opposite to the carrier
-//!     (knuckle or chassis), the motor switched off;
-//!   * `Free`: motor off, no torque;
-//!   * the **brake** (any mode) is the DoF's dry friction of magnitude `brake_torque`: a
-//!     Coulomb torque opposing the rotation that also holds a stopped wheel. rapier's one motor
-//!     per axis is thus never shared: drive on the motor, brake on the DoF friction, damping on
-//!     the DoF damping.
+//! Before each rapier step, [`Vehicle::pre_step`](Vehicle) (in this order):
+//!
+//! * **steering**: the Webots position controller ([`PositionServo`]: P = 10, at most
+//!   10 rad/s) gives a velocity command that a motor of `maxSteeringTorque` reaches at once or,
+//!   against the wheel's inertia about the steering axis, within its torque; the angle stays
+//!   within `[minSteeringAngle, maxSteeringAngle]`;
+//! * **wheel spin**, from the [`WheelDrive`] command:
+//!   * `Velocity`: the ramped command of a [`VelocityRamp`] is imposed (Webots `maxTorque`
+//!     10⁸ N·m: never saturated); brakes and damping are overpowered, as in Webots;
+//!   * `Torque(τ)`: `τ·dt/I` is added to the spin (its reaction reaches the chassis through the
+//!     tyre);
+//!   * `Free`: no torque;
+//!   * in the last two, `wheelsDampingConstant` slows the spin (implicitly) and the brake is a
+//!     Coulomb torque of at most `brake_torque` that also holds a stopped wheel;
+//! * **gravity** is added to the chassis velocity, then the **suspension springs and dampers**
+//!   (implicit, per axle `k` and `c`, no stops, as in Webots), the **tyre friction** (no slip
+//!   up to the friction circle `μ·N`, μ = the ground's friction × 1) and the **brakes** are
+//!   solved together (`tyre` module), and the resulting chassis velocity goes to rapier, which
+//!   integrates it and resolves the chassis' own collisions.
 //!
 //! The wipers are kinematic: their angle follows the Webots position controller (P = 10) at the
 //! commanded velocity within the wiper range; no body is simulated.
 
 mod build;
 mod spec;
+mod tyre;
 
 use ackermann::{PerWheel, Wheel, WheelAngles};
-use rapier3d::prelude::{JointAxis, PhysicsWorld, RigidBody, Vector};
+use rapier3d::prelude::{Mat3, PhysicsWorld, QueryFilter, Ray, RigidBody, Vector};
 
 use vehicle_model::{Commands, Sensors, WheelDrive};
 
@@ -57,8 +57,13 @@ pub use spec::{ChassisSpec, SpringDamper, SteeringSpec, VehicleSpec, WheelSpec};
 
 use crate::error::{BodyOwner, BodyPart, ParamError, SimError};
 use crate::geom;
-use crate::motor::{self, PositionServo, VelocityRamp, WHEEL_MOTOR_MAX_TORQUE};
+use crate::motor::{self, PositionServo, VelocityRamp};
 use build::Parts;
+use tyre::{Body, Contact, Impulses, Spin, WheelRow};
+
+/// Smallest cosine between the ground normal under a wheel and the chassis' up axis for the
+/// wheel to stand on it (about 84°): a steeper face (a wall under the ray) is no ground.
+const MIN_GROUND_COSINE: f32 = 0.1;
 
 /// Handle of a car in a [`World`](crate::World).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -104,17 +109,12 @@ pub struct VehicleState {
     /// Acceleration of the centre of mass along the chassis y axis (left) over the last step
     /// (m/s²): positive in a left turn.
     pub lateral_acceleration: f64,
-    /// Wheel spin speeds relative to their carrier (rad/s, positive = rolling forward).
+    /// Wheel spin speeds relative to the chassis (rad/s, positive = rolling forward).
     pub wheel_speeds: PerWheel<f64>,
     /// Continuous wheel rotation angles (rad, positive = rolling forward): the Webots wheel
     /// position sensors.
     ///
-    /// Each step adds `wheel_speeds · dt`, the rotation at the solved end-of-step spin rate.
-    /// rapier's own joint coordinate is integrated from the velocity of its biased solver
-    /// pass, which leaves out the tyre friction (solved in the relaxation pass, as rapier does
-    /// by default): under a drive torque it runs ahead by up to `τ·dt²/I` per step (0.1 rad
-    /// for a BmwX5 front wheel in first gear) and would feed the driver library a jittering,
-    /// too-high wheel speed.
+    /// Each step adds `wheel_speeds · dt`, the rotation at the end-of-step spin rate.
     pub wheel_angles: PerWheel<f64>,
     /// Measured front steering angles (rad, positive = right): the Webots steering sensors.
     pub steering: WheelAngles<f64>,
@@ -125,7 +125,8 @@ pub struct VehicleState {
     pub wiper: Option<f64>,
 }
 
-/// A car in a world: its bodies, its latest commands and its measured state.
+/// A car in a world: its chassis body, its wheels' state, its latest commands and its measured
+/// state.
 #[derive(Debug, Clone)]
 pub struct Vehicle {
     id: VehicleId,
@@ -133,6 +134,10 @@ pub struct Vehicle {
     parts: Parts,
     commands: Option<Commands<f64>>,
     ramps: PerWheel<Option<VelocityRamp>>,
+    /// Steering rates of the front wheels `[right, left]` (rad/s, positive = right).
+    steering_rates: [f64; 2],
+    /// The tyre solve's impulses of the last step: the next step's warm start.
+    impulses: PerWheel<Impulses>,
     previous_com_velocity: Option<Vector>,
     state: VehicleState,
     steering_servo: PositionServo,
@@ -158,17 +163,15 @@ impl Vehicle {
             }
         };
         let origin = geom::pose_xyz_yaw([placement.x, placement.y, z], placement.yaw);
-        let parts = build::build(world, &spec, origin).ok_or(SimError::NonFinite {
-            owner: BodyOwner::Vehicle(id.0),
-            part: BodyPart::Chassis,
-            time_ms: 0,
-        })?;
+        let parts = build::build(world, &spec, origin);
         Ok(Vehicle {
             id,
             spec,
             parts,
             commands: None,
             ramps: PerWheel::splat(None),
+            steering_rates: [0.0; 2],
+            impulses: PerWheel::splat(Impulses::default()),
             previous_com_velocity: None,
             state: VehicleState {
                 position: [placement.x, placement.y, z],
@@ -221,91 +224,183 @@ impl Vehicle {
         self.commands = Some(*commands);
     }
 
-    /// The largest wheel rotation (rad) of the last step: the world sub-steps rapier when it is
-    /// large.
-    pub(crate) fn max_wheel_rotation(&self, dt: f64) -> f64 {
-        self.state
-            .wheel_speeds
-            .iter()
-            .fold(0.0_f64, |m, w| m.max(w.abs()))
-            * dt
-    }
-
-    /// Applies the commands to the joints for the coming step of `dt` seconds.
-    pub(crate) fn pre_step(&mut self, world: &mut PhysicsWorld, dt: f64) {
-        let commands = self.commands;
-        let steering = commands
+    /// Moves the steering for the coming step of `dt` seconds: the Webots position controller's
+    /// velocity command, reached within `maxSteeringTorque` against the wheel's inertia about
+    /// the steering axis.
+    fn steer(&mut self, dt: f64) {
+        let target = self
+            .commands
             .as_ref()
             .map_or(WheelAngles::new(0.0, 0.0), |c| c.steering);
-        let measured = self.state.steering;
-        for (handle, target, angle) in [
-            (self.parts.steer_joints[0], steering.right, measured.right),
-            (self.parts.steer_joints[1], steering.left, measured.left),
-        ] {
-            let v = self.steering_servo.velocity(target, angle);
-            if let Some(j) = build::joint_mut(world, handle) {
-                motor::set_rigid_velocity_motor(
-                    j,
-                    JointAxis::AngZ,
-                    -v,
-                    self.spec.steering.max_torque,
-                );
-            }
-        }
-
-        for h in self.parts.bodies() {
-            if let Some(b) = world.bodies.get_mut(h) {
-                b.reset_torques(false);
-            }
-        }
-        for w in Wheel::ALL {
-            let (drive, brake) = match &commands {
-                Some(c) => (c.drive[w], c.brake_torque[w]),
-                None => (WheelDrive::Free, 0.0),
-            };
-            let brake = if brake.is_finite() {
-                brake.max(0.0)
+        let (lo, hi) = (self.spec.steering.min_angle, self.spec.steering.max_angle);
+        for (i, w) in [Wheel::FrontRight, Wheel::FrontLeft]
+            .into_iter()
+            .enumerate()
+        {
+            let (target, angle) = if i == 0 {
+                (target.right, self.state.steering.right)
             } else {
-                0.0
+                (target.left, self.state.steering.left)
             };
-            let handle = self.parts.spin_joints[w];
-            build::set_dof_friction(world, handle, Parts::spin_dof(w), brake);
-            match drive {
-                WheelDrive::Velocity {
-                    target,
-                    acceleration,
-                    max_velocity,
-                } => {
-                    let omega = self.state.wheel_speeds[w];
-                    let ramp = self.ramps[w].get_or_insert(VelocityRamp::starting_at(omega));
-                    let command = ramp.step(target, acceleration, max_velocity, dt);
-                    if let Some(j) = build::joint_mut(world, handle) {
-                        motor::set_rigid_velocity_motor(
-                            j,
-                            JointAxis::AngY,
-                            command,
-                            WHEEL_MOTOR_MAX_TORQUE,
-                        );
-                    }
-                }
-                WheelDrive::Torque(_) | WheelDrive::Free => {
-                    self.ramps[w] = None;
-                    if let Some(j) = build::joint_mut(world, handle) {
-                        motor::set_motor_off(j, JointAxis::AngY);
-                    }
-                    if let WheelDrive::Torque(t) = drive
-                        && t.is_finite()
-                        && t != 0.0
-                    {
-                        let t = t.clamp(-WHEEL_MOTOR_MAX_TORQUE, WHEEL_MOTOR_MAX_TORQUE);
-                        self.apply_spin_torque(world, w, t);
-                    }
-                }
+            let command = self.steering_servo.velocity(target, angle);
+            let s = &self.spec.wheels[w];
+            let inertia = s.mass * (3.0 * s.radius * s.radius + s.width * s.width) / 12.0;
+            let max_change = self.spec.steering.max_torque * dt / inertia;
+            let rate = &mut self.steering_rates[i];
+            *rate += (command - *rate).clamp(-max_change, max_change);
+            let next = angle + *rate * dt;
+            let clamped = next.clamp(lo, hi);
+            if clamped != next {
+                *rate = 0.0;
+            }
+            if i == 0 {
+                self.state.steering.right = clamped;
+            } else {
+                self.state.steering.left = clamped;
             }
         }
+    }
 
+    /// Sets up wheel `w`'s spin for the step: the imposed rate of a velocity command, or a free
+    /// spin after the drive torque and the damping, with its brake.
+    fn spin(&mut self, w: Wheel, dt: f64) -> (Spin, f64) {
+        let (drive, brake) = match &self.commands {
+            Some(c) => (c.drive[w], c.brake_torque[w]),
+            None => (WheelDrive::Free, 0.0),
+        };
+        let omega = self.state.wheel_speeds[w];
+        if let WheelDrive::Velocity {
+            target,
+            acceleration,
+            max_velocity,
+        } = drive
+        {
+            let ramp = self.ramps[w].get_or_insert(VelocityRamp::starting_at(omega));
+            return (
+                Spin::Imposed,
+                ramp.step(target, acceleration, max_velocity, dt),
+            );
+        }
+        self.ramps[w] = None;
+        let inertia = build::spin_inertia(&self.spec, w);
+        let torque = match drive {
+            WheelDrive::Torque(t) if t.is_finite() => t.clamp(
+                -motor::WHEEL_MOTOR_MAX_TORQUE,
+                motor::WHEEL_MOTOR_MAX_TORQUE,
+            ),
+            _ => 0.0,
+        };
+        let omega =
+            (omega + torque * dt / inertia) / (1.0 + self.spec.wheels_damping * dt / inertia);
+        let brake = if brake.is_finite() {
+            brake.max(0.0)
+        } else {
+            0.0
+        };
+        let spin = Spin::Free {
+            inv_inertia: (1.0 / inertia) as f32,
+            brake_impulse: (brake * dt) as f32,
+        };
+        (spin, omega)
+    }
+
+    /// Applies the commands for the coming step of `dt` seconds: steering, wheel spins, then
+    /// the suspension, tyre and brake solve, whose chassis velocity rapier integrates.
+    pub(crate) fn pre_step(&mut self, world: &mut PhysicsWorld, dt: f64) {
+        self.steer(dt);
+        self.step_wipers(dt);
+        let Some(chassis) = world.bodies.get(self.parts.chassis) else {
+            return;
+        };
+        let pose = *chassis.position();
+        let q = pose.rotation;
+        let com = chassis.center_of_mass();
+        let up = q * Vector::Z;
+        let rotation = Mat3::from_quat(q);
+        let mut body = Body {
+            linvel: chassis.linvel() + world.gravity * dt as f32,
+            angvel: chassis.angvel(),
+            inv_mass: self.parts.inv_mass,
+            inv_inertia: rotation * self.parts.inv_inertia * rotation.transpose(),
+        };
+        let steering = self.state.steering;
+        let mut rows = [WheelRow {
+            contact: None,
+            spin: Spin::Imposed,
+            omega: 0.0,
+            impulses: Impulses::default(),
+        }; 4];
+        let mut imposed = [0.0; 4];
+        for (i, w) in Wheel::ALL.into_iter().enumerate() {
+            let s = self.spec.wheels[w];
+            let suspension = if w.is_front() {
+                self.spec.front_suspension
+            } else {
+                self.spec.rear_suspension
+            };
+            let delta = match w {
+                Wheel::FrontRight => steering.right,
+                Wheel::FrontLeft => steering.left,
+                Wheel::RearRight | Wheel::RearLeft => 0.0,
+            };
+            // Positive steering turns right: the wheel axis (car y) turned by −δ about z.
+            let axis = q * Vector::new(delta.sin() as f32, delta.cos() as f32, 0.0);
+            let radius = s.radius as f32;
+            let hard_point = pose.transform_point(geom::vec3(s.position));
+            let origin = hard_point + up * radius;
+            let ray = Ray::new(origin, -up);
+            let hit = world.cast_ray_and_get_normal(
+                &ray,
+                2.0 * radius,
+                true,
+                QueryFilter::exclude_dynamic(),
+            );
+            rows[i].contact = hit.and_then(|(collider, hit)| {
+                let n = hit.normal;
+                let lateral = (axis - n * n.dot(axis)).normalize_or_zero();
+                if n.dot(up) < MIN_GROUND_COSINE || lateral == Vector::ZERO {
+                    return None;
+                }
+                let friction = world.colliders.get(collider).map_or(1.0, |c| c.friction());
+                Some(Contact {
+                    hardpoint_arm: hard_point - com,
+                    up,
+                    compression: 2.0 * radius - hit.time_of_impact,
+                    contact_arm: origin - up * hit.time_of_impact - com,
+                    forward: lateral.cross(n),
+                    lateral,
+                    radius,
+                    friction,
+                    stiffness: suspension.stiffness as f32,
+                    damping: suspension.damping as f32,
+                })
+            });
+            let (spin, omega) = self.spin(w, dt);
+            rows[i].spin = spin;
+            rows[i].omega = omega as f32;
+            rows[i].impulses = self.impulses[w];
+            imposed[i] = omega;
+        }
+        tyre::solve(&mut body, &mut rows, dt as f32);
+        for (i, w) in Wheel::ALL.into_iter().enumerate() {
+            let r = &rows[i];
+            self.impulses[w] = r.impulses;
+            self.state.wheel_speeds[w] = match r.spin {
+                Spin::Imposed => imposed[i],
+                Spin::Free { .. } => f64::from(r.omega),
+            };
+            self.state.suspension[w] = r.contact.map_or(0.0, |c| f64::from(c.compression));
+        }
+        if let Some(chassis) = world.bodies.get_mut(self.parts.chassis) {
+            chassis.set_linvel(body.linvel, true);
+            chassis.set_angvel(body.angvel, true);
+        }
+    }
+
+    /// Moves the kinematic wipers toward their command for a step of `dt` seconds.
+    fn step_wipers(&mut self, dt: f64) {
         if let (Some(angle), Some([lo, hi])) = (self.state.wiper, self.spec.wiper_range)
-            && let Some(cmd) = commands.as_ref().and_then(|c| c.cockpit.wipers)
+            && let Some(cmd) = self.commands.as_ref().and_then(|c| c.cockpit.wipers)
         {
             let servo = PositionServo {
                 gain: motor::POSITION_P_GAIN,
@@ -322,22 +417,6 @@ impl Vehicle {
         }
     }
 
-    /// Applies `torque` (N·m) about wheel `w`'s spin axis to the wheel and its reaction to the
-    /// carrier, as a Webots torque-controlled motor does.
-    fn apply_spin_torque(&self, world: &mut PhysicsWorld, w: Wheel, torque: f64) {
-        let carrier = self.parts.carrier(w);
-        let Some(axis) = world.bodies.get(carrier).map(|b| *b.rotation() * Vector::Y) else {
-            return;
-        };
-        let t = axis * torque as f32;
-        if let Some(b) = world.bodies.get_mut(self.parts.wheels[w]) {
-            b.add_torque(t, true);
-        }
-        if let Some(b) = world.bodies.get_mut(carrier) {
-            b.add_torque(-t, true);
-        }
-    }
-
     /// Reads the state back after the physics step of `dt` seconds ending at `time_ms`.
     pub(crate) fn post_step(
         &mut self,
@@ -350,52 +429,21 @@ impl Vehicle {
             part,
             time_ms,
         };
-        for (h, part) in [
-            (self.parts.chassis, BodyPart::Chassis),
-            (self.parts.knuckles[0], BodyPart::Knuckle(Wheel::FrontRight)),
-            (self.parts.knuckles[1], BodyPart::Knuckle(Wheel::FrontLeft)),
-        ]
-        .into_iter()
-        .chain(Wheel::ALL.map(|w| (self.parts.wheels[w], BodyPart::Wheel(w))))
-        {
-            if !world.bodies.get(h).is_some_and(finite) {
-                return Err(fail(part));
-            }
-        }
         let chassis = world
             .bodies
             .get(self.parts.chassis)
+            .filter(|b| finite(b))
             .ok_or(fail(BodyPart::Chassis))?;
         let mut s = self.state;
-        for (i, handle) in self.parts.steer_joints.into_iter().enumerate() {
-            let w = if i == 0 {
-                Wheel::FrontRight
-            } else {
-                Wheel::FrontLeft
-            };
-            let (c, _) = build::joint_state(world, handle).ok_or(fail(BodyPart::Knuckle(w)))?;
-            s.suspension[w] = f64::from(c[build::LIN_Z]);
-            let steer = -f64::from(c[build::ANG_Z]);
-            if i == 0 {
-                s.steering.right = steer;
-            } else {
-                s.steering.left = steer;
-            }
-        }
         for w in Wheel::ALL {
-            let (c, v) = build::joint_state(world, self.parts.spin_joints[w])
-                .ok_or(fail(BodyPart::Wheel(w)))?;
-            s.wheel_speeds[w] = f64::from(v[Parts::spin_dof(w)]);
-            // Not rapier's joint coordinate: see `VehicleState::wheel_angles`.
             s.wheel_angles[w] += s.wheel_speeds[w] * dt;
-            if !w.is_front() {
-                s.suspension[w] = f64::from(c[build::LIN_Z]);
+            if !(s.wheel_angles[w].is_finite() && s.wheel_speeds[w].is_finite()) {
+                return Err(fail(BodyPart::Wheel(w)));
             }
         }
-        let q = *chassis.rotation();
-        let origin = chassis
-            .position()
-            .transform_point(-geom::vec3(self.parts.chassis_offset));
+        let pose = *chassis.position();
+        let q = pose.rotation;
+        let origin = pose.translation;
         s.position = geom::arr3(origin);
         s.roll_pitch_yaw = geom::roll_pitch_yaw(q);
         let v = chassis.velocity_at_point(origin);
@@ -409,14 +457,6 @@ impl Vehicle {
             s.lateral_acceleration = f64::from(a.dot(q * Vector::Y));
         }
         self.previous_com_velocity = Some(v_com);
-        if !(s
-            .wheel_angles
-            .iter()
-            .chain(s.wheel_speeds.iter())
-            .all(|x| x.is_finite()))
-        {
-            return Err(fail(BodyPart::Chassis));
-        }
         self.state = s;
         Ok(())
     }

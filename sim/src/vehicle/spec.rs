@@ -79,17 +79,9 @@ pub struct VehicleSpec {
     pub wiper_range: Option<[f64; 2]>,
 }
 
-/// Mass of the steering knuckle that carries a front wheel, as a fraction of that wheel's mass.
-///
-/// Webots' `Hinge2Joint` has two axes on one joint; rapier's generic joint cannot free two
-/// angular axes in sequence, so a small intermediate body carries the steering axis. Its mass
-/// is taken from the chassis so the car's total mass is unchanged.
-pub(crate) const KNUCKLE_MASS_FRACTION: f64 = 0.25;
-
 impl VehicleSpec {
     /// Checks every field: positive masses, lengths and spring constants, a physical inertia
-    /// tensor, finite positions, `min_angle ≤ max_angle`, and a chassis heavy enough to give
-    /// the knuckles their mass.
+    /// tensor, finite positions and `min_angle ≤ max_angle`.
     pub fn validate(&self) -> Result<(), ParamError> {
         let c = &self.chassis;
         ParamError::positive("physics.mass", c.mass)?;
@@ -159,17 +151,6 @@ impl VehicleSpec {
                 v.is_finite() && v > lo
             })?;
         }
-        let knuckles = 2.0
-            * KNUCKLE_MASS_FRACTION
-            * self.wheels[Wheel::FrontRight]
-                .mass
-                .max(self.wheels[Wheel::FrontLeft].mass);
-        ParamError::check(
-            "physics.mass",
-            c.mass,
-            "more than twice the steering-knuckle mass (half a front wheel)",
-            |m| m > 2.0 * knuckles,
-        )?;
         Ok(())
     }
 }
