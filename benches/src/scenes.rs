@@ -34,9 +34,7 @@ pub fn flat_world() -> Result<World, SimError> {
 /// The car of the simulation benches: Webots' BMW X5 (2000 kg, wheelbase 2.995 m, front-wheel
 /// drive), the same size and mass as the peer.
 pub const CAR_MODEL: Model = Model::BmwX5;
-/// Cruising speed of every car (km/h): 10 m/s, the peer's speed. Its wheels turn
-/// 10/0.374·0.01 = 0.27 rad per step, below the [`sim::MAX_WHEEL_ROTATION_PER_SUBSTEP`]
-/// (1 rad) above which `sim` splits a step into several rapier steps.
+/// Cruising speed of every car (km/h): 10 m/s, the peer's speed.
 pub const CRUISE_KMH: f64 = 36.0;
 /// Constant steering command of every car (rad, to the right): a circle of radius about
 /// L/tan δ = 2.995/0.1003 = 29.9 m.
@@ -244,7 +242,7 @@ mod tests {
                 r < 0.9 * kinematic && r > 1.1 * kinematic,
                 "{mode:?}: yaw rate {r}"
             );
-            // One rapier step per basicTimeStep at this speed.
+            // One rapier step per basicTimeStep: car wheels never split a step.
             assert_eq!(sim.world().last_substeps(), 1);
         }
     }

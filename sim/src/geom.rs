@@ -76,7 +76,7 @@ pub(crate) const G_ROBOT_WHEEL: Group = Group::GROUP_5;
 /// The interaction groups of a collider in group `g`.
 ///
 /// Robot wheels touch only static geometry, so a wheel never collides with its own body; car
-/// chassis and robot bodies collide with each other. (Car wheels are rays, not colliders.)
+/// chassis and robot bodies collide with each other. (Car wheels are shape casts, not colliders.)
 pub(crate) fn groups(g: Group) -> InteractionGroups {
     let filter = if g == G_STATIC {
         Group::ALL

@@ -16,9 +16,9 @@
 //! # Physics choices
 //!
 //! * A car is one rapier rigid body (the chassis, with the whole car's mass properties) on
-//!   four ray-cast wheels whose suspension, tyre friction, brakes and spin this crate solves
+//!   four shape-cast cylinder wheels whose suspension, tyre friction, brakes and spin this crate solves
 //!   itself, as velocity constraints between the chassis and the wheel spins (exact at any
-//!   heading, the friction limited to a circle of radius μ·N); see the `vehicle` module docs
+//!   heading, the friction limited to μ·N along each tyre axis, like ODE's friction pyramid); see the `vehicle` module docs
 //!   (on [`Vehicle`]) for how each Webots device maps onto it. rapier integrates the chassis
 //!   and resolves its collisions with walls, ramps, other cars and robots.
 //! * One rapier step with one solver substep per `basicTimeStep`. A physics-mode
@@ -33,7 +33,7 @@
 //!
 //! # Cost
 //!
-//! One BmwX5 step (10 ms: the driver step, the four wheel rays, the tyre solve and one rapier
+//! One BmwX5 step (10 ms: the driver step, the four wheel shape casts, the tyre solve and one rapier
 //! step) takes about 5 µs at rest, 50 or 100 km/h on the 2-core development machine (release
 //! build, `cargo run --release -p sim --example step_cost`), about 2000 times real time; 8
 //! cars cost about 3.8 µs each. `benches` measures it with criterion.

@@ -1,22 +1,18 @@
-//! Webots motor semantics emulated on rapier joint motors.
+//! Webots motor semantics, as per-step computations.
 //!
-//! Webots drives every joint through a `RotationalMotor` device in one of three modes, each
-//! reproduced here as a per-step computation feeding one rapier joint motor:
+//! Webots drives every joint through a `RotationalMotor` device in one of three modes:
 //!
 //! * **velocity control** (`wb_motor_set_position(INFINITY)` + `wb_motor_set_velocity`): the
 //!   commanded velocity moves toward the target by at most `acceleration·dt` per step
-//!   ([`VelocityRamp`]), then an ODE motor with `FMax = maxTorque` tracks it. Here: a rigid
-//!   rapier velocity motor (ForceBased, damping [`RIGID_DAMPING`]) whose `max_force` is the
-//!   motor's maximum torque;
+//!   ([`VelocityRamp`]), then an ODE motor with `FMax = maxTorque` tracks it. A car wheel's
+//!   spin is set to the ramped command (its `maxTorque`, [`WHEEL_MOTOR_MAX_TORQUE`], is never
+//!   reached); a DifferentialWheels hinge gets a rigid rapier velocity motor (ForceBased,
+//!   damping [`RIGID_DAMPING`]) whose `max_force` is the motor's maximum torque;
 //! * **position control** (`wb_motor_set_position`): each step the velocity command is
-//!   `P·(target − position)` clamped to `maxVelocity` ([`PositionServo`]), tracked the same way
-//!   with `max_force = maxTorque`;
+//!   `P·(target − position)` clamped to `maxVelocity` ([`PositionServo`]), reached within
+//!   `maxTorque` (the car's steering, the wipers);
 //! * **torque control** (`wb_motor_set_torque`): a torque about the joint axis with the equal and
-//!   opposite reaction on the parent body (`RigidBody::add_torque` on both, cleared each step).
-//!
-//! rapier allows one motor per joint axis, so velocity control, brakes (a saturated velocity
-//! motor with target 0) and springs (a position motor) are folded into one motor per axis by the
-//! callers, as documented on each joint.
+//!   opposite reaction on the parent body (a car wheel's drive torque).
 
 use rapier3d::prelude::{GenericJoint, JointAxis, MotorModel};
 

@@ -220,7 +220,7 @@ fn full_lock_at_180_kmh_stays_finite() {
     // 180 km/h (the 50 m/s maxVelocity) after 7 s × 1.8 = 12.6 s.
     common::run(&mut sim, 14.0);
     assert!(sim.telemetry(id).unwrap().speed > 49.0);
-    // A wheel at 134 rad/s turns 1.34 rad per 10 ms step; car wheels are rays with their own
+    // A wheel at 134 rad/s turns 1.34 rad per 10 ms step; car wheels are shape casts with their own
     // spin, not rapier bodies, so the world still takes one rapier step.
     assert_eq!(sim.world().last_substeps(), 1);
     sim.driver_mut(id).unwrap().set_steering_angle(1.0);

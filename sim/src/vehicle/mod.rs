@@ -1,4 +1,4 @@
-//! Cars on rapier: one rigid chassis on four ray-cast wheels, with Webots motor semantics.
+//! Cars on rapier: one rigid chassis on four shape-cast wheels, with Webots motor semantics.
 //!
 //! # Layout
 //!
@@ -6,10 +6,12 @@
 //!   centre at wheel-centre height, x forward, y left, z up), with the mass properties of the
 //!   whole car (the model's body plus four solid-cylinder wheels at their unloaded positions)
 //!   and a collision box ([`ChassisSpec`]) that meets walls, ramps and other cars;
-//! * **wheels**: no rapier bodies. Each step a ray from one tyre radius above the wheel's hard
-//!   point (its centre at the unloaded spring length) down the chassis' −z axis, two radii long,
-//!   finds the static ground under the wheel; the wheel touches it when it lies within a radius
-//!   of the hard point. Each wheel keeps its own spin rate and, at the front, a steering angle.
+//! * **wheels**: no rapier bodies. Each step the tyre, a cylinder of `tireRadius` × `thickness`
+//!   turned by the wheel's steering angle, is swept down the chassis' −z axis from one radius
+//!   above the wheel's hard point (its centre at the unloaded spring length) to the hard point;
+//!   the first static surface it meets is the wheel's ground contact (point, normal, friction,
+//!   and the spring compression). Each wheel keeps its own spin rate and, at the front, a
+//!   steering angle.
 //!
 //! Webots builds the same car from ODE joints (`Hinge2Joint` at the front, `HingeJoint` at the
 //! rear) and cylinder contacts. A rapier multibody of chassis, knuckles and cylinders was this
@@ -17,7 +19,7 @@
 //! friction one world axis at a time, which made wheels away from the world axes chatter. The
 //! wheels here are the same joints written as constraints of a small solver of our own
 //! (`tyre`), exact at any heading and about ten times cheaper; what changes is listed in
-//! `COMPATIBILITY.md` (no wheel hop, wheels see the ground along one ray).
+//! `COMPATIBILITY.md` (no wheel hop, one contact per wheel, found along the suspension axis).
 //!
 //! # Actuators and the step
 //!
@@ -37,7 +39,7 @@
 //!     Coulomb torque of at most `brake_torque` that also holds a stopped wheel;
 //! * **gravity** is added to the chassis velocity, then the **suspension springs and dampers**
 //!   (implicit, per axle `k` and `c`, no stops, as in Webots), the **tyre friction** (no slip
-//!   up to the friction circle `μ·N`, μ = the ground's friction × 1) and the **brakes** are
+//!   up to `μ·N` along each tyre axis, μ = the ground's friction × 1) and the **brakes** are
 //!   solved together (`tyre` module), and the resulting chassis velocity goes to rapier, which
 //!   integrates it and resolves the chassis' own collisions.
 //!
@@ -49,7 +51,10 @@ mod spec;
 mod tyre;
 
 use ackermann::{PerWheel, Wheel, WheelAngles};
-use rapier3d::prelude::{Mat3, PhysicsWorld, QueryFilter, Ray, RigidBody, Vector};
+use rapier3d::parry::query::ShapeCastOptions;
+use rapier3d::prelude::{
+    Cylinder, Mat3, PhysicsWorld, Pose, QueryFilter, RigidBody, Rotation, Vector,
+};
 
 use vehicle_model::{Commands, Sensors, WheelDrive};
 
@@ -62,7 +67,7 @@ use build::Parts;
 use tyre::{Body, Contact, Impulses, Spin, WheelRow};
 
 /// Smallest cosine between the ground normal under a wheel and the chassis' up axis for the
-/// wheel to stand on it (about 84°): a steeper face (a wall under the ray) is no ground.
+/// wheel to stand on it (about 84°): a steeper face (a wall beside the tyre) is no ground.
 const MIN_GROUND_COSINE: f32 = 0.1;
 
 /// Handle of a car in a [`World`](crate::World).
@@ -343,20 +348,24 @@ impl Vehicle {
                 Wheel::FrontLeft => steering.left,
                 Wheel::RearRight | Wheel::RearLeft => 0.0,
             };
-            // Positive steering turns right: the wheel axis (car y) turned by −δ about z.
-            let axis = q * Vector::new(delta.sin() as f32, delta.cos() as f32, 0.0);
+            // Positive steering turns right: the wheel (its axis, car y) turned by −δ about z.
+            let steer = Rotation::from_rotation_z(-delta as f32);
+            let axis = q * (steer * Vector::Y);
             let radius = s.radius as f32;
             let hard_point = pose.transform_point(geom::vec3(s.position));
-            let origin = hard_point + up * radius;
-            let ray = Ray::new(origin, -up);
-            let hit = world.cast_ray_and_get_normal(
-                &ray,
-                2.0 * radius,
-                true,
-                QueryFilter::exclude_dynamic(),
-            );
+            // The tyre swept down the suspension axis from one radius above its hard point to
+            // the hard point (the unloaded spring length).
+            let start = Pose::from_parts(hard_point + up * radius, q * steer);
+            let tyre = Cylinder::new((0.5 * s.width) as f32, radius);
+            let options = ShapeCastOptions {
+                max_time_of_impact: radius,
+                target_distance: 0.0,
+                stop_at_penetration: true,
+                compute_impact_geometry_on_penetration: true,
+            };
+            let hit = world.cast_shape(&start, -up, &tyre, options, QueryFilter::exclude_dynamic());
             rows[i].contact = hit.and_then(|(collider, hit)| {
-                let n = hit.normal;
+                let n = hit.normal1;
                 let lateral = (axis - n * n.dot(axis)).normalize_or_zero();
                 if n.dot(up) < MIN_GROUND_COSINE || lateral == Vector::ZERO {
                     return None;
@@ -365,8 +374,8 @@ impl Vehicle {
                 Some(Contact {
                     hardpoint_arm: hard_point - com,
                     up,
-                    compression: 2.0 * radius - hit.time_of_impact,
-                    contact_arm: origin - up * hit.time_of_impact - com,
+                    compression: radius - hit.time_of_impact,
+                    contact_arm: hit.witness1 - com,
                     forward: lateral.cross(n),
                     lateral,
                     radius,

@@ -8,8 +8,9 @@
 //!   force `k·x + c·ẋ`, integrated implicitly (`x` taken at the end of the step), so any stiffness
 //!   is stable at any `basicTimeStep`. The ground cannot pull: the impulse is at least 0;
 //! * **tyre friction** (forward and lateral in the ground plane, at the contact point): no slip,
-//!   coupled in one 2×2 solve, the total impulse limited to the friction *circle* `μ·N·dt` of
-//!   the wheel's suspension load `N`;
+//!   coupled in one 2×2 solve, each direction's impulse limited to `μ·N·dt` of the wheel's
+//!   suspension load `N`: the friction *pyramid* of ODE's default contact (what Webots uses),
+//!   aligned with the tyre, so a spinning or locked wheel keeps its side grip;
 //! * **brake** (on the spin only): a Coulomb torque of at most the brake torque that opposes
 //!   the rotation and holds a stopped wheel.
 //!
@@ -188,7 +189,7 @@ pub(crate) fn solve(body: &mut Body, wheels: &mut [WheelRow; 4], dt: f32) {
         // Warm start, within this step's limits.
         let i = &mut w.impulses;
         i.normal = i.normal.max(0.0);
-        let (f, l) = clamp_to_circle(i.forward, i.lateral, c.friction * i.normal);
+        let (f, l) = clamp_to_box(i.forward, i.lateral, c.friction * i.normal);
         i.forward = f;
         i.lateral = l;
         body.apply(c.hardpoint_arm, c.up * i.normal);
@@ -251,8 +252,8 @@ fn suspension_row(body: &mut Body, w: &mut WheelRow, r: &Rows, c: &Contact) {
     body.apply(c.hardpoint_arm, c.up * (new - old));
 }
 
-/// The tyre: removes the contact point's slip in the ground plane, within the friction circle
-/// of the current suspension impulse.
+/// The tyre: removes the contact point's slip in the ground plane, each direction within the
+/// friction limit of the current suspension impulse.
 fn friction_rows(body: &mut Body, w: &mut WheelRow, r: &Rows, c: &Contact) {
     let v = body.velocity_at(c.contact_arm);
     let slip_f = c.forward.dot(v) - w.omega * c.radius;
@@ -261,23 +262,17 @@ fn friction_rows(body: &mut Body, w: &mut WheelRow, r: &Rows, c: &Contact) {
     let (f0, l0) = (w.impulses.forward, w.impulses.lateral);
     let f = f0 - (a * slip_f + b * slip_l);
     let l = l0 - (b * slip_f + d * slip_l);
-    let (f, l) = clamp_to_circle(f, l, c.friction * w.impulses.normal);
+    let (f, l) = clamp_to_box(f, l, c.friction * w.impulses.normal);
     w.impulses.forward = f;
     w.impulses.lateral = l;
     body.apply(c.contact_arm, c.forward * (f - f0) + c.lateral * (l - l0));
     w.omega -= c.radius * (f - f0) * r.inv_spin;
 }
 
-/// `(x, y)` scaled onto the disc of radius `limit` (≥ 0) if outside it.
-fn clamp_to_circle(x: f32, y: f32, limit: f32) -> (f32, f32) {
+/// `x` and `y` each clamped to `±limit` (a negative limit counts as 0).
+fn clamp_to_box(x: f32, y: f32, limit: f32) -> (f32, f32) {
     let limit = limit.max(0.0);
-    let n2 = x * x + y * y;
-    if n2 <= limit * limit {
-        (x, y)
-    } else {
-        let s = limit / n2.sqrt();
-        (x * s, y * s)
-    }
+    (x.clamp(-limit, limit), y.clamp(-limit, limit))
 }
 
 #[cfg(test)]
@@ -373,9 +368,9 @@ mod tests {
     }
 
     #[test]
-    fn friction_circle_limits_the_tyre_impulse() {
-        // μ = 0.5 on the 9.9 N·s suspension impulse: at most 4.95 N·s, 4.95 mm/s on 1000 kg,
-        // shared between the forward and lateral slips in their ratio.
+    fn friction_pyramid_limits_each_direction() {
+        // μ = 0.5 on the 9.9 N·s suspension impulse: at most 4.95 N·s along each tyre axis,
+        // far below the 3000 and 4000 N·s that would stop the slip.
         let mut b = body();
         b.linvel = Vector::new(-3.0, 4.0, 0.0);
         let mut w = [
@@ -387,9 +382,9 @@ mod tests {
         solve(&mut b, &mut w, 0.01);
         let i = w[0].impulses;
         let limit = 0.5 * i.normal;
-        assert!((i.forward.hypot(i.lateral) - limit).abs() < 1e-4);
-        // Opposite to the slip (−3, 4)/5.
-        assert!((i.forward - 0.6 * limit).abs() < 1e-4 && (i.lateral + 0.8 * limit).abs() < 1e-4);
+        assert!((limit - 0.5 * 10.0 / 1.01).abs() < 1e-3, "{limit}");
+        // Each direction saturated, opposite to its slip.
+        assert!((i.forward - limit).abs() < 1e-4 && (i.lateral + limit).abs() < 1e-4);
     }
 
     #[test]
@@ -435,10 +430,9 @@ mod tests {
     }
 
     #[test]
-    fn clamp_to_circle_scales_onto_the_disc() {
-        assert_eq!(clamp_to_circle(3.0, 4.0, 10.0), (3.0, 4.0));
-        let (x, y) = clamp_to_circle(3.0, 4.0, 2.5);
-        assert!((x - 1.5).abs() < 1e-6 && (y - 2.0).abs() < 1e-6);
-        assert_eq!(clamp_to_circle(3.0, 4.0, -1.0), (0.0, 0.0));
+    fn clamp_to_box_clamps_each_axis() {
+        assert_eq!(clamp_to_box(3.0, -4.0, 10.0), (3.0, -4.0));
+        assert_eq!(clamp_to_box(3.0, -4.0, 3.5), (3.0, -3.5));
+        assert_eq!(clamp_to_box(3.0, 4.0, -1.0), (0.0, 0.0));
     }
 }
