@@ -213,3 +213,41 @@ fn steering_follows_the_webots_position_controller() {
         "{s:?}"
     );
 }
+
+#[test]
+fn a_wheel_torque_in_the_air_turns_the_chassis_the_other_way() {
+    let params = Model::BmwX5.params();
+    let (driver, _) = Driver::new(params.clone(), 10);
+    let mut commands = *driver.commands();
+    commands.drive = ackermann::PerWheel::splat(vehicle_model::WheelDrive::Torque(100.0));
+    commands.brake_torque = ackermann::PerWheel::splat(0.0);
+    let mut world = World::new(WorldConfig::default()).unwrap();
+    let placement = VehiclePlacement {
+        z: Some(5.0),
+        ..VehiclePlacement::default()
+    };
+    let spec = VehicleSpec::from_car(&params).unwrap();
+    let id = world.add_vehicle(spec, placement).unwrap();
+    world.vehicle_mut(id).unwrap().set_commands(&commands);
+    for _ in 0..10 {
+        world.step().unwrap();
+    }
+    let s = world.vehicle(id).unwrap().state();
+    // Free fall: 100 N·m on each I = 2.098 kg·m² wheel against its damping c = 2 N·m·s/rad
+    // spins it up to (τ/c)·(1 − e^(−c·t/I)) = 4.545 rad/s in 0.1 s ...
+    let i = 0.5 * 30.0 * 0.374 * 0.374;
+    let spin = 100.0 / 2.0 * (1.0 - (-2.0 * 0.1 / i as f64).exp());
+    for w in Wheel::ALL {
+        assert!(
+            (s.wheel_speeds[w] / spin - 1.0).abs() < 0.01,
+            "{:?} vs {spin}",
+            s.wheel_speeds
+        );
+    }
+    // ... and the opposite torques, 4 × 100 N·m about −y less the damping, pitch the chassis
+    // nose up (negative): after step k the pitch rate is about −400·k·dt/Iyy, so the pitch
+    // after 10 steps is about −400·55·dt²/Iyy = −2.2/Iyy (4 % less with the damping), with Iyy
+    // about 4500 to 5000 kg·m² for the body and wheels.
+    let pitch = s.roll_pitch_yaw[1];
+    assert!(pitch < -2.2 / 5200.0 && pitch > -2.2 / 4400.0, "{pitch}");
+}

@@ -32,8 +32,7 @@
 //! * **wheel spin**, from the [`WheelDrive`] command:
 //!   * `Velocity`: the ramped command of a [`VelocityRamp`] is imposed (Webots `maxTorque`
 //!     10⁸ N·m: never saturated); brakes and damping are overpowered, as in Webots;
-//!   * `Torque(τ)`: `τ·dt/I` is added to the spin (its reaction reaches the chassis through the
-//!     tyre);
+//!   * `Torque(τ)`: `τ·dt/I` is added to the spin; the chassis takes the opposite torque;
 //!   * `Free`: no torque;
 //!   * in the last two, `wheelsDampingConstant` slows the spin (implicitly) and the brake is a
 //!     Coulomb torque of at most `brake_torque` that also holds a stopped wheel;
@@ -336,6 +335,7 @@ impl Vehicle {
             impulses: Impulses::default(),
         }; 4];
         let mut imposed = [0.0; 4];
+        let mut axes = [Vector::ZERO; 4];
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
             let s = self.spec.wheels[w];
             let suspension = if w.is_front() {
@@ -351,6 +351,7 @@ impl Vehicle {
             // Positive steering turns right: the wheel (its axis, car y) turned by −δ about z.
             let steer = Rotation::from_rotation_z(-delta as f32);
             let axis = q * (steer * Vector::Y);
+            axes[i] = axis;
             let radius = s.radius as f32;
             let hard_point = pose.transform_point(geom::vec3(s.position));
             // The tyre swept down the suspension axis from one radius above its hard point to
@@ -394,10 +395,19 @@ impl Vehicle {
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
             let r = &rows[i];
             self.impulses[w] = r.impulses;
-            self.state.wheel_speeds[w] = match r.spin {
+            let omega = match r.spin {
                 Spin::Imposed => imposed[i],
                 Spin::Free { .. } => f64::from(r.omega),
             };
+            // The reaction of the wheel's angular acceleration on what carries it: the solve
+            // puts the tyre force at the contact point, which carries the reaction of the
+            // torque that the tyre balances; this adds the part that spun the wheel up or
+            // down (I·Δω), so a motor, brake or damper turning a wheel in the air, or a
+            // speed ramp, also turns the chassis the other way.
+            let spin_change =
+                build::spin_inertia(&self.spec, w) * (omega - self.state.wheel_speeds[w]);
+            body.angvel -= body.inv_inertia * (axes[i] * spin_change as f32);
+            self.state.wheel_speeds[w] = omega;
             self.state.suspension[w] = r.contact.map_or(0.0, |c| f64::from(c.compression));
         }
         if let Some(chassis) = world.bodies.get_mut(self.parts.chassis) {

@@ -17,10 +17,11 @@
 //! The spin of each wheel is a coordinate relative to the chassis (reduced coordinates, as
 //! Webots' ODE joints or a rapier multibody): a torque between wheel and chassis (motor, brake,
 //! damping) acts on the spin alone, and a tyre force acts on the chassis at the contact point
-//! and on the spin through the radius. The only term left out is the inertial coupling between
-//! a wheel's spin and the chassis' rotation (a wheel's spin inertia is under 0.1 % of a car's
-//! pitch inertia). In velocity control the spin is imposed (a Webots motor with a practically
-//! unlimited `maxTorque`), so the tyre force acts on the chassis alone.
+//! and on the spin through the radius. The inertial coupling between a wheel's spin and the
+//! chassis' rotation is left out of the solve (a wheel's spin inertia is under 0.1 % of a car's
+//! pitch inertia); the caller applies its effect, the reaction `−I·Δω` of each wheel's change
+//! of spin, to the chassis afterwards. In velocity control the spin is imposed (a Webots motor
+//! with a practically unlimited `maxTorque`), so the tyre force acts on the chassis alone.
 
 use rapier3d::prelude::{Mat3, Vector};
 
