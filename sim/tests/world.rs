@@ -235,8 +235,8 @@ fn a_wheel_torque_in_the_air_turns_the_chassis_the_other_way() {
     let s = world.vehicle(id).unwrap().state();
     // Free fall: 100 N·m on each I = 2.098 kg·m² wheel against its damping c = 2 N·m·s/rad
     // spins it up to (τ/c)·(1 − e^(−c·t/I)) = 4.545 rad/s in 0.1 s ...
-    let i = 0.5 * 30.0 * 0.374 * 0.374;
-    let spin = 100.0 / 2.0 * (1.0 - (-2.0 * 0.1 / i as f64).exp());
+    let i: f64 = 0.5 * 30.0 * 0.374 * 0.374;
+    let spin = 100.0 / 2.0 * (1.0 - (-2.0 * 0.1 / i).exp());
     for w in Wheel::ALL {
         assert!(
             (s.wheel_speeds[w] / spin - 1.0).abs() < 0.01,
