@@ -213,10 +213,14 @@ pub(crate) fn solve(body: &mut Body, wheels: &mut [WheelRow; 4], dt: f32) {
         }
     }
 
-    for _ in 0..SWEEPS {
-        for (row, w) in rows.iter().zip(wheels.iter_mut()) {
+    // Gauss–Seidel favours the rows solved first; swapping the right and left wheels of each
+    // axle every other sweep keeps a symmetric car from drifting to one side.
+    const ORDERS: [[usize; 4]; 2] = [[0, 1, 2, 3], [1, 0, 3, 2]];
+    for sweep in 0..SWEEPS {
+        for i in ORDERS[sweep % 2] {
+            let w = &mut wheels[i];
             brake_row(w);
-            if let (Some(r), Some(c)) = (row, w.contact) {
+            if let (Some(r), Some(c)) = (&rows[i], w.contact) {
                 suspension_row(body, w, r, &c);
                 friction_rows(body, w, r, &c);
             }
