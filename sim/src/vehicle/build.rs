@@ -1,6 +1,5 @@
 //! The chassis body of a car (see the [`vehicle`](super) module docs).
 
-use ackermann::Wheel;
 use rapier3d::prelude::{
     CoefficientCombineRule, ColliderBuilder, MassProperties, Mat3, PhysicsWorld, Pose,
     RigidBodyBuilder, RigidBodyHandle, Vector,
@@ -34,10 +33,9 @@ pub(crate) fn mass_properties(spec: &VehicleSpec) -> MassProperties {
     );
     let mut total =
         MassProperties::with_inertia_matrix(geom::vec3(c.center_of_mass), c.mass as f32, inertia);
-    for w in Wheel::ALL {
-        let s = &spec.wheels[w];
-        let transverse = s.mass * (3.0 * s.radius * s.radius + s.width * s.width) / 12.0;
-        let spin = spin_inertia(spec, w);
+    for s in spec.wheels.iter() {
+        let transverse = s.transverse_inertia();
+        let spin = s.spin_inertia();
         total += MassProperties::new(
             geom::vec3(s.position),
             s.mass as f32,
@@ -45,12 +43,6 @@ pub(crate) fn mass_properties(spec: &VehicleSpec) -> MassProperties {
         );
     }
     total
-}
-
-/// Spin inertia of wheel `w` (kg·m²): a solid cylinder, `m·r²/2`.
-pub(crate) fn spin_inertia(spec: &VehicleSpec, w: Wheel) -> f64 {
-    let s = &spec.wheels[w];
-    0.5 * s.mass * s.radius * s.radius
 }
 
 /// Creates the chassis of `spec` with the car origin at `origin`: one dynamic body with the

@@ -247,8 +247,7 @@ impl Vehicle {
                 (target.left, self.state.steering.left)
             };
             let command = self.steering_servo.velocity(target, angle);
-            let s = &self.spec.wheels[w];
-            let inertia = s.mass * (3.0 * s.radius * s.radius + s.width * s.width) / 12.0;
+            let inertia = self.spec.wheels[w].transverse_inertia();
             let max_change = self.spec.steering.max_torque * dt / inertia;
             let rate = &mut self.steering_rates[i];
             *rate += (command - *rate).clamp(-max_change, max_change);
@@ -286,7 +285,7 @@ impl Vehicle {
             );
         }
         self.ramps[w] = None;
-        let inertia = build::spin_inertia(&self.spec, w);
+        let inertia = self.spec.wheels[w].spin_inertia();
         let torque = match drive {
             WheelDrive::Torque(t) if t.is_finite() => t.clamp(
                 -motor::WHEEL_MOTOR_MAX_TORQUE,
@@ -405,7 +404,7 @@ impl Vehicle {
             // down (I·Δω), so a motor, brake or damper turning a wheel in the air, or a
             // speed ramp, also turns the chassis the other way.
             let spin_change =
-                build::spin_inertia(&self.spec, w) * (omega - self.state.wheel_speeds[w]);
+                self.spec.wheels[w].spin_inertia() * (omega - self.state.wheel_speeds[w]);
             body.angvel -= body.inv_inertia * (axes[i] * spin_change as f32);
             self.state.wheel_speeds[w] = omega;
             self.state.suspension[w] = r.contact.map_or(0.0, |c| f64::from(c.compression));

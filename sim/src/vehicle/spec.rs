@@ -39,6 +39,19 @@ pub struct WheelSpec {
     pub mass: f64,
 }
 
+impl WheelSpec {
+    /// Inertia about the spin axis (kg·m²): a solid cylinder, `m·r²/2`.
+    pub fn spin_inertia(&self) -> f64 {
+        0.5 * self.mass * self.radius * self.radius
+    }
+
+    /// Inertia about a diameter through the centre (kg·m²): a solid cylinder,
+    /// `m·(3·r² + w²)/12`. The steering motor turns the wheel about this axis.
+    pub fn transverse_inertia(&self) -> f64 {
+        self.mass * (3.0 * self.radius * self.radius + self.width * self.width) / 12.0
+    }
+}
+
 /// A linear spring-damper (Webots suspension of an `AckermannVehicle` axle).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SpringDamper {

@@ -180,7 +180,7 @@ pub(crate) fn solve(body: &mut Body, wheels: &mut [WheelRow; 4], dt: f32) {
     let mut rows: [Option<Rows>; 4] = [None; 4];
     for (row, w) in rows.iter_mut().zip(wheels.iter_mut()) {
         *row = w.contact.and_then(|c| Rows::new(body, &c, w.spin, dt));
-        let Some(c) = w.contact.filter(|_| row.is_some()) else {
+        let (Some(r), Some(c)) = (*row, w.contact) else {
             w.impulses = Impulses {
                 brake: w.impulses.brake,
                 ..Impulses::default()
@@ -195,9 +195,7 @@ pub(crate) fn solve(body: &mut Body, wheels: &mut [WheelRow; 4], dt: f32) {
         i.lateral = l;
         body.apply(c.hardpoint_arm, c.up * i.normal);
         body.apply(c.contact_arm, c.forward * f + c.lateral * l);
-        if let Spin::Free { inv_inertia, .. } = w.spin {
-            w.omega -= c.radius * f * inv_inertia;
-        }
+        w.omega -= c.radius * f * r.inv_spin;
     }
     for w in wheels.iter_mut() {
         if let Spin::Free {
