@@ -145,6 +145,7 @@ mod mode;
 mod model;
 mod params;
 mod sound;
+pub mod tyre;
 mod warning;
 mod wipers;
 
@@ -161,6 +162,10 @@ pub use params::{
     WheelMotor, is_physical_inertia,
 };
 pub use sound::{BLINKER_SOUND_FILE, SoundCommand, Sounds};
+pub use tyre::{
+    ContactVelocity, Direction, Linearised, MagicFormula, SlipCurve, TransientSlip, TyreClass,
+    TyreError, TyreField, TyreModel, TyreParams, WebotsContact,
+};
 pub use warning::{EnumKind, Warning};
 pub use wipers::{
     WIPER_END_TOLERANCE, WIPER_FAST_VELOCITY, WIPER_SLOW_VELOCITY, WiperCommand, WiperRange,

@@ -1,0 +1,177 @@
+//! The Magic Formula curve shape, normalised so that its peak sits at a normalised slip of 1.
+//!
+//! Pacejka's pure-slip formula is `y(x) = D·sin(C·atan(B·x − E·(B·x − atan(B·x))))`. Written in
+//! `u = B·x`, its shape depends on `C` and `E` only, and its peak is where
+//! `C·atan((1 − E)·u + E·atan(u)) = π/2`, i.e. at the root `u_p` of
+//! `(1 − E)·u + E·atan(u) = tan(π / (2·C))`. This module finds `u_p` once per parameter set and
+//! evaluates the curve in the normalised slip `s = u / u_p` (peak at `s = 1`), which is how the
+//! combined-slip model of [`super::MagicFormula`] uses it.
+
+use ackermann::Real;
+
+/// The shape of one Magic Formula curve (`C`, `E`) and where its peak lies.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Shape<T> {
+    /// Shape factor `C` (1 < C < 2).
+    pub c: T,
+    /// Curvature factor `E` (< 1).
+    pub e: T,
+    /// `u_p = B·x_peak` (dimensionless, > 0): the peak in the curve's own variable `B·x`.
+    pub u_peak: T,
+}
+
+/// The value and the slope of the normalised curve at one slip.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Point<T> {
+    /// `g(s)`, in [−1, 1]: the force over its peak.
+    pub value: T,
+    /// `dg/ds` on the rising branch, 0 past the peak (the linearisation never uses a negative
+    /// slope: a falling force is treated as a constant one within a step).
+    pub rising_slope: T,
+}
+
+impl<T: Real> Shape<T> {
+    /// The shape of `C` and `E`, `None` unless `1 < C < 2` and `E < 1` (the ranges in which the
+    /// curve has one peak and falls to `sin(C·π/2) > 0` after it).
+    pub fn new(c: T, e: T) -> Option<Self> {
+        if !(c > T::ONE && c < T::TWO && e < T::ONE && e.is_finite()) {
+            return None;
+        }
+        let target = (T::FRAC_PI_2 / c).tan();
+        // h(u) = (1 − E)·u + E·atan(u) rises from 0 without bound (h' ≥ min(1, 1 − E) > 0):
+        // bracket the root by doubling, then bisect to the last bit.
+        let h = |u: T| (T::ONE - e) * u + e * u.atan();
+        let mut hi = T::ONE;
+        let mut doublings = 0;
+        while h(hi) < target {
+            hi *= T::TWO;
+            doublings += 1;
+            if doublings > 200 {
+                return None;
+            }
+        }
+        let mut lo = T::ZERO;
+        for _ in 0..200 {
+            let mid = T::HALF * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if h(mid) < target {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let u_peak = T::HALF * (lo + hi);
+        (u_peak > T::ZERO && u_peak.is_finite()).then_some(Shape { c, e, u_peak })
+    }
+
+    /// The curve at normalised slip `s ≥ 0` (peak 1 at `s = 1`).
+    #[inline]
+    pub fn at(&self, s: T) -> Point<T> {
+        let u = self.u_peak * s;
+        let atan_u = u.atan();
+        let phi = u - self.e * (u - atan_u);
+        let theta = phi.atan();
+        let angle = self.c * theta;
+        let value = angle.sin();
+        let rising_slope = if angle < T::FRAC_PI_2 {
+            // cos(C·θ) = √(1 − sin²) on the rising branch; dφ/ds = u_p·(1 − E + E/(1 + u²)).
+            let dphi = self.u_peak * (T::ONE - self.e + self.e / (T::ONE + u * u));
+            (T::ONE - value * value).max(T::ZERO).sqrt() * self.c * dphi / (T::ONE + phi * phi)
+        } else {
+            T::ZERO
+        };
+        Point {
+            value,
+            rising_slope,
+        }
+    }
+
+    /// `g(s)/s`, the secant slope, which tends to `g'(0) = C·u_p` at `s = 0`.
+    #[inline]
+    pub fn secant(&self, s: T, value: T) -> T {
+        if s > T::from_f64(1e-6) {
+            value / s
+        } else {
+            self.c * self.u_peak
+        }
+    }
+
+    /// The value the curve tends to at large slip, `sin(C·π/2)`: the sliding force over the
+    /// peak force.
+    pub fn sliding_ratio(&self) -> T {
+        (self.c * T::FRAC_PI_2).sin()
+    }
+
+    /// The shape between `self` (weight `1 − w`) and `other` (weight `w`), for a slip direction
+    /// between the two axes.
+    #[inline]
+    pub fn blend(&self, other: &Self, w: T) -> Self {
+        let mix = |a: T, b: T| a + (b - a) * w;
+        Shape {
+            c: mix(self.c, other.c),
+            e: mix(self.e, other.e),
+            u_peak: mix(self.u_peak, other.u_peak),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Pacejka's form, for comparison.
+    fn pacejka(x: f64, b: f64, c: f64, d: f64, e: f64) -> f64 {
+        d * (c * (b * x - e * (b * x - (b * x).atan())).atan()).sin()
+    }
+
+    #[test]
+    fn peak_is_at_normalised_slip_one() {
+        for (c, e) in [
+            (1.65, 0.7),
+            (1.3, -0.5),
+            (1.9, 0.97),
+            (1.1, -3.0),
+            (1.5, 0.0),
+        ] {
+            let s = Shape::<f64>::new(c, e).unwrap();
+            assert!((s.at(1.0).value - 1.0).abs() < 1e-12, "C {c} E {e}");
+            assert!(s.at(0.98).value < 1.0 && s.at(1.02).value < 1.0);
+            // With E = 0 the root is closed-form: u_p = tan(π/(2C)).
+            if e == 0.0 {
+                assert!((s.u_peak - (core::f64::consts::FRAC_PI_2 / c).tan()).abs() < 1e-12);
+            }
+        }
+    }
+
+    #[test]
+    fn matches_pacejka_and_its_slope() {
+        // The dry-tarmac "single set" B = 10, C = 1.9, D = 1, E = 0.97: y(x) = g(B·x/u_p).
+        let (b, c, e) = (10.0, 1.9, 0.97);
+        let s = Shape::<f64>::new(c, e).unwrap();
+        for x in [0.01, 0.05, 0.1, 0.18, 0.5, 1.0] {
+            let g = s.at(b * x / s.u_peak).value;
+            assert!((g - pacejka(x, b, c, 1.0, e)).abs() < 1e-12, "x {x}");
+        }
+        // Slope at the origin: dg/ds = C·u_p (so dy/dx = B·C·D).
+        let p = s.at(0.0);
+        assert!((p.rising_slope - c * s.u_peak).abs() < 1e-12);
+        // Central difference on the rising branch.
+        let h = 1e-6;
+        let fd = (s.at(0.5 + h).value - s.at(0.5 - h).value) / (2.0 * h);
+        assert!((s.at(0.5).rising_slope - fd).abs() < 1e-6);
+        assert_eq!(s.at(2.0).rising_slope, 0.0);
+    }
+
+    #[test]
+    fn sliding_ratio_and_rejected_shapes() {
+        let s = Shape::<f32>::new(1.5, 0.0).unwrap();
+        assert!((s.sliding_ratio() - 0.707_106_8).abs() < 1e-6);
+        assert!(Shape::<f64>::new(1.0, 0.0).is_none());
+        assert!(Shape::<f64>::new(2.0, 0.0).is_none());
+        assert!(Shape::<f64>::new(1.5, 1.0).is_none());
+        assert!(Shape::<f64>::new(f64::NAN, 0.0).is_none());
+        assert!(Shape::<f64>::new(1.5, f64::NEG_INFINITY).is_none());
+    }
+}

@@ -1,0 +1,362 @@
+//! The tyre: the force between the road and a wheel, from how the wheel slips.
+//!
+//! Two models, chosen per car ([`TyreModel`]):
+//!
+//! * [`MagicFormula`] (the default): a slip-based tyre. The longitudinal force follows the
+//!   slip ratio κ and the lateral force the slip angle α along Pacejka Magic Formula curves
+//!   ([`SlipCurve`]) whose peak and stiffness depend on the load; the two combine through a
+//!   normalised slip, so the force stays within a friction ellipse and a locked or spinning
+//!   wheel loses its side grip; past the peak the force falls toward a sliding value. The slip
+//!   is *transient*: it builds up over a relaxation length of rolling ([`TransientSlip`]),
+//!   which gives the tyre's lag and, at walking pace and standstill, turns the tyre into a
+//!   damped spring that holds the contact patch (no creep on a slope, no jitter);
+//! * [`WebotsContact`]: what Webots' ODE contact does (`ContactProperties`): no slip up to
+//!   `coulombFriction × load` along each tyre axis separately (a friction pyramid), plus ODE's
+//!   `forceDependentSlip`, a slip velocity proportional to the force.
+//!
+//! # How a simulator uses the slip-based tyre
+//!
+//! Each step, for each wheel on the ground, with the contact's velocities at the start of the
+//! step ([`ContactVelocity`]: the wheel centre's speed along its heading, and the slip velocity
+//! of the contact point over the road along the heading and the axis):
+//!
+//! 1. [`MagicFormula::linearise`] gives the force per unit load as an affine function of the
+//!    slip velocity at the *end* of the step ([`Linearised`]): `f(v) = force + damping·(v₀ − v)`.
+//!    A solver that takes the force at the end of the step (implicit) stays stable at any step
+//!    however stiff the tyre; multiplied by the load and clamped to the friction ellipse, it is
+//!    the tyre's force;
+//! 2. after the step, [`MagicFormula::relax`] advances the transient slip with the end-of-step
+//!    velocities.
+//!
+//! Signs: x along the wheel's heading, y along its axis (to the left of an unsteered wheel).
+//! The slip ratio is `κ = −v_sx/|v_x|` (> 0 driving, −1 locked) and `tan α = −v_sy/|v_x|`, with
+//! `v_sx = v_x − ω·r` and `v_sy` the contact point's velocities over the road; forces are
+//! positive along +x and +y.
+//!
+//! ```
+//! use vehicle_model::{TyreClass, TransientSlip, ContactVelocity};
+//! let tyre = TyreClass::PassengerCar.params(0.35_f64, 4000.0).validate().unwrap();
+//! // Pure slip: the cornering stiffness at the nominal load is 18 F_z per rad.
+//! let [_, fy] = tyre.force([0.0, 0.001], 4000.0, 1.0);
+//! assert!((fy / 0.001 - 18.0 * 4000.0).abs() < 50.0);
+//! // A locked wheel slides at 0.75 of the peak and has almost no side force left.
+//! let [fx, fy] = tyre.force([-1.0, 0.1], 4000.0, 1.0);
+//! assert!((fx / 4000.0 + 0.74).abs() < 0.02 && fy.abs() < 0.1 * fx.abs());
+//! ```
+
+mod curve;
+mod params;
+
+use ackermann::Real;
+
+use curve::Shape;
+pub use params::{Direction, SlipCurve, TyreClass, TyreError, TyreField, TyreParams};
+
+/// Speed below which the tyre is at "walking pace" (m/s): its carcass damping
+/// ([`TyreParams::low_speed_damping`]) fades in, and slip ratios are measured against this
+/// speed rather than the vanishing rolling speed.
+pub const LOW_SPEED: f64 = 1.0;
+
+/// A car's tyre model.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum TyreModel<T> {
+    /// The slip-based tyre (world files: `tyre = "magic-formula"`, the default).
+    MagicFormula(MagicFormula<T>),
+    /// Webots' ODE contact (world files: `tyre = "webots"`).
+    Webots(WebotsContact<T>),
+}
+
+/// Webots' contact as ODE builds it from `ContactProperties`: Coulomb friction
+/// (`coulombFriction`, the ground's friction here) limiting each tyre axis separately, and
+/// `forceDependentSlip`.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct WebotsContact<T> {
+    /// ODE's force-dependent slip `[fds1, fds2]` (m/s per N, ≥ 0) along the wheel's rolling
+    /// direction and along its axis: the contact slides at `fds·F` under a friction force `F`.
+    /// Webots: `ContactProperties.forceDependentSlip` (one value for both directions, or two).
+    /// 0 (the default) is a rigid contact that does not slip below the friction limit.
+    pub force_dependent_slip: [T; 2],
+}
+
+impl<T: Real> WebotsContact<T> {
+    /// Checks that both slips are finite and in [0, 1] m/s per N.
+    ///
+    /// # Errors
+    /// The offending value, for the field `forceDependentSlip`.
+    pub fn validate(self) -> Result<Self, T> {
+        for v in self.force_dependent_slip {
+            if !(v.is_finite() && v >= T::ZERO && v <= T::ONE) {
+                return Err(v);
+            }
+        }
+        Ok(self)
+    }
+}
+
+/// The velocities of a tyre's contact at one instant.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ContactVelocity<T> {
+    /// Speed of the wheel centre along the wheel's heading in the road plane (m/s, signed).
+    pub forward: T,
+    /// Slip velocity of the contact point over the road `[v_sx, v_sy]` (m/s): along the
+    /// heading, `v_x − ω·r`; along the axis, the contact point's lateral velocity.
+    pub slip: [T; 2],
+}
+
+/// The tyre's transient slip: the slip its carcass deflection corresponds to, which lags the
+/// wheel's kinematic slip by the relaxation length. Zero for a tyre at rest without load.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct TransientSlip<T> {
+    /// Transient slip ratio κ' (dimensionless).
+    pub ratio: T,
+    /// Tangent of the transient slip angle, tan α' (dimensionless).
+    pub angle_tan: T,
+}
+
+impl<T: Real> TransientSlip<T> {
+    fn get(&self) -> [T; 2] {
+        [self.ratio, self.angle_tan]
+    }
+}
+
+/// The tyre force per unit load over one step, as an affine function of the contact's slip
+/// velocity at the end of the step: `f(v) = force + damping·(slip_velocity − v)` along each
+/// tyre axis, then kept within the ellipse of semi-axes `friction`.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Linearised<T> {
+    /// Force per unit load at `slip_velocity` (dimensionless), `[x, y]`.
+    pub force: [T; 2],
+    /// Fall of the force per unit load per m/s of extra slip velocity (s/m, ≥ 0), `[x, y]`.
+    pub damping: [T; 2],
+    /// The slip velocity the linearisation was taken at (m/s), `[x, y]`.
+    pub slip_velocity: [T; 2],
+    /// Peak friction coefficients at this load and road (dimensionless, ≥ 0), `[x, y]`: the
+    /// friction ellipse per unit load.
+    pub friction: [T; 2],
+}
+
+impl<T: Real> Linearised<T> {
+    /// The force per unit load at slip velocity `v` (m/s), before the friction ellipse.
+    pub fn at(&self, v: [T; 2]) -> [T; 2] {
+        [0, 1].map(|i| self.force[i] + self.damping[i] * (self.slip_velocity[i] - v[i]))
+    }
+
+    /// `f` (any unit) scaled down onto the friction ellipse of semi-axes `friction × load`
+    /// when outside it.
+    pub fn clamp_to_ellipse(&self, f: [T; 2], load: T) -> [T; 2] {
+        let [ax, ay] = self.friction.map(|mu| mu * load.max(T::ZERO));
+        if !(ax > T::ZERO && ay > T::ZERO) {
+            return [T::ZERO; 2];
+        }
+        let r = (f[0] / ax).hypot(f[1] / ay);
+        if r > T::ONE { f.map(|v| v / r) } else { f }
+    }
+}
+
+/// The load-dependent coefficients of one evaluation.
+#[derive(Debug, Clone, Copy)]
+struct AtLoad<T> {
+    /// Peak friction `[x, y]` (dimensionless).
+    mu: [T; 2],
+    /// Normalised slip per unit slip, `B/u_p` (1/peak slip), `[x, y]`.
+    scale: [T; 2],
+}
+
+/// The slip-based tyre, validated ([`TyreParams::validate`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MagicFormula<T> {
+    params: TyreParams<T>,
+    shapes: [Shape<T>; 2],
+}
+
+impl<T: Real> MagicFormula<T> {
+    pub(crate) fn new(params: TyreParams<T>) -> Option<Self> {
+        let shapes = [
+            Shape::new(params.longitudinal.shape, params.longitudinal.curvature)?,
+            Shape::new(params.lateral.shape, params.lateral.curvature)?,
+        ];
+        Some(MagicFormula { params, shapes })
+    }
+
+    /// The coefficients.
+    pub fn params(&self) -> &TyreParams<T> {
+        &self.params
+    }
+
+    fn curves(&self) -> [&SlipCurve<T>; 2] {
+        [&self.params.longitudinal, &self.params.lateral]
+    }
+
+    /// The coefficients at `load` (N) on a road of friction `road` (dimensionless); zero
+    /// friction (no force) for a load or road that is not positive.
+    fn at_load(&self, load: T, road: T) -> AtLoad<T> {
+        let p = &self.params;
+        if !(load > T::ZERO && road > T::ZERO && load.is_finite() && road.is_finite()) {
+            return AtLoad {
+                mu: [T::ZERO; 2],
+                scale: [T::ONE; 2],
+            };
+        }
+        let f = T::from_f64;
+        let extra = (load - p.nominal_load) / p.nominal_load;
+        let factor = (T::ONE - p.load_sensitivity * extra).clamp(f(0.5), f(1.5));
+        // C_α(F_z)/F_z = k·(1 + z₀²)/(1 + z²), z = F_z/(p₂·F_z0): Pacejka's sin(2·atan(z))
+        // law divided by the load (sin(2·atan z) = 2z/(1 + z²)).
+        let z = load / (p.cornering_saturation * p.nominal_load);
+        let z0 = T::ONE / p.cornering_saturation;
+        let lateral_stiffness = p.lateral.stiffness * (T::ONE + z0 * z0) / (T::ONE + z * z);
+        let stiffness = [p.longitudinal.stiffness, lateral_stiffness];
+        let curves = self.curves();
+        let mu = [0, 1].map(|i| road * curves[i].peak_friction * factor);
+        // B = K/(C·D) per unit load; the normalised slip is B·x/u_p.
+        let scale =
+            [0, 1].map(|i| stiffness[i] / (self.shapes[i].c * mu[i] * self.shapes[i].u_peak));
+        AtLoad { mu, scale }
+    }
+
+    /// The force per unit load at slips `[κ, tan α]` and its slope along each axis (per unit
+    /// slip, the falling branch counted flat).
+    fn force_and_slope(&self, slip: [T; 2], c: &AtLoad<T>) -> ([T; 2], [T; 2]) {
+        let s = [0, 1].map(|i| c.scale[i] * slip[i]);
+        let norm = s[0].hypot(s[1]);
+        if !(norm > T::ZERO && norm.is_finite()) {
+            let slope =
+                [0, 1].map(|i| c.mu[i] * c.scale[i] * self.shapes[i].c * self.shapes[i].u_peak);
+            return ([T::ZERO; 2], slope);
+        }
+        let n = s.map(|v| v / norm);
+        let shape = self.shapes[0].blend(&self.shapes[1], n[1] * n[1]);
+        let point = shape.at(norm);
+        let secant = shape.secant(norm, point.value);
+        let force = [0, 1].map(|i| c.mu[i] * point.value * n[i]);
+        let slope = [0, 1].map(|i| {
+            let along = n[i] * n[i];
+            c.mu[i] * c.scale[i] * (point.rising_slope * along + secant * (T::ONE - along))
+        });
+        (force, slope)
+    }
+
+    /// The steady-state force (N) `[F_x, F_y]` at slip ratio κ and slip-angle tangent tan α
+    /// (`slip = [κ, tan α]`), under `load` (N) on a road of friction `road`.
+    ///
+    /// In pure slip each component is its Magic Formula curve; combined, the two share one
+    /// normalised slip `s = ‖(κ/κ_p, tan α/α_p)‖` (κ_p, α_p the peak slips), so
+    /// `(F_x/μ_x F_z)² + (F_y/μ_y F_z)² ≤ 1`. Non-finite input gives no force.
+    pub fn force(&self, slip: [T; 2], load: T, road: T) -> [T; 2] {
+        if !(slip[0].is_finite() && slip[1].is_finite() && load.is_finite()) {
+            return [T::ZERO; 2];
+        }
+        let c = self.at_load(load, road);
+        let (f, _) = self.force_and_slope(slip, &c);
+        f.map(|v| v * load)
+    }
+
+    /// The slips `[κ_p, tan α_p]` at which the pure-slip forces peak, at `load` (N) on a road
+    /// of friction `road`.
+    pub fn peak_slip(&self, load: T, road: T) -> [T; 2] {
+        self.at_load(load, road).scale.map(|k| T::ONE / k)
+    }
+
+    /// The rolling-resistance torque (N·m, ≥ 0) of the tyre under `load` (N) with rolling
+    /// `radius` (m): `c_rr·F_z·r`, a dry friction against the wheel's rotation.
+    pub fn rolling_resistance_torque(&self, load: T, radius: T) -> T {
+        (self.params.rolling_resistance * load * radius)
+            .max(T::ZERO)
+            .finite_or(T::ZERO)
+    }
+
+    /// The transient slip after a step of `dt` (s) from `slip` at the velocities `v` (m/s);
+    /// each component is `(σ·x − dt·v_s)/(σ + dt·|v_x|)` (implicit Euler of
+    /// `σ·dx/dt = −v_s − |v_x|·x`), then at most as large as the larger of the kinematic slip
+    /// (measured against at least [`LOW_SPEED`]) and the peak slip: a sliding patch cannot
+    /// deflect further, so a tyre that stops after sliding keeps no more than its peak force.
+    fn advance(
+        &self,
+        slip: [T; 2],
+        v: &ContactVelocity<T>,
+        c: &AtLoad<T>,
+        dt: T,
+    ) -> ([T; 2], [T; 2]) {
+        let speed = v.forward.abs();
+        let reference = speed.max(T::from_f64(LOW_SPEED));
+        let curves = self.curves();
+        let mut next = [T::ZERO; 2];
+        let mut rate = [T::ZERO; 2];
+        for i in 0..2 {
+            let sigma = curves[i].relaxation_length;
+            let denominator = sigma + dt * speed;
+            let x = (sigma * slip[i] - dt * v.slip[i]) / denominator;
+            let cap = (v.slip[i].abs() / reference).max(T::ONE / c.scale[i]);
+            if x.abs() > cap {
+                next[i] = cap * x.sign();
+                rate[i] = if cap > T::ONE / c.scale[i] {
+                    T::ONE / reference
+                } else {
+                    T::ZERO
+                };
+            } else {
+                next[i] = x;
+                rate[i] = dt / denominator;
+            }
+            if !next[i].is_finite() {
+                next[i] = T::ZERO;
+                rate[i] = T::ZERO;
+            }
+        }
+        (next, rate)
+    }
+
+    /// The force per unit load over a step of `dt` (s) as an affine function of the slip
+    /// velocity at the end of the step, from the transient `slip` and the velocities `v` (m/s)
+    /// at its start, under `load` (N) on a road of friction `road`.
+    ///
+    /// The slope (`damping`) is the tyre's slip stiffness at the predicted slip times the
+    /// change of transient slip per m/s (`dt/(σ + dt·|v_x|)`), plus the carcass damper below
+    /// [`LOW_SPEED`].
+    pub fn linearise(
+        &self,
+        slip: &TransientSlip<T>,
+        v: &ContactVelocity<T>,
+        load: T,
+        road: T,
+        dt: T,
+    ) -> Linearised<T> {
+        let c = self.at_load(load, road);
+        let dt = if dt > T::ZERO { dt } else { T::ZERO };
+        let (predicted, rate) = self.advance(slip.get(), v, &c, dt);
+        let (force, slope) = self.force_and_slope(predicted, &c);
+        let fade = (T::ONE - v.forward.abs() / T::from_f64(LOW_SPEED)).max(T::ZERO);
+        let curves = self.curves();
+        let mut out = Linearised {
+            friction: c.mu,
+            slip_velocity: v.slip,
+            ..Linearised::default()
+        };
+        for i in 0..2 {
+            let carcass =
+                self.params.low_speed_damping * slope[i] / curves[i].relaxation_length * fade;
+            out.force[i] = (force[i] - carcass * v.slip[i]).finite_or(T::ZERO);
+            out.damping[i] = (slope[i] * rate[i] + carcass).finite_or(T::ZERO);
+        }
+        out
+    }
+
+    /// Advances the transient `slip` over a step of `dt` (s) that ended with the velocities
+    /// `v` (m/s), under `load` (N) on a road of friction `road`.
+    pub fn relax(
+        &self,
+        slip: &mut TransientSlip<T>,
+        v: &ContactVelocity<T>,
+        load: T,
+        road: T,
+        dt: T,
+    ) {
+        let c = self.at_load(load, road);
+        let dt = if dt > T::ZERO { dt } else { T::ZERO };
+        let ([ratio, angle_tan], _) = self.advance(slip.get(), v, &c, dt);
+        *slip = TransientSlip { ratio, angle_tan };
+    }
+}
+
+#[cfg(test)]
+mod tests;
