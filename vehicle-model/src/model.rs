@@ -13,6 +13,7 @@ use powertrain::{EngineParams, EngineType};
 use proto_geom::ShippedVehicle;
 
 use crate::params::{BodyPhysics, CarParams, EngineSound, gear_ratios};
+use crate::tyre::TyreClass;
 use crate::wipers::WiperRange;
 
 /// A car model: the plain Webots `Car` or one of the models shipped with Webots.
@@ -97,6 +98,19 @@ impl Model {
             Model::Truck => ShippedVehicle::Truck,
             Model::Tractor => ShippedVehicle::Tractor,
         })
+    }
+
+    /// The kind of tyre the model rolls on, for its default [`crate::TyreParams`]: the vans,
+    /// buses and trucks get [`TyreClass::Commercial`], the tractor [`TyreClass::Tractor`],
+    /// every other model [`TyreClass::PassengerCar`].
+    pub const fn tyre_class(self) -> TyreClass {
+        match self {
+            Model::MercedesBenzSprinter | Model::GreenPowerEVStar | Model::Bus | Model::Truck => {
+                TyreClass::Commercial
+            }
+            Model::Tractor => TyreClass::Tractor,
+            _ => TyreClass::PassengerCar,
+        }
     }
 
     /// The model's parameters (spec §5). Unlisted fields keep the `Car` defaults.

@@ -18,7 +18,7 @@
 //! crate's first model: exact, but 56 µs per step, and rapier solves a multibody contact's
 //! friction one world axis at a time, which made wheels away from the world axes chatter. The
 //! wheels here are the same joints written as constraints of a small solver of our own
-//! (`tyre`), exact at any heading and about ten times cheaper; what changes is listed in
+//! (`contact`), exact at any heading and about ten times cheaper; what changes is listed in
 //! `COMPATIBILITY.md` (no wheel hop, one contact per wheel, found along the suspension axis).
 //!
 //! # Actuators and the step
@@ -37,17 +37,20 @@
 //!   * in the last two, `wheelsDampingConstant` slows the spin (implicitly) and the brake is a
 //!     Coulomb torque of at most `brake_torque` that also holds a stopped wheel;
 //! * **gravity** is added to the chassis velocity, then the **suspension springs and dampers**
-//!   (implicit, per axle `k` and `c`, no stops, as in Webots), the **tyre friction** (no slip
-//!   up to `μ·N` along each tyre axis, μ = the ground's friction × 1) and the **brakes** are
-//!   solved together (`tyre` module), and the resulting chassis velocity goes to rapier, which
-//!   integrates it and resolves the chassis' own collisions.
+//!   (implicit, per axle `k` and `c`, no stops, as in Webots), the **tyre forces** (the car's
+//!   [`TyreModel`]: the slip-based tyre linearised over the step, or Webots' friction pyramid
+//!   with μ = the ground's friction) and the **brakes** are solved together (`contact`
+//!   module), and the resulting chassis velocity goes to rapier, which integrates it and
+//!   resolves the chassis' own collisions;
+//! * after the solve, each slip-based tyre's transient slip advances with the end-of-step
+//!   velocities, and the tyre forces, slips and loads are recorded ([`TyreTelemetry`]).
 //!
 //! The wipers are kinematic: their angle follows the Webots position controller (P = 10) at the
 //! commanded velocity within the wiper range; no body is simulated.
 
 mod build;
+mod contact;
 mod spec;
-mod tyre;
 
 use ackermann::{PerWheel, Wheel, WheelAngles};
 use rapier3d::parry::query::ShapeCastOptions;
@@ -55,15 +58,20 @@ use rapier3d::prelude::{
     Cylinder, Mat3, PhysicsWorld, Pose, QueryFilter, RigidBody, Rotation, Vector,
 };
 
-use vehicle_model::{Commands, Sensors, WheelDrive};
+use vehicle_model::tyre::LOW_SPEED;
+use vehicle_model::{
+    Commands, ContactVelocity, Real, Sensors, TransientSlip, TyreModel, WheelDrive,
+};
 
-pub use spec::{ChassisSpec, SpringDamper, SteeringSpec, VehicleSpec, WheelSpec};
+pub use spec::{
+    ChassisSpec, SpringDamper, SteeringSpec, TyreChoice, TyreSpec, VehicleSpec, WheelSpec,
+};
 
 use crate::error::{BodyOwner, BodyPart, ParamError, SimError};
 use crate::geom;
 use crate::motor::{self, PositionServo, VelocityRamp};
 use build::Parts;
-use tyre::{Body, Contact, Impulses, Spin, WheelRow};
+use contact::{Body, Contact, Grip, Impulses, Spin, WheelRow};
 
 /// Smallest cosine between the ground normal under a wheel and the chassis' up axis for the
 /// wheel to stand on it (about 84°): a steeper face (a wall beside the tyre) is no ground.
@@ -127,6 +135,30 @@ pub struct VehicleState {
     pub suspension: PerWheel<f64>,
     /// Wiper angle (rad), `None` for a car without wipers.
     pub wiper: Option<f64>,
+    /// What each tyre did over the last step.
+    pub tyres: PerWheel<TyreTelemetry>,
+}
+
+/// What a tyre did over a step: its slips and the forces of the road on it (all zero in the
+/// air).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct TyreTelemetry {
+    /// Slip ratio `κ = (ω·r − v_x)/max(|v_x|, 1 m/s)` at the end of the step (dimensionless:
+    /// > 0 driving, −1 locked), measured against at least walking pace so that it stays finite
+    /// at standstill.
+    pub slip_ratio: f64,
+    /// Slip angle `α = atan2(−v_y, max(|v_x|, 1 m/s))` at the end of the step (rad, positive
+    /// when the road pushes the tyre to its left).
+    pub slip_angle: f64,
+    /// Force of the road along the wheel's heading (N).
+    pub fx: f64,
+    /// Force of the road along the wheel's axis (N, to the left of an unsteered wheel).
+    pub fy: f64,
+    /// Load: the suspension force (N, ≥ 0).
+    pub fz: f64,
+    /// How much of the grip the force uses (dimensionless, 0–1): the radius of the force in the
+    /// friction ellipse (slip-based tyre) or the larger axis over `μ·F_z` (Webots' pyramid).
+    pub friction_use: f64,
 }
 
 /// A car in a world: its chassis body, its wheels' state, its latest commands and its measured
@@ -142,6 +174,8 @@ pub struct Vehicle {
     steering_rates: [f64; 2],
     /// The tyre solve's impulses of the last step: the next step's warm start.
     impulses: PerWheel<Impulses>,
+    /// Transient slip of each slip-based tyre.
+    slips: PerWheel<TransientSlip<f64>>,
     previous_com_velocity: Option<Vector>,
     state: VehicleState,
     steering_servo: PositionServo,
@@ -176,6 +210,7 @@ impl Vehicle {
             ramps: PerWheel::splat(None),
             steering_rates: [0.0; 2],
             impulses: PerWheel::splat(Impulses::default()),
+            slips: PerWheel::splat(TransientSlip::default()),
             previous_com_velocity: None,
             state: VehicleState {
                 position: [placement.x, placement.y, z],
@@ -315,104 +350,223 @@ impl Vehicle {
         let Some(chassis) = world.bodies.get(self.parts.chassis) else {
             return;
         };
-        let pose = *chassis.position();
-        let q = pose.rotation;
-        let com = chassis.center_of_mass();
-        let up = q * Vector::Z;
-        let rotation = Mat3::from_quat(q);
+        let frame = Frame::of(chassis);
+        let rotation = Mat3::from_quat(frame.pose.rotation);
         let mut body = Body {
             linvel: chassis.linvel() + world.gravity * dt as f32,
             angvel: chassis.angvel(),
             inv_mass: self.parts.inv_mass,
             inv_inertia: rotation * self.parts.inv_inertia * rotation.transpose(),
         };
-        let steering = self.state.steering;
         let mut rows = [WheelRow {
             contact: None,
+            grip: Grip::Coulomb {
+                compliance: [0.0; 2],
+                friction: 0.0,
+            },
             spin: Spin::Imposed,
             omega: 0.0,
             impulses: Impulses::default(),
         }; 4];
         let mut imposed = [0.0; 4];
         let mut axes = [Vector::ZERO; 4];
+        let mut roads = [0.0; 4];
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
-            let s = self.spec.wheels[w];
-            let suspension = if w.is_front() {
-                self.spec.front_suspension
-            } else {
-                self.spec.rear_suspension
-            };
-            let delta = match w {
-                Wheel::FrontRight => steering.right,
-                Wheel::FrontLeft => steering.left,
-                Wheel::RearRight | Wheel::RearLeft => 0.0,
-            };
-            // Positive steering turns right: the wheel (its axis, car y) turned by −δ about z.
-            let steer = Rotation::from_rotation_z(-delta as f32);
-            let axis = q * (steer * Vector::Y);
+            let (steer, axis) = self.wheel_axis(w, &frame);
             axes[i] = axis;
-            let radius = s.radius as f32;
-            let hard_point = pose.transform_point(geom::vec3(s.position));
-            // The tyre swept down the suspension axis from one radius above its hard point to
-            // the hard point (the unloaded spring length).
-            let start = Pose::from_parts(hard_point + up * radius, q * steer);
-            let tyre = Cylinder::new((0.5 * s.width) as f32, radius);
-            let options = ShapeCastOptions {
-                max_time_of_impact: radius,
-                target_distance: 0.0,
-                stop_at_penetration: true,
-                compute_impact_geometry_on_penetration: true,
-            };
-            let hit = world.cast_shape(&start, -up, &tyre, options, QueryFilter::exclude_dynamic());
-            rows[i].contact = hit.and_then(|(collider, hit)| {
-                let n = hit.normal1;
-                let lateral = (axis - n * n.dot(axis)).normalize_or_zero();
-                if n.dot(up) < MIN_GROUND_COSINE || lateral == Vector::ZERO {
-                    return None;
-                }
-                let friction = world.colliders.get(collider).map_or(1.0, |c| c.friction());
-                Some(Contact {
-                    hardpoint_arm: hard_point - com,
-                    up,
-                    compression: radius - hit.time_of_impact,
-                    contact_arm: hit.witness1 - com,
-                    forward: lateral.cross(n),
-                    lateral,
-                    radius,
-                    friction,
-                    stiffness: suspension.stiffness as f32,
-                    damping: suspension.damping as f32,
-                })
-            });
             let (spin, omega) = self.spin(w, dt);
+            imposed[i] = omega;
             rows[i].spin = spin;
             rows[i].omega = omega as f32;
             rows[i].impulses = self.impulses[w];
-            imposed[i] = omega;
+            if let Some((contact, road)) = self.find_contact(world, w, &frame, steer, axis) {
+                roads[i] = road;
+                self.set_grip(w, &mut rows[i], contact, &body, f64::from(road), dt);
+                rows[i].contact = Some(contact);
+            }
         }
-        tyre::solve(&mut body, &mut rows, dt as f32);
+        contact::solve(&mut body, &mut rows, dt as f32);
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
-            let r = &rows[i];
-            self.impulses[w] = r.impulses;
-            let omega = match r.spin {
+            let omega = match rows[i].spin {
                 Spin::Imposed => imposed[i],
-                Spin::Free { .. } => f64::from(r.omega),
+                Spin::Free { .. } => f64::from(rows[i].omega),
             };
-            // The reaction of the wheel's angular acceleration on what carries it: the solve
-            // puts the tyre force at the contact point, which carries the reaction of the
-            // torque that the tyre balances; this adds the part that spun the wheel up or
-            // down (I·Δω), so a motor, brake or damper turning a wheel in the air, or a
-            // speed ramp, also turns the chassis the other way.
-            let spin_change =
-                self.spec.wheels[w].spin_inertia() * (omega - self.state.wheel_speeds[w]);
-            body.angvel -= body.inv_inertia * (axes[i] * spin_change as f32);
-            self.state.wheel_speeds[w] = omega;
-            self.state.suspension[w] = r.contact.map_or(0.0, |c| f64::from(c.compression));
+            self.react_to_spin(&mut body, w, axes[i], omega);
+            self.finish_wheel(w, &rows[i], &body, f64::from(roads[i]), omega, dt);
         }
         if let Some(chassis) = world.bodies.get_mut(self.parts.chassis) {
             chassis.set_linvel(body.linvel, true);
             chassis.set_angvel(body.angvel, true);
         }
+    }
+
+    /// The rotation of wheel `w` by its steering angle, and its spin axis in world axes (the
+    /// chassis' y turned by the steering).
+    fn wheel_axis(&self, w: Wheel, frame: &Frame) -> (Rotation, Vector) {
+        let delta = match w {
+            Wheel::FrontRight => self.state.steering.right,
+            Wheel::FrontLeft => self.state.steering.left,
+            Wheel::RearRight | Wheel::RearLeft => 0.0,
+        };
+        // Positive steering turns right: the wheel (its axis, car y) turned by −δ about z.
+        let steer = Rotation::from_rotation_z(-delta as f32);
+        (steer, frame.pose.rotation * (steer * Vector::Y))
+    }
+
+    /// Wheel `w`'s ground contact and the ground's friction: the tyre swept down the suspension
+    /// axis from one radius above its hard point to the hard point (the unloaded spring
+    /// length); the first static surface it meets, unless too steep to stand on.
+    fn find_contact(
+        &self,
+        world: &PhysicsWorld,
+        w: Wheel,
+        frame: &Frame,
+        steer: Rotation,
+        axis: Vector,
+    ) -> Option<(Contact, f32)> {
+        let s = self.spec.wheels[w];
+        let suspension = if w.is_front() {
+            self.spec.front_suspension
+        } else {
+            self.spec.rear_suspension
+        };
+        let (up, q) = (frame.up, frame.pose.rotation);
+        let radius = s.radius as f32;
+        let hard_point = frame.pose.transform_point(geom::vec3(s.position));
+        let start = Pose::from_parts(hard_point + up * radius, q * steer);
+        let tyre = Cylinder::new((0.5 * s.width) as f32, radius);
+        let options = ShapeCastOptions {
+            max_time_of_impact: radius,
+            target_distance: 0.0,
+            stop_at_penetration: true,
+            compute_impact_geometry_on_penetration: true,
+        };
+        let (collider, hit) =
+            world.cast_shape(&start, -up, &tyre, options, QueryFilter::exclude_dynamic())?;
+        let n = hit.normal1;
+        let lateral = (axis - n * n.dot(axis)).normalize_or_zero();
+        if n.dot(up) < MIN_GROUND_COSINE || lateral == Vector::ZERO {
+            return None;
+        }
+        let compression = radius - hit.time_of_impact;
+        let centre = hard_point + up * compression;
+        let friction = world.colliders.get(collider).map_or(1.0, |c| c.friction());
+        let contact = Contact {
+            hardpoint_arm: hard_point - frame.com,
+            up,
+            compression,
+            contact_arm: centre - n * radius - frame.com,
+            forward: lateral.cross(n),
+            lateral,
+            radius,
+            stiffness: suspension.stiffness as f32,
+            damping: suspension.damping as f32,
+        };
+        Some((contact, friction))
+    }
+
+    /// The tyre law of wheel `w` (on the ground at `contact`, on a road of friction `road`)
+    /// for the step: the slip-based tyre linearised at the velocities before the solve, with
+    /// its rolling resistance added to the wheel's brake, or Webots' contact.
+    fn set_grip(
+        &self,
+        w: Wheel,
+        row: &mut WheelRow,
+        contact: Contact,
+        body: &Body,
+        road: f64,
+        dt: f64,
+    ) {
+        row.grip = match self.spec.tyres.of(w) {
+            TyreModel::Webots(c) => Grip::Coulomb {
+                compliance: c.force_dependent_slip.map(|fds| (fds / dt) as f32),
+                friction: road as f32,
+            },
+            TyreModel::MagicFormula(tyre) => {
+                // The load the tyre's coefficients are taken at: the last step's, or the
+                // spring's at the current compression when that is more (a landing wheel).
+                let spring = f64::from(contact.stiffness * contact.compression);
+                let load = (f64::from(self.impulses[w].normal) / dt).max(spring);
+                // Linearised at the spin the wheel starts the step with: the drive torque's
+                // spin-up is part of the solve (a free spin is a row coordinate), and a
+                // point near the step's solution keeps the linearisation accurate when a
+                // large torque would spin the wheel far into sliding before the tyre acts.
+                let omega = match row.spin {
+                    Spin::Imposed => row.omega,
+                    Spin::Free { .. } => self.state.wheel_speeds[w] as f32,
+                };
+                let v = contact_velocity(&contact, body, omega);
+                let lin = tyre.linearise(&self.slips[w], &v, load, road, dt);
+                if let Spin::Free { brake_impulse, .. } = &mut row.spin {
+                    let rolling = tyre.rolling_resistance_torque(load, f64::from(contact.radius));
+                    *brake_impulse += (rolling * dt) as f32;
+                }
+                Grip::Slip {
+                    force: lin.force.map(|f| f as f32),
+                    damping: lin.damping.map(|f| f as f32),
+                    v0: lin.slip_velocity.map(|f| f as f32),
+                    friction: lin.friction.map(|f| f as f32),
+                }
+            }
+        };
+    }
+
+    /// The reaction of wheel `w`'s angular acceleration on the chassis. The solve puts the
+    /// tyre force at the contact point, which carries the reaction of the torque that the tyre
+    /// balances; this adds the part that spun the wheel up or down (I·Δω), so a motor, brake
+    /// or damper turning a wheel in the air, or a speed ramp, also turns the chassis the other
+    /// way.
+    fn react_to_spin(&self, body: &mut Body, w: Wheel, axis: Vector, omega: f64) {
+        let spin_change = self.spec.wheels[w].spin_inertia() * (omega - self.state.wheel_speeds[w]);
+        body.angvel -= body.inv_inertia * (axis * spin_change as f32);
+    }
+
+    /// Records wheel `w`'s end of step (spin `omega`, rad/s) and advances its tyre's transient
+    /// slip.
+    fn finish_wheel(
+        &mut self,
+        w: Wheel,
+        row: &WheelRow,
+        body: &Body,
+        road: f64,
+        omega: f64,
+        dt: f64,
+    ) {
+        self.impulses[w] = row.impulses;
+        self.state.wheel_speeds[w] = omega;
+        let Some(contact) = row.contact else {
+            self.state.suspension[w] = 0.0;
+            self.state.tyres[w] = TyreTelemetry::default();
+            // An unloaded tyre springs back.
+            self.slips[w] = TransientSlip::default();
+            return;
+        };
+        self.state.suspension[w] = f64::from(contact.compression);
+        let i = row.impulses;
+        let [fx, fy, fz] = [i.forward, i.lateral, i.normal].map(|p| f64::from(p) / dt);
+        let v = contact_velocity(&contact, body, omega as f32);
+        if let TyreModel::MagicFormula(tyre) = self.spec.tyres.of(w) {
+            tyre.relax(&mut self.slips[w], &v, fz, road, dt);
+        }
+        let reference = v.forward.abs().max(LOW_SPEED);
+        let friction_use = match row.grip {
+            Grip::Slip { friction, .. } if fz > 0.0 => {
+                let [ax, ay] = friction.map(|mu| f64::from(mu) * fz);
+                (fx / ax).hypot(fy / ay)
+            }
+            Grip::Coulomb { friction, .. } if fz > 0.0 => {
+                fx.abs().max(fy.abs()) / (f64::from(friction) * fz)
+            }
+            _ => 0.0,
+        };
+        self.state.tyres[w] = TyreTelemetry {
+            slip_ratio: -v.slip[0] / reference,
+            slip_angle: (-v.slip[1]).atan2(reference),
+            fx,
+            fy,
+            fz,
+            friction_use: Real::finite_or(friction_use.min(1.0), 0.0),
+        };
     }
 
     /// Moves the kinematic wipers toward their command for a step of `dt` seconds.
@@ -477,6 +631,36 @@ impl Vehicle {
         self.previous_com_velocity = Some(v_com);
         self.state = s;
         Ok(())
+    }
+}
+
+/// The chassis' pose for one step.
+struct Frame {
+    /// The chassis frame (the car frame) in the world.
+    pose: Pose,
+    /// The centre of mass in the world (m).
+    com: Vector,
+    /// The chassis' up axis (unit).
+    up: Vector,
+}
+
+impl Frame {
+    fn of(chassis: &RigidBody) -> Frame {
+        let pose = *chassis.position();
+        Frame {
+            pose,
+            com: chassis.center_of_mass(),
+            up: pose.rotation * Vector::Z,
+        }
+    }
+}
+
+/// The velocities of `contact` (m/s) on `body` for a wheel spinning at `omega` (rad/s).
+fn contact_velocity(contact: &Contact, body: &Body, omega: f32) -> ContactVelocity<f64> {
+    let v = body.velocity_at(contact.contact_arm);
+    ContactVelocity {
+        forward: f64::from(contact.forward.dot(v)),
+        slip: contact.slip_velocity(body, omega).map(f64::from),
     }
 }
 

@@ -3,7 +3,7 @@
 
 use ackermann::{PerWheel, Wheel};
 use proto_geom::{VehicleDimensions, VehicleLayout};
-use vehicle_model::CarParams;
+use vehicle_model::{CarParams, TyreClass, TyreField, TyreModel, WebotsContact};
 
 use crate::error::ParamError;
 
@@ -72,6 +72,55 @@ pub struct SteeringSpec {
     pub max_torque: f64,
 }
 
+/// Which tyre a car rolls on, before it is fitted to the car ([`VehicleSpec::from_car_with`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum TyreChoice {
+    /// The slip-based tyre (`tyre = "magic-formula"`, the default): the default set of `class`
+    /// for each axle's tyre radius and static load, then `overrides` (`[vehicle.tyre]`).
+    MagicFormula {
+        /// The default set the coefficients start from.
+        class: TyreClass,
+        /// Coefficients set explicitly, applied to both axles.
+        overrides: Vec<(TyreField, f64)>,
+    },
+    /// Webots' ODE contact (`tyre = "webots"`): friction pyramid with the ground's friction and
+    /// force-dependent slip.
+    Webots(WebotsContact<f64>),
+}
+
+impl Default for TyreChoice {
+    /// The passenger-car slip-based tyre.
+    fn default() -> Self {
+        TyreChoice::MagicFormula {
+            class: TyreClass::PassengerCar,
+            overrides: Vec::new(),
+        }
+    }
+}
+
+/// The tyres of a car, one model per axle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TyreSpec {
+    /// The front tyres.
+    pub front: TyreModel<f64>,
+    /// The rear tyres.
+    pub rear: TyreModel<f64>,
+}
+
+impl TyreSpec {
+    /// The tyre model of wheel `w`.
+    pub fn of(&self, w: Wheel) -> &TyreModel<f64> {
+        if w.is_front() {
+            &self.front
+        } else {
+            &self.rear
+        }
+    }
+}
+
+/// Standard gravity (m/s²), for the static wheel loads the tyres are scaled to.
+const STANDARD_GRAVITY: f64 = 9.81;
+
 /// Everything the simulator needs to build one car.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct VehicleSpec {
@@ -90,9 +139,61 @@ pub struct VehicleSpec {
     pub wheels_damping: f64,
     /// Range of the kinematic wiper joint `[parked, fully swept]` (rad); `None` = no wipers.
     pub wiper_range: Option<[f64; 2]>,
+    /// The tyres.
+    pub tyres: TyreSpec,
+}
+
+/// The tyre model of `choice` for a wheel of `radius` (m) carrying `load` (N) at rest.
+fn fit_tyre(choice: &TyreChoice, radius: f64, load: f64) -> Result<TyreModel<f64>, ParamError> {
+    match choice {
+        TyreChoice::Webots(contact) => {
+            contact
+                .validate()
+                .map(TyreModel::Webots)
+                .map_err(|value| ParamError {
+                    field: "forceDependentSlip",
+                    value,
+                    rule: "finite and in [0, 1] m/s per N",
+                })
+        }
+        TyreChoice::MagicFormula { class, overrides } => {
+            let mut p = class.params(radius, load.max(1.0));
+            for &(field, value) in overrides {
+                p.set(field, value);
+            }
+            p.validate()
+                .map(TyreModel::MagicFormula)
+                .map_err(|e| ParamError {
+                    field: e.field.path(),
+                    value: e.value,
+                    rule: e.field.rule(),
+                })
+        }
+    }
 }
 
 impl VehicleSpec {
+    /// The load on each wheel of the car at rest on level ground (N): the body's weight shared
+    /// between the axles by its centre of mass, plus the wheel's own weight.
+    pub fn static_wheel_loads(&self) -> PerWheel<f64> {
+        let front_x = self.wheels[Wheel::FrontRight].position[0];
+        let rear_x = self.wheels[Wheel::RearRight].position[0];
+        let wheelbase = front_x - rear_x;
+        let front_share = if wheelbase > 0.0 {
+            ((self.chassis.center_of_mass[0] - rear_x) / wheelbase).clamp(0.0, 1.0)
+        } else {
+            0.5
+        };
+        PerWheel::from_fn(|w| {
+            let share = if w.is_front() {
+                front_share
+            } else {
+                1.0 - front_share
+            };
+            STANDARD_GRAVITY * (0.5 * share * self.chassis.mass + self.wheels[w].mass)
+        })
+    }
+
     /// Checks every field: positive masses, lengths and spring constants, a physical inertia
     /// tensor, finite positions and `min_angle ≤ max_angle`.
     pub fn validate(&self) -> Result<(), ParamError> {
@@ -177,8 +278,23 @@ impl VehicleSpec {
     ///
     /// The chassis collision box spans the wheelbase plus one tyre radius at each end, the
     /// wider track, and from wheel-centre height up to `0.75·track` (the proportions
-    /// `vehicle-model` uses for a body without inertia data)..
+    /// `vehicle-model` uses for a body without inertia data). The tyres are the default
+    /// passenger-car slip-based tyres ([`TyreChoice::default`]).
     pub fn from_car(params: &CarParams<f64>) -> Result<VehicleSpec, ParamError> {
+        Self::from_car_with(params, &TyreChoice::default())
+    }
+
+    /// As [`VehicleSpec::from_car`], on the tyres of `tyre`. A slip-based tyre's nominal load
+    /// is the static load on its wheel (the car's weight shared between the axles by the
+    /// centre of mass, under 9.81 m/s²) and its relaxation lengths scale with its radius.
+    ///
+    /// # Errors
+    /// A [`ParamError`] naming the first invalid field, tyre coefficients included
+    /// (`tyre.lateral.shape`, `forceDependentSlip`, …).
+    pub fn from_car_with(
+        params: &CarParams<f64>,
+        tyre: &TyreChoice,
+    ) -> Result<VehicleSpec, ParamError> {
         let dims = VehicleDimensions {
             wheelbase: params.wheelbase,
             track_front: params.track_front,
@@ -206,7 +322,7 @@ impl VehicleSpec {
         let l = params.wheelbase;
         let track = params.track_front.max(params.track_rear);
         let height = 0.75 * track;
-        let spec = VehicleSpec {
+        let mut spec = VehicleSpec {
             chassis: ChassisSpec {
                 mass: params.body.mass,
                 center_of_mass: params.body.center_of_mass,
@@ -230,8 +346,19 @@ impl VehicleSpec {
             },
             wheels_damping: params.wheels_damping_constant,
             wiper_range: params.wipers.map(|r| [r.min, r.max]),
+            // Replaced below, once the static loads are known.
+            tyres: TyreSpec {
+                front: TyreModel::Webots(WebotsContact::default()),
+                rear: TyreModel::Webots(WebotsContact::default()),
+            },
         };
         spec.validate()?;
+        let loads = spec.static_wheel_loads();
+        let fit = |w: Wheel| fit_tyre(tyre, spec.wheels[w].radius, loads[w]);
+        spec.tyres = TyreSpec {
+            front: fit(Wheel::FrontRight)?,
+            rear: fit(Wheel::RearRight)?,
+        };
         Ok(spec)
     }
 }

@@ -20,16 +20,6 @@ pub(crate) struct Shape<T> {
     pub u_peak: T,
 }
 
-/// The value and the slope of the normalised curve at one slip.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Point<T> {
-    /// `g(s)`, in [−1, 1]: the force over its peak.
-    pub value: T,
-    /// `dg/ds` on the rising branch, 0 past the peak (the linearisation never uses a negative
-    /// slope: a falling force is treated as a constant one within a step).
-    pub rising_slope: T,
-}
-
 impl<T: Real> Shape<T> {
     /// The shape of `C` and `E`, `None` unless `1 < C < 2` and `E < 1` (the ranges in which the
     /// curve has one peak and falls to `sin(C·π/2) > 0` after it).
@@ -66,26 +56,13 @@ impl<T: Real> Shape<T> {
         (u_peak > T::ZERO && u_peak.is_finite()).then_some(Shape { c, e, u_peak })
     }
 
-    /// The curve at normalised slip `s ≥ 0` (peak 1 at `s = 1`).
+    /// The curve `g(s)` at normalised slip `s ≥ 0` (peak 1 at `s = 1`), in [−1, 1]: the
+    /// force over its peak.
     #[inline]
-    pub fn at(&self, s: T) -> Point<T> {
+    pub fn at(&self, s: T) -> T {
         let u = self.u_peak * s;
-        let atan_u = u.atan();
-        let phi = u - self.e * (u - atan_u);
-        let theta = phi.atan();
-        let angle = self.c * theta;
-        let value = angle.sin();
-        let rising_slope = if angle < T::FRAC_PI_2 {
-            // cos(C·θ) = √(1 − sin²) on the rising branch; dφ/ds = u_p·(1 − E + E/(1 + u²)).
-            let dphi = self.u_peak * (T::ONE - self.e + self.e / (T::ONE + u * u));
-            (T::ONE - value * value).max(T::ZERO).sqrt() * self.c * dphi / (T::ONE + phi * phi)
-        } else {
-            T::ZERO
-        };
-        Point {
-            value,
-            rising_slope,
-        }
+        let phi = u - self.e * (u - u.atan());
+        (self.c * phi.atan()).sin()
     }
 
     /// `g(s)/s`, the secant slope, which tends to `g'(0) = C·u_p` at `s = 0`.
@@ -96,12 +73,6 @@ impl<T: Real> Shape<T> {
         } else {
             self.c * self.u_peak
         }
-    }
-
-    /// The value the curve tends to at large slip, `sin(C·π/2)`: the sliding force over the
-    /// peak force.
-    pub fn sliding_ratio(&self) -> T {
-        (self.c * T::FRAC_PI_2).sin()
     }
 
     /// The shape between `self` (weight `1 − w`) and `other` (weight `w`), for a slip direction
@@ -136,8 +107,8 @@ mod tests {
             (1.5, 0.0),
         ] {
             let s = Shape::<f64>::new(c, e).unwrap();
-            assert!((s.at(1.0).value - 1.0).abs() < 1e-12, "C {c} E {e}");
-            assert!(s.at(0.98).value < 1.0 && s.at(1.02).value < 1.0);
+            assert!((s.at(1.0) - 1.0).abs() < 1e-12, "C {c} E {e}");
+            assert!(s.at(0.98) < 1.0 && s.at(1.02) < 1.0);
             // With E = 0 the root is closed-form: u_p = tan(π/(2C)).
             if e == 0.0 {
                 assert!((s.u_peak - (core::f64::consts::FRAC_PI_2 / c).tan()).abs() < 1e-12);
@@ -146,28 +117,26 @@ mod tests {
     }
 
     #[test]
-    fn matches_pacejka_and_its_slope() {
+    fn matches_pacejka_and_its_secant() {
         // The dry-tarmac "single set" B = 10, C = 1.9, D = 1, E = 0.97: y(x) = g(B·x/u_p).
         let (b, c, e) = (10.0, 1.9, 0.97);
         let s = Shape::<f64>::new(c, e).unwrap();
         for x in [0.01, 0.05, 0.1, 0.18, 0.5, 1.0] {
-            let g = s.at(b * x / s.u_peak).value;
+            let g = s.at(b * x / s.u_peak);
             assert!((g - pacejka(x, b, c, 1.0, e)).abs() < 1e-12, "x {x}");
         }
-        // Slope at the origin: dg/ds = C·u_p (so dy/dx = B·C·D).
-        let p = s.at(0.0);
-        assert!((p.rising_slope - c * s.u_peak).abs() < 1e-12);
-        // Central difference on the rising branch.
-        let h = 1e-6;
-        let fd = (s.at(0.5 + h).value - s.at(0.5 - h).value) / (2.0 * h);
-        assert!((s.at(0.5).rising_slope - fd).abs() < 1e-6);
-        assert_eq!(s.at(2.0).rising_slope, 0.0);
+        // The secant g(s)/s tends to the slope at the origin, dg/ds = C·u_p (dy/dx = B·C·D).
+        assert_eq!(s.secant(0.0, s.at(0.0)), c * s.u_peak);
+        let tiny = 1e-5;
+        assert!((s.secant(tiny, s.at(tiny)) - c * s.u_peak).abs() < 1e-6 * c * s.u_peak);
+        assert_eq!(s.secant(2.0, s.at(2.0)), s.at(2.0) / 2.0);
     }
 
     #[test]
-    fn sliding_ratio_and_rejected_shapes() {
+    fn sliding_value_and_rejected_shapes() {
+        // Far past the peak the curve tends to sin(C·π/2).
         let s = Shape::<f32>::new(1.5, 0.0).unwrap();
-        assert!((s.sliding_ratio() - 0.707_106_8).abs() < 1e-6);
+        assert!((s.at(1e7) - 0.707_106_8).abs() < 1e-5);
         assert!(Shape::<f64>::new(1.0, 0.0).is_none());
         assert!(Shape::<f64>::new(2.0, 0.0).is_none());
         assert!(Shape::<f64>::new(1.5, 1.0).is_none());

@@ -214,26 +214,25 @@ impl<T: Real> MagicFormula<T> {
         AtLoad { mu, scale }
     }
 
-    /// The force per unit load at slips `[κ, tan α]` and its slope along each axis (per unit
-    /// slip, the falling branch counted flat).
-    fn force_and_slope(&self, slip: [T; 2], c: &AtLoad<T>) -> ([T; 2], [T; 2]) {
+    /// The force per unit load at slips `[κ, tan α]` and each axis' secant stiffness
+    /// `f_i/x_i` (per unit slip), which is the slip stiffness at zero slip and falls as the
+    /// tyre saturates.
+    fn force_and_secant(&self, slip: [T; 2], c: &AtLoad<T>) -> ([T; 2], [T; 2]) {
         let s = [0, 1].map(|i| c.scale[i] * slip[i]);
         let norm = s[0].hypot(s[1]);
         if !(norm > T::ZERO && norm.is_finite()) {
-            let slope =
+            // At zero slip each axis has its own curve's slope, C·u_p in normalised slip.
+            let stiffness =
                 [0, 1].map(|i| c.mu[i] * c.scale[i] * self.shapes[i].c * self.shapes[i].u_peak);
-            return ([T::ZERO; 2], slope);
+            return ([T::ZERO; 2], stiffness);
         }
         let n = s.map(|v| v / norm);
         let shape = self.shapes[0].blend(&self.shapes[1], n[1] * n[1]);
-        let point = shape.at(norm);
-        let secant = shape.secant(norm, point.value);
-        let force = [0, 1].map(|i| c.mu[i] * point.value * n[i]);
-        let slope = [0, 1].map(|i| {
-            let along = n[i] * n[i];
-            c.mu[i] * c.scale[i] * (point.rising_slope * along + secant * (T::ONE - along))
-        });
-        (force, slope)
+        let value = shape.at(norm);
+        let secant = shape.secant(norm, value);
+        let force = [0, 1].map(|i| c.mu[i] * value * n[i]);
+        let stiffness = [0, 1].map(|i| c.mu[i] * c.scale[i] * secant);
+        (force, stiffness)
     }
 
     /// The steady-state force (N) `[F_x, F_y]` at slip ratio κ and slip-angle tangent tan α
@@ -247,7 +246,7 @@ impl<T: Real> MagicFormula<T> {
             return [T::ZERO; 2];
         }
         let c = self.at_load(load, road);
-        let (f, _) = self.force_and_slope(slip, &c);
+        let (f, _) = self.force_and_secant(slip, &c);
         f.map(|v| v * load)
     }
 
@@ -270,6 +269,9 @@ impl<T: Real> MagicFormula<T> {
     /// `σ·dx/dt = −v_s − |v_x|·x`), then at most as large as the larger of the kinematic slip
     /// (measured against at least [`LOW_SPEED`]) and the peak slip: a sliding patch cannot
     /// deflect further, so a tyre that stops after sliding keeps no more than its peak force.
+    ///
+    /// Also returns, per axis, the new slip over the change of slip velocity that would bring
+    /// it to zero (s/m): `dt/(σ + dt·|v_x|)`, less when the cap holds it.
     fn advance(
         &self,
         slip: [T; 2],
@@ -287,16 +289,12 @@ impl<T: Real> MagicFormula<T> {
             let denominator = sigma + dt * speed;
             let x = (sigma * slip[i] - dt * v.slip[i]) / denominator;
             let cap = (v.slip[i].abs() / reference).max(T::ONE / c.scale[i]);
+            rate[i] = dt / denominator;
             if x.abs() > cap {
                 next[i] = cap * x.sign();
-                rate[i] = if cap > T::ONE / c.scale[i] {
-                    T::ONE / reference
-                } else {
-                    T::ZERO
-                };
+                rate[i] *= cap / x.abs();
             } else {
                 next[i] = x;
-                rate[i] = dt / denominator;
             }
             if !next[i].is_finite() {
                 next[i] = T::ZERO;
@@ -310,9 +308,13 @@ impl<T: Real> MagicFormula<T> {
     /// velocity at the end of the step, from the transient `slip` and the velocities `v` (m/s)
     /// at its start, under `load` (N) on a road of friction `road`.
     ///
-    /// The slope (`damping`) is the tyre's slip stiffness at the predicted slip times the
-    /// change of transient slip per m/s (`dt/(σ + dt·|v_x|)`), plus the carcass damper below
-    /// [`LOW_SPEED`].
+    /// The line goes through the force of the predicted transient slip and through zero force
+    /// at the slip velocity that would leave no transient slip (a chord, not a tangent): its
+    /// slope (`damping`) is the secant stiffness times the change of transient slip per m/s
+    /// (`dt/(σ + dt·|v_x|)`), plus the carcass damper below [`LOW_SPEED`]. In the linear range
+    /// the chord is the tangent; past the peak it keeps the force from overshooting through
+    /// zero when a sliding wheel regains grip within a step (the chatter an explicit friction
+    /// force would give).
     pub fn linearise(
         &self,
         slip: &TransientSlip<T>,
@@ -324,7 +326,7 @@ impl<T: Real> MagicFormula<T> {
         let c = self.at_load(load, road);
         let dt = if dt > T::ZERO { dt } else { T::ZERO };
         let (predicted, rate) = self.advance(slip.get(), v, &c, dt);
-        let (force, slope) = self.force_and_slope(predicted, &c);
+        let (force, slope) = self.force_and_secant(predicted, &c);
         let fade = (T::ONE - v.forward.abs() / T::from_f64(LOW_SPEED)).max(T::ZERO);
         let curves = self.curves();
         let mut out = Linearised {

@@ -239,6 +239,28 @@ impl TyreField {
         }
     }
 
+    /// The full dotted name, e.g. `tyre.lateral.shape` or `tyre.nominal_load`.
+    pub const fn path(self) -> &'static str {
+        use Direction::{Lateral as Y, Longitudinal as X};
+        match self {
+            TyreField::PeakFriction(X) => "tyre.longitudinal.peak_friction",
+            TyreField::Stiffness(X) => "tyre.longitudinal.stiffness",
+            TyreField::Shape(X) => "tyre.longitudinal.shape",
+            TyreField::Curvature(X) => "tyre.longitudinal.curvature",
+            TyreField::RelaxationLength(X) => "tyre.longitudinal.relaxation_length",
+            TyreField::PeakFriction(Y) => "tyre.lateral.peak_friction",
+            TyreField::Stiffness(Y) => "tyre.lateral.stiffness",
+            TyreField::Shape(Y) => "tyre.lateral.shape",
+            TyreField::Curvature(Y) => "tyre.lateral.curvature",
+            TyreField::RelaxationLength(Y) => "tyre.lateral.relaxation_length",
+            TyreField::NominalLoad => "tyre.nominal_load",
+            TyreField::LoadSensitivity => "tyre.load_sensitivity",
+            TyreField::CorneringSaturation => "tyre.cornering_saturation",
+            TyreField::RollingResistance => "tyre.rolling_resistance",
+            TyreField::LowSpeedDamping => "tyre.low_speed_damping",
+        }
+    }
+
     /// The curve's direction, `None` for a tyre-wide field.
     pub const fn direction(self) -> Option<Direction> {
         match self {
@@ -296,10 +318,7 @@ impl TyreField {
 
 impl fmt::Display for TyreField {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.direction() {
-            Some(d) => write!(f, "tyre.{}.{}", d.name(), self.name()),
-            None => write!(f, "tyre.{}", self.name()),
-        }
+        f.write_str(self.path())
     }
 }
 

@@ -1,0 +1,459 @@
+//! The wheel–ground contact solve of a car: suspension, tyre forces, brakes and wheel spins for
+//! one step, as velocity-level rows between the chassis and the four wheel spins.
+//!
+//! Each wheel on the ground contributes three rows, solved by projected block Gauss–Seidel
+//! sweeps with impulses accumulated (and warm-started from the previous step):
+//!
+//! * **suspension** (along the chassis' up axis at the wheel's hard point): the spring-damper
+//!   force `k·x + c·ẋ`, integrated implicitly (`x` taken at the end of the step), so any stiffness
+//!   is stable at any `basicTimeStep`. The ground cannot pull: the impulse is at least 0;
+//! * **tyre** (forward and lateral in the ground plane, at the contact point), by the car's
+//!   tyre model ([`Grip`]):
+//!   * slip-based: the force per unit load is an affine function of the contact's slip
+//!     velocity at the end of the step (`vehicle_model::MagicFormula::linearise`), times the
+//!     wheel's current suspension impulse, kept within the friction ellipse;
+//!   * Webots: no slip (or ODE's force-dependent slip, a compliance) up to `μ·N` along each
+//!     tyre axis separately, the friction pyramid of ODE's contact;
+//! * **brake** (on the spin only): a Coulomb torque of at most the brake torque (plus the
+//!   tyre's rolling resistance) that opposes the rotation and holds a stopped wheel.
+//!
+//! The two wheels of an axle are solved together (a 2×2 suspension block and a 4×4 tyre block)
+//! so that neither side is favoured by the order of the solve: a symmetric car on symmetric
+//! commands gets mirror-image forces. The spin of each wheel is a coordinate relative to the
+//! chassis: a torque between wheel and chassis (motor, brake, damping) acts on the spin alone,
+//! and a tyre force acts on the chassis at the contact point and on the spin through the
+//! radius. The inertial coupling between a wheel's spin and the chassis' rotation is left out
+//! of the solve (a wheel's spin inertia is under 0.1 % of a car's pitch inertia); the caller
+//! applies its effect, the reaction `−I·Δω` of each wheel's change of spin, afterwards. In
+//! velocity control the spin is imposed (a Webots motor with a practically unlimited
+//! `maxTorque`), so the tyre force acts on the chassis alone.
+
+use rapier3d::prelude::{Mat3, Vector};
+
+/// Block Gauss–Seidel sweeps per step. With warm starting, 8 sweeps leave residual slip
+/// velocities under 1 mm/s on every shipped car with the rigid Webots contact (the chassis
+/// couples the two axles; each sweep solves one axle exactly given the other).
+pub(crate) const SWEEPS: usize = 8;
+
+/// The chassis as the solve sees it: its velocities (changed in place) and inverse mass
+/// properties in the world frame.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Body {
+    /// Velocity of the centre of mass (m/s).
+    pub linvel: Vector,
+    /// Angular velocity (rad/s).
+    pub angvel: Vector,
+    /// 1/mass (1/kg).
+    pub inv_mass: f32,
+    /// Inverse inertia tensor about the centre of mass in world axes (1/(kg·m²)).
+    pub inv_inertia: Mat3,
+}
+
+impl Body {
+    /// Velocity (m/s) of the chassis point at `arm` (m) from the centre of mass.
+    pub fn velocity_at(&self, arm: Vector) -> Vector {
+        self.linvel + self.angvel.cross(arm)
+    }
+
+    /// Applies `impulse` (N·s) at `arm` (m) from the centre of mass.
+    fn apply(&mut self, arm: Vector, impulse: Vector) {
+        self.linvel += impulse * self.inv_mass;
+        self.angvel += self.inv_inertia * arm.cross(impulse);
+    }
+
+    /// `d1ᵀ·M⁻¹·d2` for a unit impulse along `d2` at `arm2` seen along `d1` at `arm1`: the
+    /// inverse effective mass (1/kg) coupling two rows.
+    fn coupling(&self, arm1: Vector, d1: Vector, arm2: Vector, d2: Vector) -> f32 {
+        d1.dot(d2) * self.inv_mass + arm1.cross(d1).dot(self.inv_inertia * arm2.cross(d2))
+    }
+}
+
+/// How a wheel's spin takes part in the solve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Spin {
+    /// Imposed by a rigid velocity motor (Webots velocity control): the tyre cannot change it.
+    Imposed,
+    /// Free to turn, with spin inertia `1/inv_inertia` (kg·m²) and a brake that can deliver at
+    /// most `brake_impulse` (N·m·s) this step.
+    Free {
+        /// 1/spin inertia (1/(kg·m²)).
+        inv_inertia: f32,
+        /// (Brake torque + rolling resistance) × dt (N·m·s, ≥ 0).
+        brake_impulse: f32,
+    },
+}
+
+impl Spin {
+    fn inv_inertia(self) -> f32 {
+        match self {
+            Spin::Imposed => 0.0,
+            Spin::Free { inv_inertia, .. } => inv_inertia,
+        }
+    }
+}
+
+/// A wheel's ground contact for this step, in world axes, arms from the chassis' centre of
+/// mass.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Contact {
+    /// Hard point (the wheel centre at the unloaded spring length) − centre of mass (m).
+    pub hardpoint_arm: Vector,
+    /// The suspension axis, the chassis' up axis (unit).
+    pub up: Vector,
+    /// Spring compression from the unloaded length (m, > 0 = wheel pushed up).
+    pub compression: f32,
+    /// Contact point − centre of mass (m).
+    pub contact_arm: Vector,
+    /// Rolling direction in the ground plane (unit).
+    pub forward: Vector,
+    /// Wheel axis projected on the ground plane (unit, to the car's left for an unsteered wheel).
+    pub lateral: Vector,
+    /// Tyre radius (m).
+    pub radius: f32,
+    /// Spring constant (N/m).
+    pub stiffness: f32,
+    /// Damping constant (N·s/m).
+    pub damping: f32,
+}
+
+impl Contact {
+    /// The slip velocity `[forward, lateral]` (m/s) of the contact point over the ground for a
+    /// wheel spinning at `omega` (rad/s).
+    pub fn slip_velocity(&self, body: &Body, omega: f32) -> [f32; 2] {
+        let v = body.velocity_at(self.contact_arm);
+        [
+            self.forward.dot(v) - omega * self.radius,
+            self.lateral.dot(v),
+        ]
+    }
+}
+
+/// The tyre's force law for one step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Grip {
+    /// Slip-based: per unit load (the suspension impulse), `force + damping·(v0 − v)` along
+    /// `[forward, lateral]` at end-of-step slip velocity `v`, within the ellipse `friction`.
+    Slip {
+        /// Force per unit load at `v0` (dimensionless).
+        force: [f32; 2],
+        /// Fall of the force per unit load per m/s (s/m, ≥ 0).
+        damping: [f32; 2],
+        /// Slip velocity the law was linearised at (m/s).
+        v0: [f32; 2],
+        /// Friction-ellipse semi-axes per unit load (dimensionless, ≥ 0).
+        friction: [f32; 2],
+    },
+    /// Webots' contact: slip velocity `−compliance·P` (0: none) while each axis' impulse is
+    /// within `friction·N`.
+    Coulomb {
+        /// Force-dependent slip over dt, `[forward, lateral]` (m/s per N·s, ≥ 0).
+        compliance: [f32; 2],
+        /// Friction coefficient (dimensionless, ≥ 0).
+        friction: f32,
+    },
+}
+
+impl Grip {
+    /// `[x, y]` within this step's friction limits for suspension impulse `normal` (N·s).
+    fn clamp(&self, x: f32, y: f32, normal: f32) -> [f32; 2] {
+        let normal = normal.max(0.0);
+        match *self {
+            Grip::Slip { friction, .. } => {
+                let [ax, ay] = friction.map(|mu| mu * normal);
+                if !(ax > 0.0 && ay > 0.0) {
+                    return [0.0; 2];
+                }
+                let r = (x / ax).hypot(y / ay);
+                if r > 1.0 { [x / r, y / r] } else { [x, y] }
+            }
+            Grip::Coulomb { friction, .. } => {
+                let limit = (friction * normal).max(0.0);
+                [x.clamp(-limit, limit), y.clamp(-limit, limit)]
+            }
+        }
+    }
+
+    /// The row `α·ΔP + β·(K·ΔP) = c − β·v` of direction `i` (`v` the current slip velocity):
+    /// the force law written so that no coefficient is infinite. `normal` is the current
+    /// suspension impulse (N·s), `current` the direction's accumulated impulse (N·s).
+    fn row(&self, i: usize, normal: f32, current: f32) -> (f32, f32, f32) {
+        // Law: P = a − b·v (impulse against end-of-step slip velocity).
+        let (a, b) = match *self {
+            Grip::Slip {
+                force, damping, v0, ..
+            } => {
+                let n = normal.max(0.0);
+                (n * (force[i] + damping[i] * v0[i]), n * damping[i])
+            }
+            Grip::Coulomb { compliance, .. } => {
+                if compliance[i] > 0.0 {
+                    (0.0, 1.0 / compliance[i])
+                } else {
+                    (0.0, f32::INFINITY)
+                }
+            }
+        };
+        if b <= 1.0 {
+            (1.0, b, a - current)
+        } else if b.is_finite() {
+            (1.0 / b, 1.0, (a - current) / b)
+        } else {
+            (0.0, 1.0, 0.0)
+        }
+    }
+}
+
+/// One wheel in the solve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct WheelRow {
+    /// The ground contact, `None` in the air.
+    pub contact: Option<Contact>,
+    /// The tyre's force law (unused in the air).
+    pub grip: Grip,
+    /// How the spin is driven.
+    pub spin: Spin,
+    /// Spin rate relative to the chassis (rad/s, positive rolling forward), changed in place.
+    pub omega: f32,
+    /// Accumulated impulses of the step (warm start in, solution out).
+    pub impulses: Impulses,
+}
+
+/// The impulses of one wheel's rows over a step.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub(crate) struct Impulses {
+    /// Suspension impulse along the chassis up axis (N·s, ≥ 0): load × dt.
+    pub normal: f32,
+    /// Tyre impulse along the rolling direction (N·s).
+    pub forward: f32,
+    /// Tyre impulse along the wheel axis (N·s).
+    pub lateral: f32,
+    /// Brake impulse on the spin (N·m·s).
+    pub brake: f32,
+}
+
+/// The per-step constants of one axle (wheels `2·a` and `2·a + 1`).
+#[derive(Debug, Clone, Copy)]
+struct Axle {
+    /// Which of the two wheels touch the ground.
+    on_ground: [bool; 2],
+    /// Suspension rows' inverse effective masses (1/kg), 2×2.
+    k_normal: [[f32; 2]; 2],
+    /// `dt·k·x` (N·s) per wheel: the spring's impulse at the current compression.
+    spring_impulse: [f32; 2],
+    /// `dt·(k·dt + c)` (kg) per wheel: the implicit spring-damper's impulse per m/s of
+    /// compression rate.
+    softness: [f32; 2],
+    /// Tyre rows' inverse effective masses (1/kg), 4×4 in the order forward 0, lateral 0,
+    /// forward 1, lateral 1, with each free wheel's spin on its forward diagonal.
+    k_tyre: [[f32; 4]; 4],
+}
+
+impl Axle {
+    fn new(body: &Body, wheels: &[WheelRow], dt: f32) -> Axle {
+        let contacts = [wheels[0].contact, wheels[1].contact];
+        let mut axle = Axle {
+            on_ground: contacts.map(|c| c.is_some()),
+            k_normal: [[0.0; 2]; 2],
+            spring_impulse: [0.0; 2],
+            softness: [0.0; 2],
+            k_tyre: [[0.0; 4]; 4],
+        };
+        for (i, ci) in contacts.iter().enumerate() {
+            let Some(ci) = ci else { continue };
+            axle.spring_impulse[i] = dt * ci.stiffness * ci.compression;
+            axle.softness[i] = dt * (ci.stiffness * dt + ci.damping);
+            for (j, cj) in contacts.iter().enumerate() {
+                let Some(cj) = cj else { continue };
+                axle.k_normal[i][j] =
+                    body.coupling(ci.hardpoint_arm, ci.up, cj.hardpoint_arm, cj.up);
+                for (m, dm) in [ci.forward, ci.lateral].into_iter().enumerate() {
+                    for (n, dn) in [cj.forward, cj.lateral].into_iter().enumerate() {
+                        axle.k_tyre[2 * i + m][2 * j + n] =
+                            body.coupling(ci.contact_arm, dm, cj.contact_arm, dn);
+                    }
+                }
+            }
+            axle.k_tyre[2 * i][2 * i] += ci.radius * ci.radius * wheels[i].spin.inv_inertia();
+        }
+        axle
+    }
+}
+
+/// Solves one step of `dt` seconds: updates the chassis velocities, the wheel spins and the
+/// accumulated impulses.
+///
+/// Every wheel's `impulses` must hold its warm start (the previous step's solution, or zeros);
+/// they are clamped to this step's limits before use.
+pub(crate) fn solve(body: &mut Body, wheels: &mut [WheelRow; 4], dt: f32) {
+    warm_start(body, wheels);
+    let axles = [
+        Axle::new(body, &wheels[0..2], dt),
+        Axle::new(body, &wheels[2..4], dt),
+    ];
+    for _ in 0..SWEEPS {
+        for (a, axle) in axles.iter().enumerate() {
+            let pair = &mut wheels[2 * a..2 * a + 2];
+            for w in pair.iter_mut() {
+                brake_row(w);
+            }
+            suspension_block(body, pair, axle);
+            tyre_block(body, pair, axle);
+        }
+    }
+}
+
+/// Applies the previous step's impulses, clamped to this step's limits.
+fn warm_start(body: &mut Body, wheels: &mut [WheelRow; 4]) {
+    for w in wheels.iter_mut() {
+        let Some(c) = w.contact else {
+            w.impulses = Impulses {
+                brake: w.impulses.brake,
+                ..Impulses::default()
+            };
+            continue;
+        };
+        let i = &mut w.impulses;
+        i.normal = i.normal.max(0.0);
+        [i.forward, i.lateral] = w.grip.clamp(i.forward, i.lateral, i.normal);
+        body.apply(c.hardpoint_arm, c.up * i.normal);
+        body.apply(c.contact_arm, c.forward * i.forward + c.lateral * i.lateral);
+        w.omega -= c.radius * i.forward * w.spin.inv_inertia();
+    }
+    for w in wheels.iter_mut() {
+        if let Spin::Free {
+            inv_inertia,
+            brake_impulse,
+        } = w.spin
+        {
+            let b = w.impulses.brake.clamp(-brake_impulse, brake_impulse);
+            w.impulses.brake = b;
+            w.omega += b * inv_inertia;
+        } else {
+            w.impulses.brake = 0.0;
+        }
+    }
+}
+
+/// The brake: drives the spin toward 0 with an impulse within `±brake_impulse`.
+fn brake_row(w: &mut WheelRow) {
+    let Spin::Free {
+        inv_inertia,
+        brake_impulse,
+    } = w.spin
+    else {
+        return;
+    };
+    if brake_impulse <= 0.0 || inv_inertia <= 0.0 {
+        return;
+    }
+    let old = w.impulses.brake;
+    let new = (old - w.omega / inv_inertia).clamp(-brake_impulse, brake_impulse);
+    w.impulses.brake = new;
+    w.omega += (new - old) * inv_inertia;
+}
+
+/// The implicit spring-dampers of an axle: `P = dt·k·x + dt·(k·dt + c)·ẋ` for each wheel with
+/// `ẋ` the compression rate after both impulses, `P ≥ 0`.
+fn suspension_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle) {
+    let contacts = [pair[0].contact, pair[1].contact];
+    let mut m = [[1.0, 0.0], [0.0, 1.0]];
+    let mut rhs = [0.0; 2];
+    for i in 0..2 {
+        let Some(c) = contacts[i] else { continue };
+        let rate = -c.up.dot(body.velocity_at(c.hardpoint_arm));
+        let s = axle.softness[i];
+        for j in 0..2 {
+            m[i][j] = f32::from(u8::from(i == j)) + s * axle.k_normal[i][j];
+        }
+        rhs[i] = axle.spring_impulse[i] + s * rate - pair[i].impulses.normal;
+    }
+    let Some(delta) = solve2(m, rhs) else { return };
+    for (i, c) in contacts.iter().enumerate() {
+        let Some(c) = c else { continue };
+        let old = pair[i].impulses.normal;
+        let new = (old + delta[i]).max(0.0);
+        pair[i].impulses.normal = new;
+        body.apply(c.hardpoint_arm, c.up * (new - old));
+    }
+}
+
+/// The tyres of an axle: each direction's force law at the end-of-step slip velocities of both
+/// wheels, solved together, then each wheel's force kept within its friction limits.
+fn tyre_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle) {
+    let mut m = [[0.0_f32; 4]; 4];
+    let mut rhs = [0.0_f32; 4];
+    for i in 0..2 {
+        let w = &pair[i];
+        let Some(c) = w.contact.filter(|_| axle.on_ground[i]) else {
+            m[2 * i][2 * i] = 1.0;
+            m[2 * i + 1][2 * i + 1] = 1.0;
+            continue;
+        };
+        let v = c.slip_velocity(body, w.omega);
+        let current = [w.impulses.forward, w.impulses.lateral];
+        for d in 0..2 {
+            let r = 2 * i + d;
+            let (alpha, beta, c0) = w.grip.row(d, w.impulses.normal, current[d]);
+            for (col, k) in axle.k_tyre[r].iter().enumerate() {
+                m[r][col] = beta * k;
+            }
+            m[r][r] += alpha;
+            rhs[r] = c0 - beta * v[d];
+        }
+    }
+    let Some(delta) = solve4(m, rhs) else { return };
+    for i in 0..2 {
+        let w = &mut pair[i];
+        let Some(c) = w.contact else { continue };
+        let (f0, l0) = (w.impulses.forward, w.impulses.lateral);
+        let [f, l] = w
+            .grip
+            .clamp(f0 + delta[2 * i], l0 + delta[2 * i + 1], w.impulses.normal);
+        w.impulses.forward = f;
+        w.impulses.lateral = l;
+        body.apply(c.contact_arm, c.forward * (f - f0) + c.lateral * (l - l0));
+        w.omega -= c.radius * (f - f0) * w.spin.inv_inertia();
+    }
+}
+
+/// Solves the 2×2 system `m·x = rhs`; `None` if singular.
+fn solve2(m: [[f32; 2]; 2], rhs: [f32; 2]) -> Option<[f32; 2]> {
+    let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+    if !(det.is_finite() && det.abs() > f32::MIN_POSITIVE) {
+        return None;
+    }
+    let x = [
+        (rhs[0] * m[1][1] - m[0][1] * rhs[1]) / det,
+        (m[0][0] * rhs[1] - m[1][0] * rhs[0]) / det,
+    ];
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}
+
+/// Solves the 4×4 system `m·x = rhs` by Gaussian elimination with partial pivoting; `None` if
+/// singular.
+fn solve4(mut m: [[f32; 4]; 4], mut rhs: [f32; 4]) -> Option<[f32; 4]> {
+    for col in 0..4 {
+        let pivot = (col..4).max_by(|&a, &b| m[a][col].abs().total_cmp(&m[b][col].abs()))?;
+        if !(m[pivot][col].abs() > f32::MIN_POSITIVE) {
+            return None;
+        }
+        m.swap(col, pivot);
+        rhs.swap(col, pivot);
+        for row in col + 1..4 {
+            let factor = m[row][col] / m[col][col];
+            for k in col..4 {
+                m[row][k] -= factor * m[col][k];
+            }
+            rhs[row] -= factor * rhs[col];
+        }
+    }
+    let mut x = [0.0_f32; 4];
+    for row in (0..4).rev() {
+        let tail: f32 = (row + 1..4).map(|k| m[row][k] * x[k]).sum();
+        x[row] = (rhs[row] - tail) / m[row][row];
+    }
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}
+
+#[cfg(test)]
+mod tests;
