@@ -544,19 +544,36 @@ mod tests {
 
     #[test]
     fn ramp_reaches_target_without_overshoot() {
-        let mut ramp = VelocityRamp::<f64>::default();
-        // BmwX5: 100 km/h in 7 s on 0.374 m wheels is 10.61 rad/s², 0.1061 rad/s per 10 ms.
+        let mut r = VelocityRamp::default();
+        // 10.61 rad/s² (BmwX5) × 0.01 s = 0.1061 rad/s per step.
         let a = 27.777_777_777_777_78 / 7.0 / 0.374;
         let target = 100.0 / 3.6 / 0.374; // 74.27 rad/s
         let mut steps = 0;
-        while ramp.command() < target {
-            ramp.step(target, a, 133.69, 0.01);
+        while r.command() < target {
+            r.step(target, a, 133.69, 0.01);
             steps += 1;
-            assert!(ramp.command() <= target);
+            assert!(r.command() <= target);
         }
-        // 74.27 / 0.1061 = 700 steps up to rounding: 7 s.
+        // 74.27 / 0.1061 = 700.0 steps: 7 s.
         assert!((699..=701).contains(&steps), "{steps}");
-        assert_eq!(ramp.command(), target);
+        assert_eq!(r.command(), target);
+    }
+
+    #[test]
+    fn ramp_ignores_nan_and_goes_down() {
+        let mut r = VelocityRamp::starting_at(5.0);
+        assert_eq!(r.step(f64::NAN, 1.0, 10.0, 0.1), 5.0);
+        assert_eq!(r.step(-5.0, 10.0, 10.0, 0.1), 4.0);
+        assert_eq!(r.step(-20.0, f64::INFINITY, 10.0, 0.1), -10.0);
+    }
+
+    #[test]
+    fn servo_clamps_and_holds_on_nan() {
+        let s = PositionServo::steering(-0.6, 0.4);
+        assert_eq!(s.velocity(f64::NAN, 0.3), 0.0);
+        // Target clamped to −0.6: 10·(−0.6 − 0) = −6 rad/s.
+        assert_eq!(s.velocity(-2.0, 0.0), -6.0);
+        assert_eq!(s.clamp_target(0.5, 0.0), 0.4);
     }
 
     #[test]
