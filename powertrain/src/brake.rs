@@ -74,12 +74,33 @@ impl<T: Real> Brake<T> {
     /// as the other torques stay within the capacity. NaN counts as 0 (no torque).
     #[inline]
     pub fn friction_torque(&self, intensity: T, torque_to_stop: T) -> T {
-        if torque_to_stop.is_nan() {
-            return T::ZERO;
-        }
-        let capacity = self.torque(intensity);
-        torque_to_stop.clamp(-capacity, capacity)
+        coulomb_torque(torque_to_stop, self.torque(intensity))
     }
+}
+
+/// The torque (N·m) a dry-friction (Coulomb) element of `capacity` (N·m) applies during one
+/// step, given `torque_to_stop` (N·m, signed): the torque it alone would have to apply so the
+/// part it acts on ends the step at rest.
+///
+/// `torque_to_stop` limited to ±`capacity`: a moving part is slowed by the full capacity, one
+/// that the capacity can stop within the step is stopped exactly (no overshoot, no chatter),
+/// and a stopped one is held while the other torques stay within the capacity. This is the
+/// rule of [`Brake::friction_torque`], for any friction (a brake, a clutch, a joint's static
+/// friction). A NaN `torque_to_stop` gives 0; a negative or NaN capacity counts as 0, an
+/// infinite one as the largest finite value, so the result is never NaN or ±∞.
+///
+/// ```
+/// use powertrain::coulomb_torque;
+/// assert_eq!(coulomb_torque(-5000.0_f64, 900.0), -900.0);
+/// assert_eq!(coulomb_torque(-300.0_f64, 900.0), -300.0);
+/// ```
+#[inline]
+pub fn coulomb_torque<T: Real>(torque_to_stop: T, capacity: T) -> T {
+    if torque_to_stop.is_nan() {
+        return T::ZERO;
+    }
+    let capacity = capacity.max(T::ZERO).min(T::MAX);
+    torque_to_stop.clamp(-capacity, capacity)
 }
 
 impl<T: Real> Default for Brake<T> {
@@ -127,6 +148,27 @@ mod tests {
         assert_eq!(b.friction_torque(0.0, -4000.0), 0.0);
         assert_eq!(b.friction_torque(1.0, f32::NAN), 0.0);
         assert_eq!(b.friction_torque(0.5, f32::NEG_INFINITY), -500.0);
+    }
+
+    fn coulomb_clamps<T: Real>() {
+        let r = T::from_f64;
+        assert_eq!(coulomb_torque(r(-4000.0), r(1000.0)), r(-1000.0));
+        assert_eq!(coulomb_torque(r(4000.0), r(1000.0)), r(1000.0));
+        assert_eq!(coulomb_torque(r(-12.5), r(1000.0)), r(-12.5));
+        assert_eq!(coulomb_torque(r(f64::NAN), r(1000.0)), T::ZERO);
+        assert_eq!(coulomb_torque(-T::INFINITY, r(1000.0)), r(-1000.0));
+        // Negative or NaN capacity: no friction.
+        assert_eq!(coulomb_torque(r(-12.5), r(-1000.0)), T::ZERO);
+        assert_eq!(coulomb_torque(r(-12.5), r(f64::NAN)), T::ZERO);
+        // Infinite capacity: holds anything, and never returns ∞.
+        assert_eq!(coulomb_torque(r(-12.5), T::INFINITY), r(-12.5));
+        assert_eq!(coulomb_torque(T::INFINITY, T::INFINITY), T::MAX);
+    }
+
+    #[test]
+    fn coulomb_f32_f64() {
+        coulomb_clamps::<f32>();
+        coulomb_clamps::<f64>();
     }
 
     #[test]

@@ -13,7 +13,8 @@
 //!   speed-mode engine-sound "virtual gear";
 //! * [`split_torque`] and [`LimitedSlip`]: torque distribution to the driven wheels with the
 //!   geometric differential ratios and Webots' limited-slip integrators;
-//! * [`Brake`]: the wheel brakes as friction torques;
+//! * [`Brake`]: the wheel brakes as friction torques, by the dry-friction rule
+//!   [`coulomb_torque`];
 //! * [`AutoShift`]: an opt-in automatic gearbox (Webots has none).
 //!
 //! Units: rad/s for wheel speeds, rad/s² for wheel accelerations, rpm (rev/min) for engine
@@ -73,7 +74,7 @@ mod powertrain;
 mod split;
 
 pub use auto_shift::{AutoShift, AutoShiftParams};
-pub use brake::{Brake, DEFAULT_BRAKE_COEFFICIENT};
+pub use brake::{Brake, DEFAULT_BRAKE_COEFFICIENT, coulomb_torque};
 pub use engine::{Engine, EngineParams, EngineType};
 pub use error::{Field, PowertrainError};
 pub use gearbox::{Gear, GearSelection, GearWarning, Gearbox, MAX_GEAR_RATIOS};

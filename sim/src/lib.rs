@@ -4,7 +4,8 @@
 //!   ([`Vehicle`], built from a [`VehicleSpec`]) and legacy [`DifferentialWheels`] robots;
 //! * [`Simulation`]: a world whose cars are driven by `vehicle_model::Driver<f64>`, stepped
 //!   like a Webots controller calling `wbu_driver_step()`, with [`CarTelemetry`];
-//! * [`motor`]: the Webots motor semantics (velocity ramp, position servo) the joints emulate;
+//! * [`motor`]: the Webots motor semantics (velocity ramp, position servo) the joints emulate,
+//!   from [`vehicle_model::actuator`] in f64, and rapier's rigid velocity motor;
 //! * [`world_file`]: TOML worlds in Webots vocabulary (`basicTimeStep`, `[vehicle]` with any
 //!   `Car` field, `[differential_wheels]`, obstacles), loaded by path or model name;
 //! * [`scenario`], [`telemetry`], [`report`], [`cli`]: the `vehicle-sim` command's driving

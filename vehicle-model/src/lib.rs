@@ -15,6 +15,12 @@
 //!   [`Warning`] Webots would print; [`Driver::step`] takes the [`Sensors`] and returns the
 //!   actuator [`Commands`] (steering targets, per-wheel [`WheelDrive`] and brake torque,
 //!   [`Lights`], [`Cockpit`], [`Sounds`]).
+//! * [`actuator`]: the Webots motor rules a host applies those commands with, defined once for
+//!   every host (the `sim` crate, firmware plant models): the speed-mode
+//!   [`actuator::VelocityRamp`], the position controller [`actuator::PositionServo`], the
+//!   steering motor [`actuator::SteeringMotor`] (within `maxSteeringTorque`), the torque-mode
+//!   and free wheel spin [`actuator::WheelSpin`] (`wheelsDampingConstant`) and the dry-friction
+//!   brake rule [`actuator::coulomb_torque`].
 //!
 //! The steering geometry and the engine, gearbox, differential and brake models are those of
 //! the [`ackermann`] and [`powertrain`] crates; wheels and sensor slots come from
@@ -138,6 +144,7 @@
 #[doc = include_str!("../README.md")]
 struct ReadmeDoctests;
 
+pub mod actuator;
 mod driver;
 mod io;
 mod lights;

@@ -16,15 +16,17 @@
 //! * **Velocity-controlled wheels** (speed mode): like Webots' wheel motors, each driven
 //!   wheel's motor moves its velocity command toward the target by at most
 //!   `acceleration·dt` per step (starting from the wheel's speed), clamps it to
-//!   `±max_velocity`, and has unlimited torque: the car follows the mean of what the driven
-//!   wheels impose.
+//!   `±max_velocity` ([`VelocityRamp`]), and has unlimited torque: the car follows the mean of
+//!   what the driven wheels impose.
 //! * **Steering:** each steering motor is the Webots position servo, a P controller
 //!   `ω = 10·(target − angle)` capped at 10 rad/s, with the target clamped to
-//!   `[minSteeringAngle, maxSteeringAngle]`.
+//!   `[minSteeringAngle, maxSteeringAngle]`, whose rate is reached within `maxSteeringTorque`
+//!   against the wheel's inertia about its steering axis ([`SteeringMotor`]).
 //! * **Yaw and pose:** the kinematic bicycle model at the rear-axle centre,
 //!   `ψ̇ = −v·tan δ / L` (positive δ turns right), integrated along exact arcs by
 //!   [`ackermann::Odometry::integrate`].
 //!
+//! The motor rules are `vehicle_model::actuator`'s, the ones the `sim` crate applies too.
 //! Everything is `f32`, allocation-free and panic-free. Non-finite commands are ignored and
 //! counted ([`Plant::faults`]); a non-finite state is not masked, so that [`Plant::is_finite`]
 //! exposes it.
@@ -32,16 +34,13 @@
 use ackermann::{
     Geometry, Odometry, PerWheel, Pose, Real, SpeedSource, Turning, Velocity, Wheel, WheelAngles,
 };
+use vehicle_model::actuator::{PositionServo, SteeringMotor, SteeringState, VelocityRamp};
 use vehicle_model::{CarParams, Commands, Sensors, WheelDrive};
 
 /// Standard gravity (m/s²).
 const GRAVITY: f32 = 9.81;
 /// Air density at sea level, 15 °C (kg/m³).
 const AIR_DENSITY: f32 = 1.225;
-/// Gain of the Webots steering servo (1/s): `controlPID 10 0 0`.
-const STEERING_GAIN: f32 = 10.0;
-/// Speed limit of the Webots steering motors (rad/s): the `Motor` default `maxVelocity`.
-const STEERING_MAX_RATE: f32 = 10.0;
 /// A wheel whose contact point moves slower than this fraction of the rear-axle speed (the
 /// inner rear wheel of a very tight turn) cannot say how fast the car goes.
 const MIN_SPEED_RATIO: f32 = 0.1;
@@ -67,8 +66,8 @@ impl Environment {
 #[derive(Debug, Clone)]
 pub struct Plant {
     geometry: Geometry<f32>,
-    /// Steering motor limits (rad): `[minSteeringAngle, maxSteeringAngle]`.
-    steering_limits: (f32, f32),
+    /// The front-right and front-left steering motors.
+    steering_motors: [SteeringMotor<f32>; 2],
     /// Body plus wheels (kg).
     mass: f32,
     /// Axial inertia of each wheel (kg·m²).
@@ -87,8 +86,10 @@ pub struct Plant {
     wheel_angle: PerWheel<f32>,
     /// Front-wheel steering angles (rad, positive = right).
     steering: WheelAngles<f32>,
-    /// Speed-mode velocity command of each wheel motor (rad/s), `None` while not in speed mode.
-    motor_velocity: PerWheel<Option<f32>>,
+    /// Front-wheel steering rates (rad/s, positive = turning right).
+    steering_rate: WheelAngles<f32>,
+    /// Speed-mode velocity command of each wheel motor, `None` while not in speed mode.
+    wheel_motors: PerWheel<Option<VelocityRamp<f32>>>,
     /// The true pose of the rear-axle centre, and the distance it travelled.
     pose: Odometry<f32>,
     /// Non-finite commands ignored, and pose updates refused.
@@ -105,9 +106,17 @@ impl Plant {
         let geometry = params.geometry().unwrap_or_default();
         let wheel_mass = PerWheel::from_fn(|w| params.wheels[w].validate().0.mass_properties());
         let wheels_total: f32 = wheel_mass.iter().flatten().map(|m| m.mass).sum();
+        let steering_motor = |w: Wheel| SteeringMotor {
+            servo: PositionServo::steering(params.min_steering_angle, params.max_steering_angle),
+            max_torque: params.max_steering_torque,
+            inertia: wheel_mass[w].map_or(0.0, |m| m.transverse),
+        };
         Plant {
             geometry,
-            steering_limits: (params.min_steering_angle, params.max_steering_angle),
+            steering_motors: [
+                steering_motor(Wheel::FrontRight),
+                steering_motor(Wheel::FrontLeft),
+            ],
             mass: params.body.mass + wheels_total,
             wheel_inertia: wheel_mass.map(|m| m.map_or(0.0, |m| m.axial)),
             tyre_radius: PerWheel::from_fn(|w| params.axle_radius(w)),
@@ -117,7 +126,8 @@ impl Plant {
             wheel_speed: PerWheel::splat(0.0),
             wheel_angle: PerWheel::splat(0.0),
             steering: WheelAngles::STRAIGHT,
-            motor_velocity: PerWheel::splat(None),
+            steering_rate: WheelAngles::new(0.0, 0.0),
+            wheel_motors: PerWheel::splat(None),
             pose: Odometry::new(geometry, SpeedSource::RearWheels),
             faults: 0,
         }
@@ -164,24 +174,34 @@ impl Plant {
         self.time_ms = self.time_ms.saturating_add(dt_ms);
     }
 
-    /// The Webots steering servos: a P controller capped in speed, targets clamped to the
-    /// steering limits.
+    /// The Webots steering motors: a P controller capped in speed, targets clamped to the
+    /// steering limits, the rate reached within the motor's torque.
     fn steer(&mut self, target: WheelAngles<f32>, dt: f32) {
-        let (min, max) = self.steering_limits;
-        let servo = |angle: f32, target: f32, faults: &mut u32| {
-            if !target.is_finite() {
-                *faults = faults.saturating_add(1);
-                return angle;
+        // The motors hold their angle on a non-finite target; the plant counts it.
+        for t in [target.right, target.left] {
+            if !t.is_finite() {
+                self.faults = self.faults.saturating_add(1);
             }
-            let error = Real::clamp(target, min, max) - angle;
-            let rate = Real::clamp(STEERING_GAIN * error, -STEERING_MAX_RATE, STEERING_MAX_RATE);
-            angle + rate * dt
-        };
-        let faults = &mut self.faults;
-        self.steering = WheelAngles::new(
-            servo(self.steering.right, target.right, faults),
-            servo(self.steering.left, target.left, faults),
+        }
+        let [right, left] = self.steering_motors;
+        let right = right.step(
+            SteeringState {
+                angle: self.steering.right,
+                rate: self.steering_rate.right,
+            },
+            target.right,
+            dt,
         );
+        let left = left.step(
+            SteeringState {
+                angle: self.steering.left,
+                rate: self.steering_rate.left,
+            },
+            target.left,
+            dt,
+        );
+        self.steering = WheelAngles::new(right.angle, left.angle);
+        self.steering_rate = WheelAngles::new(right.rate, left.rate);
     }
 
     /// Each wheel's contact-point speed over the rear-axle centre's (dimensionless).
@@ -209,7 +229,7 @@ impl Plant {
                 max_velocity,
             } = drive[w]
             else {
-                self.motor_velocity[w] = None;
+                self.wheel_motors[w] = None;
                 continue;
             };
             if !(target.is_finite() && acceleration.is_finite() && max_velocity.is_finite()) {
@@ -217,11 +237,9 @@ impl Plant {
                 continue;
             }
             // The motor's command starts from the wheel's speed when speed mode begins.
-            let current = self.motor_velocity[w].unwrap_or(self.wheel_speed[w]);
-            let goal = Real::clamp(target, -max_velocity, max_velocity);
-            let step = (acceleration * dt).abs();
-            let command = current + Real::clamp(goal - current, -step, step);
-            self.motor_velocity[w] = Some(command);
+            let command = self.wheel_motors[w]
+                .get_or_insert(VelocityRamp::starting_at(self.wheel_speed[w]))
+                .step(target, acceleration, max_velocity, dt);
             if ratio[w] > MIN_SPEED_RATIO {
                 sum += command * self.tyre_radius[w] / ratio[w];
                 count += 1;
@@ -297,6 +315,8 @@ impl Plant {
             && self.wheel_angle.iter().all(|x| x.is_finite())
             && self.steering.right.is_finite()
             && self.steering.left.is_finite()
+            && self.steering_rate.right.is_finite()
+            && self.steering_rate.left.is_finite()
             && self.pose.pose().is_finite()
     }
 }

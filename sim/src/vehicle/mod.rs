@@ -267,36 +267,35 @@ impl Vehicle {
     /// velocity command, reached within `maxSteeringTorque` against the wheel's inertia about
     /// the steering axis.
     fn steer(&mut self, dt: f64) {
+        use vehicle_model::actuator::{SteeringMotor, SteeringState};
         let target = self
             .commands
             .as_ref()
             .map_or(WheelAngles::new(0.0, 0.0), |c| c.steering);
-        let (lo, hi) = (self.spec.steering.min_angle, self.spec.steering.max_angle);
-        for (i, w) in [Wheel::FrontRight, Wheel::FrontLeft]
-            .into_iter()
-            .enumerate()
-        {
-            let (target, angle) = if i == 0 {
-                (target.right, self.state.steering.right)
-            } else {
-                (target.left, self.state.steering.left)
-            };
-            let command = self.steering_servo.velocity(target, angle);
-            let inertia = self.spec.wheels[w].transverse_inertia();
-            let max_change = self.spec.steering.max_torque * dt / inertia;
-            let rate = &mut self.steering_rates[i];
-            *rate += (command - *rate).clamp(-max_change, max_change);
-            let next = angle + *rate * dt;
-            let clamped = next.clamp(lo, hi);
-            if clamped != next {
-                *rate = 0.0;
-            }
-            if i == 0 {
-                self.state.steering.right = clamped;
-            } else {
-                self.state.steering.left = clamped;
-            }
-        }
+        let motor = |w: Wheel| SteeringMotor {
+            servo: self.steering_servo,
+            max_torque: self.spec.steering.max_torque,
+            inertia: self.spec.wheels[w].transverse_inertia(),
+        };
+        let [right_rate, left_rate] = self.steering_rates;
+        let right = motor(Wheel::FrontRight).step(
+            SteeringState {
+                angle: self.state.steering.right,
+                rate: right_rate,
+            },
+            target.right,
+            dt,
+        );
+        let left = motor(Wheel::FrontLeft).step(
+            SteeringState {
+                angle: self.state.steering.left,
+                rate: left_rate,
+            },
+            target.left,
+            dt,
+        );
+        self.steering_rates = [right.rate, left.rate];
+        self.state.steering = WheelAngles::new(right.angle, left.angle);
     }
 
     /// Sets up wheel `w`'s spin for the step: the imposed rate of a velocity command, or a free
@@ -321,15 +320,11 @@ impl Vehicle {
         }
         self.ramps[w] = None;
         let inertia = self.spec.wheels[w].spin_inertia();
-        let torque = match drive {
-            WheelDrive::Torque(t) if t.is_finite() => t.clamp(
-                -motor::WHEEL_MOTOR_MAX_TORQUE,
-                motor::WHEEL_MOTOR_MAX_TORQUE,
-            ),
-            _ => 0.0,
+        let wheel = vehicle_model::actuator::WheelSpin {
+            inertia,
+            damping: self.spec.wheels_damping,
         };
-        let omega =
-            (omega + torque * dt / inertia) / (1.0 + self.spec.wheels_damping * dt / inertia);
+        let omega = wheel.step(omega, drive.torque().unwrap_or(0.0), dt);
         let brake = if brake.is_finite() {
             brake.max(0.0)
         } else {
