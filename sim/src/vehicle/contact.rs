@@ -29,6 +29,7 @@
 //! `maxTorque`), so the tyre force acts on the chassis alone.
 
 use rapier3d::prelude::{Mat3, Vector};
+use vehicle_model::actuator::coulomb_torque;
 
 /// Block Gauss–Seidel sweeps per step. With warm starting, 8 sweeps leave residual slip
 /// velocities under 1 mm/s on every shipped car with the rigid Webots contact (the chassis
@@ -347,7 +348,8 @@ fn brake_row(w: &mut WheelRow) {
         return;
     }
     let old = w.impulses.brake;
-    let new = (old - w.omega / inv_inertia).clamp(-brake_impulse, brake_impulse);
+    // The Coulomb rule on impulses: the impulse that stops the wheel, within the capacity.
+    let new = coulomb_torque(old - w.omega / inv_inertia, brake_impulse);
     w.impulses.brake = new;
     w.omega += (new - old) * inv_inertia;
 }
