@@ -403,7 +403,9 @@ fn tyre_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle) {
             rhs[r] = c0 - beta * v[d];
         }
     }
-    let Some(delta) = solve4(m, rhs) else { return };
+    let Some(delta) = solve_mirrored(&m, &rhs) else {
+        return;
+    };
     for i in 0..2 {
         let w = &mut pair[i];
         let Some(c) = w.contact else { continue };
@@ -416,6 +418,31 @@ fn tyre_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle) {
         body.apply(c.contact_arm, c.forward * (f - f0) + c.lateral * (l - l0));
         w.omega -= c.radius * (f - f0) * w.spin.inv_inertia();
     }
+}
+
+/// Solves an axle's tyre block `m·x = rhs` (unknowns: forward and lateral of one wheel, then
+/// of its mirror image) in the wheels' mirror-symmetric and antisymmetric parts: for an axle in
+/// a mirror-symmetric state the two parts decouple exactly, so the solution is the mirror image
+/// of itself to the last bit and round-off cannot start a turn that the car would amplify (a
+/// car whose driven wheels slide is yaw-unstable). Any other state is solved all the same:
+/// the change of variables is exact and invertible.
+fn solve_mirrored(m: &[[f32; 4]; 4], rhs: &[f32; 4]) -> Option<[f32; 4]> {
+    // Symmetric forward, symmetric lateral, antisymmetric forward, antisymmetric lateral parts
+    // of a row (or a column) ordered forward 0, lateral 0, forward 1, lateral 1; the mirror
+    // image of a lateral force is its negative. Each part adds two terms, so a value plus its
+    // exact mirror image gives exactly 0.
+    let parts = |v: [f32; 4]| [v[0] + v[2], v[1] - v[3], v[0] - v[2], v[1] + v[3]];
+    // m·T, where x = T·y maps the parts y back to the forces x.
+    let mt = m.map(parts);
+    let mut reduced = [[0.0_f32; 4]; 4];
+    for c in 0..4 {
+        let column = parts([mt[0][c], mt[1][c], mt[2][c], mt[3][c]]);
+        for (row, value) in reduced.iter_mut().zip(column) {
+            row[c] = value;
+        }
+    }
+    let [sf, sl, af, al] = solve4(reduced, parts(*rhs))?;
+    Some([sf + af, sl + al, sf - af, al - sl])
 }
 
 /// Solves the 2×2 system `m·x = rhs`; `None` if singular.

@@ -312,7 +312,11 @@ impl Vehicle {
             max_velocity,
         } = drive
         {
-            let ramp = self.ramps[w].get_or_insert(VelocityRamp::starting_at(omega));
+            // The ramp starts from the axle's mean wheel speed: both motors of an axle take
+            // over from the same command, so a settling or slipping wheel's speed at the
+            // switch does not become a lasting left–right difference of the drive.
+            let axle_mean = 0.5 * (omega + self.state.wheel_speeds[w.mirror()]);
+            let ramp = self.ramps[w].get_or_insert(VelocityRamp::starting_at(axle_mean));
             return (
                 Spin::Imposed,
                 ramp.step(target, acceleration, max_velocity, dt),

@@ -271,7 +271,8 @@ impl<T: Real> MagicFormula<T> {
     /// deflect further, so a tyre that stops after sliding keeps no more than its peak force.
     ///
     /// Also returns, per axis, the new slip over the change of slip velocity that would bring
-    /// it to zero (s/m): `dt/(σ + dt·|v_x|)`, less when the cap holds it.
+    /// it to zero (s/m): `dt/(σ + dt·|v_x|)` for the relaxing slip (less when held at the
+    /// peak), `1/reference` for a sliding tyre, whose slip follows the slip velocity at once.
     fn advance(
         &self,
         slip: [T; 2],
@@ -289,12 +290,20 @@ impl<T: Real> MagicFormula<T> {
             let denominator = sigma + dt * speed;
             let x = (sigma * slip[i] - dt * v.slip[i]) / denominator;
             let cap = (v.slip[i].abs() / reference).max(T::ONE / c.scale[i]);
-            rate[i] = dt / denominator;
-            if x.abs() > cap {
-                next[i] = cap * x.sign();
-                rate[i] *= cap / x.abs();
-            } else {
+            let peak = T::ONE / c.scale[i];
+            let kinematic = v.slip[i].abs() / reference;
+            if x.abs() <= cap {
                 next[i] = x;
+                rate[i] = dt / denominator;
+            } else if kinematic > peak {
+                // Sliding: the slip is the kinematic one, −v_s/reference, which vanishes
+                // with the slip velocity.
+                next[i] = cap * x.sign();
+                rate[i] = T::ONE / reference;
+            } else {
+                // Held at the peak slip: the deflection unwinds as in the free case.
+                next[i] = cap * x.sign();
+                rate[i] = dt / denominator * cap / x.abs();
             }
             if !next[i].is_finite() {
                 next[i] = T::ZERO;
