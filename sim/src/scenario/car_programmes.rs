@@ -27,6 +27,16 @@ const CIRCLE_SPEED_KMH: f64 = 10.0;
 const LANE_CHANGE_SPEED_KMH: f64 = 60.0;
 /// Lateral offset of the lane-change's middle lane (m, to the left).
 const LANE_OFFSET: f64 = 3.5;
+/// How far ahead the lane-change driver aims (s of travel). A pure-pursuit driver that aims
+/// closer than about three times the car's lag between steering command and yaw (the steering
+/// servo's 0.1 s and the yaw response's 0.2–0.3 s on slipping tyres) overshoots each lane and
+/// oscillates; driver models preview 0.5–1.5 s of road.
+const PREVIEW_TIME: f64 = 1.0;
+/// Shortest look-ahead of the lane-change driver (m), at walking pace.
+const MIN_LOOKAHEAD: f64 = 4.0;
+/// Longest look-ahead of the lane-change driver (m): beyond it the driver would cut the
+/// 25–30 m lane sections.
+const MAX_LOOKAHEAD: f64 = 25.0;
 /// Window of the moving average applied to the lateral acceleration (s): the body's
 /// acceleration is a finite difference of the solver's velocities, whose step-to-step jitter
 /// is not a vehicle behaviour.
@@ -339,7 +349,7 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
         [c * dx - s * dy, s * dx + c * dy]
     };
     let v = LANE_CHANGE_SPEED_KMH / KMH;
-    let lookahead = (0.6 * v).clamp(4.0, 15.0);
+    let lookahead = (PREVIEW_TIME * v).clamp(MIN_LOOKAHEAD, MAX_LOOKAHEAD);
     rig.driver_mut()?.set_cruising_speed(LANE_CHANGE_SPEED_KMH);
     // Run-in: the track starts 20 m after the speed has settled.
     let mut entry: Option<f64> = None;

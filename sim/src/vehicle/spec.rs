@@ -285,8 +285,8 @@ impl VehicleSpec {
     }
 
     /// As [`VehicleSpec::from_car`], on the tyres of `tyre`. A slip-based tyre's nominal load
-    /// is the static load on its wheel (the car's weight shared between the axles by the
-    /// centre of mass, under 9.81 m/s²) and its relaxation lengths scale with its radius.
+    /// is the car's mean static wheel load (its weight under 9.81 m/s² over four) and its
+    /// relaxation lengths scale with its radius.
     ///
     /// # Errors
     /// A [`ParamError`] naming the first invalid field, tyre coefficients included
@@ -353,8 +353,11 @@ impl VehicleSpec {
             },
         };
         spec.validate()?;
-        let loads = spec.static_wheel_loads();
-        let fit = |w: Wheel| fit_tyre(tyre, spec.wheels[w].radius, loads[w]);
+        // One nominal load for all four tyres, the car's mean static wheel load: the tyre's
+        // stiffness and friction per unit load then differ between a heavier and a lighter
+        // axle as a real tyre's do, which makes a front-heavy car understeer.
+        let nominal = spec.static_wheel_loads().iter().sum::<f64>() / 4.0;
+        let fit = |w: Wheel| fit_tyre(tyre, spec.wheels[w].radius, nominal);
         spec.tyres = TyreSpec {
             front: fit(Wheel::FrontRight)?,
             rear: fit(Wheel::RearRight)?,
