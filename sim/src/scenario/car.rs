@@ -145,6 +145,7 @@ impl CarRig {
             brake: Some(t.brake),
             lateral_accel: Some(s.lateral_acceleration),
             longitudinal_accel: Some(s.longitudinal_acceleration),
+            tyres: Some(s.tyres),
         });
         if t.time >= self.next_progress {
             progress(t.time, self.expected);
