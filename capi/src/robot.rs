@@ -77,7 +77,7 @@ impl Robot {
             .map_err(|e| format!("cannot build the world {}: {e}", description.source))
     }
 
-    /// Builds the world of `description` with its car or robot.
+    /// Builds the world of `description` with its car (on the world's tyres) or robot.
     fn build(description: &WorldDescription) -> Result<Robot, SimError> {
         let mut simulation = Simulation::new(World::new(description.config.clone())?);
         let body = match &description.vehicle {
@@ -88,7 +88,8 @@ impl Robot {
             ),
             WorldVehicle::Car(car) => {
                 let placement = sim::placement::car_placement(&car.params);
-                let (id, report) = simulation.add_car(car.params.clone(), placement)?;
+                let (id, report) =
+                    simulation.add_car_on(car.params.clone(), &car.tyre, placement)?;
                 // The loader validated the fields already; anything left is still reported.
                 for w in &report {
                     eprintln!("Warning: {}: {w}", description.source);
@@ -200,5 +201,46 @@ impl Robot {
     /// True if the robot is a car (Webots: its `customData` has the Car PROTO's fields).
     pub(crate) fn is_car(&self) -> bool {
         matches!(self.body, Body::Car { .. })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use vehicle_model::{TyreModel, WebotsContact};
+
+    /// The front tyre of the car that `Robot::build` puts in the world of `text`.
+    fn front_tyre(text: &str) -> TyreModel<f64> {
+        let description = world_file::parse_str("w.toml", text).unwrap();
+        let robot = Robot::build(&description).unwrap();
+        let Body::Car { id, .. } = robot.body else {
+            panic!("expected a car");
+        };
+        robot
+            .simulation
+            .world()
+            .vehicle(id)
+            .unwrap()
+            .spec()
+            .tyres
+            .front
+    }
+
+    #[test]
+    fn the_car_rolls_on_the_world_s_tyres() {
+        // A truck's default tyre is the commercial set: 10 F_z per rad of cornering stiffness.
+        let TyreModel::MagicFormula(truck) = front_tyre("[vehicle]\nmodel = \"Truck\"\n") else {
+            panic!("expected the slip-based tyre");
+        };
+        assert_eq!(truck.params().lateral.stiffness, 10.0);
+        let webots = front_tyre(
+            "[vehicle]\n[vehicle.tyre]\nmodel = \"webots\"\nforce_dependent_slip = 0.002\n",
+        );
+        assert_eq!(
+            webots,
+            TyreModel::Webots(WebotsContact {
+                force_dependent_slip: [0.002; 2]
+            })
+        );
     }
 }

@@ -4,7 +4,7 @@
 use vehicle_model::{CarParams, ControlMode, Driver, Gear, ParamReport, Sensors};
 
 use crate::error::SimError;
-use crate::vehicle::{VehicleId, VehiclePlacement, VehicleSpec, VehicleState};
+use crate::vehicle::{TyreChoice, VehicleId, VehiclePlacement, VehicleSpec, VehicleState};
 use crate::world::World;
 
 /// One car's driver and whether it has had its first step.
@@ -75,15 +75,44 @@ impl Simulation {
     }
 
     /// Validates `params` (invalid fields take their Webots default and are reported, as
-    /// `Driver::new` does), builds the car at `placement` and gives it a driver running at the
-    /// world's `basicTimeStep`.
+    /// `Driver::new` does), builds the car at `placement` on passenger-car slip-based tyres
+    /// ([`TyreChoice::default`]) and gives it a driver running at the world's
+    /// `basicTimeStep`.
     pub fn add_car(
         &mut self,
         params: CarParams<f64>,
         placement: VehiclePlacement,
     ) -> Result<(VehicleId, ParamReport), SimError> {
+        self.add_car_on(params, &TyreChoice::default(), placement)
+    }
+
+    /// As [`Simulation::add_car`], on the tyres of `tyre` (e.g. a world file's
+    /// [`CarDescription::tyre`](crate::world_file::CarDescription::tyre)).
+    ///
+    /// # Errors
+    /// [`SimError::Param`] naming a tyre coefficient out of range (e.g. `tyre.lateral.shape`)
+    /// or an invalid body field.
+    ///
+    /// ```
+    /// use sim::{Simulation, TyreChoice, VehiclePlacement, World, WorldConfig};
+    /// use vehicle_model::{Model, TyreClass, TyreModel};
+    /// let mut sim = Simulation::new(World::new(WorldConfig::default())?);
+    /// let tyre = TyreChoice::MagicFormula { class: TyreClass::Commercial, overrides: Vec::new() };
+    /// let (id, _) = sim.add_car_on(Model::Bus.params(), &tyre, VehiclePlacement::default())?;
+    /// let TyreModel::MagicFormula(front) = sim.world().vehicle(id)?.spec().tyres.front else {
+    ///     unreachable!()
+    /// };
+    /// assert_eq!(front.params().lateral.stiffness, 10.0); // per rad, per unit load
+    /// # Ok::<(), sim::SimError>(())
+    /// ```
+    pub fn add_car_on(
+        &mut self,
+        params: CarParams<f64>,
+        tyre: &TyreChoice,
+        placement: VehiclePlacement,
+    ) -> Result<(VehicleId, ParamReport), SimError> {
         let (driver, report) = Driver::new(params, self.world.config().basic_time_step_ms);
-        let spec = VehicleSpec::from_car(driver.params())?;
+        let spec = VehicleSpec::from_car_with(driver.params(), tyre)?;
         let id = self.world.add_vehicle(spec, placement)?;
         self.cars.push(Controlled {
             id,

@@ -2,6 +2,10 @@
 
 use std::fmt::Write as _;
 
+use vehicle_model::{PerWheel, Wheel};
+
+use crate::vehicle::TyreTelemetry;
+
 /// One sample, taken after a world step. Car-only quantities are `None` for a
 /// DifferentialWheels robot, and `rpm`/`gear` are `None` in speed (cruise-control) mode,
 /// where Webots has no engine model.
@@ -36,11 +40,43 @@ pub struct Sample {
     pub lateral_accel: Option<f64>,
     /// Longitudinal acceleration of the body (m/s², positive forward).
     pub longitudinal_accel: Option<f64>,
+    /// What each tyre did over the step (slips, forces in N, friction use), in wheel order
+    /// FR, FL, RR, RL.
+    pub tyres: Option<PerWheel<TyreTelemetry>>,
 }
 
-/// The CSV header written by [`write_csv`].
-pub const CSV_HEADER: &str = "scenario,time_s,x_m,y_m,yaw_rad,speed_kmh,driver_speed_kmh,rpm,gear,\
-steering_command_rad,steering_rad,throttle,brake,lateral_accel_mps2,longitudinal_accel_mps2";
+/// The six columns of one tyre, prefixed with the wheel's short name.
+macro_rules! tyre_columns {
+    ($w:literal) => {
+        concat!(
+            ",",
+            $w,
+            "_slip_ratio,",
+            $w,
+            "_slip_angle_rad,",
+            $w,
+            "_fx_n,",
+            $w,
+            "_fy_n,",
+            $w,
+            "_fz_n,",
+            $w,
+            "_friction_use"
+        )
+    };
+}
+
+/// The CSV header written by [`write_csv`]: the vehicle's columns, then six per tyre in
+/// wheel order `fr`, `fl`, `rr`, `rl` ([`TyreTelemetry`]: slip ratio, slip angle in rad,
+/// the road's forces along the wheel's heading and axis and the load in N, friction use 0–1).
+pub const CSV_HEADER: &str = concat!(
+    "scenario,time_s,x_m,y_m,yaw_rad,speed_kmh,driver_speed_kmh,rpm,gear,",
+    "steering_command_rad,steering_rad,throttle,brake,lateral_accel_mps2,longitudinal_accel_mps2",
+    tyre_columns!("fr"),
+    tyre_columns!("fl"),
+    tyre_columns!("rr"),
+    tyre_columns!("rl"),
+);
 
 /// A scenario's samples, in time order.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -50,6 +86,16 @@ pub struct Telemetry {
     /// The samples.
     pub samples: Vec<Sample>,
 }
+
+/// The values of a tyre's six columns, in the order of [`CSV_HEADER`].
+const TYRE_CELLS: [fn(TyreTelemetry) -> f64; 6] = [
+    |t| t.slip_ratio,
+    |t| t.slip_angle,
+    |t| t.fx,
+    |t| t.fy,
+    |t| t.fz,
+    |t| t.friction_use,
+];
 
 fn cell(out: &mut String, v: Option<f64>) {
     out.push(',');
@@ -89,6 +135,12 @@ pub fn write_csv<'a>(runs: impl IntoIterator<Item = &'a Telemetry>) -> String {
             ] {
                 cell(&mut out, v);
             }
+            for w in Wheel::ALL {
+                let tyre = s.tyres.map(|t| t[w]);
+                for v in TYRE_CELLS {
+                    cell(&mut out, tyre.map(v));
+                }
+            }
             out.push('\n');
         }
     }
@@ -116,8 +168,59 @@ mod tests {
         let mut lines = csv.lines();
         assert_eq!(lines.next(), Some(CSV_HEADER));
         let row = lines.next().unwrap();
-        assert_eq!(row, "brake,0.01,0.333333,0,0,100,,,2,,,,,,");
+        // 15 vehicle columns, then 24 empty tyre cells.
+        assert_eq!(
+            row,
+            format!("brake,0.01,0.333333,0,0,100,,,2,,,,,,{}", ",".repeat(24))
+        );
         assert_eq!(row.split(',').count(), CSV_HEADER.split(',').count());
         assert_eq!(lines.next(), None);
+    }
+
+    #[test]
+    fn tyre_columns_in_wheel_order() {
+        let columns: Vec<&str> = CSV_HEADER.split(',').collect();
+        assert_eq!(columns.len(), 15 + 24);
+        assert_eq!(
+            columns[15..21],
+            [
+                "fr_slip_ratio",
+                "fr_slip_angle_rad",
+                "fr_fx_n",
+                "fr_fy_n",
+                "fr_fz_n",
+                "fr_friction_use"
+            ]
+        );
+        assert_eq!(columns[21], "fl_slip_ratio");
+        assert_eq!(columns[27], "rr_slip_ratio");
+        assert_eq!(columns[38], "rl_friction_use");
+
+        // Wheel i gets slip ratio 0.01·i, slip angle −0.02 rad, forces 100·i, −50, 4000 + i N
+        // and friction use 0.25.
+        let tyres = PerWheel::from_fn(|w| {
+            let i = Wheel::ALL.iter().position(|&v| v == w).unwrap() as f64;
+            TyreTelemetry {
+                slip_ratio: 0.01 * i,
+                slip_angle: -0.02,
+                fx: 100.0 * i,
+                fy: -50.0,
+                fz: 4000.0 + i,
+                friction_use: 0.25,
+            }
+        });
+        let t = Telemetry {
+            scenario: "lane-change".into(),
+            samples: vec![Sample {
+                tyres: Some(tyres),
+                ..Sample::default()
+            }],
+        };
+        let csv = write_csv([&t]);
+        let row: Vec<&str> = csv.lines().nth(1).unwrap().split(',').collect();
+        assert_eq!(row.len(), columns.len());
+        assert_eq!(row[15..21], ["0", "-0.02", "0", "-50", "4000", "0.25"]);
+        assert_eq!(row[21..27], ["0.01", "-0.02", "100", "-50", "4001", "0.25"]);
+        assert_eq!(row[33..39], ["0.03", "-0.02", "300", "-50", "4003", "0.25"]);
     }
 }

@@ -140,9 +140,89 @@ fn json_metrics_of_a_short_car_run() {
             "trajectory.svg",
         ],
     );
+    // The tyres' friction use is plotted for the lane change only.
+    assert!(!out_dir.join("friction_use.svg").exists());
     let csv = std::fs::read_to_string(out_dir.join("telemetry.csv")).unwrap();
     // Header plus one row per 10 ms step.
     assert_eq!(csv.lines().count(), 1 + 100);
+    // 15 columns of the car, 6 per tyre.
+    for line in csv.lines() {
+        assert_eq!(line.split(',').count(), 15 + 4 * 6, "{line}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The columns of `name` in `header`, for every wheel in the order FR, FL, RR, RL.
+fn tyre_columns(header: &str, name: &str) -> Vec<usize> {
+    ["fr", "fl", "rr", "rl"]
+        .map(|w| {
+            header
+                .split(',')
+                .position(|c| c == format!("{w}_{name}"))
+                .unwrap_or_else(|| panic!("no column {w}_{name} in {header}"))
+        })
+        .to_vec()
+}
+
+#[test]
+fn lane_change_writes_the_tyres_friction_use() {
+    let dir = scratch("lane-change");
+    let out = vehicle_sim(&["--scenario", "lane-change", "--out", dir.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "stderr: {}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    assert!(
+        stdout.contains("lane_change.svg, friction_use.svg"),
+        "{stdout}"
+    );
+    let svg = std::fs::read_to_string(dir.join("friction_use.svg")).unwrap();
+    // One labelled line per tyre, and the grip limit as a dashed guide.
+    for label in ["front right", "front left", "rear right", "rear left"] {
+        assert_eq!(
+            svg.matches(&format!(">{label}</text>")).count(),
+            1,
+            "{label}"
+        );
+    }
+    assert_eq!(svg.matches("<path").count(), 4 + 1);
+    assert!(svg.contains("friction use (0 to 1)"));
+
+    let csv = std::fs::read_to_string(dir.join("telemetry.csv")).unwrap();
+    let mut lines = csv.lines();
+    let header = lines.next().unwrap();
+    let use_columns = tyre_columns(header, "friction_use");
+    let load_columns = tyre_columns(header, "fz_n");
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| {
+            // Empty cells (no rpm in speed mode) read as NaN.
+            l.split(',')
+                .skip(1)
+                .map(|c| {
+                    if c.is_empty() {
+                        f64::NAN
+                    } else {
+                        c.parse().unwrap()
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    let cell = |row: &Vec<f64>, column: usize| row[column - 1];
+    let mut peak = [0.0_f64; 4];
+    for row in rows.iter().filter(|r| r[0] > 1.0) {
+        for (i, (&u, &z)) in use_columns.iter().zip(&load_columns).enumerate() {
+            let (friction_use, load) = (cell(row, u), cell(row, z));
+            assert!(
+                (0.0..=1.0).contains(&friction_use),
+                "{friction_use} at t = {}",
+                row[0]
+            );
+            // Settled on the ground: every tyre carries part of the car's weight (N).
+            assert!(load > 1000.0, "load {load} N at t = {}", row[0]);
+            peak[i] = peak[i].max(friction_use);
+        }
+    }
+    // Steering through the lanes at 60 km/h asks every tyre for a good part of its grip.
+    assert!(peak.iter().all(|&p| p > 0.2), "{peak:?}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

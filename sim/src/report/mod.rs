@@ -8,6 +8,8 @@ use std::path::{Path, PathBuf};
 
 pub use svg::{Figure, Panel, Series};
 
+use vehicle_model::Wheel;
+
 use crate::scenario::{RunReport, Scenario, Value};
 use crate::telemetry::{Sample, write_csv};
 
@@ -216,8 +218,9 @@ fn series(report: &RunReport, f: impl Fn(&Sample) -> Option<f64>) -> Vec<Series>
         .collect()
 }
 
-/// The plots of a run, by file name: speed, rpm and gear, steering, the lane change and the
-/// trajectory; a plot without data (e.g. rpm for a robot) is left out.
+/// The plots of a run, by file name: speed, rpm and gear, steering, the lane change and its
+/// tyres' friction use, and the trajectory; a plot without data (e.g. rpm for a robot) is left
+/// out.
 pub fn figures(report: &RunReport) -> Vec<(&'static str, Figure)> {
     let title = |what: &str| format!("{what}: {}, {}", report.vehicle, report.scenario);
     let time = "time (s)".to_string();
@@ -331,6 +334,14 @@ pub fn figures(report: &RunReport) -> Vec<(&'static str, Figure)> {
             },
         ));
     }
+    if let Some(figure) = report.result(Scenario::LaneChange).and_then(|r| {
+        friction_use(
+            &r.telemetry.samples,
+            title("Tyre friction use, double lane change"),
+        )
+    }) {
+        out.push(("friction_use.svg", figure));
+    }
     out.push((
         "trajectory.svg",
         Figure {
@@ -357,6 +368,38 @@ pub fn figures(report: &RunReport) -> Vec<(&'static str, Figure)> {
         },
     ));
     out
+}
+
+/// The friction use (0–1) of each tyre against time, one line per wheel, with the grip limit
+/// (1) as a guide; `None` for samples without tyres (a robot).
+fn friction_use(samples: &[Sample], title: String) -> Option<Figure> {
+    let names = ["front right", "front left", "rear right", "rear left"];
+    let series: Vec<Series> = Wheel::ALL
+        .into_iter()
+        .zip(names)
+        .map(|(w, name)| Series {
+            name: name.to_string(),
+            points: samples
+                .iter()
+                .filter_map(|s| s.tyres.map(|t| [s.time, t[w].friction_use]))
+                .collect(),
+        })
+        .filter(|s| !s.points.is_empty())
+        .collect();
+    let span = series
+        .first()
+        .and_then(|s| Some([s.points.first()?[0], s.points.last()?[0]]))?;
+    Some(Figure {
+        title,
+        x_label: "time (s)".into(),
+        panels: vec![Panel {
+            y_label: "friction use (0 to 1)".into(),
+            series,
+            steps: false,
+            guides: vec![vec![[span[0], 1.0], [span[1], 1.0]]],
+        }],
+        equal_aspect: false,
+    })
 }
 
 /// Writes `telemetry.csv`, `metrics.json` and the plots of [`figures`] into `dir` (created
@@ -394,8 +437,10 @@ pub fn write_outputs(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::TyreTelemetry;
     use crate::scenario::{Metric, ScenarioResult};
     use crate::telemetry::Telemetry;
+    use vehicle_model::PerWheel;
 
     fn report() -> RunReport {
         RunReport {
@@ -432,6 +477,36 @@ mod tests {
              {\"brake\":{\"stop_distance_m\":42.123456,\"stop_time_s\":null,\"at_rest\":true,\
              \"sim_seconds\":12.5}},\"warnings\":[\"warn\\n\",\"a note\"]}"
         );
+    }
+
+    #[test]
+    fn friction_use_has_one_labelled_line_per_tyre() {
+        let tyres = PerWheel::from_fn(|w| TyreTelemetry {
+            friction_use: if w.is_front() { 0.5 } else { 0.25 },
+            ..TyreTelemetry::default()
+        });
+        let samples: Vec<Sample> = (0..3)
+            .map(|i| Sample {
+                time: 0.01 * f64::from(i),
+                tyres: Some(tyres),
+                ..Sample::default()
+            })
+            .collect();
+        let f = friction_use(&samples, "t".into()).unwrap();
+        let panel = &f.panels[0];
+        let names: Vec<&str> = panel.series.iter().map(|s| s.name.as_str()).collect();
+        assert_eq!(
+            names,
+            ["front right", "front left", "rear right", "rear left"]
+        );
+        assert_eq!(
+            panel.series[0].points,
+            [[0.0, 0.5], [0.01, 0.5], [0.02, 0.5]]
+        );
+        assert_eq!(panel.series[3].points[2], [0.02, 0.25]);
+        assert_eq!(panel.guides, [vec![[0.0, 1.0], [0.02, 1.0]]]);
+        // A robot has no tyres.
+        assert_eq!(friction_use(&[Sample::default()], "t".into()), None);
     }
 
     #[test]

@@ -36,7 +36,8 @@ pub(crate) struct CarRig {
 }
 
 impl CarRig {
-    /// Builds the world of `desc` with the car of `car` at its `translation`/`rotation`.
+    /// Builds the world of `desc` with the car of `car` on its tyres at its
+    /// `translation`/`rotation`.
     pub(crate) fn new(
         desc: &WorldDescription,
         car: &CarDescription,
@@ -53,7 +54,7 @@ impl CarRig {
             ));
         }
         // The world file validated the params already: the report is empty.
-        let (id, _) = sim.add_car(car.params.clone(), car_placement(&car.params))?;
+        let (id, _) = sim.add_car_on(car.params.clone(), &car.tyre, car_placement(&car.params))?;
         let vehicle = sim.world().vehicle(id)?;
         let (state, spec) = (*vehicle.state(), *vehicle.spec());
         Ok(CarRig {
@@ -144,6 +145,7 @@ impl CarRig {
             brake: Some(t.brake),
             lateral_accel: Some(s.lateral_acceleration),
             longitudinal_accel: Some(s.longitudinal_acceleration),
+            tyres: Some(s.tyres),
         });
         if t.time >= self.next_progress {
             progress(t.time, self.expected);

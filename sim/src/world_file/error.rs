@@ -58,10 +58,40 @@ pub enum WorldFileErrorKind {
         /// Closest shipped model names, best first.
         suggestions: Vec<String>,
     },
+    /// A name outside a small closed set, e.g. `tyre = "pacejka"`; `suggestions` are the
+    /// closest valid names or, when none is close, every valid name (the sets are small
+    /// enough to list).
+    UnknownName {
+        /// Which set.
+        what: NameSet,
+        /// The name given.
+        name: String,
+        /// Valid names, best first.
+        suggestions: Vec<String>,
+    },
     /// A value of the right type that the simulator refuses, e.g. `basicTimeStep = 0`.
     InvalidValue(String),
     /// A required key or section is absent, or two sections exclude each other.
     Structure(String),
+}
+
+/// A small closed set of names that a world-file key chooses from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum NameSet {
+    /// `tyre` / `[vehicle.tyre] model`: `magic-formula`, `webots`.
+    TyreModel,
+    /// `[vehicle.tyre] class`: `passenger-car`, `commercial`, `tractor`.
+    TyreClass,
+}
+
+impl fmt::Display for NameSet {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            NameSet::TyreModel => "tyre model",
+            NameSet::TyreClass => "tyre class",
+        })
+    }
 }
 
 /// A world file that could not be loaded: the file, where in it, which key, and why.
@@ -85,7 +115,8 @@ impl WorldFileError {
     pub fn suggestions(&self) -> &[String] {
         match &self.kind {
             WorldFileErrorKind::UnknownKey { suggestions }
-            | WorldFileErrorKind::UnknownModel { suggestions, .. } => suggestions,
+            | WorldFileErrorKind::UnknownModel { suggestions, .. }
+            | WorldFileErrorKind::UnknownName { suggestions, .. } => suggestions,
             _ => &[],
         }
     }
@@ -129,6 +160,14 @@ impl fmt::Display for WorldFileError {
             }
             WorldFileErrorKind::UnknownModel { name, suggestions } => {
                 write!(f, "unknown vehicle model '{name}'")?;
+                write_suggestions(f, suggestions)
+            }
+            WorldFileErrorKind::UnknownName {
+                what,
+                name,
+                suggestions,
+            } => {
+                write!(f, "unknown {what} '{name}'")?;
                 write_suggestions(f, suggestions)
             }
             WorldFileErrorKind::InvalidValue(m) => {

@@ -1,5 +1,6 @@
 //! World files: a TOML description of a world in Webots vocabulary (time step, ground,
-//! obstacles, one car or one DifferentialWheels robot), and the built-in default world.
+//! obstacles, one car on its tyres or one DifferentialWheels robot), and the built-in default
+//! world.
 //!
 //! ```toml
 //! basicTimeStep = 10          # ms
@@ -7,6 +8,7 @@
 //! [vehicle]
 //! model = "BmwX5"
 //! time0To100 = 7.0            # any Car / AckermannVehicle field by its Webots name
+//! tyre = "magic-formula"      # or "webots", or a table [vehicle.tyre]
 //! [ground]
 //! friction = 1.0
 //! ```
@@ -31,6 +33,7 @@ mod error;
 mod read;
 mod robot;
 mod statics;
+mod tyre;
 mod vehicle;
 
 use std::path::Path;
@@ -40,7 +43,7 @@ use vehicle_model::Model;
 
 use crate::config::WorldConfig;
 
-pub use error::{Location, WorldFileError, WorldFileErrorKind, WorldWarning};
+pub use error::{Location, NameSet, WorldFileError, WorldFileErrorKind, WorldWarning};
 pub use robot::RobotDescription;
 pub use vehicle::CarDescription;
 

@@ -100,6 +100,11 @@ impl<'a, 'i> Section<'a, 'i> {
         }
     }
 
+    /// The section's dotted path, e.g. `vehicle.tyre`.
+    pub(crate) fn path(&self) -> &str {
+        &self.path
+    }
+
     /// The dotted path of `key` in this section.
     pub(crate) fn key_path(&self, key: &str) -> String {
         if self.path.is_empty() {
@@ -131,6 +136,11 @@ impl<'a, 'i> Section<'a, 'i> {
             .iter()
             .find(|(k, _)| k.get_ref().as_ref() == key)
             .map(|(k, _)| k.span())
+    }
+
+    /// The raw value at `key`, if present: for keys that take more than one type.
+    pub(crate) fn value(&self, key: &str) -> Option<&'a DeValue<'i>> {
+        self.get(key).map(|(v, _)| v)
     }
 
     fn get(&self, key: &str) -> Option<(&'a DeValue<'i>, Range<usize>)> {

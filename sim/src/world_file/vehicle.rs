@@ -10,6 +10,8 @@ use vehicle_model::{
 
 use super::error::{WorldFileError, WorldFileErrorKind, WorldWarning, closest};
 use super::read::{Section, as_f64, describe};
+use super::tyre;
+use crate::vehicle::TyreChoice;
 
 /// A car as a world file describes it.
 #[derive(Debug, Clone, PartialEq)]
@@ -20,15 +22,28 @@ pub struct CarDescription {
     /// replaced by its default and reported in [`WorldDescription::warnings`](
     /// super::WorldDescription::warnings).
     pub params: CarParams<f64>,
+    /// The tyres (`tyre`, `[vehicle.tyre]`): by default the slip-based tyre of the model's
+    /// class ([`Model::tyre_class`]) without overrides. The coefficients are in range; they
+    /// are fitted to each axle's radius and load when the car is built
+    /// ([`VehicleSpec::from_car_with`](crate::VehicleSpec::from_car_with)).
+    pub tyre: TyreChoice,
 }
 
 impl CarDescription {
-    /// The validated parameters of `model` and the messages of its validation (none for the
-    /// shipped models).
+    /// The validated parameters of `model` on the tyres of its class, and the messages of
+    /// its validation (none for the shipped models).
     pub fn of_model(model: Model) -> (Self, Vec<String>) {
         let (params, report) = model.params::<f64>().validated();
         let messages = report.iter().map(message).collect();
-        (CarDescription { model, params }, messages)
+        let tyre = tyre::default_for(model);
+        (
+            CarDescription {
+                model,
+                params,
+                tyre,
+            },
+            messages,
+        )
     }
 }
 
@@ -45,7 +60,9 @@ pub(crate) fn model_names() -> impl Iterator<Item = &'static str> {
 
 /// Every key of `[vehicle]` that is not a wheel slot.
 fn top_keys() -> impl Iterator<Item = &'static str> {
-    core::iter::once("model").chain(CarParams::<f64>::FIELD_NAMES)
+    ["model", "tyre"]
+        .into_iter()
+        .chain(CarParams::<f64>::FIELD_NAMES)
 }
 
 /// Reads `[vehicle]`, appending the validation warnings to `warnings`.
@@ -65,9 +82,10 @@ pub(crate) fn read_vehicle(
             )
         })?,
     };
+    let tyre = tyre::read_tyre(s, model)?;
     let mut params = model.params::<f64>();
     for (key, value, key_span, _) in s.entries() {
-        if key == "model" {
+        if key == "model" || key == "tyre" {
             continue;
         }
         if CarParams::<f64>::WHEEL_SLOT_NAMES.contains(&key) {
@@ -117,7 +135,11 @@ pub(crate) fn read_vehicle(
             ),
         ));
     }
-    Ok(CarDescription { model, params })
+    Ok(CarDescription {
+        model,
+        params,
+        tyre,
+    })
 }
 
 /// True for a quoted key `"<slot>.<field>"` naming a wheel field.
