@@ -89,6 +89,7 @@ fn test_track_on_the_default_car() {
             "rpm_gear.svg",
             "steering.svg",
             "lane_change.svg",
+            "friction_use.svg",
             "trajectory.svg"
         ]
     );

@@ -135,14 +135,14 @@ peak_friction = 0.9
 }
 
 #[test]
-fn without_a_nominal_load_each_axle_gets_its_static_load() {
+fn without_a_nominal_load_the_tyres_get_the_mean_static_wheel_load() {
     let [front, rear] =
         built("[vehicle]\nmodel = \"BmwX5\"\n[vehicle.tyre]\nclass = \"commercial\"\n");
     let car = Model::BmwX5.params::<f64>();
     let spec = VehicleSpec::from_car(&car).unwrap();
-    let loads = spec.static_wheel_loads();
-    assert_eq!(front.params().nominal_load, loads.0[0]);
-    assert_eq!(rear.params().nominal_load, loads.0[2]);
+    let mean = spec.static_wheel_loads().iter().sum::<f64>() / 4.0;
+    assert_eq!(front.params().nominal_load, mean);
+    assert_eq!(rear.params().nominal_load, mean);
     assert_eq!(front.params().lateral.stiffness, 10.0);
 }
 

@@ -1,6 +1,6 @@
 //! The car scenarios: each drives a fresh car through the driver library and measures it.
 
-use vehicle_model::{AutoShiftParams, Wheel};
+use vehicle_model::{AutoShiftParams, TyreModel, Wheel};
 
 use crate::world_file::{CarDescription, WorldDescription};
 
@@ -147,8 +147,9 @@ fn accel_torque(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResul
     Ok(rig.finish(Scenario::AccelTorque, metrics))
 }
 
-/// The deceleration (m/s²) the brakes alone give the car, limited by the ground friction:
-/// `min(4·brakeCoefficient/r / m, μ·g)` with `m` the whole car's mass.
+/// The deceleration (m/s²) the brakes alone give the car, limited by the grip:
+/// `min(4·brakeCoefficient/r / m, μ·g)` with `m` the whole car's mass and μ the ground's
+/// friction times the slip-based tyre's longitudinal peak friction (1 for Webots' contact).
 fn expected_deceleration(rig: &CarRig) -> Result<f64, ScenarioError> {
     let spec = rig.spec();
     let mass = spec.chassis.mass + Wheel::ALL.iter().map(|&w| spec.wheels[w].mass).sum::<f64>();
@@ -158,7 +159,11 @@ fn expected_deceleration(rig: &CarRig) -> Result<f64, ScenarioError> {
         .map(|&w| p.brake_coefficient / p.axle_radius(w))
         .sum();
     let (friction, gravity) = rig.ground();
-    Ok((force / mass).min(friction * gravity))
+    let tyre = match spec.tyres.of(Wheel::FrontRight) {
+        TyreModel::MagicFormula(t) => t.params().longitudinal.peak_friction,
+        TyreModel::Webots(_) => 1.0,
+    };
+    Ok((force / mass).min(friction * tyre * gravity))
 }
 
 /// True once the speed has reached 90 % of `target` (m/s) and changed by less than 0.1 km/h

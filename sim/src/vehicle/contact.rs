@@ -364,8 +364,8 @@ fn suspension_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle) {
         let Some(c) = contacts[i] else { continue };
         let rate = -c.up.dot(body.velocity_at(c.hardpoint_arm));
         let s = axle.softness[i];
-        for j in 0..2 {
-            m[i][j] = f32::from(u8::from(i == j)) + s * axle.k_normal[i][j];
+        for (j, (out, k)) in m[i].iter_mut().zip(axle.k_normal[i]).enumerate() {
+            *out = f32::from(u8::from(i == j)) + s * k;
         }
         rhs[i] = axle.spring_impulse[i] + s * rate - pair[i].impulses.normal;
     }
@@ -463,15 +463,16 @@ fn solve2(m: [[f32; 2]; 2], rhs: [f32; 2]) -> Option<[f32; 2]> {
 fn solve4(mut m: [[f32; 4]; 4], mut rhs: [f32; 4]) -> Option<[f32; 4]> {
     for col in 0..4 {
         let pivot = (col..4).max_by(|&a, &b| m[a][col].abs().total_cmp(&m[b][col].abs()))?;
-        if !(m[pivot][col].abs() > f32::MIN_POSITIVE) {
+        if m[pivot][col].abs() <= f32::MIN_POSITIVE || m[pivot][col].is_nan() {
             return None;
         }
         m.swap(col, pivot);
         rhs.swap(col, pivot);
+        let pivot_row = m[col];
         for row in col + 1..4 {
-            let factor = m[row][col] / m[col][col];
-            for k in col..4 {
-                m[row][k] -= factor * m[col][k];
+            let factor = m[row][col] / pivot_row[col];
+            for (value, p) in m[row].iter_mut().zip(pivot_row).skip(col) {
+                *value -= factor * p;
             }
             rhs[row] -= factor * rhs[col];
         }

@@ -144,8 +144,8 @@ pub struct VehicleState {
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct TyreTelemetry {
     /// Slip ratio `κ = (ω·r − v_x)/max(|v_x|, 1 m/s)` at the end of the step (dimensionless:
-    /// > 0 driving, −1 locked), measured against at least walking pace so that it stays finite
-    /// at standstill.
+    /// positive driving, −1 locked), measured against at least walking pace so that it stays
+    /// finite at standstill.
     pub slip_ratio: f64,
     /// Slip angle `α = atan2(−v_y, max(|v_x|, 1 m/s))` at the end of the step (rad, positive
     /// when the road pushes the tyre to its left).

@@ -146,7 +146,7 @@ impl TyreClass {
 /// curve coefficients in `[vehicle.tyre.longitudinal]` and `[vehicle.tyre.lateral]`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum TyreField {
-    /// [`SlipCurve::peak_friction`] of the longitudinal (`true`) or lateral curve.
+    /// [`SlipCurve::peak_friction`] of the longitudinal or lateral curve.
     PeakFriction(Direction),
     /// [`SlipCurve::stiffness`].
     Stiffness(Direction),

@@ -190,8 +190,8 @@ fn linearisation_is_the_chord_to_zero_slip() {
         // walking pace)...
         let fade = (1.0 - forward / LOW_SPEED).max(0.0);
         if fade == 0.0 {
-            for i in 0..2 {
-                assert!((lin.at(slip)[i] - exact[i]).abs() < 1e-12, "{forward}");
+            for (at, exact) in lin.at(slip).into_iter().zip(exact) {
+                assert!((at - exact).abs() < 1e-12, "{forward}");
             }
         }
         // ... and (above walking pace) through zero at the slip velocity σ·x/dt that leaves no
