@@ -56,29 +56,36 @@ fn circle_fit_recovers_a_known_circle() {
 
 #[test]
 fn bmw_x5_circle_at_10_kmh_has_the_ackermann_radius() {
-    let (mut sim, id) = common::settled(Model::BmwX5, 1.0);
-    let d = sim.driver_mut(id).unwrap();
-    d.set_steering_angle(0.2);
-    d.set_cruising_speed(10.0);
-    common::run(&mut sim, 6.0);
-    let mut pts = Vec::new();
-    for _ in 0..1000 {
-        sim.step().unwrap();
-        let p = sim.telemetry(id).unwrap().state.position;
-        pts.push([p[0], p[1]]);
+    for tyre in [common::model_tyre(Model::BmwX5), common::webots_tyre()] {
+        let (mut sim, id) = common::settled_on(Model::BmwX5, 1.0, &tyre);
+        let d = sim.driver_mut(id).unwrap();
+        d.set_steering_angle(0.2);
+        d.set_cruising_speed(10.0);
+        common::run(&mut sim, 6.0);
+        let mut pts = Vec::new();
+        for _ in 0..1000 {
+            sim.step().unwrap();
+            let p = sim.telemetry(id).unwrap().state.position;
+            pts.push([p[0], p[1]]);
+        }
+        // Rear-axle centre radius of a kinematic bicycle: L/tan δ = 2.995/tan 0.2 = 14.775 m.
+        let expected = 2.995 / 0.2_f64.tan();
+        let r = fit_circle(&pts);
+        println!("circle radius {r:.3} m (Ackermann {expected:.3} m)");
+        assert!((r / expected - 1.0).abs() < 0.03, "{r} vs {expected}");
+        // Positive steering turns right: clockwise, negative yaw rate.
+        assert!(sim.telemetry(id).unwrap().state.yaw_rate < 0.0);
     }
-    // Rear-axle centre radius of a kinematic bicycle: L/tan δ = 2.995/tan 0.2 = 14.775 m.
-    let expected = 2.995 / 0.2_f64.tan();
-    let r = fit_circle(&pts);
-    println!("circle radius {r:.3} m (Ackermann {expected:.3} m)");
-    assert!((r / expected - 1.0).abs() < 0.03, "{r} vs {expected}");
-    // Positive steering turns right: clockwise, negative yaw rate.
-    assert!(sim.telemetry(id).unwrap().state.yaw_rate < 0.0);
 }
 
-/// Speed mode up to 100 km/h on grippy ground.
+/// Speed mode up to 100 km/h on grippy ground, on the model's slip-based tyres.
 fn at_100_kmh(model: Model) -> (Simulation, sim::VehicleId) {
-    let (mut sim, id) = common::settled(model, common::GRIPPY);
+    at_100_kmh_on(model, &common::model_tyre(model))
+}
+
+/// Speed mode up to 100 km/h on grippy ground, on `tyre`.
+fn at_100_kmh_on(model: Model, tyre: &sim::TyreChoice) -> (Simulation, sim::VehicleId) {
+    let (mut sim, id) = common::settled_on(model, common::GRIPPY, tyre);
     sim.driver_mut(id).unwrap().set_cruising_speed(110.0);
     let limit = 1.5 * sim.driver(id).unwrap().params().time_0_to_100 + 2.0;
     common::run_until(&mut sim, limit, |s| {
@@ -90,57 +97,61 @@ fn at_100_kmh(model: Model) -> (Simulation, sim::VehicleId) {
 
 #[test]
 fn bmw_x5_brakes_from_100_kmh_to_rest_and_stays_there() {
-    let (mut sim, id) = at_100_kmh(Model::BmwX5);
-    let start = sim.telemetry(id).unwrap().state.position;
-    let d = sim.driver_mut(id).unwrap();
-    d.set_throttle(0.0); // torque mode, neutral: no engine torque
-    d.set_brake_intensity(1.0);
-    let t = common::run_until(&mut sim, 10.0, |s| {
-        s.telemetry(id).unwrap().speed.abs() < 0.01
-    })
-    .unwrap();
-    let stop = sim.telemetry(id).unwrap().state.position;
-    let distance = (stop[0] - start[0]).hypot(stop[1] - start[1]);
-    // Four brakes of brakeCoefficient 1800 N·m on 0.374 m tyres stop 2000 + 4×30 kg at
-    // 4·1800/0.374/2120 = 9.08 m/s² (the grip, 1.5·g, is not the limit): from 27.78 m/s that is
-    // 27.78²/(2·9.08) = 42.5 m in 3.06 s; wheel damping adds a little. The last few cm/s
-    // fade slowly (the suspension rocks the car as it stops), so the time is only bounded below.
-    println!("stopping distance {distance:.2} m in {t:.2} s");
-    assert!((distance / 42.5 - 1.0).abs() < 0.08, "{distance}");
-    assert!(t > 0.95 * 3.06 && t < 5.0, "{t}");
-    common::run(&mut sim, 3.0);
-    let rest = sim.telemetry(id).unwrap();
-    let drift = (rest.state.position[0] - stop[0]).hypot(rest.state.position[1] - stop[1]);
-    assert!(rest.speed.abs() < 0.01 && drift < 0.02, "{rest:?}");
+    for tyre in [common::model_tyre(Model::BmwX5), common::webots_tyre()] {
+        let (mut sim, id) = at_100_kmh_on(Model::BmwX5, &tyre);
+        let start = sim.telemetry(id).unwrap().state.position;
+        let d = sim.driver_mut(id).unwrap();
+        d.set_throttle(0.0); // torque mode, neutral: no engine torque
+        d.set_brake_intensity(1.0);
+        let t = common::run_until(&mut sim, 10.0, |s| {
+            s.telemetry(id).unwrap().speed.abs() < 0.01
+        })
+        .unwrap();
+        let stop = sim.telemetry(id).unwrap().state.position;
+        let distance = (stop[0] - start[0]).hypot(stop[1] - start[1]);
+        // Four brakes of brakeCoefficient 1800 N·m on 0.374 m tyres stop 2000 + 4×30 kg at
+        // 4·1800/0.374/2120 = 9.08 m/s² (the grip, 1.5·g, is not the limit): from 27.78 m/s that is
+        // 27.78²/(2·9.08) = 42.5 m in 3.06 s; wheel damping adds a little. The last few cm/s
+        // fade slowly (the suspension rocks the car as it stops), so the time is only bounded below.
+        println!("stopping distance {distance:.2} m in {t:.2} s");
+        assert!((distance / 42.5 - 1.0).abs() < 0.08, "{distance}");
+        assert!(t > 0.95 * 3.06 && t < 5.0, "{t}");
+        common::run(&mut sim, 3.0);
+        let rest = sim.telemetry(id).unwrap();
+        let drift = (rest.state.position[0] - stop[0]).hypot(rest.state.position[1] - stop[1]);
+        assert!(rest.speed.abs() < 0.01 && drift < 0.02, "{rest:?}");
+    }
 }
 
 #[test]
 fn torque_mode_in_first_gear_settles_where_the_engine_reaches_max_rpm() {
-    let (mut sim, id) = common::settled(Model::BmwX5, common::GRIPPY);
-    let d = sim.driver_mut(id).unwrap();
-    d.set_gear(1);
-    d.set_throttle(1.0);
-    common::run(&mut sim, 15.0);
-    let p = sim.driver(id).unwrap().params().clone();
-    let ratio = p.gear_ratios[1];
-    // engineMaxRPM 6500 → 680.68 rad/s at the engine, /12.5 = 54.45 rad/s at the wheels,
-    // ×0.374 m = 20.37 m/s.
-    let v_max = p.engine.max_rpm * core::f64::consts::TAU / 60.0 / ratio * p.radius_front();
-    let tl = sim.telemetry(id).unwrap();
-    println!(
-        "top speed in gear 1: {:.2} m/s (engine limit {v_max:.2} m/s), rpm {:?}",
-        tl.speed, tl.rpm
-    );
-    assert!(
-        (tl.speed / v_max - 1.0).abs() < 0.03,
-        "{} vs {v_max}",
-        tl.speed
-    );
-    let rpm = tl.rpm.unwrap();
-    assert!(
-        rpm > 0.95 * p.engine.max_rpm && rpm <= p.engine.max_rpm,
-        "{rpm}"
-    );
+    for tyre in [common::model_tyre(Model::BmwX5), common::webots_tyre()] {
+        let (mut sim, id) = common::settled_on(Model::BmwX5, common::GRIPPY, &tyre);
+        let d = sim.driver_mut(id).unwrap();
+        d.set_gear(1);
+        d.set_throttle(1.0);
+        common::run(&mut sim, 15.0);
+        let p = sim.driver(id).unwrap().params().clone();
+        let ratio = p.gear_ratios[1];
+        // engineMaxRPM 6500 → 680.68 rad/s at the engine, /12.5 = 54.45 rad/s at the wheels,
+        // ×0.374 m = 20.37 m/s.
+        let v_max = p.engine.max_rpm * core::f64::consts::TAU / 60.0 / ratio * p.radius_front();
+        let tl = sim.telemetry(id).unwrap();
+        println!(
+            "top speed in gear 1: {:.2} m/s (engine limit {v_max:.2} m/s), rpm {:?}",
+            tl.speed, tl.rpm
+        );
+        assert!(
+            (tl.speed / v_max - 1.0).abs() < 0.03,
+            "{} vs {v_max}",
+            tl.speed
+        );
+        let rpm = tl.rpm.unwrap();
+        assert!(
+            rpm > 0.95 * p.engine.max_rpm && rpm <= p.engine.max_rpm,
+            "{rpm}"
+        );
+    }
 }
 
 /// A drive with steering, speed changes and braking; returns the telemetry of every step.

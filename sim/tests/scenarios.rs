@@ -27,7 +27,22 @@ fn flag(r: &RunReport, s: Scenario, key: &str) -> bool {
 
 #[test]
 fn test_track_on_the_default_car() {
-    let r = run(&world_file::default_world(), Scenario::TestTrack);
+    test_track(&world_file::default_world());
+}
+
+#[test]
+fn test_track_on_webots_contact() {
+    let world = world_file::parse_str(
+        "webots.toml",
+        "[vehicle]\nmodel = \"BmwX5\"\ntyre = \"webots\"\n[ground]\nfriction = 1.0\n",
+    )
+    .unwrap();
+    test_track(&world);
+}
+
+/// The five car scenarios on a BmwX5 and what each must show, whichever the tyre.
+fn test_track(world: &world_file::WorldDescription) {
+    let r = run(world, Scenario::TestTrack);
     let names: Vec<Scenario> = r.results.iter().map(|x| x.scenario).collect();
     assert_eq!(names, Scenario::TEST_TRACK);
     let total: f64 = r.results.iter().map(|x| x.sim_seconds).sum();

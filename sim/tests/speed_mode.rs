@@ -78,12 +78,24 @@ fn slip_at_ramp(sim: &sim::Simulation, id: sim::VehicleId, mu: f64) -> Option<f6
 /// wheel surface speed reaches 100 km/h exactly at `time0To100`. A tyre transmits its force at
 /// a slip ratio κ, so the car runs at the wheels' speed over (1 + κ) and crosses 100 km/h at
 /// `time0To100·(1 + κ)`. A car whose `maxVelocity` is below 100 km/h must settle at that cap.
-fn check(model: Model) {
-    let (mut sim, id) = common::settled(model, common::GRIPPY);
+///
+/// On Webots' contact (`webots`: no slip below the friction limit) the car crosses 100 km/h at
+/// `time0To100` itself, as in Webots.
+fn check(model: Model, webots: bool) {
+    let tyre = if webots {
+        common::webots_tyre()
+    } else {
+        common::model_tyre(model)
+    };
+    let (mut sim, id) = common::settled_on(model, common::GRIPPY, &tyre);
     let params = sim.driver(id).unwrap().params().clone();
     let t0100 = params.time_0_to_100;
-    let kappa = slip_at_ramp(&sim, id, common::GRIPPY)
-        .unwrap_or_else(|| panic!("{model:?}: its motors' ramp exceeds the grip"));
+    let kappa = if webots {
+        0.0
+    } else {
+        slip_at_ramp(&sim, id, common::GRIPPY)
+            .unwrap_or_else(|| panic!("{model:?}: its motors' ramp exceeds the grip"))
+    };
     let cap = params.max_velocity; // m/s
     sim.driver_mut(id).unwrap().set_cruising_speed(130.0);
     let target = (100.0 / 3.6_f64).min(cap * 0.999);
@@ -111,7 +123,18 @@ fn check(model: Model) {
         );
     }
     let [x, y, _] = sim.telemetry(id).unwrap().state.position;
-    if model == Model::CitroenCZero {
+    if webots {
+        // Webots' contact (as before the slip-based tyre): within 0.5 % of the distance; the
+        // Tractor's axles, velocity-locked on tyres of 0.38 and 0.6 m, wind up against each
+        // other through the rigid contact and it wanders by about 1°, hence 2.5 %; the
+        // C-Zero's mismatched rear wheels scrub, 1 %.
+        let tolerance = match model {
+            Model::Tractor => 0.025,
+            Model::CitroenCZero => 0.01,
+            _ => 0.005,
+        };
+        assert!(y.abs() < tolerance * x, "{model:?} drifted {y} m in {x} m");
+    } else if model == Model::CitroenCZero {
         // Webots' C-Zero has a front wheel (r 0.28475 m) in its rear-right slot and a rear one
         // (0.28675 m) in the rear-left: driven at one speed, the left wheel's rim runs 0.7 %
         // faster, and the car pulls to the right like any car on mismatched tyres.
@@ -123,29 +146,34 @@ fn check(model: Model) {
 }
 
 macro_rules! speed_tests {
-    ($($name:ident => $model:ident),* $(,)?) => {
+    ($($name:ident, $webots:ident => $model:ident),* $(,)?) => {
         $(
             #[test]
             fn $name() {
-                check(Model::$model);
+                check(Model::$model, false);
+            }
+
+            #[test]
+            fn $webots() {
+                check(Model::$model, true);
             }
         )*
     };
 }
 
 speed_tests! {
-    car_reaches_100 => Car,
-    bmw_x5_reaches_100 => BmwX5,
-    citroen_c_zero_reaches_100 => CitroenCZero,
-    toyota_prius_reaches_100 => ToyotaPrius,
-    lincoln_mkz_reaches_100 => LincolnMKZ,
-    range_rover_reaches_100 => RangeRoverSportSVR,
-    tesla_model_3_reaches_100 => TeslaModel3,
-    sprinter_reaches_100 => MercedesBenzSprinter,
-    ev_star_reaches_100 => GreenPowerEVStar,
-    bus_reaches_100 => Bus,
-    truck_reaches_100 => Truck,
-    tractor_reaches_100 => Tractor,
+    car_reaches_100, car_reaches_100_on_webots_contact => Car,
+    bmw_x5_reaches_100, bmw_x5_reaches_100_on_webots_contact => BmwX5,
+    citroen_c_zero_reaches_100, citroen_c_zero_reaches_100_on_webots_contact => CitroenCZero,
+    toyota_prius_reaches_100, toyota_prius_reaches_100_on_webots_contact => ToyotaPrius,
+    lincoln_mkz_reaches_100, lincoln_mkz_reaches_100_on_webots_contact => LincolnMKZ,
+    range_rover_reaches_100, range_rover_reaches_100_on_webots_contact => RangeRoverSportSVR,
+    tesla_model_3_reaches_100, tesla_model_3_reaches_100_on_webots_contact => TeslaModel3,
+    sprinter_reaches_100, sprinter_reaches_100_on_webots_contact => MercedesBenzSprinter,
+    ev_star_reaches_100, ev_star_reaches_100_on_webots_contact => GreenPowerEVStar,
+    bus_reaches_100, bus_reaches_100_on_webots_contact => Bus,
+    truck_reaches_100, truck_reaches_100_on_webots_contact => Truck,
+    tractor_reaches_100, tractor_reaches_100_on_webots_contact => Tractor,
 }
 
 #[test]

@@ -57,13 +57,15 @@ const REAR: [Wheel; 2] = [Wheel::RearRight, Wheel::RearLeft];
 /// with one friction sweep gave 65 %).
 #[test]
 fn bmw_x5_free_rear_wheels_roll_smoothly_in_a_turn() {
-    let (mut sim, id) = common::settled(Model::BmwX5, 1.0);
-    let d = sim.driver_mut(id).unwrap();
-    d.set_cruising_speed(20.0);
-    d.set_steering_angle(0.2);
-    common::run(&mut sim, 5.0);
-    let e = worst_deviation(&mut sim, id, 5.0, &REAR);
-    assert!(e < 0.02, "rear wheel off its rolling rate by {e}");
+    for tyre in [common::model_tyre(Model::BmwX5), common::webots_tyre()] {
+        let (mut sim, id) = common::settled_on(Model::BmwX5, 1.0, &tyre);
+        let d = sim.driver_mut(id).unwrap();
+        d.set_cruising_speed(20.0);
+        d.set_steering_angle(0.2);
+        common::run(&mut sim, 5.0);
+        let e = worst_deviation(&mut sim, id, 5.0, &REAR);
+        assert!(e < 0.02, "rear wheel off its rolling rate by {e}");
+    }
 }
 
 /// BmwX5 cruising straight at 20 km/h heading 45° from the world x axis (the worst heading
@@ -71,19 +73,23 @@ fn bmw_x5_free_rear_wheels_roll_smoothly_in_a_turn() {
 /// 14.85 rad/s within 0.5 % at every step.
 #[test]
 fn bmw_x5_free_wheels_roll_smoothly_at_45_degrees() {
-    let mut sim = Simulation::new(World::new(WorldConfig::default()).unwrap());
-    let placement = VehiclePlacement {
-        yaw: std::f64::consts::FRAC_PI_4,
-        ..VehiclePlacement::default()
-    };
-    let (id, _) = sim.add_car(Model::BmwX5.params(), placement).unwrap();
-    common::run(&mut sim, 1.0);
-    sim.driver_mut(id).unwrap().set_cruising_speed(20.0);
-    common::run(&mut sim, 3.0);
-    let e = worst_deviation(&mut sim, id, 3.0, &REAR);
-    assert!(e < 0.005, "rear wheel off its rolling rate by {e}");
-    let v = sim.telemetry(id).unwrap().speed;
-    assert!((v - 20.0 / 3.6).abs() < 0.02, "{v} m/s");
+    for tyre in [common::model_tyre(Model::BmwX5), common::webots_tyre()] {
+        let mut sim = Simulation::new(World::new(WorldConfig::default()).unwrap());
+        let placement = VehiclePlacement {
+            yaw: std::f64::consts::FRAC_PI_4,
+            ..VehiclePlacement::default()
+        };
+        let (id, _) = sim
+            .add_car_on(Model::BmwX5.params(), &tyre, placement)
+            .unwrap();
+        common::run(&mut sim, 1.0);
+        sim.driver_mut(id).unwrap().set_cruising_speed(20.0);
+        common::run(&mut sim, 3.0);
+        let e = worst_deviation(&mut sim, id, 3.0, &REAR);
+        assert!(e < 0.005, "rear wheel off its rolling rate by {e}");
+        let v = sim.telemetry(id).unwrap().speed;
+        assert!((v - 20.0 / 3.6).abs() < 0.02, "{v} m/s");
+    }
 }
 
 /// TeslaModel3 (rear drive) as in the C API's torque test: first gear at throttle 0.15 for
@@ -92,21 +98,26 @@ fn bmw_x5_free_wheels_roll_smoothly_at_45_degrees() {
 /// decelerates smoothly.
 #[test]
 fn tesla_model_3_wheels_roll_smoothly_when_coasting() {
-    let (mut sim, id) = common::settled(Model::TeslaModel3, 1.0);
-    let d = sim.driver_mut(id).unwrap();
-    d.set_gear(1);
-    d.set_throttle(0.15);
-    common::run(&mut sim, 3.0);
-    sim.driver_mut(id).unwrap().set_steering_angle(0.25);
-    common::run(&mut sim, 1.0);
-    sim.driver_mut(id).unwrap().set_steering_angle(0.0);
-    common::run(&mut sim, 1.0);
-    sim.driver_mut(id).unwrap().set_gear(0);
-    common::run(&mut sim, 0.5);
-    let v0 = sim.telemetry(id).unwrap().speed;
-    let e = worst_deviation(&mut sim, id, 2.0, &Wheel::ALL);
-    assert!(e < 0.02, "wheel off its rolling rate by {e}");
-    let v1 = sim.telemetry(id).unwrap().speed;
-    // Coasting against the wheel damping only: slower, but still well under way.
-    assert!(v1 < v0 && v1 > 0.8 * v0, "{v0} -> {v1} m/s");
+    for tyre in [
+        common::model_tyre(Model::TeslaModel3),
+        common::webots_tyre(),
+    ] {
+        let (mut sim, id) = common::settled_on(Model::TeslaModel3, 1.0, &tyre);
+        let d = sim.driver_mut(id).unwrap();
+        d.set_gear(1);
+        d.set_throttle(0.15);
+        common::run(&mut sim, 3.0);
+        sim.driver_mut(id).unwrap().set_steering_angle(0.25);
+        common::run(&mut sim, 1.0);
+        sim.driver_mut(id).unwrap().set_steering_angle(0.0);
+        common::run(&mut sim, 1.0);
+        sim.driver_mut(id).unwrap().set_gear(0);
+        common::run(&mut sim, 0.5);
+        let v0 = sim.telemetry(id).unwrap().speed;
+        let e = worst_deviation(&mut sim, id, 2.0, &Wheel::ALL);
+        assert!(e < 0.02, "wheel off its rolling rate by {e}");
+        let v1 = sim.telemetry(id).unwrap().speed;
+        // Coasting against the wheel damping only: slower, but still well under way.
+        assert!(v1 < v0 && v1 > 0.8 * v0, "{v0} -> {v1} m/s");
+    }
 }

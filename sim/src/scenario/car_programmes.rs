@@ -29,9 +29,10 @@ const LANE_CHANGE_SPEED_KMH: f64 = 60.0;
 const LANE_OFFSET: f64 = 3.5;
 /// How far ahead the lane-change driver aims (s of travel). A pure-pursuit driver that aims
 /// closer than about three times the car's lag between steering command and yaw (the steering
-/// servo's 0.1 s and the yaw response's 0.2–0.3 s on slipping tyres) overshoots each lane and
-/// oscillates; driver models preview 0.5–1.5 s of road.
-const PREVIEW_TIME: f64 = 1.0;
+/// servo's 0.1 s and the yaw response's 0.2–0.3 s on slipping tyres: 0.8 s at least)
+/// overshoots each lane and oscillates; one that aims further than about 0.9 s (15 m at
+/// 60 km/h) cuts the corners of the 25–30 m lane sections. Driver models preview 0.5–1.5 s.
+const PREVIEW_TIME: f64 = 0.85;
 /// Shortest look-ahead of the lane-change driver (m), at walking pace.
 const MIN_LOOKAHEAD: f64 = 4.0;
 /// Longest look-ahead of the lane-change driver (m): beyond it the driver would cut the

@@ -17,9 +17,11 @@
 //! * **brake** (on the spin only): a Coulomb torque of at most the brake torque (plus the
 //!   tyre's rolling resistance) that opposes the rotation and holds a stopped wheel.
 //!
-//! The two wheels of an axle are solved together (a 2×2 suspension block and a 4×4 tyre block)
-//! so that neither side is favoured by the order of the solve: a symmetric car on symmetric
-//! commands gets mirror-image forces. The spin of each wheel is a coordinate relative to the
+//! The two wheels of an axle are solved together (a 2×2 suspension block and, for slip-based
+//! tyres, a 4×4 tyre block) so that neither side is favoured by the order of the solve: a
+//! symmetric car on symmetric commands gets mirror-image forces, to the last bit. Webots'
+//! rigid contact leaves the split of a lateral load between an axle's wheels undetermined;
+//! its tyre rows are solved a wheel at a time, alternating which wheel goes first. The spin of each wheel is a coordinate relative to the
 //! chassis: a torque between wheel and chassis (motor, brake, damping) acts on the spin alone,
 //! and a tyre force acts on the chassis at the contact point and on the spin through the
 //! radius. The inertial coupling between a wheel's spin and the chassis' rotation is left out
@@ -291,14 +293,14 @@ pub(crate) fn solve(body: &mut Body, wheels: &mut [WheelRow; 4], dt: f32) {
         Axle::new(body, &wheels[0..2], dt),
         Axle::new(body, &wheels[2..4], dt),
     ];
-    for _ in 0..SWEEPS {
+    for sweep in 0..SWEEPS {
         for (a, axle) in axles.iter().enumerate() {
             let pair = &mut wheels[2 * a..2 * a + 2];
             for w in pair.iter_mut() {
                 brake_row(w);
             }
             suspension_block(body, pair, axle);
-            tyre_block(body, pair, axle);
+            tyre_block(body, pair, axle, sweep);
         }
     }
 }
@@ -379,9 +381,21 @@ fn suspension_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle) {
     }
 }
 
-/// The tyres of an axle: each direction's force law at the end-of-step slip velocities of both
-/// wheels, solved together, then each wheel's force kept within its friction limits.
-fn tyre_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle) {
+/// The tyres of an axle in sweep number `sweep`.
+///
+/// Slip-based tyres: each direction's force law at the end-of-step slip velocities of both
+/// wheels, solved together, then each wheel's force kept within its friction ellipse. The
+/// tyres' compliance determines how the two wheels share a lateral load; Webots' rigid contact
+/// leaves that undetermined (two lateral rows on one line of a rigid chassis), so its wheels
+/// are solved one at a time, as ODE's solver does, alternating which goes first.
+fn tyre_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle, sweep: usize) {
+    if pair.iter().any(|w| matches!(w.grip, Grip::Coulomb { .. })) {
+        let order = if sweep % 2 == 0 { [0, 1] } else { [1, 0] };
+        for i in order {
+            wheel_tyre(body, &mut pair[i], axle, i);
+        }
+        return;
+    }
     let mut m = [[0.0_f32; 4]; 4];
     let mut rhs = [0.0_f32; 4];
     for i in 0..2 {
@@ -406,18 +420,45 @@ fn tyre_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle) {
     let Some(delta) = solve_mirrored(&m, &rhs) else {
         return;
     };
-    for i in 0..2 {
-        let w = &mut pair[i];
-        let Some(c) = w.contact else { continue };
-        let (f0, l0) = (w.impulses.forward, w.impulses.lateral);
-        let [f, l] = w
-            .grip
-            .clamp(f0 + delta[2 * i], l0 + delta[2 * i + 1], w.impulses.normal);
-        w.impulses.forward = f;
-        w.impulses.lateral = l;
-        body.apply(c.contact_arm, c.forward * (f - f0) + c.lateral * (l - l0));
-        w.omega -= c.radius * (f - f0) * w.spin.inv_inertia();
+    for (i, w) in pair.iter_mut().enumerate() {
+        apply_tyre(body, w, [delta[2 * i], delta[2 * i + 1]]);
     }
+}
+
+/// Wheel `i` of an axle's tyre rows alone, the other wheel's impulses held.
+fn wheel_tyre(body: &mut Body, w: &mut WheelRow, axle: &Axle, i: usize) {
+    let Some(c) = w.contact.filter(|_| axle.on_ground[i]) else {
+        return;
+    };
+    let v = c.slip_velocity(body, w.omega);
+    let current = [w.impulses.forward, w.impulses.lateral];
+    let mut m = [[0.0_f32; 2]; 2];
+    let mut rhs = [0.0_f32; 2];
+    for d in 0..2 {
+        let (alpha, beta, c0) = w.grip.row(d, w.impulses.normal, current[d]);
+        for (e, out) in m[d].iter_mut().enumerate() {
+            *out = beta * axle.k_tyre[2 * i + d][2 * i + e];
+        }
+        m[d][d] += alpha;
+        rhs[d] = c0 - beta * v[d];
+    }
+    if let Some(delta) = solve2(m, rhs) {
+        apply_tyre(body, w, delta);
+    }
+}
+
+/// Adds `delta` (N·s, forward and lateral) to the wheel's tyre impulses within its friction
+/// limits, and applies what was added to the chassis and the spin.
+fn apply_tyre(body: &mut Body, w: &mut WheelRow, delta: [f32; 2]) {
+    let Some(c) = w.contact else { return };
+    let (f0, l0) = (w.impulses.forward, w.impulses.lateral);
+    let [f, l] = w
+        .grip
+        .clamp(f0 + delta[0], l0 + delta[1], w.impulses.normal);
+    w.impulses.forward = f;
+    w.impulses.lateral = l;
+    body.apply(c.contact_arm, c.forward * (f - f0) + c.lateral * (l - l0));
+    w.omega -= c.radius * (f - f0) * w.spin.inv_inertia();
 }
 
 /// Solves an axle's tyre block `m·x = rhs` (unknowns: forward and lateral of one wheel, then

@@ -1,8 +1,8 @@
 //! Shared helpers of the car tests.
 #![allow(dead_code, clippy::unwrap_used, clippy::panic)]
 
-use sim::{Simulation, VehicleId, VehiclePlacement, World, WorldConfig};
-use vehicle_model::Model;
+use sim::{Simulation, TyreChoice, VehicleId, VehiclePlacement, World, WorldConfig};
+use vehicle_model::{Model, WebotsContact};
 
 /// Tyre–ground friction of the speed tests. With Webots' default 1, the front-driven BmwX5
 /// (3.97 m/s² needs 8.4 kN of traction from about 8.0 kN of front-axle load) and the
@@ -10,8 +10,27 @@ use vehicle_model::Model;
 /// motor ramp.
 pub const GRIPPY: f64 = 1.5;
 
-/// A simulation with one `model` on flat ground of friction `mu`, settled for 1 s.
+/// The slip-based tyre of `model`'s class (what a world file gives it by default).
+pub fn model_tyre(model: Model) -> TyreChoice {
+    TyreChoice::MagicFormula {
+        class: model.tyre_class(),
+        overrides: Vec::new(),
+    }
+}
+
+/// Webots' contact: the friction pyramid without force-dependent slip (`tyre = "webots"`).
+pub fn webots_tyre() -> TyreChoice {
+    TyreChoice::Webots(WebotsContact::default())
+}
+
+/// A simulation with one `model` on its default slip-based tyres on flat ground of friction
+/// `mu`, settled for 1 s.
 pub fn settled(model: Model, mu: f64) -> (Simulation, VehicleId) {
+    settled_on(model, mu, &model_tyre(model))
+}
+
+/// A simulation with one `model` on `tyre` on flat ground of friction `mu`, settled for 1 s.
+pub fn settled_on(model: Model, mu: f64, tyre: &TyreChoice) -> (Simulation, VehicleId) {
     let world = World::new(WorldConfig {
         ground_friction: mu,
         ..WorldConfig::default()
@@ -19,7 +38,7 @@ pub fn settled(model: Model, mu: f64) -> (Simulation, VehicleId) {
     .unwrap();
     let mut sim = Simulation::new(world);
     let (id, report) = sim
-        .add_car(model.params(), VehiclePlacement::default())
+        .add_car_on(model.params(), tyre, VehiclePlacement::default())
         .unwrap();
     assert!(report.is_empty(), "{report:?}");
     run(&mut sim, 1.0);
