@@ -32,7 +32,7 @@ fn test_track_on_the_default_car() {
 
 #[test]
 fn test_track_on_webots_contact() {
-    let world = world_file::parse_str(
+    let world = parse_str(
         "webots.toml",
         "[vehicle]\nmodel = \"BmwX5\"\ntyre = \"webots\"\n[ground]\nfriction = 1.0\n",
     )

@@ -390,7 +390,11 @@ fn suspension_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle) {
 /// are solved one at a time, as ODE's solver does, alternating which goes first.
 fn tyre_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle, sweep: usize) {
     if pair.iter().any(|w| matches!(w.grip, Grip::Coulomb { .. })) {
-        let order = if sweep % 2 == 0 { [0, 1] } else { [1, 0] };
+        let order = if sweep.is_multiple_of(2) {
+            [0, 1]
+        } else {
+            [1, 0]
+        };
         for i in order {
             wheel_tyre(body, &mut pair[i], axle, i);
         }
