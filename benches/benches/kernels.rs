@@ -1,5 +1,6 @@
-//! Criterion benchmarks of the numeric kernels under the control loop: Ackermann wheel angles,
-//! engine torque per engine type, and the torque split through the limited-slip differential.
+//! Criterion benchmarks of the numeric kernels under the control loop and the plant: Ackermann
+//! wheel angles, engine torque per engine type, the torque split through the limited-slip
+//! differential, and the slip-based tyre.
 #![allow(
     clippy::unwrap_used,
     reason = "bench setup from constant, valid fixtures: a failure is a fixture bug and must stop the run"
@@ -12,6 +13,7 @@ use benches::fixtures;
 use criterion::measurement::WallTime;
 use criterion::{BenchmarkGroup, BenchmarkId, Criterion, criterion_group, criterion_main};
 use powertrain::{EngineType, LimitedSlip, split_torque};
+use vehicle_model::{ContactVelocity, TransientSlip, TyreClass};
 
 fn wheel_angles<T: Real>(g: &mut BenchmarkGroup<'_, WallTime>, name: &str) {
     let geometry = fixtures::bmw_x5::<T>().unwrap();
@@ -44,6 +46,40 @@ fn torque_split<T: Real>(g: &mut BenchmarkGroup<'_, WallTime>, name: &str) {
     });
 }
 
+/// One tyre evaluation: the combined-slip force of a passenger tyre at its nominal load, and
+/// the linearisation a simulator asks for each wheel each step (transient slip predicted over
+/// 10 ms, force and slope per unit load), at a braking slip with a slip angle.
+fn tyre<T: Real>(g: &mut BenchmarkGroup<'_, WallTime>, name: &str) {
+    let f = T::from_f64;
+    let tyre = TyreClass::PassengerCar
+        .params(f(0.35), f(4000.0))
+        .validate()
+        .unwrap();
+    let slip = [f(-0.08), f(0.05)];
+    g.bench_function(BenchmarkId::new("tyre_force", name), |b| {
+        b.iter(|| black_box(&tyre).force(black_box(slip), black_box(f(4200.0)), f(1.0)))
+    });
+    let state = TransientSlip {
+        ratio: f(-0.07),
+        angle_tan: f(0.045),
+    };
+    let v = ContactVelocity {
+        forward: f(20.0),
+        slip: [f(1.6), f(-0.9)],
+    };
+    g.bench_function(BenchmarkId::new("tyre_linearise", name), |b| {
+        b.iter(|| {
+            black_box(&tyre).linearise(
+                black_box(&state),
+                black_box(&v),
+                black_box(f(4200.0)),
+                f(1.0),
+                f(0.01),
+            )
+        })
+    });
+}
+
 fn kernels(c: &mut Criterion) {
     let mut g = c.benchmark_group("kernels");
     wheel_angles::<f32>(&mut g, "f32");
@@ -51,6 +87,8 @@ fn kernels(c: &mut Criterion) {
     engine_torque(&mut g);
     torque_split::<f32>(&mut g, "f32");
     torque_split::<f64>(&mut g, "f64");
+    tyre::<f32>(&mut g, "f32");
+    tyre::<f64>(&mut g, "f64");
     g.finish();
 }
 

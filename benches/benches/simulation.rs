@@ -14,7 +14,8 @@ use benches::report::{self, format_ns};
 use benches::scenes::{BASIC_TIME_STEP_MS, CarScene, RobotScene};
 use criterion::measurement::WallTime;
 use criterion::{BenchmarkGroup, BenchmarkId, Criterion, criterion_group};
-use sim::RobotMode;
+use sim::{RobotMode, TyreChoice};
+use vehicle_model::WebotsContact;
 
 const PEER: &str = "simulation/peer_raycast_car/1";
 
@@ -61,6 +62,26 @@ fn cars(g: &mut BenchmarkGroup<'_, WallTime>) {
     }
 }
 
+/// One car in speed mode on Webots' contact (`tyre = "webots"`), beside the slip-based tyre.
+fn webots_contact(g: &mut BenchmarkGroup<'_, WallTime>) {
+    let mut scene = CarScene::on(1, LoopMode::Speed, &webots_tyre()).unwrap();
+    let settle = if report::is_bench_run() {
+        SETTLE_STEPS
+    } else {
+        0
+    };
+    for _ in 0..settle {
+        scene.step().unwrap();
+    }
+    g.bench_function(BenchmarkId::new("car_speed_webots_contact", 1), |b| {
+        b.iter(|| scene.step().unwrap())
+    });
+}
+
+fn webots_tyre() -> TyreChoice {
+    TyreChoice::Webots(WebotsContact::default())
+}
+
 fn robots(g: &mut BenchmarkGroup<'_, WallTime>) {
     for (mode, mut scene) in [
         (
@@ -79,6 +100,7 @@ fn simulation(c: &mut Criterion) {
     let mut g = c.benchmark_group("simulation");
     peer(&mut g);
     cars(&mut g);
+    webots_contact(&mut g);
     robots(&mut g);
     g.finish();
 }
@@ -106,7 +128,7 @@ fn summary(since: SystemTime) {
             continue;
         };
         println!(
-            "  {name}, 1 car: {} = {:.0}x real time (target >= 500x), {:.2}x the peer (target <= 6x)",
+            "  {name}, 1 car: {} = {:.0}x real time (target >= 1000x), {:.2}x the peer (target <= 2.5x)",
             format_ns(one),
             step_ns / one,
             one / peer
@@ -121,6 +143,14 @@ fn summary(since: SystemTime) {
                 );
             }
         }
+    }
+    if let Some(t) = median("simulation/car_speed_webots_contact/1") {
+        println!(
+            "  car_speed on Webots' contact, 1 car: {} = {:.0}x real time, {:.2}x the peer",
+            format_ns(t),
+            step_ns / t,
+            t / peer
+        );
     }
     for mode in ["kinematics", "physics"] {
         if let Some(t) = median(&format!("simulation/differential_wheels/{mode}")) {

@@ -7,7 +7,7 @@ use core::fmt;
 
 use sim::{
     DifferentialWheelsParams, RobotBody, RobotId, RobotMode, RobotPlacement, SimError, Simulation,
-    VehicleId, VehiclePlacement, World, WorldConfig,
+    TyreChoice, VehicleId, VehiclePlacement, World, WorldConfig,
 };
 use vehicle_model::Model;
 
@@ -82,11 +82,20 @@ pub struct CarScene {
 }
 
 impl CarScene {
-    /// Builds the world and the cars (at rest, wheels on the ground).
+    /// Builds the world and the cars (at rest, wheels on the ground) on the model's default
+    /// slip-based tyres.
     ///
     /// # Errors
     /// [`SceneError`] if the model or `sim` rejects something (never for these constants).
     pub fn new(count: usize, mode: LoopMode) -> Result<Self, SceneError> {
+        Self::on(count, mode, &TyreChoice::default())
+    }
+
+    /// As [`CarScene::new`], on `tyre`.
+    ///
+    /// # Errors
+    /// [`SceneError`] if the model or `sim` rejects something (never for these constants).
+    pub fn on(count: usize, mode: LoopMode, tyre: &TyreChoice) -> Result<Self, SceneError> {
         let mut sim = Simulation::new(flat_world()?);
         let mut cars = Vec::with_capacity(count);
         for i in 0..count {
@@ -95,7 +104,7 @@ impl CarScene {
                 y: (i / GRID_COLUMNS) as f64 * CAR_SPACING,
                 ..VehiclePlacement::default()
             };
-            let (id, report) = sim.add_car(CAR_MODEL.params(), placement)?;
+            let (id, report) = sim.add_car_on(CAR_MODEL.params(), tyre, placement)?;
             if !report.is_empty() {
                 return Err(SceneError::Model(InvalidModel {
                     total: report.total(),

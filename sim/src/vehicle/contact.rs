@@ -33,10 +33,14 @@
 use rapier3d::prelude::{Mat3, Vector};
 use vehicle_model::actuator::coulomb_torque;
 
-/// Block Gauss–Seidel sweeps per step. With warm starting, 8 sweeps leave residual slip
+/// Most block Gauss–Seidel sweeps per step. With warm starting, 8 sweeps leave residual slip
 /// velocities under 1 mm/s on every shipped car with the rigid Webots contact (the chassis
 /// couples the two axles; each sweep solves one axle exactly given the other).
 pub(crate) const SWEEPS: usize = 8;
+
+/// The sweeps stop early once the last one moved no impulse by more than this fraction of
+/// the largest suspension impulse (a cruising car settles in two or three sweeps).
+const SETTLED: f32 = 1e-5;
 
 /// The chassis as the solve sees it: its velocities (changed in place) and inverse mass
 /// properties in the world frame.
@@ -166,8 +170,15 @@ impl Grip {
                 if !(ax > 0.0 && ay > 0.0) {
                     return [0.0; 2];
                 }
-                let r = (x / ax).hypot(y / ay);
-                if r > 1.0 { [x / r, y / r] } else { [x, y] }
+                // Forces over their limits stay far below √(f32::MAX): no `hypot` needed.
+                let (u, v) = (x / ax, y / ay);
+                let r2 = u * u + v * v;
+                if r2 > 1.0 {
+                    let inv = r2.sqrt().recip();
+                    [x * inv, y * inv]
+                } else {
+                    [x, y]
+                }
             }
             Grip::Coulomb { friction, .. } => {
                 let limit = (friction * normal).max(0.0);
@@ -294,6 +305,7 @@ pub(crate) fn solve(body: &mut Body, wheels: &mut [WheelRow; 4], dt: f32) {
         Axle::new(body, &wheels[2..4], dt),
     ];
     for sweep in 0..SWEEPS {
+        let before = wheels.map(|w| w.impulses);
         for (a, axle) in axles.iter().enumerate() {
             let pair = &mut wheels[2 * a..2 * a + 2];
             for w in pair.iter_mut() {
@@ -302,7 +314,31 @@ pub(crate) fn solve(body: &mut Body, wheels: &mut [WheelRow; 4], dt: f32) {
             suspension_block(body, pair, axle);
             tyre_block(body, pair, axle, sweep);
         }
+        if settled(&before, wheels) {
+            break;
+        }
     }
+}
+
+/// True when no impulse moved by more than [`SETTLED`] of the largest suspension impulse
+/// in the last sweep: a further sweep would change the forces by less than that.
+fn settled(before: &[Impulses; 4], wheels: &[WheelRow; 4]) -> bool {
+    let scale = wheels
+        .iter()
+        .map(|w| w.impulses.normal)
+        .fold(0.0_f32, f32::max);
+    let change = before
+        .iter()
+        .zip(wheels)
+        .map(|(b, w)| {
+            let a = w.impulses;
+            (a.normal - b.normal)
+                .abs()
+                .max((a.forward - b.forward).abs())
+                .max((a.lateral - b.lateral).abs())
+        })
+        .fold(0.0_f32, f32::max);
+    scale > 0.0 && change <= SETTLED * scale
 }
 
 /// Applies the previous step's impulses, clamped to this step's limits.

@@ -65,16 +65,6 @@ impl<T: Real> Shape<T> {
         (self.c * phi.atan()).sin()
     }
 
-    /// `g(s)/s`, the secant slope, which tends to `g'(0) = C·u_p` at `s = 0`.
-    #[inline]
-    pub fn secant(&self, s: T, value: T) -> T {
-        if s > T::from_f64(1e-6) {
-            value / s
-        } else {
-            self.c * self.u_peak
-        }
-    }
-
     /// The shape between `self` (weight `1 − w`) and `other` (weight `w`), for a slip direction
     /// between the two axes.
     #[inline]
@@ -126,10 +116,9 @@ mod tests {
             assert!((g - pacejka(x, b, c, 1.0, e)).abs() < 1e-12, "x {x}");
         }
         // The secant g(s)/s tends to the slope at the origin, dg/ds = C·u_p (dy/dx = B·C·D).
-        assert_eq!(s.secant(0.0, s.at(0.0)), c * s.u_peak);
+        assert_eq!(s.at(0.0), 0.0);
         let tiny = 1e-5;
-        assert!((s.secant(tiny, s.at(tiny)) - c * s.u_peak).abs() < 1e-6 * c * s.u_peak);
-        assert_eq!(s.secant(2.0, s.at(2.0)), s.at(2.0) / 2.0);
+        assert!((s.at(tiny) / tiny - c * s.u_peak).abs() < 1e-6 * c * s.u_peak);
     }
 
     #[test]

@@ -148,8 +148,16 @@ impl<T: Real> Linearised<T> {
         if !(ax > T::ZERO && ay > T::ZERO) {
             return [T::ZERO; 2];
         }
-        let r = (f[0] / ax).hypot(f[1] / ay);
-        if r > T::ONE { f.map(|v| v / r) } else { f }
+        let (u, v) = (f[0] / ax, f[1] / ay);
+        let r2 = u * u + v * v;
+        if r2 > T::ONE && r2.is_finite() {
+            let inv = T::ONE / r2.sqrt();
+            f.map(|x| x * inv)
+        } else if r2.is_finite() {
+            f
+        } else {
+            [T::ZERO; 2]
+        }
     }
 }
 
@@ -167,6 +175,15 @@ struct AtLoad<T> {
 pub struct MagicFormula<T> {
     params: TyreParams<T>,
     shapes: [Shape<T>; 2],
+    /// 1/F_z0 (1/N).
+    inv_nominal: T,
+    /// 1/(p₂·F_z0) (1/N).
+    inv_saturation_load: T,
+    /// `C·u_p` of each curve: the slope of the normalised curve at zero slip.
+    slope_at_zero: [T; 2],
+    /// The normalised slip per unit slip at the nominal load on a road of friction 1,
+    /// `K/(C·u_p·μ)`, the lateral one times `1 + z₀²` (z₀ = 1/p₂) for its load law.
+    scale_gain: [T; 2],
 }
 
 impl<T: Real> MagicFormula<T> {
@@ -175,7 +192,20 @@ impl<T: Real> MagicFormula<T> {
             Shape::new(params.longitudinal.shape, params.longitudinal.curvature)?,
             Shape::new(params.lateral.shape, params.lateral.curvature)?,
         ];
-        Some(MagicFormula { params, shapes })
+        let z0 = T::ONE / params.cornering_saturation;
+        let slope_at_zero = shapes.map(|s| s.c * s.u_peak);
+        let curves = [&params.longitudinal, &params.lateral];
+        let gain = [T::ONE, T::ONE + z0 * z0];
+        Some(MagicFormula {
+            params,
+            shapes,
+            inv_nominal: T::ONE / params.nominal_load,
+            inv_saturation_load: T::ONE / (params.cornering_saturation * params.nominal_load),
+            slope_at_zero,
+            scale_gain: [0, 1].map(|i| {
+                curves[i].stiffness * gain[i] / (slope_at_zero[i] * curves[i].peak_friction)
+            }),
+        })
     }
 
     /// The coefficients.
@@ -198,19 +228,16 @@ impl<T: Real> MagicFormula<T> {
             };
         }
         let f = T::from_f64;
-        let extra = (load - p.nominal_load) / p.nominal_load;
+        let extra = load * self.inv_nominal - T::ONE;
         let factor = (T::ONE - p.load_sensitivity * extra).clamp(f(0.5), f(1.5));
-        // C_α(F_z)/F_z = k·(1 + z₀²)/(1 + z²), z = F_z/(p₂·F_z0): Pacejka's sin(2·atan(z))
-        // law divided by the load (sin(2·atan z) = 2z/(1 + z²)).
-        let z = load / (p.cornering_saturation * p.nominal_load);
-        let z0 = T::ONE / p.cornering_saturation;
-        let lateral_stiffness = p.lateral.stiffness * (T::ONE + z0 * z0) / (T::ONE + z * z);
-        let stiffness = [p.longitudinal.stiffness, lateral_stiffness];
-        let curves = self.curves();
-        let mu = [0, 1].map(|i| road * curves[i].peak_friction * factor);
-        // B = K/(C·D) per unit load; the normalised slip is B·x/u_p.
-        let scale =
-            [0, 1].map(|i| stiffness[i] / (self.shapes[i].c * mu[i] * self.shapes[i].u_peak));
+        // The lateral stiffness per unit load falls as k·(1 + z₀²)/(1 + z²), z = F_z/(p₂·F_z0):
+        // Pacejka's C_α ∝ sin(2·atan(z)) divided by the load (sin(2·atan z) = 2z/(1 + z²)).
+        // B = K/(C·D) per unit load, and the normalised slip is B·x/u_p: one division for both.
+        let z = load * self.inv_saturation_load;
+        let lateral = T::ONE + z * z;
+        let inv = T::ONE / (road * factor * lateral);
+        let mu = [p.longitudinal.peak_friction, p.lateral.peak_friction].map(|m| road * m * factor);
+        let scale = [self.scale_gain[0] * lateral * inv, self.scale_gain[1] * inv];
         AtLoad { mu, scale }
     }
 
@@ -219,17 +246,18 @@ impl<T: Real> MagicFormula<T> {
     /// tyre saturates.
     fn force_and_secant(&self, slip: [T; 2], c: &AtLoad<T>) -> ([T; 2], [T; 2]) {
         let s = [0, 1].map(|i| c.scale[i] * slip[i]);
-        let norm = s[0].hypot(s[1]);
+        // Normalised slips stay far below √(f32::MAX): no overflow to guard as `hypot` does.
+        let norm = (s[0] * s[0] + s[1] * s[1]).sqrt();
         if !(norm > T::ZERO && norm.is_finite()) {
             // At zero slip each axis has its own curve's slope, C·u_p in normalised slip.
-            let stiffness =
-                [0, 1].map(|i| c.mu[i] * c.scale[i] * self.shapes[i].c * self.shapes[i].u_peak);
+            let stiffness = [0, 1].map(|i| c.mu[i] * c.scale[i] * self.slope_at_zero[i]);
             return ([T::ZERO; 2], stiffness);
         }
-        let n = s.map(|v| v / norm);
+        let inv_norm = T::ONE / norm;
+        let n = s.map(|v| v * inv_norm);
         let shape = self.shapes[0].blend(&self.shapes[1], n[1] * n[1]);
         let value = shape.at(norm);
-        let secant = shape.secant(norm, value);
+        let secant = value * inv_norm;
         let force = [0, 1].map(|i| c.mu[i] * value * n[i]);
         let stiffness = [0, 1].map(|i| c.mu[i] * c.scale[i] * secant);
         (force, stiffness)
