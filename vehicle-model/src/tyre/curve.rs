@@ -62,7 +62,7 @@ impl<T: Real> Shape<T> {
     pub fn at(&self, s: T) -> T {
         let u = self.u_peak * s;
         let phi = u - self.e * (u - u.atan());
-        (self.c * phi.atan()).sin()
+        sin_0_pi(self.c * phi.atan())
     }
 
     /// The shape between `self` (weight `1 − w`) and `other` (weight `w`), for a slip direction
@@ -75,6 +75,21 @@ impl<T: Real> Shape<T> {
             e: mix(self.e, other.e),
             u_peak: mix(self.u_peak, other.u_peak),
         }
+    }
+}
+
+/// `sin(x)` for `x` in [0, π): the curve's angle `C·atan(φ)` with `C < 2`, `φ ≥ 0`. Folded
+/// into [0, π/4] by the symmetries of the sine, where libm's `sin` and `cos` skip their
+/// argument reduction (a third of their cost); the fold loses under 1e-16 absolute.
+#[inline]
+fn sin_0_pi<T: Real>(x: T) -> T {
+    let quarter = T::FRAC_PI_2 * T::HALF;
+    if x <= quarter {
+        x.sin()
+    } else if x <= T::PI - quarter {
+        (x - T::FRAC_PI_2).cos()
+    } else {
+        (T::PI - x).sin()
     }
 }
 
@@ -119,6 +134,16 @@ mod tests {
         assert_eq!(s.at(0.0), 0.0);
         let tiny = 1e-5;
         assert!((s.at(tiny) / tiny - c * s.u_peak).abs() < 1e-6 * c * s.u_peak);
+    }
+
+    #[test]
+    fn folded_sine_is_the_sine() {
+        for i in 0..=1000 {
+            let x = f64::from(i) * core::f64::consts::PI / 1000.0 * 0.9999;
+            assert!((sin_0_pi(x) - x.sin()).abs() < 4e-16, "{x}");
+            let x32 = x as f32;
+            assert!((sin_0_pi(x32) - x32.sin()).abs() < 2e-7, "{x32}");
+        }
     }
 
     #[test]
