@@ -35,10 +35,9 @@
 //! # Cost
 //!
 //! One BmwX5 step (10 ms: the driver step, the four tyre shape casts, the tyre solve and one
-//! rapier step) takes about 6.5 µs at 50 or 100 km/h and 9 µs at rest on the 2-core
-//! development machine (release build, `cargo run --release -p sim --example step_cost`):
-//! about 1500 times real time. 8 cars cost about 5.5 µs each. `benches` measures it with
-//! criterion and callgrind.
+//! rapier step) costs a few µs, over a thousand times real time; `benches` measures it with
+//! criterion and callgrind and `benches/README.md` holds the figures of the last run
+//! (`cargo run --release -p sim --example step_cost` times it on your machine).
 //!
 //! ```
 //! use sim::{Simulation, VehiclePlacement, World, WorldConfig};
