@@ -418,3 +418,51 @@ fn the_c_zero_spins_only_beyond_its_grip() {
     println!("C-Zero, 0.05 rad: largest body slip angle {full:.4} rad");
     assert!(full > std::f64::consts::FRAC_PI_4, "{full}");
 }
+
+#[test]
+fn braking_within_the_grip_follows_the_brake_torque() {
+    // BmwX5 from 100 km/h at brake intensity 1 on friction 1.5 (the brakes, not the tyres, are
+    // the limit). The deceleration is the brake force 4·brakeCoefficient/r, plus the tyres'
+    // rolling resistance and the wheels' viscous damping c·ω/r, over the mass plus the wheels'
+    // spin inertia I/r²: a = (A + B·v)/M, and the car stops in
+    // d = v₀/B' − (A'/B'²)·ln(1 + B'·v₀/A') with A' = A/M, B' = B/M.
+    for tyre in [common::model_tyre(Model::BmwX5), common::webots_tyre()] {
+        let (mut sim, id) = car_on(Model::BmwX5.params(), &tyre, common::GRIPPY, 10);
+        sim.driver_mut(id).unwrap().set_cruising_speed(100.0);
+        common::run_until(&mut sim, 20.0, |s| {
+            s.telemetry(id).unwrap().speed >= 99.0 / 3.6
+        })
+        .unwrap();
+        let spec = *sim.world().vehicle(id).unwrap().spec();
+        let p = sim.driver(id).unwrap().params().clone();
+        let loads = spec.static_wheel_loads();
+        let (mut m, mut a, mut b) = (spec.chassis.mass, 0.0, 0.0);
+        for w in Wheel::ALL {
+            let s = spec.wheels[w];
+            m += s.mass + s.spin_inertia() / (s.radius * s.radius);
+            a += p.brake_coefficient / s.radius;
+            if let TyreModel::MagicFormula(t) = spec.tyres.of(w) {
+                a += t.params().rolling_resistance * loads[w];
+            }
+            b += p.wheels_damping_constant / (s.radius * s.radius);
+        }
+        let (a, b) = (a / m, b / m);
+        let s0 = sim.telemetry(id).unwrap();
+        let (v0, x0) = (s0.speed, s0.state.position[0]);
+        let d = sim.driver_mut(id).unwrap();
+        d.set_throttle(0.0);
+        d.set_brake_intensity(1.0);
+        common::run_until(&mut sim, 10.0, |s| s.telemetry(id).unwrap().speed < 0.01).unwrap();
+        let distance = sim.telemetry(id).unwrap().state.position[0] - x0;
+        let expected = v0 / b - a / (b * b) * (1.0 + b * v0 / a).ln();
+        println!(
+            "{tyre:?}: stopped from {v0:.2} m/s in {distance:.2} m (expected {expected:.2} m; \
+             brakes alone over the mass: {:.2} m)",
+            v0 * v0 / (2.0 * 4.0 * p.brake_coefficient / 0.374 / m)
+        );
+        assert!(
+            (distance / expected - 1.0).abs() < 0.03,
+            "{distance} vs {expected}"
+        );
+    }
+}
