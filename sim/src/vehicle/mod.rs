@@ -483,9 +483,13 @@ impl Vehicle {
             },
             TyreModel::MagicFormula(tyre) => {
                 // The load the tyre's coefficients are taken at: the last step's, or the
-                // spring's at the current compression when that is more (a landing wheel).
-                let spring = f64::from(contact.stiffness * contact.compression);
-                let load = (f64::from(self.impulses[w].normal) / dt).max(spring);
+                // spring's at the current compression for a wheel that just landed.
+                let previous = f64::from(self.impulses[w].normal) / dt;
+                let load = if previous > 0.0 {
+                    previous
+                } else {
+                    f64::from(contact.stiffness * contact.compression)
+                };
                 // Linearised at the spin the wheel starts the step with: the drive torque's
                 // spin-up is part of the solve (a free spin is a row coordinate), and a
                 // point near the step's solution keeps the linearisation accurate when a

@@ -1,11 +1,12 @@
 //! The Magic Formula curve shape, normalised so that its peak sits at a normalised slip of 1.
 //!
 //! Pacejka's pure-slip formula is `y(x) = D·sin(C·atan(B·x − E·(B·x − atan(B·x))))`. Written in
-//! `u = B·x`, its shape depends on `C` and `E` only, and its peak is where
-//! `C·atan((1 − E)·u + E·atan(u)) = π/2`, i.e. at the root `u_p` of
-//! `(1 − E)·u + E·atan(u) = tan(π / (2·C))`. This module finds `u_p` once per parameter set and
-//! evaluates the curve in the normalised slip `s = u / u_p` (peak at `s = 1`), which is how the
-//! combined-slip model of [`super::MagicFormula`] uses it.
+//! `t = B·C·x` (the force the initial slope would give, over the peak `D`), its shape depends
+//! on `C` and `E` only and its slope at zero is 1 whatever they are: `g(t) ≈ t`. That is what
+//! lets [`super::MagicFormula`] blend the longitudinal and lateral shapes for a combined slip
+//! without changing the tyre's stiffness in any direction. The peak is where
+//! `C·atan((1 − E)·u + E·atan(u)) = π/2`, `u = t/C`, i.e. at the root `u_p` of
+//! `(1 − E)·u + E·atan(u) = tan(π / (2·C))`, found once per parameter set.
 
 use ackermann::Real;
 
@@ -16,7 +17,8 @@ pub(crate) struct Shape<T> {
     pub c: T,
     /// Curvature factor `E` (< 1).
     pub e: T,
-    /// `u_p = B·x_peak` (dimensionless, > 0): the peak in the curve's own variable `B·x`.
+    /// `u_p = B·x_peak` (dimensionless, > 0): the peak in Pacejka's variable `B·x`; in `t` it is
+    /// at `C·u_p`.
     pub u_peak: T,
 }
 
@@ -56,13 +58,18 @@ impl<T: Real> Shape<T> {
         (u_peak > T::ZERO && u_peak.is_finite()).then_some(Shape { c, e, u_peak })
     }
 
-    /// The curve `g(s)` at normalised slip `s ≥ 0` (peak 1 at `s = 1`), in [−1, 1]: the
+    /// The curve `g(t)` at `t ≥ 0` (slope 1 at zero, peak 1 at `t = C·u_p`), in [−1, 1]: the
     /// force over its peak.
     #[inline]
-    pub fn at(&self, s: T) -> T {
-        let u = self.u_peak * s;
+    pub fn at(&self, t: T) -> T {
+        let u = t / self.c;
         let phi = u - self.e * (u - u.atan());
         sin_0_pi(self.c * phi.atan())
+    }
+
+    /// Where the curve peaks, `t = C·u_p`.
+    pub fn t_peak(&self) -> T {
+        self.c * self.u_peak
     }
 
     /// The shape between `self` (weight `1 − w`) and `other` (weight `w`), for a slip direction
@@ -103,7 +110,7 @@ mod tests {
     }
 
     #[test]
-    fn peak_is_at_normalised_slip_one() {
+    fn peak_is_at_c_times_u_peak() {
         for (c, e) in [
             (1.65, 0.7),
             (1.3, -0.5),
@@ -112,8 +119,9 @@ mod tests {
             (1.5, 0.0),
         ] {
             let s = Shape::<f64>::new(c, e).unwrap();
-            assert!((s.at(1.0) - 1.0).abs() < 1e-12, "C {c} E {e}");
-            assert!(s.at(0.98) < 1.0 && s.at(1.02) < 1.0);
+            let p = s.t_peak();
+            assert!((s.at(p) - 1.0).abs() < 1e-12, "C {c} E {e}");
+            assert!(s.at(0.98 * p) < 1.0 && s.at(1.02 * p) < 1.0);
             // With E = 0 the root is closed-form: u_p = tan(π/(2C)).
             if e == 0.0 {
                 assert!((s.u_peak - (core::f64::consts::FRAC_PI_2 / c).tan()).abs() < 1e-12);
@@ -122,18 +130,21 @@ mod tests {
     }
 
     #[test]
-    fn matches_pacejka_and_its_secant() {
-        // The dry-tarmac "single set" B = 10, C = 1.9, D = 1, E = 0.97: y(x) = g(B·x/u_p).
+    fn matches_pacejka_and_has_unit_slope() {
+        // The dry-tarmac "single set" B = 10, C = 1.9, D = 1, E = 0.97: y(x) = g(B·C·x).
         let (b, c, e) = (10.0, 1.9, 0.97);
         let s = Shape::<f64>::new(c, e).unwrap();
         for x in [0.01, 0.05, 0.1, 0.18, 0.5, 1.0] {
-            let g = s.at(b * x / s.u_peak);
+            let g = s.at(b * c * x);
             assert!((g - pacejka(x, b, c, 1.0, e)).abs() < 1e-12, "x {x}");
         }
-        // The secant g(s)/s tends to the slope at the origin, dg/ds = C·u_p (dy/dx = B·C·D).
+        // The slope at zero is 1 for every shape.
         assert_eq!(s.at(0.0), 0.0);
-        let tiny = 1e-5;
-        assert!((s.at(tiny) / tiny - c * s.u_peak).abs() < 1e-6 * c * s.u_peak);
+        for (c, e) in [(1.65, 0.7), (1.3, -0.5), (1.1, -3.0)] {
+            let s = Shape::<f64>::new(c, e).unwrap();
+            let tiny = 1e-6;
+            assert!((s.at(tiny) / tiny - 1.0).abs() < 1e-9, "C {c} E {e}");
+        }
     }
 
     #[test]

@@ -4,9 +4,10 @@
 //!
 //! * [`MagicFormula`] (the default): a slip-based tyre. The longitudinal force follows the
 //!   slip ratio κ and the lateral force the slip angle α along Pacejka Magic Formula curves
-//!   ([`SlipCurve`]) whose peak and stiffness depend on the load; the two combine through a
-//!   normalised slip, so the force stays within a friction ellipse and a locked or spinning
-//!   wheel loses its side grip; past the peak the force falls toward a sliding value. The slip
+//!   ([`SlipCurve`]) whose peak and stiffness depend on the load; the two combine through one
+//!   curve variable (the force the slip stiffnesses alone would give, over the peak), so each
+//!   axis keeps its stiffness below the limit, the force stays within a friction ellipse, and a
+//!   locked or spinning wheel loses its side grip; past the peak the force falls toward a sliding value. The slip
 //!   is *transient*: it builds up over a relaxation length of rolling ([`TransientSlip`]),
 //!   which gives the tyre's lag and, at walking pace and standstill, turns the tyre into a
 //!   damped spring that holds the contact patch (no creep on a slope, no jitter);
@@ -166,7 +167,7 @@ impl<T: Real> Linearised<T> {
 struct AtLoad<T> {
     /// Peak friction `[x, y]` (dimensionless).
     mu: [T; 2],
-    /// Normalised slip per unit slip, `B/u_p` (1/peak slip), `[x, y]`.
+    /// `K/μ`, the curve variable `t` per unit slip, `[x, y]`.
     scale: [T; 2],
 }
 
@@ -179,10 +180,10 @@ pub struct MagicFormula<T> {
     inv_nominal: T,
     /// 1/(p₂·F_z0) (1/N).
     inv_saturation_load: T,
-    /// `C·u_p` of each curve: the slope of the normalised curve at zero slip.
-    slope_at_zero: [T; 2],
-    /// The normalised slip per unit slip at the nominal load on a road of friction 1,
-    /// `K/(C·u_p·μ)`, the lateral one times `1 + z₀²` (z₀ = 1/p₂) for its load law.
+    /// `C·u_p` of each curve: where it peaks in its variable `t`.
+    t_peak: [T; 2],
+    /// The curve variable per unit slip at the nominal load on a road of friction 1, `K/μ`,
+    /// the lateral one times `1 + z₀²` (z₀ = 1/p₂) for its load law.
     scale_gain: [T; 2],
 }
 
@@ -193,7 +194,6 @@ impl<T: Real> MagicFormula<T> {
             Shape::new(params.lateral.shape, params.lateral.curvature)?,
         ];
         let z0 = T::ONE / params.cornering_saturation;
-        let slope_at_zero = shapes.map(|s| s.c * s.u_peak);
         let curves = [&params.longitudinal, &params.lateral];
         let gain = [T::ONE, T::ONE + z0 * z0];
         Some(MagicFormula {
@@ -201,10 +201,8 @@ impl<T: Real> MagicFormula<T> {
             shapes,
             inv_nominal: T::ONE / params.nominal_load,
             inv_saturation_load: T::ONE / (params.cornering_saturation * params.nominal_load),
-            slope_at_zero,
-            scale_gain: [0, 1].map(|i| {
-                curves[i].stiffness * gain[i] / (slope_at_zero[i] * curves[i].peak_friction)
-            }),
+            t_peak: shapes.map(|s| s.t_peak()),
+            scale_gain: [0, 1].map(|i| curves[i].stiffness * gain[i] / curves[i].peak_friction),
         })
     }
 
@@ -232,7 +230,7 @@ impl<T: Real> MagicFormula<T> {
         let factor = (T::ONE - p.load_sensitivity * extra).clamp(f(0.5), f(1.5));
         // The lateral stiffness per unit load falls as k·(1 + z₀²)/(1 + z²), z = F_z/(p₂·F_z0):
         // Pacejka's C_α ∝ sin(2·atan(z)) divided by the load (sin(2·atan z) = 2z/(1 + z²)).
-        // B = K/(C·D) per unit load, and the normalised slip is B·x/u_p: one division for both.
+        // The curve variable is t = K·x/μ (per unit load): one division for both axes.
         let z = load * self.inv_saturation_load;
         let lateral = T::ONE + z * z;
         let inv = T::ONE / (road * factor * lateral);
@@ -244,17 +242,22 @@ impl<T: Real> MagicFormula<T> {
     /// The force per unit load at slips `[κ, tan α]` and each axis' secant stiffness
     /// `f_i/x_i` (per unit slip), which is the slip stiffness at zero slip and falls as the
     /// tyre saturates.
+    ///
+    /// Both axes share one curve variable `t = ‖(K_x·κ, K_y·tan α)/μ‖` (per unit load) and one
+    /// shape, blended between the longitudinal and the lateral one by the direction; each curve
+    /// has slope 1 at zero, so below the limit each axis keeps its own stiffness whatever the
+    /// other's slip, and `(F_x/μ_x)² + (F_y/μ_y)² = g(t)² ≤ F_z²` at any slip.
     fn force_and_secant(&self, slip: [T; 2], c: &AtLoad<T>) -> ([T; 2], [T; 2]) {
-        let s = [0, 1].map(|i| c.scale[i] * slip[i]);
-        // Normalised slips stay far below √(f32::MAX): no overflow to guard as `hypot` does.
-        let norm = (s[0] * s[0] + s[1] * s[1]).sqrt();
+        let t = [0, 1].map(|i| c.scale[i] * slip[i]);
+        // The curve variables stay far below √(f32::MAX): no overflow to guard as `hypot` does.
+        let norm = (t[0] * t[0] + t[1] * t[1]).sqrt();
         if !(norm > T::ZERO && norm.is_finite()) {
-            // At zero slip each axis has its own curve's slope, C·u_p in normalised slip.
-            let stiffness = [0, 1].map(|i| c.mu[i] * c.scale[i] * self.slope_at_zero[i]);
+            // At zero slip each axis has its own stiffness, μ·K/μ.
+            let stiffness = [0, 1].map(|i| c.mu[i] * c.scale[i]);
             return ([T::ZERO; 2], stiffness);
         }
         let inv_norm = T::ONE / norm;
-        let n = s.map(|v| v * inv_norm);
+        let n = t.map(|v| v * inv_norm);
         let shape = self.shapes[0].blend(&self.shapes[1], n[1] * n[1]);
         let value = shape.at(norm);
         let secant = value * inv_norm;
@@ -281,7 +284,12 @@ impl<T: Real> MagicFormula<T> {
     /// The slips `[κ_p, tan α_p]` at which the pure-slip forces peak, at `load` (N) on a road
     /// of friction `road`.
     pub fn peak_slip(&self, load: T, road: T) -> [T; 2] {
-        self.at_load(load, road).scale.map(|k| T::ONE / k)
+        self.peaks(&self.at_load(load, road))
+    }
+
+    /// The slips `[κ_p, tan α_p]` at which the pure-slip forces of `c` peak.
+    fn peaks(&self, c: &AtLoad<T>) -> [T; 2] {
+        [0, 1].map(|i| self.t_peak[i] / c.scale[i])
     }
 
     /// The rolling-resistance torque (N·m, ≥ 0) of the tyre under `load` (N) with rolling
@@ -311,14 +319,15 @@ impl<T: Real> MagicFormula<T> {
         let speed = v.forward.abs();
         let reference = speed.max(T::from_f64(LOW_SPEED));
         let curves = self.curves();
+        let peaks = self.peaks(c);
         let mut next = [T::ZERO; 2];
         let mut rate = [T::ZERO; 2];
         for i in 0..2 {
             let sigma = curves[i].relaxation_length;
             let denominator = sigma + dt * speed;
             let x = (sigma * slip[i] - dt * v.slip[i]) / denominator;
-            let cap = (v.slip[i].abs() / reference).max(T::ONE / c.scale[i]);
-            let peak = T::ONE / c.scale[i];
+            let cap = (v.slip[i].abs() / reference).max(peaks[i]);
+            let peak = peaks[i];
             let kinematic = v.slip[i].abs() / reference;
             if x.abs() <= cap {
                 next[i] = x;

@@ -108,9 +108,50 @@ fn combined_slip_stays_in_the_friction_ellipse() {
     let side = t.force([0.0, 0.1_f64.tan()], FZ0, 1.0)[1];
     let [fx, fy] = t.force([-1.0, 0.1_f64.tan()], FZ0, 1.0);
     assert!(fy.abs() < 0.15 * side, "{fy} vs {side}");
-    // ... and its force points (within 1°) against the sliding velocity (v_x, v_y) ∝ (1, −tan α).
+    // Its force points along (K_x·κ, K_y·tan α): atan(18·tan 0.1/25) = 0.0722 rad from straight
+    // back, 1.6° off the sliding velocity (1, −tan α).
     let angle = fy.atan2(-fx);
-    assert!((angle - 0.1).abs() < 0.02, "{angle}");
+    assert!(
+        (angle - (18.0 * 0.1_f64.tan() / 25.0).atan()).abs() < 1e-9,
+        "{angle}"
+    );
+}
+
+#[test]
+fn combined_slip_only_takes_grip_away() {
+    // Below the limit each axis keeps its own stiffness whatever the other's slip, and more
+    // slip along one axis never raises the force along the other.
+    let t = car();
+    for alpha in [0.002, 0.02, 0.1, 0.3_f64] {
+        let mut previous = f64::INFINITY;
+        for k in 0..=100 {
+            let kappa = f64::from(k) * 0.01;
+            let fy = t.force([kappa, alpha.tan()], FZ0, 1.0)[1];
+            assert!(
+                fy <= previous + 1e-9,
+                "α {alpha}, κ {kappa}: {fy} > {previous}"
+            );
+            previous = fy;
+        }
+    }
+    // The cornering stiffness at a slip ratio κ: 18 F_z per rad times the longitudinal curve's
+    // secant g(t)/t at t = K_x·κ/μ = 25·κ (the shared curve bends away from its initial slope).
+    let shape = Shape::new(1.65, 0.7).unwrap();
+    let tiny = 1e-7;
+    for kappa in [0.0, 0.001, 0.01, 0.05] {
+        let [_, fy] = t.force([kappa, tiny], FZ0, 1.0);
+        let secant = if kappa > 0.0 {
+            shape.at(25.0 * kappa) / (25.0 * kappa)
+        } else {
+            1.0
+        };
+        let expected = 18.0 * FZ0 * secant;
+        assert!(
+            (fy / tiny / expected - 1.0).abs() < 1e-4,
+            "κ {kappa}: {} vs {expected}",
+            fy / tiny
+        );
+    }
 }
 
 #[test]
