@@ -3,83 +3,144 @@
 //!
 //! # Model
 //!
-//! * **Longitudinal:** a point mass at the rear-axle centre moving at speed `v` (m/s), with
-//!   the wheels rolling without slip (a rolling constraint). For the central steering angle δ
-//!   each wheel's contact point moves at `k_w·v`, where `k_w` is its turning radius over the
-//!   rear axle's ([`ackermann::Geometry::turning`]); it spins at `ω_w = k_w·v/r_w`. The wheel
-//!   inertias `I_w` therefore add `Σ I_w·(k_w/r_w)²` to the mass, and a wheel torque `τ_w`
-//!   pushes with `τ_w·k_w/r_w` (virtual power).
-//! * **Forces:** drive torques (torque mode), aerodynamic drag `½·ρ·CdA·v·|v|`, and two
-//!   dry frictions, the brakes (`Σ brake_w·k_w/r_w`) and the rolling resistance
-//!   (`Crr·m·g`). A dry friction opposes the motion, stops the car exactly within a step
-//!   when it can, and then holds it (no sign chatter, no creeping).
-//! * **Velocity-controlled wheels** (speed mode): like Webots' wheel motors, each driven
-//!   wheel's motor moves its velocity command toward the target by at most
-//!   `acceleration·dt` per step (starting from the wheel's speed), clamps it to
-//!   `±max_velocity` ([`VelocityRamp`]), and has unlimited torque: the car follows the mean of
-//!   what the driven wheels impose.
+//! A planar car on the slip-based tyre of `vehicle_model::tyre`, solved the way the `sim`
+//! crate solves its cars, so that a controller sees the same road on the Cortex-M4 as in the
+//! simulator:
+//!
+//! * **Body:** a rigid body in the road plane (3 DOF: forward and lateral velocity of the
+//!   centre of mass, yaw rate), with the mass of body plus wheels and a yaw inertia from the
+//!   body's inertia (`CarParams::body_inertia`) and the wheels (uniform cylinders, as Webots
+//!   computes them) moved to the common centre of mass. Aerodynamic drag `½·ρ·CdA·u·|u|`
+//!   acts along the heading.
+//! * **Wheels:** four spin rates. A velocity-controlled wheel (speed mode) follows the Webots
+//!   ramp ([`VelocityRamp`]) with unlimited torque: its spin is imposed. A wheel in torque mode
+//!   or rolling freely gets its drive torque and `wheelsDampingConstant` ([`WheelSpin`]), then
+//!   the tyre force and a dry-friction brake of at most the brake torque plus the tyre's
+//!   rolling resistance, which holds a stopped wheel ([`coulomb_torque`]).
+//! * **Tyres:** each tyre's force per unit load is linearised over the step at the
+//!   start-of-step contact velocities ([`MagicFormula::linearise`]; a free wheel at the spin it
+//!   starts the step with), then solved implicitly, at the end-of-step slip velocities,
+//!   together with the body and the free wheels' spins and brakes: block Gauss–Seidel sweeps
+//!   over the wheels, each wheel's tyre force and brake solved exactly given the others, warm
+//!   started from the last step's forces; each force is kept within the tyre's friction
+//!   ellipse. The step is solved in the axes the body has at its end, so that each tyre meets
+//!   its end-of-step slip in its own axes. After the step each tyre's transient slip relaxes
+//!   with the end-of-step velocities ([`MagicFormula::relax`]).
+//! * **Loads:** the static loads of the sim crate (the body's weight shared between the axles
+//!   by its centre of mass, plus each wheel's weight), plus a quasi-static load transfer from
+//!   the last step's acceleration: `m·a_x·h/L` from the front to the rear axle, and
+//!   `m·a_y·h/t` across each axle, shared between the axles in proportion to their roll
+//!   stiffness (spring constant × track²), as the sim crate's springs share it in a steady
+//!   turn. `h` is the centre of mass's height over the road. No pitch, roll or heave
+//!   dynamics, no wheel hop, a flat road.
 //! * **Steering:** each steering motor is the Webots position servo, a P controller
 //!   `ω = 10·(target − angle)` capped at 10 rad/s, with the target clamped to
 //!   `[minSteeringAngle, maxSteeringAngle]`, whose rate is reached within `maxSteeringTorque`
 //!   against the wheel's inertia about its steering axis ([`SteeringMotor`]).
-//! * **Yaw and pose:** the kinematic bicycle model at the rear-axle centre,
-//!   `ψ̇ = −v·tan δ / L` (positive δ turns right), integrated along exact arcs by
-//!   [`ackermann::Odometry::integrate`].
+//! * **Pose:** the rear-axle centre along the exact arc of the step's mean body velocities.
 //!
-//! The motor rules are `vehicle_model::actuator`'s, the ones the `sim` crate applies too.
-//! Everything is `f32`, allocation-free and panic-free. Non-finite commands are ignored and
-//! counted ([`Plant::faults`]); a non-finite state is not masked, so that [`Plant::is_finite`]
-//! exposes it.
+//! The motor rules are `vehicle_model::actuator`'s and the tyre is `vehicle_model::tyre`'s,
+//! the ones the `sim` crate applies too. Everything is `f32`, allocation-free and panic-free.
+//! Non-finite commands are ignored and counted ([`Plant::faults`]); a non-finite state is not
+//! masked, so that [`Plant::is_finite`] exposes it.
 
-use ackermann::{
-    Geometry, Odometry, PerWheel, Pose, Real, SpeedSource, Turning, Velocity, Wheel, WheelAngles,
+// Transcendental maths goes through `Real` (libm), so that the host tests compute what the
+// firmware does rather than std's versions.
+use ackermann::{PerWheel, Pose, Real, Wheel, WheelAngles};
+use vehicle_model::actuator::{
+    PositionServo, SteeringMotor, SteeringState, VelocityRamp, WheelSpin, coulomb_torque,
 };
-use vehicle_model::actuator::{PositionServo, SteeringMotor, SteeringState, VelocityRamp};
-use vehicle_model::{CarParams, Commands, Sensors, WheelDrive};
+use vehicle_model::{
+    CarParams, Commands, ContactVelocity, Linearised, MagicFormula, Sensors, TransientSlip,
+    TyreClass, TyreError, WheelDrive,
+};
 
-/// Standard gravity (m/s²).
+/// Standard gravity (m/s²), as the sim crate's static loads use.
 const GRAVITY: f32 = 9.81;
 /// Air density at sea level, 15 °C (kg/m³).
 const AIR_DENSITY: f32 = 1.225;
-/// A wheel whose contact point moves slower than this fraction of the rear-axle speed (the
-/// inner rear wheel of a very tight turn) cannot say how fast the car goes.
-const MIN_SPEED_RATIO: f32 = 0.1;
+/// Webots' `Physics {}` density for a wheel whose model gives no mass (kg/m³): the sim crate
+/// gives such a wheel the same.
+const DEFAULT_WHEEL_DENSITY: f32 = 1000.0;
+/// Block Gauss–Seidel sweeps over the four wheels per step. The wheels couple only through
+/// the body, which is heavy next to a tyre's compliance over a step, so with the warm start
+/// few are needed: with 2, the turns and stops of the tests agree with 30 sweeps to five
+/// significant digits at 1, 10 and 32 ms.
+const SWEEPS: usize = 4;
 
 /// The physical constants of the plant that the car's parameters do not give.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Environment {
     /// Drag coefficient × frontal area (m²).
     pub drag_area: f32,
-    /// Rolling-resistance coefficient (dimensionless).
-    pub rolling_resistance: f32,
+    /// Friction of the road (dimensionless): the ground's `friction` (Webots'
+    /// `coulombFriction`), multiplying the tyres' peak friction.
+    pub road_friction: f32,
+    /// The kind of tyre the car rolls on, with its default coefficients.
+    pub tyres: TyreClass,
 }
 
 impl Environment {
-    /// A large SUV on dry asphalt: CdA 0.95 m² (Cd 0.33 × 2.9 m²), Crr 0.012.
+    /// A large SUV on passenger-car tyres on dry asphalt: CdA 0.95 m² (Cd 0.33 × 2.9 m²),
+    /// road friction 1.
     pub const SUV_ON_ASPHALT: Environment = Environment {
         drag_area: 0.95,
-        rolling_resistance: 0.012,
+        road_friction: 1.0,
+        tyres: TyreClass::PassengerCar,
     };
+}
+
+/// A wheel's mass and moments of inertia: a uniform cylinder, as Webots computes them.
+#[derive(Debug, Clone, Copy)]
+struct WheelMass {
+    /// Mass (kg).
+    mass: f32,
+    /// Moment of inertia about the axle (kg·m²).
+    axial: f32,
+    /// Moment of inertia about a diameter (kg·m²): about the steering axis, and about the
+    /// vertical for the car's yaw.
+    transverse: f32,
+}
+
+/// The constants of one wheel.
+#[derive(Debug, Clone, Copy)]
+struct Corner {
+    /// Contact point − centre of mass, in body axes (m).
+    arm: [f32; 2],
+    /// Tyre radius (m).
+    radius: f32,
+    /// Spin inertia (kg·m²) and `wheelsDampingConstant` (N·m·s/rad).
+    spin: WheelSpin<f32>,
+    /// Load on the wheel at rest (N).
+    static_load: f32,
+    /// Change of load per m/s² of forward and of leftward acceleration (kg).
+    transfer: [f32; 2],
+    /// The tyre, fitted to the wheel's radius and static load.
+    tyre: MagicFormula<f32>,
 }
 
 /// The simulated car: its state and the constants it moves by.
 #[derive(Debug, Clone)]
 pub struct Plant {
-    geometry: Geometry<f32>,
     /// The front-right and front-left steering motors.
     steering_motors: [SteeringMotor<f32>; 2],
+    corners: PerWheel<Corner>,
     /// Body plus wheels (kg).
     mass: f32,
-    /// Axial inertia of each wheel (kg·m²).
-    wheel_inertia: PerWheel<f32>,
-    /// Tyre radius of each wheel (m).
-    tyre_radius: PerWheel<f32>,
+    /// Yaw inertia about the centre of mass (kg·m²).
+    yaw_inertia: f32,
+    /// Centre of mass − rear-axle centre, x forward and y left (m).
+    centre_of_mass: [f32; 2],
     environment: Environment,
 
     /// Elapsed time (ms), an integer so that it never drifts.
     time_ms: u32,
-    /// Forward speed of the rear-axle centre (m/s).
-    speed: f32,
+    /// Velocity of the centre of mass in body axes, forward and leftward (m/s), and the yaw
+    /// rate (rad/s, counter-clockwise).
+    velocity: [f32; 3],
+    /// Acceleration of the centre of mass over the last step, in body axes, forward and
+    /// leftward (m/s²).
+    acceleration: [f32; 2],
     /// Wheel angular speeds (rad/s, positive = rolling forward).
     wheel_speed: PerWheel<f32>,
     /// Encoder angles (rad, continuous).
@@ -90,8 +151,15 @@ pub struct Plant {
     steering_rate: WheelAngles<f32>,
     /// Speed-mode velocity command of each wheel motor, `None` while not in speed mode.
     wheel_motors: PerWheel<Option<VelocityRamp<f32>>>,
-    /// The true pose of the rear-axle centre, and the distance it travelled.
-    pose: Odometry<f32>,
+    /// Each tyre's transient slip.
+    slips: PerWheel<TransientSlip<f32>>,
+    /// Each tyre's force over the last step along its heading and its axis (N): the warm
+    /// start of the next solve.
+    forces: PerWheel<[f32; 2]>,
+    /// The true pose of the rear-axle centre (m, m, rad counter-clockwise).
+    pose: Pose<f32>,
+    /// Path length of the rear-axle centre (m).
+    distance: f32,
     /// Non-finite commands ignored, and pose updates refused.
     faults: u32,
 }
@@ -101,76 +169,228 @@ impl Plant {
     /// driver's validated parameters (pass `driver.params()`).
     ///
     /// Wheel masses and inertias come from the wheels' `Physics` (a uniform cylinder, as
-    /// Webots computes it); a wheel without physics counts as massless.
-    pub fn new(params: &CarParams<f32>, environment: Environment) -> Self {
-        let geometry = params.geometry().unwrap_or_default();
-        let wheel_mass = PerWheel::from_fn(|w| params.wheels[w].validate().0.mass_properties());
-        let wheels_total: f32 = wheel_mass.iter().flatten().map(|m| m.mass).sum();
+    /// Webots computes it); a wheel without mass gets Webots' `Physics {}` (1000 kg/m³ over
+    /// its cylinder), as in the sim crate. The tyres are `environment.tyres` fitted to each
+    /// axle's radius and static wheel load.
+    ///
+    /// # Errors
+    /// The tyre coefficient that the fitted tyre refuses (not for a validated car).
+    // Called once: out of line, its temporaries (four validated wheels, two tyre fits) do not
+    // stay in the caller's stack frame for the whole run (1.3 KiB of the firmware's stack).
+    #[inline(never)]
+    pub fn new(params: &CarParams<f32>, environment: Environment) -> Result<Self, TyreError> {
+        let wheelbase = params.wheelbase;
+        let half_track = |w: Wheel| {
+            let track = if w.is_front() {
+                params.track_front
+            } else {
+                params.track_rear
+            };
+            if w.is_right() {
+                -0.5 * track
+            } else {
+                0.5 * track
+            }
+        };
+        let centre = |w: Wheel| [if w.is_front() { wheelbase } else { 0.0 }, half_track(w)];
+        let wheel_mass = PerWheel::from_fn(|w| {
+            let (valid, _) = params.wheels[w].validate();
+            match valid.mass_properties().filter(|m| m.axial > 0.0) {
+                Some(m) => WheelMass {
+                    mass: m.mass,
+                    axial: m.axial,
+                    transverse: m.transverse,
+                },
+                None => {
+                    let p = valid.params();
+                    let r2 = p.tire_radius * p.tire_radius;
+                    let mass = DEFAULT_WHEEL_DENSITY * core::f32::consts::PI * r2 * p.thickness;
+                    WheelMass {
+                        mass,
+                        axial: 0.5 * mass * r2,
+                        transverse: mass * (3.0 * r2 + p.thickness * p.thickness) / 12.0,
+                    }
+                }
+            }
+        });
+        let body = &params.body;
+        let [body_x, body_y, body_z] = body.center_of_mass;
+        let mass = body.mass + wheel_mass.iter().map(|m| m.mass).sum::<f32>();
+        let [com_x, com_y] = Wheel::ALL
+            .iter()
+            .fold([body.mass * body_x, body.mass * body_y], |[mx, my], &w| {
+                let [x, y] = centre(w);
+                [mx + wheel_mass[w].mass * x, my + wheel_mass[w].mass * y]
+            })
+            .map(|moment| moment / mass);
+        let squared_distance = |[x, y]: [f32; 2]| {
+            let [dx, dy] = [x - com_x, y - com_y];
+            dx * dx + dy * dy
+        };
+        // The body's own inertia and the wheels' (each spinning about a diameter to turn),
+        // moved to the common centre of mass.
+        let yaw_inertia = params.body_inertia()[2]
+            + body.mass * squared_distance([body_x, body_y])
+            + Wheel::ALL
+                .iter()
+                .map(|&w| {
+                    let m = wheel_mass[w];
+                    m.transverse + m.mass * squared_distance(centre(w))
+                })
+                .sum::<f32>();
+
+        // The sim crate's static loads, so that the tyres are fitted to the same loads.
+        let front_share = (body_x / wheelbase).clamp(0.0, 1.0);
+        let static_load = |w: Wheel| {
+            let share = if w.is_front() {
+                front_share
+            } else {
+                1.0 - front_share
+            };
+            GRAVITY * (0.5 * share * body.mass + wheel_mass[w].mass)
+        };
+        let fit = |w: Wheel| {
+            let load = static_load(w).max(1.0);
+            environment
+                .tyres
+                .params(params.axle_radius(w), load)
+                .validate()
+        };
+        let (front_tyre, rear_tyre) = (fit(Wheel::FrontRight)?, fit(Wheel::RearRight)?);
+        // Centre of mass over the road, which is one rear tyre radius below the car frame (the
+        // wheel centres are at the frame's height: only the body lifts the centre of mass).
+        let height = body.mass * body_z / mass + params.radius_rear();
+        let roll_stiffness = [
+            params.suspension_front_spring_constant * params.track_front * params.track_front,
+            params.suspension_rear_spring_constant * params.track_rear * params.track_rear,
+        ];
+        let corners = PerWheel::from_fn(|w| {
+            let (axle_roll, track) = if w.is_front() {
+                (roll_stiffness[0], params.track_front)
+            } else {
+                (roll_stiffness[1], params.track_rear)
+            };
+            let pitch = 0.5 * mass * height / wheelbase;
+            let roll = axle_roll / (roll_stiffness[0] + roll_stiffness[1]) * mass * height / track;
+            let [x, y] = centre(w);
+            Corner {
+                arm: [x - com_x, y - com_y],
+                radius: params.axle_radius(w),
+                spin: WheelSpin {
+                    inertia: wheel_mass[w].axial,
+                    damping: params.wheels_damping_constant,
+                },
+                static_load: static_load(w),
+                transfer: [
+                    if w.is_front() { -pitch } else { pitch },
+                    if w.is_right() { roll } else { -roll },
+                ],
+                tyre: if w.is_front() { front_tyre } else { rear_tyre },
+            }
+        });
+
         let steering_motor = |w: Wheel| SteeringMotor {
             servo: PositionServo::steering(params.min_steering_angle, params.max_steering_angle),
             max_torque: params.max_steering_torque,
-            inertia: wheel_mass[w].map_or(0.0, |m| m.transverse),
+            inertia: wheel_mass[w].transverse,
         };
-        Plant {
-            geometry,
+        Ok(Plant {
             steering_motors: [
                 steering_motor(Wheel::FrontRight),
                 steering_motor(Wheel::FrontLeft),
             ],
-            mass: params.body.mass + wheels_total,
-            wheel_inertia: wheel_mass.map(|m| m.map_or(0.0, |m| m.axial)),
-            tyre_radius: PerWheel::from_fn(|w| params.axle_radius(w)),
+            corners,
+            mass,
+            yaw_inertia,
+            centre_of_mass: [com_x, com_y],
             environment,
             time_ms: 0,
-            speed: 0.0,
+            velocity: [0.0; 3],
+            acceleration: [0.0; 2],
             wheel_speed: PerWheel::splat(0.0),
             wheel_angle: PerWheel::splat(0.0),
             steering: WheelAngles::STRAIGHT,
             steering_rate: WheelAngles::new(0.0, 0.0),
             wheel_motors: PerWheel::splat(None),
-            pose: Odometry::new(geometry, SpeedSource::RearWheels),
+            slips: PerWheel::splat(TransientSlip::default()),
+            forces: PerWheel::splat([0.0; 2]),
+            pose: Pose::ORIGIN,
+            distance: 0.0,
             faults: 0,
-        }
+        })
     }
+}
 
+impl Plant {
     /// What the sensors read now: the time, the four encoders and the two steering angles.
     /// The car's wiper sensor is not modelled.
     pub fn sensors(&self) -> Sensors<f32> {
         Sensors {
-            time: self.time_ms as f32 / 1000.0,
+            time: self.time(),
             wheel_angles: self.wheel_angle,
             steering: self.steering,
             wiper: None,
         }
     }
 
-    /// Applies `commands` for `dt_ms` milliseconds.
+    /// Applies `commands` for `dt_ms` milliseconds. A step of 0 ms changes nothing.
     pub fn step(&mut self, commands: &Commands<f32>, dt_ms: u32) {
+        if dt_ms == 0 {
+            return;
+        }
         let dt = dt_ms as f32 / 1000.0;
         self.steer(commands.steering, dt);
 
-        let delta = self.geometry.central_angle_from_wheel_angles(self.steering);
-        let ratio = self.speed_ratios(delta);
-        let speed_before = self.speed;
-        let wheel_speed_before = self.wheel_speed;
-
-        let imposed = self.imposed_speed(&commands.drive, &ratio, dt);
-        self.speed = match imposed {
-            Some(v) => v,
-            None => self.free_speed(commands, &ratio, dt),
+        let start = self.velocity;
+        let spin_before = self.wheel_speed;
+        // The step is solved in the axes the body has at its end, having turned at its
+        // start-of-step yaw rate, so that each tyre meets its end-of-step slip in its own
+        // end-of-step axes (in the start-of-step axes its lateral slip would be off by
+        // u·r·dt, 0.05 m/s at 30 km/h in a 15 m turn and 10 ms steps).
+        let [u0, v0, r] = start;
+        let (sin, cos) = (Real::sin(r * dt), Real::cos(r * dt));
+        let [u, v] = [cos * u0 + sin * v0, cos * v0 - sin * u0];
+        // Drag is implicit in the forward speed: linear in it about the start of the step.
+        let drag = 0.5 * AIR_DENSITY * self.environment.drag_area * u.abs();
+        let forward_mass = self.mass + dt * drag;
+        let mut body = Body {
+            velocity: [self.mass * u / forward_mass, v, r],
+            inverse: [1.0 / forward_mass, 1.0 / self.mass, 1.0 / self.yaw_inertia],
         };
-        self.wheel_speed = PerWheel::from_fn(|w| ratio[w] * self.speed / self.tyre_radius[w]);
-        for w in Wheel::ALL {
-            let mean = (wheel_speed_before[w] + self.wheel_speed[w]) * 0.5;
-            self.wheel_angle[w] += mean * dt;
+        let mut rows = PerWheel::from_fn(|w| self.row(w, commands, dt));
+        for row in rows.iter_mut() {
+            row.warm_start(&mut body);
+        }
+        for _ in 0..SWEEPS {
+            for row in rows.iter_mut() {
+                row.solve(&mut body);
+            }
         }
 
-        // Bicycle model at the rear-axle centre over the step's mean speed.
-        let v = (speed_before + self.speed) * 0.5;
-        let yaw_rate = -v * delta.tan() / self.geometry.wheelbase();
-        if self.pose.integrate(Velocity::new(v, yaw_rate), dt).is_err() {
-            self.faults = self.faults.saturating_add(1);
+        self.velocity = body.velocity;
+        for (w, row) in rows.iter_wheels() {
+            let omega = row.omega;
+            let corner = &self.corners[w];
+            let [forward, lateral] = row.contact(&body);
+            let contact = ContactVelocity {
+                forward,
+                slip: [forward - omega * corner.radius, lateral],
+            };
+            let road = self.environment.road_friction;
+            corner
+                .tyre
+                .relax(&mut self.slips[w], &contact, row.load, road, dt);
+            self.forces[w] = row.impulse.map(|p| p / dt);
+            self.wheel_angle[w] += 0.5 * (spin_before[w] + omega) * dt;
+            self.wheel_speed[w] = omega;
         }
+        let [u1, v1, r1] = self.velocity;
+        self.acceleration = [(u1 - u) / dt, (v1 - v) / dt];
+
+        let [start_x, start_y] = self.rear_axle_velocity(start);
+        let [end_x, end_y] = self.rear_axle_velocity(self.velocity);
+        let mean = [0.5 * (start_x + end_x), 0.5 * (start_y + end_y)];
+        self.advance_pose(mean, 0.5 * (r + r1) * dt, dt);
         self.time_ms = self.time_ms.saturating_add(dt_ms);
     }
 
@@ -180,7 +400,7 @@ impl Plant {
         // The motors hold their angle on a non-finite target; the plant counts it.
         for t in [target.right, target.left] {
             if !t.is_finite() {
-                self.faults = self.faults.saturating_add(1);
+                self.fault();
             }
         }
         let [right, left] = self.steering_motors;
@@ -204,82 +424,140 @@ impl Plant {
         self.steering_rate = WheelAngles::new(right.rate, left.rate);
     }
 
-    /// Each wheel's contact-point speed over the rear-axle centre's (dimensionless).
-    fn speed_ratios(&self, delta: f32) -> PerWheel<f32> {
-        match self.geometry.turning(delta) {
-            Turning::Straight => PerWheel::splat(1.0),
-            Turning::Circle(r) => r.wheels.map(|radius| radius / r.rear_axle),
+    /// Wheel `w` set up for the solve of a step of `dt` (s): its spin before the tyre acts,
+    /// its load, and its tyre's force law linearised at the start-of-step velocities.
+    fn row(&mut self, w: Wheel, commands: &Commands<f32>, dt: f32) -> Row {
+        let corner = self.corners[w];
+        let (mut spin, spin_rate) = self.spin(w, commands, dt);
+        let [ax, ay] = self.acceleration;
+        let [forward_transfer, lateral_transfer] = corner.transfer;
+        // A wheel cannot pull the road: it lifts off instead.
+        let load = (corner.static_load + forward_transfer * ax + lateral_transfer * ay).max(0.0);
+        let steer = match w {
+            Wheel::FrontRight => self.steering.right,
+            Wheel::FrontLeft => self.steering.left,
+            Wheel::RearRight | Wheel::RearLeft => 0.0,
+        };
+        // Positive steering turns the wheel's heading clockwise.
+        let heading = [Real::cos(steer), -Real::sin(steer)];
+        // A free wheel's law is taken at the spin it starts the step with: its drive torque's
+        // spin-up is part of the solve, as in the sim crate.
+        let omega = match spin {
+            Spin::Imposed => spin_rate,
+            Spin::Free { .. } => self.wheel_speed[w],
+        };
+        let [forward, lateral] = to_wheel(heading, point_velocity(self.velocity, corner.arm));
+        let contact = ContactVelocity {
+            forward,
+            slip: [forward - omega * corner.radius, lateral],
+        };
+        let road = self.environment.road_friction;
+        let law = corner
+            .tyre
+            .linearise(&self.slips[w], &contact, load, road, dt);
+        if let Spin::Free { capacity, .. } = &mut spin {
+            *capacity += corner.tyre.rolling_resistance_torque(load, corner.radius) * dt;
+        }
+        Row {
+            heading,
+            arm: corner.arm,
+            radius: corner.radius,
+            spin,
+            omega: spin_rate,
+            brake: 0.0,
+            load,
+            normal: load * dt,
+            law,
+            impulse: self.forces[w].map(|f| f * dt),
         }
     }
 
-    /// Speed mode: the speed (m/s) the velocity-controlled wheels impose, after ramping their
-    /// motors; `None` when no wheel is velocity-controlled.
-    fn imposed_speed(
-        &mut self,
-        drive: &PerWheel<WheelDrive<f32>>,
-        ratio: &PerWheel<f32>,
-        dt: f32,
-    ) -> Option<f32> {
-        let mut sum = 0.0;
-        let mut count = 0_u8;
-        for w in Wheel::ALL {
-            let WheelDrive::Velocity {
-                target,
-                acceleration,
-                max_velocity,
-            } = drive[w]
-            else {
-                self.wheel_motors[w] = None;
-                continue;
-            };
-            if !(target.is_finite() && acceleration.is_finite() && max_velocity.is_finite()) {
-                self.faults = self.faults.saturating_add(1);
-                continue;
+    /// How wheel `w` spins over a step of `dt` (s) before the tyre acts, and its spin rate
+    /// (rad/s): imposed by its velocity motor, or free after its drive torque and damping.
+    fn spin(&mut self, w: Wheel, commands: &Commands<f32>, dt: f32) -> (Spin, f32) {
+        let omega = self.wheel_speed[w];
+        let brake = commands.brake_torque[w];
+        let brake = if brake.is_finite() {
+            brake.max(0.0)
+        } else {
+            self.fault();
+            0.0
+        };
+        let drive = commands.drive[w];
+        if let WheelDrive::Velocity {
+            target,
+            acceleration,
+            max_velocity,
+        } = drive
+        {
+            if target.is_finite() && acceleration.is_finite() && max_velocity.is_finite() {
+                // The motor's command starts from the wheel's speed when speed mode begins.
+                let ramp = self.wheel_motors[w].get_or_insert(VelocityRamp::starting_at(omega));
+                return (
+                    Spin::Imposed,
+                    ramp.step(target, acceleration, max_velocity, dt),
+                );
             }
-            // The motor's command starts from the wheel's speed when speed mode begins.
-            let command = self.wheel_motors[w]
-                .get_or_insert(VelocityRamp::starting_at(self.wheel_speed[w]))
-                .step(target, acceleration, max_velocity, dt);
-            if ratio[w] > MIN_SPEED_RATIO {
-                sum += command * self.tyre_radius[w] / ratio[w];
-                count += 1;
+            self.fault();
+            // A running motor keeps its command; a wheel whose motor never ran rolls freely.
+            if let Some(ramp) = self.wheel_motors[w] {
+                return (Spin::Imposed, ramp.command());
             }
+        } else {
+            self.wheel_motors[w] = None;
         }
-        (count > 0).then(|| sum / f32::from(count))
+        let torque = match drive.torque() {
+            Some(t) if !t.is_finite() => {
+                self.fault();
+                0.0
+            }
+            t => t.unwrap_or(0.0),
+        };
+        let wheel = self.corners[w].spin;
+        let spin = Spin::Free {
+            inertia: wheel.inertia,
+            capacity: brake * dt,
+        };
+        (spin, wheel.step(omega, torque, dt))
     }
 
-    /// Torque mode (or free rolling): the speed (m/s) after one step of drive torques, drag,
-    /// brakes and rolling resistance acting on the rolling car.
-    fn free_speed(&mut self, commands: &Commands<f32>, ratio: &PerWheel<f32>, dt: f32) -> f32 {
-        let mut inertial_mass = self.mass;
-        let mut drive_force = 0.0;
-        let mut brake_capacity = 0.0;
-        for w in Wheel::ALL {
-            let lever = ratio[w] / self.tyre_radius[w]; // rad/m: wheel spin per metre travelled
-            inertial_mass += self.wheel_inertia[w] * lever * lever;
-            if let Some(torque) = commands.drive[w].torque() {
-                if torque.is_finite() {
-                    drive_force += torque * lever;
-                } else {
-                    self.faults = self.faults.saturating_add(1);
-                }
-            }
-            let brake = commands.brake_torque[w];
-            if brake.is_finite() {
-                brake_capacity += brake.max(0.0) * lever.abs();
-            } else {
-                self.faults = self.faults.saturating_add(1);
-            }
+    /// Velocity of the rear-axle centre in body axes (m/s) for the centre-of-mass velocity and
+    /// yaw rate `velocity`.
+    fn rear_axle_velocity(&self, velocity: [f32; 3]) -> [f32; 2] {
+        let [x, y] = self.centre_of_mass;
+        point_velocity(velocity, [-x, -y])
+    }
+
+    /// Moves the rear-axle centre along the arc of constant body velocity `velocity` (m/s)
+    /// that turns by `turn` (rad) in `dt` (s).
+    fn advance_pose(&mut self, velocity: [f32; 2], turn: f32, dt: f32) {
+        let half = 0.5 * turn;
+        // The chord of the arc: the travelled vector times sin(h)/h, turned by half the turn.
+        let sinc = if half == 0.0 {
+            1.0
+        } else {
+            Real::sin(half) / half
+        };
+        let [dx, dy] = velocity.map(|v| v * dt * sinc);
+        let heading = self.pose.yaw + half;
+        let (sin, cos) = (Real::sin(heading), Real::cos(heading));
+        let next = Pose::new(
+            self.pose.x + dx * cos - dy * sin,
+            self.pose.y + dx * sin + dy * cos,
+            wrap_angle(self.pose.yaw + turn),
+        );
+        let distance = self.distance + Real::hypot(velocity[0], velocity[1]) * dt;
+        if next.is_finite() && distance.is_finite() {
+            self.pose = next;
+            self.distance = distance;
+        } else {
+            self.fault();
         }
-        let v = self.speed;
-        let drag = 0.5 * AIR_DENSITY * self.environment.drag_area * v * v.abs();
-        let rolling = self.environment.rolling_resistance * self.mass * GRAVITY;
-        let free_force = drive_force - drag;
-        // The dry frictions: whatever stops the car within the step, up to their capacity.
-        let force_to_stop = -(inertial_mass * v / dt + free_force);
-        let capacity = brake_capacity + rolling;
-        let friction = Real::clamp(force_to_stop, -capacity, capacity);
-        v + dt * (free_force + friction) / inertial_mass
+    }
+
+    /// Counts an ignored command value or a refused pose update.
+    fn fault(&mut self) {
+        self.faults = self.faults.saturating_add(1);
     }
 
     /// Elapsed time (s).
@@ -289,17 +567,28 @@ impl Plant {
 
     /// Forward speed of the rear-axle centre (m/s).
     pub fn speed(&self) -> f32 {
-        self.speed
+        self.rear_axle_velocity(self.velocity)[0]
+    }
+
+    /// Yaw rate of the car (rad/s, counter-clockwise).
+    pub fn yaw_rate(&self) -> f32 {
+        self.velocity[2]
+    }
+
+    /// Acceleration of the centre of mass over the last step, in the car's axes: forward and
+    /// leftward (m/s²).
+    pub fn acceleration(&self) -> [f32; 2] {
+        self.acceleration
     }
 
     /// The true pose of the rear-axle centre (m, m, rad counter-clockwise).
     pub fn pose(&self) -> Pose<f32> {
-        self.pose.pose()
+        self.pose
     }
 
     /// Path length of the rear-axle centre (m).
     pub fn distance(&self) -> f32 {
-        self.pose.distance()
+        self.distance
     }
 
     /// Number of non-finite command values ignored and pose updates refused so far (0 for a
@@ -310,13 +599,200 @@ impl Plant {
 
     /// True if every state variable is finite.
     pub fn is_finite(&self) -> bool {
-        self.speed.is_finite()
-            && self.wheel_speed.iter().all(|x| x.is_finite())
-            && self.wheel_angle.iter().all(|x| x.is_finite())
-            && self.steering.right.is_finite()
-            && self.steering.left.is_finite()
-            && self.steering_rate.right.is_finite()
-            && self.steering_rate.left.is_finite()
-            && self.pose.pose().is_finite()
+        let finite = |x: &f32| x.is_finite();
+        self.velocity.iter().all(finite)
+            && self.acceleration.iter().all(finite)
+            && self.wheel_speed.iter().all(finite)
+            && self.wheel_angle.iter().all(finite)
+            && self
+                .slips
+                .iter()
+                .all(|s| s.ratio.is_finite() && s.angle_tan.is_finite())
+            && self.forces.iter().flatten().all(finite)
+            && [self.steering, self.steering_rate]
+                .iter()
+                .all(|a| a.right.is_finite() && a.left.is_finite())
+            && self.pose.is_finite()
+            && self.distance.is_finite()
     }
 }
+
+/// How a wheel's spin takes part in the solve.
+#[derive(Debug, Clone, Copy)]
+enum Spin {
+    /// Imposed by a velocity motor of unlimited torque: the tyre cannot change it.
+    Imposed,
+    /// Turned by the tyre and the brake.
+    Free {
+        /// Spin inertia (kg·m², > 0).
+        inertia: f32,
+        /// The most the brake and the rolling resistance can deliver this step (N·m·s).
+        capacity: f32,
+    },
+}
+
+/// The body in the solve: the centre of mass's velocity and the yaw rate, in the axes the body
+/// has at the end of the step, and how impulses change them.
+#[derive(Debug, Clone, Copy)]
+struct Body {
+    /// Forward and leftward velocity (m/s), yaw rate (rad/s).
+    velocity: [f32; 3],
+    /// Velocity change per unit impulse: forward (1/kg, drag included), leftward (1/kg), and
+    /// yaw rate change per unit angular impulse (1/(kg·m²)).
+    inverse: [f32; 3],
+}
+
+impl Body {
+    /// Applies `impulse` (N·s, body axes) at `arm` (m from the centre of mass).
+    fn push(&mut self, arm: [f32; 2], [px, py]: [f32; 2]) {
+        let [u, v, r] = &mut self.velocity;
+        let [mu, mv, mr] = self.inverse;
+        *u += px * mu;
+        *v += py * mv;
+        *r += (arm[0] * py - arm[1] * px) * mr;
+    }
+
+    /// The velocity change (m/s) along a wheel's `heading` and along its axis (to the left of
+    /// the heading) at `arm`, per unit impulse along each: the inverse effective mass (1/kg),
+    /// a symmetric 2×2 matrix `[k_hh, k_ha, k_aa]`.
+    fn coupling(&self, [hx, hy]: [f32; 2], [x, y]: [f32; 2]) -> [f32; 3] {
+        let [mu, mv, mr] = self.inverse;
+        // Moment arms (m) of a unit impulse along the heading and along the axis.
+        let (lever_h, lever_a) = (x * hy - y * hx, x * hx + y * hy);
+        [
+            hx * hx * mu + hy * hy * mv + lever_h * lever_h * mr,
+            hx * hy * (mv - mu) + lever_h * lever_a * mr,
+            hy * hy * mu + hx * hx * mv + lever_a * lever_a * mr,
+        ]
+    }
+}
+
+/// One wheel in the solve of a step.
+#[derive(Debug, Clone, Copy)]
+struct Row {
+    /// Rolling direction in body axes (unit): `[cos θ, sin θ]`, θ counter-clockwise.
+    heading: [f32; 2],
+    /// Contact point − centre of mass, body axes (m).
+    arm: [f32; 2],
+    /// Tyre radius (m).
+    radius: f32,
+    spin: Spin,
+    /// Spin rate (rad/s, positive = rolling forward) with the impulses so far.
+    omega: f32,
+    /// Brake impulse on a free wheel's spin (N·m·s, positive = forward).
+    brake: f32,
+    /// Load on the tyre (N).
+    load: f32,
+    /// Load × dt (N·s): the normal impulse that the tyre's force per unit load multiplies.
+    normal: f32,
+    /// The tyre's force law per unit load over the step.
+    law: Linearised<f32>,
+    /// Tyre impulse along the heading and the axis (N·s).
+    impulse: [f32; 2],
+}
+
+impl Row {
+    /// Velocity of the contact point (m/s) along the heading and the axis.
+    fn contact(&self, body: &Body) -> [f32; 2] {
+        to_wheel(self.heading, point_velocity(body.velocity, self.arm))
+    }
+
+    /// Applies the last step's tyre force, kept within this step's friction ellipse.
+    fn warm_start(&mut self, body: &mut Body) {
+        let guess = self.law.clamp_to_ellipse(self.impulse, self.normal);
+        self.impulse = [0.0; 2];
+        self.apply(body, guess);
+    }
+
+    /// Solves this wheel's tyre impulse and brake given the body's velocity and the other
+    /// wheels' impulses.
+    fn solve(&mut self, body: &mut Body) {
+        let Spin::Free { inertia, capacity } = self.spin else {
+            let impulse = self.tyre_impulse(body, self.omega, 0.0);
+            self.apply(body, impulse);
+            return;
+        };
+        // The spin the wheel would have without its brake.
+        let unbraked = self.omega - self.brake / inertia;
+        // First as a stopped wheel, held by the brake if the brake can.
+        let held = self.tyre_impulse(body, 0.0, 0.0);
+        let to_stop = self.radius * (held[0] - self.impulse[0]) - inertia * unbraked;
+        self.brake = coulomb_torque(to_stop, capacity);
+        if to_stop.abs() <= capacity {
+            self.apply(body, held);
+            self.omega = 0.0;
+            return;
+        }
+        // Else the brake slips at its capacity, and the tyre turns the wheel too.
+        self.omega = unbraked + self.brake / inertia;
+        let impulse = self.tyre_impulse(body, self.omega, self.radius * self.radius / inertia);
+        self.apply(body, impulse);
+    }
+
+    /// The tyre impulse (N·s) at which the force law holds at the end of the step, kept
+    /// within the friction ellipse, for a wheel spinning at `omega` (rad/s) plus `compliance`
+    /// (1/kg) times the change of its forward impulse (a free spin's inverse inertia seen at
+    /// the contact; 0 for a spin that stays).
+    fn tyre_impulse(&self, body: &Body, omega: f32, compliance: f32) -> [f32; 2] {
+        let [forward, lateral] = self.contact(body);
+        let n = self.normal;
+        let [fx, fy] = self.law.at([forward - omega * self.radius, lateral]);
+        let [p0, p1] = self.impulse;
+        let [r0, r1] = [n * fx - p0, n * fy - p1];
+        // impulse + Δ = n·f(slip + K·Δ), f falling by D per m/s: (1 + n·D·K)·Δ = n·f − impulse.
+        // K is positive semi-definite, so the determinant is at least 1.
+        let [b0, b1] = self.law.damping.map(|d| n * d);
+        let [k_hh, k_ha, k_aa] = body.coupling(self.heading, self.arm);
+        let [a00, a01] = [1.0 + b0 * (k_hh + compliance), b0 * k_ha];
+        let [a10, a11] = [b1 * k_ha, 1.0 + b1 * k_aa];
+        let det = a00 * a11 - a01 * a10;
+        let next = [
+            p0 + (r0 * a11 - a01 * r1) / det,
+            p1 + (a00 * r1 - a10 * r0) / det,
+        ];
+        if next.iter().all(|p| p.is_finite()) {
+            self.law.clamp_to_ellipse(next, n)
+        } else {
+            self.impulse
+        }
+    }
+
+    /// Sets the tyre impulse to `impulse` (N·s), moving the body and a free wheel's spin.
+    fn apply(&mut self, body: &mut Body, impulse: [f32; 2]) {
+        let [d0, d1] = [impulse[0] - self.impulse[0], impulse[1] - self.impulse[1]];
+        let [hx, hy] = self.heading;
+        body.push(self.arm, [hx * d0 - hy * d1, hy * d0 + hx * d1]);
+        if let Spin::Free { inertia, .. } = self.spin {
+            self.omega -= self.radius * d0 / inertia;
+        }
+        self.impulse = impulse;
+    }
+}
+
+/// Velocity (m/s, body axes) of the point at `arm` (m from the centre of mass) of a body
+/// moving at `velocity` (centre of mass m/s, yaw rate rad/s).
+fn point_velocity([u, v, r]: [f32; 3], [x, y]: [f32; 2]) -> [f32; 2] {
+    [u - r * y, v + r * x]
+}
+
+/// `velocity` (body axes) along a wheel's `heading` and its axis to the left.
+fn to_wheel([hx, hy]: [f32; 2], [x, y]: [f32; 2]) -> [f32; 2] {
+    [hx * x + hy * y, hx * y - hy * x]
+}
+
+/// `angle` (rad) in (−π, π].
+fn wrap_angle(angle: f32) -> f32 {
+    use core::f32::consts::{PI, TAU};
+    // `%` is the exact fmod; the corrections are exact too.
+    let r = angle % TAU;
+    if r > PI {
+        r - TAU
+    } else if r <= -PI {
+        r + TAU
+    } else {
+        r
+    }
+}
+
+#[cfg(test)]
+mod tests;
