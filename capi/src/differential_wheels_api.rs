@@ -34,6 +34,14 @@ fn report(warning: Option<RobotWarning>) {
             format_g(speed_unit),
             format_g(max_speed / speed_unit)
         )),
+        RobotWarning::Infinite {
+            function,
+            argument,
+            value,
+        } => message::error(format_args!(
+            "{function}() called with an invalid '{argument}' argument ({})",
+            format_g(value)
+        )),
         RobotWarning::NegativePeriod { .. } => message::error(
             "wb_differential_wheels_enable_encoders() called with negative sampling period.",
         ),

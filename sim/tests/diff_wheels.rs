@@ -117,6 +117,14 @@ fn speed_commands_clamp_and_warn_like_webots() {
         })
     );
     assert!(r.left_speed().is_nan());
+    // ±∞ is refused like NaN (as the driver library's setters refuse it), naming the argument.
+    let warning = r.set_speed(1.0, f64::NEG_INFINITY).unwrap();
+    assert_eq!(
+        warning.to_string(),
+        "wb_differential_wheels_set_speed() called with an invalid 'right' argument (-inf)"
+    );
+    assert!(r.left_speed().is_nan() && r.right_speed().is_nan());
+    assert!(r.set_encoders(f64::INFINITY, 0.0).is_some());
     let warning = r.set_speed(20.0, -30.0).unwrap();
     assert_eq!(
         warning.to_string(),

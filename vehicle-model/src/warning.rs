@@ -157,7 +157,8 @@ impl fmt::Display for Warning {
                 value,
             } => write!(
                 f,
-                "Warning: {function}() called with an invalid '{argument}' argument ({value})"
+                "Warning: {function}() called with an invalid '{argument}' argument ({})",
+                Compact(value)
             ),
             Warning::TooManyGears { gear_number } => {
                 write!(f, "Warning: this car has only {gear_number} gears.")
@@ -190,6 +191,22 @@ impl fmt::Display for Warning {
 }
 
 impl core::error::Error for Warning {}
+
+/// A number as a person reads it in a message: plainly between 1e-4 and 1e16, in exponent
+/// form beyond (so −1e308 is `-1e308`, not 309 digits); `NaN`, `inf`, `-inf` as such.
+struct Compact(f64);
+
+impl fmt::Display for Compact {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let v = self.0;
+        let magnitude = if v < 0.0 { -v } else { v };
+        if v.is_finite() && v != 0.0 && !(1e-4..1e16).contains(&magnitude) {
+            write!(f, "{v:e}")
+        } else {
+            write!(f, "{v}")
+        }
+    }
+}
 
 #[cfg(test)]
 mod tests {
@@ -234,6 +251,20 @@ mod tests {
             "Warning: wbu_car_set_left_steering_angle() called with an invalid 'angle' argument \
              (-inf)"
         );
+        // Huge and tiny values in exponent form, not hundreds of digits.
+        assert_eq!(
+            Warning::InvalidArgument {
+                function: "wbu_car_set_indicator_period",
+                argument: "period",
+                value: -1e308
+            }
+            .to_string(),
+            "Warning: wbu_car_set_indicator_period() called with an invalid 'period' argument \
+             (-1e308)"
+        );
+        assert_eq!(Compact(2.5e-7).to_string(), "2.5e-7");
+        assert_eq!(Compact(-0.25).to_string(), "-0.25");
+        assert_eq!(Compact(0.0).to_string(), "0");
         assert_eq!(
             Warning::TooManyGears { gear_number: 6 }.to_string(),
             "Warning: this car has only 6 gears."

@@ -70,6 +70,16 @@ pub enum RobotWarning {
         /// `speedUnit` (rad/s per unit).
         speed_unit: f64,
     },
+    /// An infinite argument: the call was ignored, as the driver library's setters ignore
+    /// one (Webots checks for NaN only and would pass ±∞ on to the motors).
+    Infinite {
+        /// The Webots function, e.g. `"wb_differential_wheels_set_speed"`.
+        function: &'static str,
+        /// The argument, `"left"` or `"right"`.
+        argument: &'static str,
+        /// The refused value (±∞).
+        value: f64,
+    },
     /// A negative encoder sampling period: the call was ignored.
     NegativePeriod {
         /// The rejected period (ms).
@@ -83,6 +93,14 @@ impl fmt::Display for RobotWarning {
             RobotWarning::InvalidNan { function } => {
                 write!(f, "{function}(): invalid NaN value passed as argument.")
             }
+            RobotWarning::Infinite {
+                function,
+                argument,
+                value,
+            } => write!(
+                f,
+                "{function}() called with an invalid '{argument}' argument ({value})"
+            ),
             RobotWarning::SpeedOverflow {
                 left,
                 right,
@@ -197,10 +215,18 @@ impl DifferentialWheels {
     /// Returns the message Webots would print, if any: a NaN argument ignores the call; a speed
     /// above `maxSpeed/speedUnit` is still applied (and then clamped to `maxSpeed`).
     pub fn set_speed(&mut self, left: f64, right: f64) -> Option<RobotWarning> {
+        const FUNCTION: &str = "wb_differential_wheels_set_speed";
         if left.is_nan() || right.is_nan() {
-            return Some(RobotWarning::InvalidNan {
-                function: "wb_differential_wheels_set_speed",
-            });
+            return Some(RobotWarning::InvalidNan { function: FUNCTION });
+        }
+        for (argument, value) in [("left", left), ("right", right)] {
+            if value.is_infinite() {
+                return Some(RobotWarning::Infinite {
+                    function: FUNCTION,
+                    argument,
+                    value,
+                });
+            }
         }
         self.command = [left, right];
         let p = &self.params;
@@ -277,10 +303,18 @@ impl DifferentialWheels {
     /// Overwrites both encoder accumulators at the next step (before that step's increment).
     /// Webots: `wb_differential_wheels_set_encoders`. NaN ignores the call with a warning.
     pub fn set_encoders(&mut self, left: f64, right: f64) -> Option<RobotWarning> {
+        const FUNCTION: &str = "wb_differential_wheels_set_encoders";
         if left.is_nan() || right.is_nan() {
-            return Some(RobotWarning::InvalidNan {
-                function: "wb_differential_wheels_set_encoders",
-            });
+            return Some(RobotWarning::InvalidNan { function: FUNCTION });
+        }
+        for (argument, value) in [("left", left), ("right", right)] {
+            if value.is_infinite() {
+                return Some(RobotWarning::Infinite {
+                    function: FUNCTION,
+                    argument,
+                    value,
+                });
+            }
         }
         self.pending_encoders = Some([left, right]);
         None
