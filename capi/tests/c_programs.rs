@@ -72,7 +72,7 @@ fn bad_input() {
 
 #[test]
 fn differential_wheels() {
-    run_announcing("differential_wheels", Some(&differential_wheels_world()), 7);
+    run_announcing("differential_wheels", Some(&differential_wheels_world()), 8);
 }
 
 /// The C++ wrapper, linked with the libraries in the other order (`-lcar -ldriver`).

@@ -121,13 +121,17 @@ int main(void) {
   call("wb_differential_wheels_set_speed(-10, 0) (Webots checks only the positive side: no message)", "");
   wb_differential_wheels_set_speed(-10.0, 0.0);
   check_increments("command -10/0 rad/s, left limited to -6.28", -6.28, 0.0);
+  /* Infinite speeds are refused like NaN (as the driver library's setters refuse them; Webots
+     would pass them on): an error naming the argument, the last command stays. */
   call("wb_differential_wheels_set_speed(inf, 0)",
-       "Error: wb_differential_wheels_set_speed(inf,0) overflows maxSpeed/speedUnit: 6.28/1=6.28.");
+       "Error: wb_differential_wheels_set_speed() called with an invalid 'left' argument (inf)");
   wb_differential_wheels_set_speed(INFINITY, 0.0);
-  check_increments("command +inf/0 rad/s, left limited to 6.28", 6.28, 0.0);
-  call("wb_differential_wheels_set_speed(-inf, 0) (no message, as in Webots)", "");
-  wb_differential_wheels_set_speed(-INFINITY, 0.0);
-  check_increments("command -inf/0 rad/s, left limited to -6.28", -6.28, 0.0);
+  check_increments("command +inf/0 refused: still -10/0 rad/s, left limited to -6.28", -6.28, 0.0);
+  call("wb_differential_wheels_set_speed(0, -inf)",
+       "Error: wb_differential_wheels_set_speed() called with an invalid 'right' argument (-inf)");
+  wb_differential_wheels_set_speed(0.0, -INFINITY);
+  check_close("refused command: wb_differential_wheels_get_left_speed() still -10",
+              wb_differential_wheels_get_left_speed(), -10.0, 0.0);
 
   /* Stopped: set_encoders overwrites the counts and nothing moves them. */
   wb_differential_wheels_set_speed(0.0, 0.0);
