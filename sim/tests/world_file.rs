@@ -35,6 +35,25 @@ fn default_world_is_a_bmw_x5_on_flat_ground() {
 }
 
 #[test]
+fn an_empty_spec_is_the_default_world() {
+    // As an empty VEHICLE_WORLD is in the C API, so `vehicle-sim --world ''` is.
+    for spec in ["", "  "] {
+        let w = world_file::load(spec).unwrap();
+        assert_eq!(w.car().unwrap().model, Model::BmwX5);
+        assert_eq!(w.source, world_file::default_world().source);
+    }
+}
+
+#[test]
+fn a_list_element_of_the_wrong_type_is_named() {
+    let e = err("[vehicle]\nmodel = \"BmwX5\"\ngearRatio = [1, \"a\"]\n");
+    assert_eq!(
+        e.to_string(),
+        "w.toml:3:1: 'vehicle.gearRatio' takes a number at element 2, found a string"
+    );
+}
+
+#[test]
 fn a_model_name_is_the_default_world_with_that_car() {
     let w = world_file::load("ToyotaPrius").unwrap();
     let car = w.car().unwrap();

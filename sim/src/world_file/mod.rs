@@ -163,7 +163,7 @@ pub fn with_model(model: Model) -> WorldDescription {
 
 /// Loads a world from `spec`: the path of a world file, or the Webots name of a shipped car
 /// model (e.g. `ToyotaPrius`: the default world with that car). An existing file wins over a
-/// model of the same name.
+/// model of the same name; an empty `spec` is the default world.
 ///
 /// This is what `vehicle-sim --world` and the C API's `VEHICLE_WORLD` accept.
 ///
@@ -172,6 +172,9 @@ pub fn with_model(model: Model) -> WorldDescription {
 /// unknown key (with the closest valid names), wrong type, unknown model, invalid value, or a
 /// `spec` that is neither a file nor a model name.
 pub fn load(spec: &str) -> Result<WorldDescription, WorldFileError> {
+    if spec.trim().is_empty() {
+        return Ok(default_world());
+    }
     let path = Path::new(spec);
     if !path.exists() {
         if let Some(model) = Model::from_name(spec) {

@@ -200,11 +200,22 @@ fn set(
             FieldValue::Number(as_f64(v).ok_or_else(|| wrong(kind.to_string()))?)
         }
         (FieldKind::Numbers { .. }, DeValue::Array(items)) => {
-            numbers = items
-                .iter()
-                .map(|i| as_f64(i.get_ref()))
-                .collect::<Option<Vec<f64>>>()
-                .ok_or_else(|| wrong(kind.to_string()))?;
+            let mut values = Vec::with_capacity(items.len());
+            for (i, item) in items.iter().enumerate() {
+                let Some(v) = as_f64(item.get_ref()) else {
+                    // Name the element that is not a number, not the list's length.
+                    return Err(s.error_at(
+                        key,
+                        key_span.clone(),
+                        WorldFileErrorKind::WrongType {
+                            expected: format!("a number at element {}", i + 1),
+                            found: describe(item.get_ref()),
+                        },
+                    ));
+                };
+                values.push(v);
+            }
+            numbers = values;
             FieldValue::Numbers(&numbers)
         }
         (FieldKind::Text, DeValue::String(text)) => FieldValue::Text(text.as_ref()),
