@@ -24,8 +24,9 @@ pub struct CarTelemetry {
     /// Chassis speed (m/s, signed, positive forward), from the rigid body: not the driver's
     /// wheel-based estimate.
     pub speed: f64,
-    /// The driver library's own speed estimate from the driven wheels (km/h; NaN during its
-    /// first two steps). Webots: `wbu_driver_get_current_speed`.
+    /// The driver library's own speed estimate from the driven wheels (km/h; 0 until the wheel
+    /// speeds are measurable, where Webots returns NaN for two steps). Webots:
+    /// `wbu_driver_get_current_speed`.
     pub estimated_speed_kmh: f64,
     /// Engine speed (rpm) in torque mode, `None` in the other modes (Webots warns there).
     pub rpm: Option<f64>,
