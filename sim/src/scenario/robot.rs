@@ -185,7 +185,16 @@ pub(crate) fn run(
             ];
             rig.finish(Scenario::Spin, metrics)
         }
-        _ => {
+        Scenario::AccelSpeed
+        | Scenario::AccelTorque
+        | Scenario::Brake
+        | Scenario::Circle
+        | Scenario::LaneChange
+        | Scenario::TestTrack => Err(ScenarioError::WrongVehicle {
+            scenario,
+            vehicle: world.vehicle_name(),
+        }),
+        Scenario::Square => {
             let side = SQUARE_SIDE_AXLES * p.axle_length;
             let straight = side / p.wheel_radius;
             let turn = FRAC_PI_2 * p.axle_length / (2.0 * p.wheel_radius);
