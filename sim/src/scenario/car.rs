@@ -14,7 +14,7 @@ use crate::world_file::{CarDescription, WorldDescription};
 use super::{Metric, Scenario, ScenarioError, ScenarioResult};
 
 /// km/h per m/s.
-pub(crate) const KMH: f64 = 3.6;
+pub(crate) use vehicle_model::KMH_PER_MS as KMH;
 
 /// Simulated time between two progress reports (s).
 const PROGRESS_PERIOD: f64 = 0.5;

@@ -4,15 +4,13 @@ use ackermann::{DriveType, PerWheel, Real, Wheel};
 use powertrain::{AutoShift, AutoShiftParams, Gear, GearWarning, PowertrainError};
 
 use super::Driver;
+use crate::KMH_PER_MS;
 use crate::mode::{ControlMode, IndicatorState, WiperMode};
 use crate::warning::Warning;
 
 /// Steering amplitude (rad) by which the wheel must come back from its extreme to cancel the
 /// indicator (Webots: `INDICATOR_AUTO_DISABLING_THRESHOLD`).
 pub const INDICATOR_AUTO_DISABLING_THRESHOLD: f64 = 0.1;
-
-/// km/h per m/s.
-const KMH_PER_MS: f64 = 3.6;
 
 impl<T: Real> Driver<T> {
     /// Steers the front wheels to the Ackermann angles of the central angle `angle` (rad,

@@ -247,7 +247,9 @@ impl<T: Real> CarParams<T> {
     pub fn wheel_motor(&self, wheel: Wheel) -> WheelMotor<T> {
         let r = self.axle_radius(wheel);
         WheelMotor {
-            acceleration: (T::from_f64(1000.0 / 36.0) / self.time_0_to_100 / r).min(T::MAX),
+            // 100 km/h reached in `time0To100` at constant acceleration (Webots: 1000/36).
+            acceleration: (T::from_f64(100.0 / crate::KMH_PER_MS) / self.time_0_to_100 / r)
+                .min(T::MAX),
             max_velocity: (self.max_velocity / r).min(T::MAX),
         }
     }
