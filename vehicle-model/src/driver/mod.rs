@@ -256,18 +256,16 @@ impl<T: Real> Driver<T> {
             PerWheel::splat(T::ZERO)
         };
         let speed = speed_kmh.abs();
-        let eleven_thousand = T::from_f64(11_000.0);
-        let speed_full_scale = T::from_f64(220.0);
         Commands {
             steering: self.wheel_angles,
             drive: self.drive_commands(torques),
             brake_torque,
             lights: self.lights,
             cockpit: Cockpit {
-                steering_wheel: saturate(T::from_f64(10.0) * self.steering_angle),
+                steering_wheel: saturate(T::from_f64(STEERING_WHEEL_RATIO) * self.steering_angle),
                 indicator_lever: self.indicator,
-                rpm_needle: (self.rpm / eleven_thousand).min(T::ONE),
-                speed_needle: (speed / speed_full_scale).min(T::ONE),
+                rpm_needle: (self.rpm / T::from_f64(RPM_NEEDLE_FULL_SCALE)).min(T::ONE),
+                speed_needle: (speed / T::from_f64(SPEED_NEEDLE_FULL_SCALE)).min(T::ONE),
                 wipers: self.wipers.map(|w| w.command()),
             },
             sound: Sounds {
@@ -282,6 +280,14 @@ impl<T: Real> Driver<T> {
         self.hazard_flashers || self.indicator != IndicatorState::Off
     }
 }
+
+/// Steering-wheel angle per wheel steering angle (dimensionless): Webots turns the
+/// `steering_wheel` motor to 10·δ.
+const STEERING_WHEEL_RATIO: f64 = 10.0;
+/// Engine speed at which the rpm needle reaches its full deflection (rpm, spec §3).
+const RPM_NEEDLE_FULL_SCALE: f64 = 11_000.0;
+/// Speed at which the speed needle reaches its full deflection (km/h, spec §2.6).
+const SPEED_NEEDLE_FULL_SCALE: f64 = 220.0;
 
 /// `x` forced into the finite range (NaN → 0, ±∞ → ±`T::MAX`), for outputs that scale a
 /// stored finite input and could overflow.
