@@ -118,6 +118,14 @@ impl TyreSpec {
     }
 }
 
+/// Webots' density of a `Physics {}` node without a mass (kg/m³): a wheel whose model gives no
+/// mass weighs its bounding cylinder of water.
+const DEFAULT_DENSITY: f64 = 1000.0;
+
+/// Height of the chassis collision box over the wider track (dimensionless): the proportions
+/// `vehicle-model` gives a body without inertia data.
+const BODY_HEIGHT_PER_TRACK: f64 = 0.75;
+
 /// Standard gravity (m/s²), for the static wheel loads the tyres are scaled to.
 const STANDARD_GRAVITY: f64 = 9.81;
 
@@ -306,7 +314,11 @@ impl VehicleSpec {
             let p = valid.params();
             let c = layout.frame(w).centre();
             let mass = valid.mass().unwrap_or(
-                1000.0 * core::f64::consts::PI * p.tire_radius * p.tire_radius * p.thickness,
+                DEFAULT_DENSITY
+                    * core::f64::consts::PI
+                    * p.tire_radius
+                    * p.tire_radius
+                    * p.thickness,
             );
             WheelSpec {
                 position: [c.x, c.y, c.z],
@@ -321,7 +333,7 @@ impl VehicleSpec {
         );
         let l = params.wheelbase;
         let track = params.track_front.max(params.track_rear);
-        let height = 0.75 * track;
+        let height = BODY_HEIGHT_PER_TRACK * track;
         let mut spec = VehicleSpec {
             chassis: ChassisSpec {
                 mass: params.body.mass,

@@ -89,7 +89,8 @@ impl<T: Real> Driver<T> {
             PerWheel::splat(T::ZERO)
         };
 
-        // 7. Brakes are part of the assembled commands (a friction torque while intensity > 0).
+        // 7. (Webots sets the brakes' damping here; the brake torque is part of the commands
+        // assembled below.)
 
         // 8. Engine sound.
         let speed_kmh = self.speed_kmh(&speeds);
