@@ -2,7 +2,7 @@
 
 use core::fmt;
 
-use crate::gearbox::MAX_GEAR_RATIOS;
+use crate::MAX_GEAR_RATIOS;
 
 /// A powertrain parameter, named after its Webots `Car` PROTO field where one exists.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

@@ -5,9 +5,7 @@ use core::fmt;
 
 use crate::error::PowertrainError;
 
-/// Most ratios a [`Gearbox`] holds, reverse included (the Webots Truck, the largest shipped
-/// table, has 15). Fixed so that a gearbox needs no heap: 16 ratios of `f64` take 128 bytes.
-pub const MAX_GEAR_RATIOS: usize = 16;
+use crate::MAX_GEAR_RATIOS;
 
 /// A gear selection: −1 reverse, 0 neutral, 1 … [`MAX_GEAR_RATIOS`] − 1 forward (Webots: the
 /// `int` of `wbu_driver_set_gear` / `wbu_driver_get_gear`).

@@ -77,7 +77,12 @@ pub use auto_shift::{AutoShift, AutoShiftParams};
 pub use brake::{Brake, DEFAULT_BRAKE_COEFFICIENT, coulomb_torque};
 pub use engine::{Engine, EngineParams, EngineType};
 pub use error::{Field, PowertrainError};
-pub use gearbox::{Gear, GearSelection, GearWarning, Gearbox, MAX_GEAR_RATIOS};
+pub use gearbox::{Gear, GearSelection, GearWarning, Gearbox};
+
+/// Most ratios a [`Gearbox`] holds, reverse included (the Webots Truck, the largest shipped
+/// table, has 15). Fixed so that a gearbox needs no heap: 16 ratios of `f64` take 128 bytes.
+/// (Here, not in `gearbox`, because the errors name it too.)
+pub const MAX_GEAR_RATIOS: usize = 16;
 pub use limited_slip::LimitedSlip;
 pub use powertrain::{
     Powertrain, VirtualGear, WHEEL_ACCELERATION_LIMIT, acceleration_limit_factor,
