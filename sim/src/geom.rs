@@ -88,6 +88,18 @@ pub(crate) fn groups(g: Group) -> InteractionGroups {
     InteractionGroups::new(g, filter, InteractionTestMode::And)
 }
 
+/// The body `handle` of `world`, if it exists and its pose and velocities are finite: what a
+/// step reads back, so that a diverged body is reported rather than measured.
+pub(crate) fn finite_body(
+    world: &rapier3d::prelude::PhysicsWorld,
+    handle: rapier3d::prelude::RigidBodyHandle,
+) -> Option<&rapier3d::prelude::RigidBody> {
+    world
+        .bodies
+        .get(handle)
+        .filter(|b| b.position().is_finite() && b.linvel().is_finite() && b.angvel().is_finite())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -133,11 +133,7 @@ pub(crate) fn measure(
     heading: f64,
     dt: f64,
 ) -> Result<Measurement, BodyPart> {
-    let body = world
-        .bodies
-        .get(parts.body)
-        .filter(|b| finite_body(b))
-        .ok_or(BodyPart::RobotBody)?;
+    let body = geom::finite_body(world, parts.body).ok_or(BodyPart::RobotBody)?;
     let q_body = *body.rotation();
     let axle = q_body * AXLE;
     let mut deltas = [0.0; 2];
@@ -148,11 +144,7 @@ pub(crate) fn measure(
         } else {
             BodyPart::RightWheel
         };
-        let wheel = world
-            .bodies
-            .get(parts.wheels[i])
-            .filter(|b| finite_body(b))
-            .ok_or(part)?;
+        let wheel = geom::finite_body(world, parts.wheels[i]).ok_or(part)?;
         let omega = f64::from((wheel.angvel() - body.angvel()).dot(axle));
         let wrapped = geom::angle_about_y(q_body.inverse() * *wheel.rotation());
         deltas[i] = geom::unwrap_delta(parts.wrapped[i], wrapped, omega * dt);
@@ -171,9 +163,4 @@ pub(crate) fn measure(
             heading,
         },
     })
-}
-
-/// True if the body's pose and velocities are finite.
-pub(crate) fn finite_body(b: &rapier3d::prelude::RigidBody) -> bool {
-    b.position().is_finite() && b.linvel().is_finite() && b.angvel().is_finite()
 }

@@ -522,11 +522,8 @@ impl Vehicle {
             part,
             time_ms,
         };
-        let chassis = world
-            .bodies
-            .get(self.parts.chassis)
-            .filter(|b| finite(b))
-            .ok_or(fail(BodyPart::Chassis))?;
+        let chassis =
+            geom::finite_body(world, self.parts.chassis).ok_or(fail(BodyPart::Chassis))?;
         let mut s = self.state;
         for w in Wheel::ALL {
             s.wheel_angles[w] += s.wheel_speeds[w] * dt;
@@ -583,9 +580,4 @@ fn contact_velocity(contact: &Contact, body: &Body, omega: f32) -> ContactVeloci
         forward: f64::from(contact.forward.dot(v)),
         slip: contact.slip_velocity(body, omega).map(f64::from),
     }
-}
-
-/// True if the body's pose and velocities are finite.
-fn finite(b: &RigidBody) -> bool {
-    b.position().is_finite() && b.linvel().is_finite() && b.angvel().is_finite()
 }
