@@ -28,7 +28,7 @@
 
 mod common;
 
-use sim::{Simulation, VehiclePlacement, World, WorldConfig};
+use sim::Simulation;
 use vehicle_model::{AutoShiftParams, Model, TyreModel, Wheel, WheelDrive};
 
 /// Torque-mode launches that leave even the 0.05 rad bound (see the module docs), with the
@@ -50,20 +50,7 @@ enum Drive {
 /// run went through a yaw-unstable phase: a launch torque above the driven tyres' grip, or
 /// rear wheels locked before the front ones).
 fn drive(model: Model, mu: f64, drive: Drive) -> (f64, f64, f64, bool) {
-    let world = World::new(WorldConfig {
-        ground_friction: mu,
-        ..WorldConfig::default()
-    })
-    .unwrap();
-    let mut sim = Simulation::new(world);
-    let (id, _) = sim
-        .add_car_on(
-            model.params(),
-            &common::model_tyre(model),
-            VehiclePlacement::default(),
-        )
-        .unwrap();
-    common::run(&mut sim, 0.5);
+    let (mut sim, id) = common::settled(model, mu);
     let mut spins = false;
     let t0100 = sim.driver(id).unwrap().params().time_0_to_100;
     match drive {

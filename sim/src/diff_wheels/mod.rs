@@ -87,6 +87,22 @@ pub enum RobotWarning {
     },
 }
 
+/// The warning for a `(left, right)` pair of `function` that is not finite: Webots' NaN error,
+/// or the refusal of ±∞ naming the argument; `None` when both are finite.
+fn refuse_non_finite(function: &'static str, left: f64, right: f64) -> Option<RobotWarning> {
+    if left.is_nan() || right.is_nan() {
+        return Some(RobotWarning::InvalidNan { function });
+    }
+    [("left", left), ("right", right)]
+        .into_iter()
+        .find(|(_, v)| v.is_infinite())
+        .map(|(argument, value)| RobotWarning::Infinite {
+            function,
+            argument,
+            value,
+        })
+}
+
 impl fmt::Display for RobotWarning {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -215,18 +231,8 @@ impl DifferentialWheels {
     /// Returns the message Webots would print, if any: a NaN argument ignores the call; a speed
     /// above `maxSpeed/speedUnit` is still applied (and then clamped to `maxSpeed`).
     pub fn set_speed(&mut self, left: f64, right: f64) -> Option<RobotWarning> {
-        const FUNCTION: &str = "wb_differential_wheels_set_speed";
-        if left.is_nan() || right.is_nan() {
-            return Some(RobotWarning::InvalidNan { function: FUNCTION });
-        }
-        for (argument, value) in [("left", left), ("right", right)] {
-            if value.is_infinite() {
-                return Some(RobotWarning::Infinite {
-                    function: FUNCTION,
-                    argument,
-                    value,
-                });
-            }
+        if let Some(w) = refuse_non_finite("wb_differential_wheels_set_speed", left, right) {
+            return Some(w);
         }
         self.command = [left, right];
         let p = &self.params;
@@ -303,18 +309,8 @@ impl DifferentialWheels {
     /// Overwrites both encoder accumulators at the next step (before that step's increment).
     /// Webots: `wb_differential_wheels_set_encoders`. NaN ignores the call with a warning.
     pub fn set_encoders(&mut self, left: f64, right: f64) -> Option<RobotWarning> {
-        const FUNCTION: &str = "wb_differential_wheels_set_encoders";
-        if left.is_nan() || right.is_nan() {
-            return Some(RobotWarning::InvalidNan { function: FUNCTION });
-        }
-        for (argument, value) in [("left", left), ("right", right)] {
-            if value.is_infinite() {
-                return Some(RobotWarning::Infinite {
-                    function: FUNCTION,
-                    argument,
-                    value,
-                });
-            }
+        if let Some(w) = refuse_non_finite("wb_differential_wheels_set_encoders", left, right) {
+            return Some(w);
         }
         self.pending_encoders = Some([left, right]);
         None
