@@ -1,4 +1,4 @@
-//! The Magic Formula curve shape, normalised so that its peak sits at a normalised slip of 1.
+//! The Magic Formula curve shape, in a variable whose slope at zero is 1 for every shape.
 //!
 //! Pacejka's pure-slip formula is `y(x) = D·sin(C·atan(B·x − E·(B·x − atan(B·x))))`. Written in
 //! `t = B·C·x` (the force the initial slope would give, over the peak `D`), its shape depends

@@ -270,8 +270,9 @@ impl<T: Real> MagicFormula<T> {
     /// (`slip = [κ, tan α]`), under `load` (N) on a road of friction `road`.
     ///
     /// In pure slip each component is its Magic Formula curve; combined, the two share one
-    /// normalised slip `s = ‖(κ/κ_p, tan α/α_p)‖` (κ_p, α_p the peak slips), so
-    /// `(F_x/μ_x F_z)² + (F_y/μ_y F_z)² ≤ 1`. Non-finite input gives no force.
+    /// curve variable `t = ‖(K_x·κ, K_y·tan α)/μ‖` (per unit load), so each keeps its own
+    /// stiffness below the limit and `(F_x/μ_x F_z)² + (F_y/μ_y F_z)² ≤ 1`. Non-finite input
+    /// gives no force.
     pub fn force(&self, slip: [T; 2], load: T, road: T) -> [T; 2] {
         if !(slip[0].is_finite() && slip[1].is_finite() && load.is_finite()) {
             return [T::ZERO; 2];
