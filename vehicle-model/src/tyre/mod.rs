@@ -246,7 +246,9 @@ impl<T: Real> MagicFormula<T> {
     /// Both axes share one curve variable `t = ‖(K_x·κ, K_y·tan α)/μ‖` (per unit load) and one
     /// shape, blended between the longitudinal and the lateral one by the direction; each curve
     /// has slope 1 at zero, so below the limit each axis keeps its own stiffness whatever the
-    /// other's slip, and `(F_x/μ_x)² + (F_y/μ_y)² = g(t)² ≤ F_z²` at any slip.
+    /// other's slip, and `(F_x/μ_x)² + (F_y/μ_y)² = g(t)² ≤ 1` at any slip. Below the peak the
+    /// force points along `(K_x·κ, K_y·tan α)`; beyond it the patch slides and the force turns
+    /// toward `(κ, tan α)`, against the sliding velocity, which it reaches at twice the peak.
     fn force_and_secant(&self, slip: [T; 2], c: &AtLoad<T>) -> ([T; 2], [T; 2]) {
         let t = [0, 1].map(|i| c.scale[i] * slip[i]);
         // The curve variables stay far below √(f32::MAX): no overflow to guard as `hypot` does.
@@ -261,8 +263,32 @@ impl<T: Real> MagicFormula<T> {
         let shape = self.shapes[0].blend(&self.shapes[1], n[1] * n[1]);
         let value = shape.at(norm);
         let secant = value * inv_norm;
-        let force = [0, 1].map(|i| c.mu[i] * value * n[i]);
-        let stiffness = [0, 1].map(|i| c.mu[i] * c.scale[i] * secant);
+        let adhesion = [0, 1].map(|i| c.mu[i] * value * n[i]);
+        // Past the peak the patch slides: its force turns from the stiffness-weighted direction
+        // toward the one opposing the sliding velocity, (κ, tan α), reached at twice the peak.
+        let t_peak = self.t_peak[0] + (self.t_peak[1] - self.t_peak[0]) * n[1] * n[1];
+        let sliding = ((norm - t_peak) / t_peak).clamp(T::ZERO, T::ONE);
+        if sliding <= T::ZERO || sliding.is_nan() {
+            let stiffness = [0, 1].map(|i| c.mu[i] * c.scale[i] * secant);
+            return (adhesion, stiffness);
+        }
+        let unit = |v: [T; 2]| {
+            let l = (v[0] * v[0] + v[1] * v[1]).sqrt();
+            v.map(|x| x / l)
+        };
+        let d_k = unit(adhesion);
+        let d_s = unit(slip);
+        let d = unit([0, 1].map(|i| d_k[i] + (d_s[i] - d_k[i]) * sliding));
+        // The force's size along `d` on the friction ellipse scaled by the curve's value.
+        let reach = value / ((d[0] / c.mu[0]).powi(2) + (d[1] / c.mu[1]).powi(2)).sqrt();
+        let force = d.map(|x| x * reach);
+        let stiffness = [0, 1].map(|i| {
+            if slip[i].abs() > T::from_f64(1e-9) {
+                force[i] / slip[i]
+            } else {
+                c.mu[i] * c.scale[i] * secant
+            }
+        });
         (force, stiffness)
     }
 

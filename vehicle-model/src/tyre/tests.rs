@@ -108,11 +108,15 @@ fn combined_slip_stays_in_the_friction_ellipse() {
     let side = t.force([0.0, 0.1_f64.tan()], FZ0, 1.0)[1];
     let [fx, fy] = t.force([-1.0, 0.1_f64.tan()], FZ0, 1.0);
     assert!(fy.abs() < 0.15 * side, "{fy} vs {side}");
-    // Its force points along (K_x·κ, K_y·tan α): atan(18·tan 0.1/25) = 0.0722 rad from straight
-    // back, 1.6° off the sliding velocity (1, −tan α).
+    // Sliding (far past the peak), its force points straight against the sliding velocity
+    // (1, −tan α): 0.1 rad from straight back.
+    let angle = fy.atan2(-fx);
+    assert!((angle - 0.1).abs() < 1e-12, "{angle}");
+    // Below the peak it points along (K_x·κ, K_y·tan α), the stiffnesses' direction.
+    let [fx, fy] = t.force([-0.02, 0.01], FZ0, 1.0);
     let angle = fy.atan2(-fx);
     assert!(
-        (angle - (18.0 * 0.1_f64.tan() / 25.0).atan()).abs() < 1e-9,
+        (angle - (18.0 * 0.01 / (25.0 * 0.02)).atan()).abs() < 1e-9,
         "{angle}"
     );
 }
