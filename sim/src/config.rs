@@ -170,6 +170,13 @@ impl WorldConfig {
         for g in self.gravity {
             ParamError::finite("gravity", g)?;
         }
+        let [gx, gy, gz] = self.gravity;
+        ParamError::check(
+            "gravity",
+            (gx * gx + gy * gy + gz * gz).sqrt(),
+            "at most 100 m/s² and pointing down (z ≤ 0)",
+            |g| g <= 100.0 && gz <= 0.0,
+        )?;
         ParamError::check(
             "basicTimeStep",
             f64::from(self.basic_time_step_ms),

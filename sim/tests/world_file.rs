@@ -35,6 +35,28 @@ fn default_world_is_a_bmw_x5_on_flat_ground() {
 }
 
 #[test]
+fn gravity_must_point_down_and_stay_below_100() {
+    for g in ["-9.81", "1e300"] {
+        let e = err(&format!("gravity = {g}\n[vehicle]\nmodel = \"BmwX5\"\n"));
+        assert_eq!(
+            e.to_string(),
+            format!(
+                "w.toml:1:1: invalid 'gravity': {} m/s²: must be from 0 to 100 (the magnitude \
+                 of a gravity pointing down)",
+                g.parse::<f64>().unwrap()
+            )
+        );
+    }
+    // Built in Rust: the vector's size and direction.
+    let up = sim::WorldConfig {
+        gravity: [0.0, 0.0, 9.81],
+        ..sim::WorldConfig::default()
+    };
+    assert_eq!(up.validate().unwrap_err().field, "gravity");
+    assert!(sim::World::new(up).is_err());
+}
+
+#[test]
 fn an_empty_spec_is_the_default_world() {
     // As an empty VEHICLE_WORLD is in the C API, so `vehicle-sim --world ''` is.
     for spec in ["", "  "] {

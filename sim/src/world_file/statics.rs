@@ -6,6 +6,10 @@ use super::error::{WorldFileError, WorldFileErrorKind};
 use super::read::Section;
 
 /// Keys of `[ground]`.
+/// Largest gravity a world may have (m/s²): ten times the Earth's, beyond which no car model
+/// of this crate is meaningful.
+const MAX_GRAVITY: f64 = 100.0;
+
 pub(crate) const GROUND_KEYS: [&str; 1] = ["friction"];
 /// Keys of each `[[box]]`.
 pub(crate) const BOX_KEYS: [&str; 4] = ["translation", "size", "rotation", "friction"];
@@ -28,10 +32,14 @@ pub(crate) fn read_world(root: &Section<'_, '_>) -> Result<WorldConfig, WorldFil
         })?;
     }
     if let Some(g) = root.number("gravity")? {
-        if !g.is_finite() {
+        // Webots' `WorldInfo.gravity`: the magnitude of a gravity pointing down.
+        if !(g.is_finite() && (0.0..=MAX_GRAVITY).contains(&g)) {
             return Err(root.error(
                 "gravity",
-                WorldFileErrorKind::InvalidValue(format!("{g} m/s²: must be finite")),
+                WorldFileErrorKind::InvalidValue(format!(
+                    "{g} m/s²: must be from 0 to {MAX_GRAVITY} (the magnitude of a gravity \
+                     pointing down)"
+                )),
             ));
         }
         config.gravity = [0.0, 0.0, -g];
