@@ -7,8 +7,9 @@
 //!   ([`SlipCurve`]) whose peak and stiffness depend on the load; the two combine through one
 //!   curve variable (the force the slip stiffnesses alone would give, over the peak), so each
 //!   axis keeps its stiffness below the limit, the force stays within a friction ellipse, and a
-//!   locked or spinning wheel loses its side grip; past the peak the force falls toward a sliding value. The slip
-//!   is *transient*: it builds up over a relaxation length of rolling ([`TransientSlip`]),
+//!   locked or spinning wheel loses its side grip; past the peak the force falls toward a
+//!   sliding value and turns against the sliding velocity. The slip is *transient*: it builds
+//!   up over a relaxation length of rolling ([`TransientSlip`]),
 //!   which gives the tyre's lag and, at walking pace and standstill, turns the tyre into a
 //!   damped spring that holds the contact patch (no creep on a slope, no jitter);
 //! * [`WebotsContact`]: what Webots' ODE contact does (`ContactProperties`): no slip up to
@@ -327,7 +328,8 @@ impl<T: Real> MagicFormula<T> {
             .finite_or(T::ZERO)
     }
 
-    /// The transient slip after a step of `dt` (s) from `slip` at the velocities `v` (m/s);
+    /// The transient slip after a step of `dt` (s, a non-positive one counting as 0) from
+    /// `slip` at the velocities `v` (m/s);
     /// each component is `(σ·x − dt·v_s)/(σ + dt·|v_x|)` (implicit Euler of
     /// `σ·dx/dt = −v_s − |v_x|·x`), then at most as large as the larger of the kinematic slip
     /// (measured against at least [`LOW_SPEED`]) and the peak slip: a sliding patch cannot
@@ -343,6 +345,7 @@ impl<T: Real> MagicFormula<T> {
         c: &AtLoad<T>,
         dt: T,
     ) -> ([T; 2], [T; 2]) {
+        let dt = if dt > T::ZERO { dt } else { T::ZERO };
         let speed = v.forward.abs();
         let reference = speed.max(T::from_f64(LOW_SPEED));
         let curves = self.curves();
@@ -353,13 +356,12 @@ impl<T: Real> MagicFormula<T> {
             let sigma = curves[i].relaxation_length;
             let denominator = sigma + dt * speed;
             let x = (sigma * slip[i] - dt * v.slip[i]) / denominator;
-            let cap = (v.slip[i].abs() / reference).max(peaks[i]);
-            let peak = peaks[i];
             let kinematic = v.slip[i].abs() / reference;
+            let cap = kinematic.max(peaks[i]);
             if x.abs() <= cap {
                 next[i] = x;
                 rate[i] = dt / denominator;
-            } else if kinematic > peak {
+            } else if kinematic > peaks[i] {
                 // Sliding: the slip is the kinematic one, −v_s/reference, which vanishes
                 // with the slip velocity.
                 next[i] = cap * x.sign();
@@ -397,7 +399,6 @@ impl<T: Real> MagicFormula<T> {
         dt: T,
     ) -> Linearised<T> {
         let c = self.at_load(load, road);
-        let dt = if dt > T::ZERO { dt } else { T::ZERO };
         let (predicted, rate) = self.advance(slip.get(), v, &c, dt);
         let (force, slope) = self.force_and_secant(predicted, &c);
         let fade = (T::ONE - v.forward.abs() / T::from_f64(LOW_SPEED)).max(T::ZERO);
@@ -427,7 +428,6 @@ impl<T: Real> MagicFormula<T> {
         dt: T,
     ) {
         let c = self.at_load(load, road);
-        let dt = if dt > T::ZERO { dt } else { T::ZERO };
         let ([ratio, angle_tan], _) = self.advance(slip.get(), v, &c, dt);
         *slip = TransientSlip { ratio, angle_tan };
     }
