@@ -6,6 +6,8 @@
 
 mod common;
 
+use sim::TyreChoice;
+
 use sim::Simulation;
 use vehicle_model::Model;
 
@@ -56,7 +58,7 @@ fn circle_fit_recovers_a_known_circle() {
 
 #[test]
 fn bmw_x5_circle_at_10_kmh_has_the_ackermann_radius() {
-    for tyre in [common::model_tyre(Model::BmwX5), common::webots_tyre()] {
+    for tyre in [TyreChoice::of_model(Model::BmwX5), common::webots_tyre()] {
         let (mut sim, id) = common::settled_on(Model::BmwX5, 1.0, &tyre);
         let d = sim.driver_mut(id).unwrap();
         d.set_steering_angle(0.2);
@@ -80,11 +82,11 @@ fn bmw_x5_circle_at_10_kmh_has_the_ackermann_radius() {
 
 /// Speed mode up to 100 km/h on grippy ground, on the model's slip-based tyres.
 fn at_100_kmh(model: Model) -> (Simulation, sim::VehicleId) {
-    at_100_kmh_on(model, &common::model_tyre(model))
+    at_100_kmh_on(model, &TyreChoice::of_model(model))
 }
 
 /// Speed mode up to 100 km/h on grippy ground, on `tyre`.
-fn at_100_kmh_on(model: Model, tyre: &sim::TyreChoice) -> (Simulation, sim::VehicleId) {
+fn at_100_kmh_on(model: Model, tyre: &TyreChoice) -> (Simulation, sim::VehicleId) {
     let (mut sim, id) = common::settled_on(model, common::GRIPPY, tyre);
     sim.driver_mut(id).unwrap().set_cruising_speed(110.0);
     let limit = 1.5 * sim.driver(id).unwrap().params().time_0_to_100 + 2.0;
@@ -97,7 +99,7 @@ fn at_100_kmh_on(model: Model, tyre: &sim::TyreChoice) -> (Simulation, sim::Vehi
 
 #[test]
 fn bmw_x5_brakes_from_100_kmh_to_rest_and_stays_there() {
-    for tyre in [common::model_tyre(Model::BmwX5), common::webots_tyre()] {
+    for tyre in [TyreChoice::of_model(Model::BmwX5), common::webots_tyre()] {
         let (mut sim, id) = at_100_kmh_on(Model::BmwX5, &tyre);
         let start = sim.telemetry(id).unwrap().state.position;
         let d = sim.driver_mut(id).unwrap();
@@ -125,7 +127,7 @@ fn bmw_x5_brakes_from_100_kmh_to_rest_and_stays_there() {
 
 #[test]
 fn torque_mode_in_first_gear_settles_where_the_engine_reaches_max_rpm() {
-    for tyre in [common::model_tyre(Model::BmwX5), common::webots_tyre()] {
+    for tyre in [TyreChoice::of_model(Model::BmwX5), common::webots_tyre()] {
         let (mut sim, id) = common::settled_on(Model::BmwX5, common::GRIPPY, &tyre);
         let d = sim.driver_mut(id).unwrap();
         d.set_gear(1);

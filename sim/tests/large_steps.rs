@@ -6,6 +6,8 @@
 
 mod common;
 
+use sim::TyreChoice;
+
 use sim::{Simulation, VehiclePlacement, World, WorldConfig};
 use vehicle_model::Model;
 
@@ -21,7 +23,7 @@ fn settled(model: Model, dt_ms: u32) -> (Simulation, sim::VehicleId, f64) {
     let (id, _) = sim
         .add_car_on(
             model.params(),
-            &common::model_tyre(model),
+            &TyreChoice::of_model(model),
             VehiclePlacement::default(),
         )
         .unwrap();

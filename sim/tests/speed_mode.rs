@@ -5,6 +5,8 @@
 
 mod common;
 
+use sim::TyreChoice;
+
 use vehicle_model::Model;
 
 /// The slip ratio (dimensionless) at which `model`'s driven tyres carry the force that
@@ -85,7 +87,7 @@ fn check(model: Model, webots: bool) {
     let tyre = if webots {
         common::webots_tyre()
     } else {
-        common::model_tyre(model)
+        TyreChoice::of_model(model)
     };
     let (mut sim, id) = common::settled_on(model, common::GRIPPY, &tyre);
     let params = sim.driver(id).unwrap().params().clone();

@@ -5,6 +5,8 @@
 
 mod common;
 
+use sim::TyreChoice;
+
 use sim::{Simulation, VehicleId, VehiclePlacement, VehicleSpec, World, WorldConfig};
 use vehicle_model::{AutoShiftParams, CarParams, Model, TyreModel, Wheel};
 
@@ -13,13 +15,13 @@ const G: f64 = 9.81;
 /// A simulation of `params` on passenger-car tyres on flat ground of friction `mu` with a
 /// `dt_ms` step, settled 1 s.
 fn car(params: CarParams<f64>, mu: f64, dt_ms: u32) -> (Simulation, VehicleId) {
-    car_on(params, &common::model_tyre(Model::Car), mu, dt_ms)
+    car_on(params, &TyreChoice::of_model(Model::Car), mu, dt_ms)
 }
 
 /// As [`car`], on `tyre`.
 fn car_on(
     params: CarParams<f64>,
-    tyre: &sim::TyreChoice,
+    tyre: &TyreChoice,
     mu: f64,
     dt_ms: u32,
 ) -> (Simulation, VehicleId) {
@@ -394,7 +396,7 @@ fn stopping_distance_does_not_depend_on_the_time_step() {
 /// The largest body slip angle (rad) of `model` on its tyres over 5 s after a step steer of
 /// `delta` (rad) at 20 m/s.
 fn step_steer_body_slip(model: Model, delta: f64) -> f64 {
-    let (mut sim, id) = car_on(model.params(), &common::model_tyre(model), 1.0, 10);
+    let (mut sim, id) = car_on(model.params(), &TyreChoice::of_model(model), 1.0, 10);
     sim.driver_mut(id).unwrap().set_cruising_speed(72.0);
     common::run(&mut sim, 15.0);
     sim.driver_mut(id).unwrap().set_steering_angle(delta);
@@ -451,7 +453,7 @@ fn braking_within_the_grip_follows_the_brake_torque() {
     // rolling resistance and the wheels' viscous damping c·ω/r, over the mass plus the wheels'
     // spin inertia I/r²: a = (A + B·v)/M, and the car stops in
     // d = v₀/B' − (A'/B'²)·ln(1 + B'·v₀/A') with A' = A/M, B' = B/M.
-    for tyre in [common::model_tyre(Model::BmwX5), common::webots_tyre()] {
+    for tyre in [TyreChoice::of_model(Model::BmwX5), common::webots_tyre()] {
         let (mut sim, id) = car_on(Model::BmwX5.params(), &tyre, common::GRIPPY, 10);
         sim.driver_mut(id).unwrap().set_cruising_speed(100.0);
         common::run_until(&mut sim, 20.0, |s| {

@@ -11,6 +11,8 @@
 
 mod common;
 
+use sim::TyreChoice;
+
 use ackermann::Wheel;
 use sim::{Simulation, VehicleId, VehiclePlacement, World, WorldConfig};
 use vehicle_model::Model;
@@ -57,7 +59,7 @@ const REAR: [Wheel; 2] = [Wheel::RearRight, Wheel::RearLeft];
 /// with one friction sweep gave 65 %).
 #[test]
 fn bmw_x5_free_rear_wheels_roll_smoothly_in_a_turn() {
-    for tyre in [common::model_tyre(Model::BmwX5), common::webots_tyre()] {
+    for tyre in [TyreChoice::of_model(Model::BmwX5), common::webots_tyre()] {
         let (mut sim, id) = common::settled_on(Model::BmwX5, 1.0, &tyre);
         let d = sim.driver_mut(id).unwrap();
         d.set_cruising_speed(20.0);
@@ -73,7 +75,7 @@ fn bmw_x5_free_rear_wheels_roll_smoothly_in_a_turn() {
 /// 14.85 rad/s within 0.5 % at every step.
 #[test]
 fn bmw_x5_free_wheels_roll_smoothly_at_45_degrees() {
-    for tyre in [common::model_tyre(Model::BmwX5), common::webots_tyre()] {
+    for tyre in [TyreChoice::of_model(Model::BmwX5), common::webots_tyre()] {
         let mut sim = Simulation::new(World::new(WorldConfig::default()).unwrap());
         let placement = VehiclePlacement {
             yaw: std::f64::consts::FRAC_PI_4,
@@ -99,7 +101,7 @@ fn bmw_x5_free_wheels_roll_smoothly_at_45_degrees() {
 #[test]
 fn tesla_model_3_wheels_roll_smoothly_when_coasting() {
     for tyre in [
-        common::model_tyre(Model::TeslaModel3),
+        TyreChoice::of_model(Model::TeslaModel3),
         common::webots_tyre(),
     ] {
         let (mut sim, id) = common::settled_on(Model::TeslaModel3, 1.0, &tyre);

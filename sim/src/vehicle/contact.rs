@@ -31,6 +31,7 @@
 //! `maxTorque`), so the tyre force acts on the chassis alone.
 
 use rapier3d::prelude::{Mat3, Vector};
+use vehicle_model::Linearised;
 use vehicle_model::actuator::coulomb_torque;
 
 /// Most block Gauss–Seidel sweeps per step. With warm starting, 8 sweeps leave residual slip
@@ -138,18 +139,10 @@ impl Contact {
 /// The tyre's force law for one step.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum Grip {
-    /// Slip-based: per unit load (the suspension impulse), `force + damping·(v0 − v)` along
-    /// `[forward, lateral]` at end-of-step slip velocity `v`, within the ellipse `friction`.
-    Slip {
-        /// Force per unit load at `v0` (dimensionless).
-        force: [f32; 2],
-        /// Fall of the force per unit load per m/s (s/m, ≥ 0).
-        damping: [f32; 2],
-        /// Slip velocity the law was linearised at (m/s).
-        v0: [f32; 2],
-        /// Friction-ellipse semi-axes per unit load (dimensionless, ≥ 0).
-        friction: [f32; 2],
-    },
+    /// Slip-based: per unit load (the suspension impulse), the tyre's law linearised over the
+    /// step along `[forward, lateral]` at the end-of-step slip velocity, within its friction
+    /// ellipse.
+    Slip(Linearised<f32>),
     /// Webots' contact: slip velocity `−compliance·P` (0: none) while each axis' impulse is
     /// within `friction·N`.
     Coulomb {
@@ -165,21 +158,7 @@ impl Grip {
     fn clamp(&self, x: f32, y: f32, normal: f32) -> [f32; 2] {
         let normal = normal.max(0.0);
         match *self {
-            Grip::Slip { friction, .. } => {
-                let [ax, ay] = friction.map(|mu| mu * normal);
-                if !(ax > 0.0 && ay > 0.0) {
-                    return [0.0; 2];
-                }
-                // Forces over their limits stay far below √(f32::MAX): no `hypot` needed.
-                let (u, v) = (x / ax, y / ay);
-                let r2 = u * u + v * v;
-                if r2 > 1.0 {
-                    let inv = r2.sqrt().recip();
-                    [x * inv, y * inv]
-                } else {
-                    [x, y]
-                }
-            }
+            Grip::Slip(law) => law.clamp_to_ellipse([x, y], normal),
             Grip::Coulomb { friction, .. } => {
                 let limit = (friction * normal).max(0.0);
                 [x.clamp(-limit, limit), y.clamp(-limit, limit)]
@@ -193,11 +172,12 @@ impl Grip {
     fn row(&self, i: usize, normal: f32, current: f32) -> (f32, f32, f32) {
         // Law: P = a − b·v (impulse against end-of-step slip velocity).
         let (a, b) = match *self {
-            Grip::Slip {
-                force, damping, v0, ..
-            } => {
+            Grip::Slip(law) => {
                 let n = normal.max(0.0);
-                (n * (force[i] + damping[i] * v0[i]), n * damping[i])
+                (
+                    n * (law.force[i] + law.damping[i] * law.slip_velocity[i]),
+                    n * law.damping[i],
+                )
             }
             Grip::Coulomb { compliance, .. } => {
                 if compliance[i] > 0.0 {
@@ -248,8 +228,6 @@ pub(crate) struct Impulses {
 /// The per-step constants of one axle (wheels `2·a` and `2·a + 1`).
 #[derive(Debug, Clone, Copy)]
 struct Axle {
-    /// Which of the two wheels touch the ground.
-    on_ground: [bool; 2],
     /// Suspension rows' inverse effective masses (1/kg), 2×2.
     k_normal: [[f32; 2]; 2],
     /// `dt·k·x` (N·s) per wheel: the spring's impulse at the current compression.
@@ -266,7 +244,6 @@ impl Axle {
     fn new(body: &Body, wheels: &[WheelRow], dt: f32) -> Axle {
         let contacts = [wheels[0].contact, wheels[1].contact];
         let mut axle = Axle {
-            on_ground: contacts.map(|c| c.is_some()),
             k_normal: [[0.0; 2]; 2],
             spring_impulse: [0.0; 2],
             softness: [0.0; 2],
@@ -438,23 +415,19 @@ fn tyre_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle, sweep: usize)
     }
     let mut m = [[0.0_f32; 4]; 4];
     let mut rhs = [0.0_f32; 4];
-    for i in 0..2 {
-        let w = &pair[i];
-        let Some(c) = w.contact.filter(|_| axle.on_ground[i]) else {
+    for (i, w) in pair.iter().enumerate() {
+        let Some(rows) = tyre_rows(body, w) else {
             m[2 * i][2 * i] = 1.0;
             m[2 * i + 1][2 * i + 1] = 1.0;
             continue;
         };
-        let v = c.slip_velocity(body, w.omega);
-        let current = [w.impulses.forward, w.impulses.lateral];
-        for d in 0..2 {
+        for (d, (alpha, beta, b)) in rows.into_iter().enumerate() {
             let r = 2 * i + d;
-            let (alpha, beta, c0) = w.grip.row(d, w.impulses.normal, current[d]);
             for (col, k) in axle.k_tyre[r].iter().enumerate() {
                 m[r][col] = beta * k;
             }
             m[r][r] += alpha;
-            rhs[r] = c0 - beta * v[d];
+            rhs[r] = b;
         }
     }
     let Some(delta) = solve_mirrored(&m, &rhs) else {
@@ -467,24 +440,33 @@ fn tyre_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle, sweep: usize)
 
 /// Wheel `i` of an axle's tyre rows alone, the other wheel's impulses held.
 fn wheel_tyre(body: &mut Body, w: &mut WheelRow, axle: &Axle, i: usize) {
-    let Some(c) = w.contact.filter(|_| axle.on_ground[i]) else {
+    let Some(rows) = tyre_rows(body, w) else {
         return;
     };
-    let v = c.slip_velocity(body, w.omega);
-    let current = [w.impulses.forward, w.impulses.lateral];
     let mut m = [[0.0_f32; 2]; 2];
     let mut rhs = [0.0_f32; 2];
-    for d in 0..2 {
-        let (alpha, beta, c0) = w.grip.row(d, w.impulses.normal, current[d]);
+    for (d, (alpha, beta, b)) in rows.into_iter().enumerate() {
         for (e, out) in m[d].iter_mut().enumerate() {
             *out = beta * axle.k_tyre[2 * i + d][2 * i + e];
         }
         m[d][d] += alpha;
-        rhs[d] = c0 - beta * v[d];
+        rhs[d] = b;
     }
     if let Some(delta) = solve2(m, rhs) {
         apply_tyre(body, w, delta);
     }
+}
+
+/// The forward and lateral tyre rows of a wheel on the ground, `α·ΔP + β·(K·ΔP) = b` as
+/// `(α, β, b)` with the current slip velocities; `None` in the air.
+fn tyre_rows(body: &Body, w: &WheelRow) -> Option<[(f32, f32, f32); 2]> {
+    let c = w.contact?;
+    let v = c.slip_velocity(body, w.omega);
+    let current = [w.impulses.forward, w.impulses.lateral];
+    Some([0, 1].map(|d| {
+        let (alpha, beta, c0) = w.grip.row(d, w.impulses.normal, current[d]);
+        (alpha, beta, c0 - beta * v[d])
+    }))
 }
 
 /// Adds `delta` (N·s, forward and lateral) to the wheel's tyre impulses within its friction

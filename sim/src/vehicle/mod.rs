@@ -61,7 +61,7 @@ use rapier3d::prelude::{
 
 use vehicle_model::tyre::LOW_SPEED;
 use vehicle_model::{
-    Commands, ContactVelocity, Real, Sensors, TransientSlip, TyreModel, WheelDrive,
+    Commands, ContactVelocity, Linearised, Real, Sensors, TransientSlip, TyreModel, WheelDrive,
 };
 
 pub use spec::{
@@ -422,12 +422,13 @@ impl Vehicle {
                     let rolling = tyre.rolling_resistance_torque(load, f64::from(contact.radius));
                     *brake_impulse += (rolling * dt) as f32;
                 }
-                Grip::Slip {
-                    force: lin.force.map(|f| f as f32),
-                    damping: lin.damping.map(|f| f as f32),
-                    v0: lin.slip_velocity.map(|f| f as f32),
-                    friction: lin.friction.map(|f| f as f32),
-                }
+                let f32s = |v: [f64; 2]| v.map(|x| x as f32);
+                Grip::Slip(Linearised {
+                    force: f32s(lin.force),
+                    damping: f32s(lin.damping),
+                    slip_velocity: f32s(lin.slip_velocity),
+                    friction: f32s(lin.friction),
+                })
             }
         };
     }
@@ -471,8 +472,8 @@ impl Vehicle {
         }
         let reference = v.forward.abs().max(LOW_SPEED);
         let friction_use = match row.grip {
-            Grip::Slip { friction, .. } if fz > 0.0 => {
-                let [ax, ay] = friction.map(|mu| f64::from(mu) * fz);
+            Grip::Slip(law) if fz > 0.0 => {
+                let [ax, ay] = law.friction.map(|mu| f64::from(mu) * fz);
                 (fx / ax).hypot(fy / ay)
             }
             Grip::Coulomb { friction, .. } if fz > 0.0 => {

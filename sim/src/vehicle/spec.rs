@@ -88,6 +88,17 @@ pub enum TyreChoice {
     Webots(WebotsContact<f64>),
 }
 
+impl TyreChoice {
+    /// The tyre a car of `model` rolls on when nothing else is said (in a world file or the C
+    /// API): the slip-based tyre of the model's class, without overrides.
+    pub fn of_model(model: vehicle_model::Model) -> Self {
+        TyreChoice::MagicFormula {
+            class: model.tyre_class(),
+            overrides: Vec::new(),
+        }
+    }
+}
+
 impl Default for TyreChoice {
     /// The passenger-car slip-based tyre.
     fn default() -> Self {

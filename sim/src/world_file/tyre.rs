@@ -34,15 +34,6 @@ const PROBE_RADIUS: f64 = 1.0;
 /// Load of the tyre the coefficients are checked on (N), a passenger car's wheel.
 const PROBE_LOAD: f64 = 4000.0;
 
-/// The tyre of a car of `model` whose world file says nothing about it: the slip-based tyre
-/// of the model's class, without overrides.
-pub(crate) fn default_for(model: Model) -> TyreChoice {
-    TyreChoice::MagicFormula {
-        class: model.tyre_class(),
-        overrides: Vec::new(),
-    }
-}
-
 /// Reads `tyre` of `[vehicle]` (a string or a table) for a car of `model`.
 pub(crate) fn read_tyre(
     vehicle: &Section<'_, '_>,
@@ -53,7 +44,7 @@ pub(crate) fn read_tyre(
             return Ok(if is_webots(vehicle, KEY, name)? {
                 TyreChoice::Webots(WebotsContact::default())
             } else {
-                default_for(model)
+                TyreChoice::of_model(model)
             });
         }
         Some(v) if !matches!(v, DeValue::Table(_)) => {
@@ -70,7 +61,7 @@ pub(crate) fn read_tyre(
         _ => {}
     }
     let Some(t) = vehicle.table(KEY)? else {
-        return Ok(default_for(model));
+        return Ok(TyreChoice::of_model(model));
     };
     check_tyre_keys(&t)?;
     let webots = match t.string("model")? {

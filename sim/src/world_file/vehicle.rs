@@ -35,7 +35,7 @@ impl CarDescription {
     pub fn of_model(model: Model) -> (Self, Vec<String>) {
         let (params, report) = model.params::<f64>().validated();
         let messages = report.iter().map(message).collect();
-        let tyre = tyre::default_for(model);
+        let tyre = TyreChoice::of_model(model);
         (
             CarDescription {
                 model,

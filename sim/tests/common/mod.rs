@@ -10,14 +10,6 @@ use vehicle_model::{Model, WebotsContact};
 /// motor ramp.
 pub const GRIPPY: f64 = 1.5;
 
-/// The slip-based tyre of `model`'s class (what a world file gives it by default).
-pub fn model_tyre(model: Model) -> TyreChoice {
-    TyreChoice::MagicFormula {
-        class: model.tyre_class(),
-        overrides: Vec::new(),
-    }
-}
-
 /// Webots' contact: the friction pyramid without force-dependent slip (`tyre = "webots"`).
 pub fn webots_tyre() -> TyreChoice {
     TyreChoice::Webots(WebotsContact::default())
@@ -26,7 +18,7 @@ pub fn webots_tyre() -> TyreChoice {
 /// A simulation with one `model` on its default slip-based tyres on flat ground of friction
 /// `mu`, settled for 1 s.
 pub fn settled(model: Model, mu: f64) -> (Simulation, VehicleId) {
-    settled_on(model, mu, &model_tyre(model))
+    settled_on(model, mu, &TyreChoice::of_model(model))
 }
 
 /// A simulation with one `model` on `tyre` on flat ground of friction `mu`, settled for 1 s.

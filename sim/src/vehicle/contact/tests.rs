@@ -122,12 +122,12 @@ fn slip_law_is_solved_at_the_end_of_the_step() {
     // load; the body slides sideways at 1 m/s over a wheel that does not spin.
     let mut b = body();
     b.linvel.y = 1.0;
-    let grip = Grip::Slip {
+    let grip = Grip::Slip(Linearised {
         force: [0.0, 0.0],
         damping: [0.0, 0.5],
-        v0: [0.0, 0.0],
+        slip_velocity: [0.0, 0.0],
         friction: [10.0, 10.0],
-    };
+    });
     let mut w = one(wheel(Some(contact(0.01)), grip, Spin::Imposed, 0.0));
     solve(&mut b, &mut w, 0.01);
     // P = −0.5·N·v and m·(v − 1) = P: v = m/(m + 0.5·N) with N the suspension impulse.
@@ -141,12 +141,12 @@ fn slip_law_is_solved_at_the_end_of_the_step() {
 fn slip_force_stays_in_its_ellipse() {
     let mut b = body();
     b.linvel = Vector::new(-30.0, 40.0, 0.0);
-    let grip = Grip::Slip {
+    let grip = Grip::Slip(Linearised {
         force: [0.0, 0.0],
         damping: [100.0, 100.0],
-        v0: [0.0, 0.0],
+        slip_velocity: [0.0, 0.0],
         friction: [1.0, 0.5],
-    };
+    });
     let mut w = one(wheel(Some(contact(0.01)), grip, Spin::Imposed, 0.0));
     solve(&mut b, &mut w, 0.01);
     let i = w[0].impulses;
@@ -201,12 +201,12 @@ fn an_axle_is_solved_without_favouring_a_side() {
         contact_arm: Vector::new(0.0, y, -0.3),
         ..contact(0.02)
     };
-    let grip = Grip::Slip {
+    let grip = Grip::Slip(Linearised {
         force: [0.0, 0.0],
         damping: [2.0, 2.0],
-        v0: [0.0, 0.0],
+        slip_velocity: [0.0, 0.0],
         friction: [1.0, 0.9],
-    };
+    });
     let run = |first: f32| {
         let mut b = body();
         b.linvel.x = 5.0;
