@@ -8,6 +8,10 @@ pub const DEFAULT_BASIC_TIME_STEP_MS: u32 = 10;
 /// Webots default Coulomb friction of a `ContactProperties` node.
 pub const DEFAULT_FRICTION: f64 = 1.0;
 
+/// Largest gravity a world may have (m/s²): ten times the Earth's, beyond which no car model
+/// of this crate is meaningful.
+pub(crate) const MAX_GRAVITY: f64 = 100.0;
+
 /// Static geometry of the world, fixed to the ground.
 ///
 /// Every obstacle uses the same contact model as the ground: Coulomb friction `friction` (or the
@@ -175,7 +179,7 @@ impl WorldConfig {
             "gravity",
             (gx * gx + gy * gy + gz * gz).sqrt(),
             "at most 100 m/s² and pointing down (z ≤ 0)",
-            |g| g <= 100.0 && gz <= 0.0,
+            |g| g <= MAX_GRAVITY && gz <= 0.0,
         )?;
         ParamError::check(
             "basicTimeStep",

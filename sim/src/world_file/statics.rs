@@ -1,15 +1,11 @@
 //! The world itself: `WorldInfo`-like top-level keys, `[ground]`, `[[box]]` and `[[ramp]]`.
 
-use crate::config::{Obstacle, WorldConfig};
+use crate::config::{MAX_GRAVITY, Obstacle, WorldConfig};
 
 use super::error::{WorldFileError, WorldFileErrorKind};
 use super::read::Section;
 
 /// Keys of `[ground]`.
-/// Largest gravity a world may have (m/s²): ten times the Earth's, beyond which no car model
-/// of this crate is meaningful.
-const MAX_GRAVITY: f64 = 100.0;
-
 pub(crate) const GROUND_KEYS: [&str; 1] = ["friction"];
 /// Keys of each `[[box]]`.
 pub(crate) const BOX_KEYS: [&str; 4] = ["translation", "size", "rotation", "friction"];
