@@ -88,8 +88,12 @@ impl Robot {
             ),
             WorldVehicle::Car(car) => {
                 let placement = sim::placement::car_placement(&car.params);
-                let (id, report) =
-                    simulation.add_car_on(car.params.clone(), &car.tyre, placement)?;
+                let (id, report) = simulation.add_car_with(
+                    car.params.clone(),
+                    &car.tyre,
+                    car.mounting,
+                    placement,
+                )?;
                 // The loader validated the fields already; anything left is still reported.
                 for w in &report {
                     eprintln!("Warning: {}: {w}", description.source);

@@ -69,6 +69,8 @@ pub enum BodyPart {
     Chassis,
     /// A car wheel.
     Wheel(Wheel),
+    /// The steering knuckle of a front wheel of a car on joints.
+    Knuckle(Wheel),
     /// The body of a DifferentialWheels robot.
     RobotBody,
     /// The left wheel of a DifferentialWheels robot.
@@ -110,6 +112,9 @@ pub enum SimError {
         /// Simulated time at the end of the failed step (ms).
         time_ms: u64,
     },
+    /// rapier refused a joint of a car on joints (it refuses joints that close a loop, which a
+    /// car's tree of joints never does); nothing usable was created.
+    JointRefused(BodyOwner),
 }
 
 impl fmt::Display for SimError {
@@ -127,6 +132,7 @@ impl fmt::Display for SimError {
                 "non-finite physics state of {part:?} of {owner:?} at t = {time_ms} ms: \
                  the simulation diverged"
             ),
+            SimError::JointRefused(owner) => write!(f, "rapier refused a joint of {owner:?}"),
         }
     }
 }

@@ -68,6 +68,8 @@ pub(crate) fn unwrap_delta(previous: f64, current: f64, predicted: f64) -> f64 {
 pub(crate) const G_STATIC: Group = Group::GROUP_1;
 /// Collision group of car chassis.
 pub(crate) const G_CAR_BODY: Group = Group::GROUP_2;
+/// Collision group of the wheels of cars on joints.
+pub(crate) const G_CAR_WHEEL: Group = Group::GROUP_3;
 /// Collision group of DifferentialWheels bodies (with their casters).
 pub(crate) const G_ROBOT_BODY: Group = Group::GROUP_4;
 /// Collision group of DifferentialWheels wheels.
@@ -76,12 +78,14 @@ pub(crate) const G_ROBOT_WHEEL: Group = Group::GROUP_5;
 /// The interaction groups of a collider in group `g`.
 ///
 /// Robot wheels touch only static geometry, so a wheel never collides with its own body; car
-/// chassis and robot bodies collide with each other. (Car wheels are shape casts, not colliders.)
+/// chassis, robot bodies and the wheels of cars on joints collide with each other (a car on
+/// joints never meets its own wheels: its multibody's self-contacts are off). The wheels of
+/// cast cars are shape casts, not colliders.
 pub(crate) fn groups(g: Group) -> InteractionGroups {
     let filter = if g == G_STATIC {
         Group::ALL
-    } else if g == G_CAR_BODY || g == G_ROBOT_BODY {
-        G_STATIC | G_CAR_BODY | G_ROBOT_BODY
+    } else if g == G_CAR_BODY || g == G_ROBOT_BODY || g == G_CAR_WHEEL {
+        G_STATIC | G_CAR_BODY | G_ROBOT_BODY | G_CAR_WHEEL
     } else {
         G_STATIC
     };

@@ -85,7 +85,7 @@ pub use diff_wheels::{
 pub use error::{BodyOwner, BodyPart, ParamError, SimError};
 pub use simulation::{CarTelemetry, Simulation};
 pub use vehicle::{
-    ChassisSpec, SpringDamper, SteeringSpec, TyreChoice, TyreSpec, TyreTelemetry, Vehicle,
-    VehicleId, VehiclePlacement, VehicleSpec, VehicleState, WheelSpec,
+    ChassisSpec, Mounting, SpringDamper, SteeringSpec, TyreChoice, TyreSpec, TyreTelemetry,
+    Vehicle, VehicleId, VehiclePlacement, VehicleSpec, VehicleState, WheelSpec,
 };
 pub use world::{MAX_SUBSTEPS, MAX_WHEEL_ROTATION_PER_SUBSTEP, World};

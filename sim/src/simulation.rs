@@ -4,7 +4,9 @@
 use vehicle_model::{CarParams, ControlMode, Driver, Gear, ParamReport, Sensors};
 
 use crate::error::SimError;
-use crate::vehicle::{TyreChoice, VehicleId, VehiclePlacement, VehicleSpec, VehicleState};
+use crate::vehicle::{
+    Mounting, TyreChoice, VehicleId, VehiclePlacement, VehicleSpec, VehicleState,
+};
 use crate::world::World;
 
 /// One car's driver and whether it has had its first step.
@@ -112,8 +114,32 @@ impl Simulation {
         tyre: &TyreChoice,
         placement: VehiclePlacement,
     ) -> Result<(VehicleId, ParamReport), SimError> {
+        self.add_car_with(params, tyre, Mounting::Cast, placement)
+    }
+
+    /// As [`Simulation::add_car_on`], with its wheels mounted as `mounting` says (a world
+    /// file's [`CarDescription::mounting`](crate::world_file::CarDescription::mounting)).
+    ///
+    /// ```
+    /// use sim::{Mounting, Simulation, TyreChoice, VehiclePlacement, World, WorldConfig};
+    /// use vehicle_model::Model;
+    /// let mut sim = Simulation::new(World::new(WorldConfig::default())?);
+    /// let tyre = TyreChoice::of_model(Model::BmwX5);
+    /// let place = VehiclePlacement::default();
+    /// let (id, _) = sim.add_car_with(Model::BmwX5.params(), &tyre, Mounting::Joints, place)?;
+    /// assert_eq!(sim.world().vehicle(id)?.spec().mounting, Mounting::Joints);
+    /// # Ok::<(), sim::SimError>(())
+    /// ```
+    pub fn add_car_with(
+        &mut self,
+        params: CarParams<f64>,
+        tyre: &TyreChoice,
+        mounting: Mounting,
+        placement: VehiclePlacement,
+    ) -> Result<(VehicleId, ParamReport), SimError> {
         let (driver, report) = Driver::new(params, self.world.config().basic_time_step_ms);
-        let spec = VehicleSpec::from_car_with(driver.params(), tyre)?;
+        let mut spec = VehicleSpec::from_car_with(driver.params(), tyre)?;
+        spec.mounting = mounting;
         let id = self.world.add_vehicle(spec, placement)?;
         self.cars.push(Controlled {
             id,

@@ -54,7 +54,12 @@ impl CarRig {
             ));
         }
         // The world file validated the params already: the report is empty.
-        let (id, _) = sim.add_car_on(car.params.clone(), &car.tyre, car_placement(&car.params))?;
+        let (id, _) = sim.add_car_with(
+            car.params.clone(),
+            &car.tyre,
+            car.mounting,
+            car_placement(&car.params),
+        )?;
         let vehicle = sim.world().vehicle(id)?;
         let (state, spec) = (*vehicle.state(), *vehicle.spec());
         Ok(CarRig {

@@ -104,12 +104,8 @@ impl Spin {
 /// mass.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Contact {
-    /// Hard point (the wheel centre at the unloaded spring length) − centre of mass (m).
-    pub hardpoint_arm: Vector,
-    /// The suspension axis, the chassis' up axis (unit).
-    pub up: Vector,
-    /// Spring compression from the unloaded length (m, > 0 = wheel pushed up).
-    pub compression: f32,
+    /// What carries the wheel's load.
+    pub support: Support,
     /// Contact point − centre of mass (m).
     pub contact_arm: Vector,
     /// Rolling direction in the ground plane (unit).
@@ -118,6 +114,31 @@ pub(crate) struct Contact {
     pub lateral: Vector,
     /// Tyre radius (m).
     pub radius: f32,
+}
+
+/// What carries a wheel's load in the solve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Support {
+    /// The solve's own suspension row (the cast car: the wheel is no body).
+    Spring(Spring),
+    /// A contact that rapier solves (the car on joints: the wheel is a body on a suspension
+    /// joint): the wheel row's normal impulse is given, and acts along `normal` (the ground's
+    /// unit normal) at the contact point.
+    Given {
+        /// The ground's normal at the contact (unit, out of the ground).
+        normal: Vector,
+    },
+}
+
+/// A suspension spring-damper between the chassis and a wheel that is no body.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Spring {
+    /// Hard point (the wheel centre at the unloaded spring length) − centre of mass (m).
+    pub hardpoint_arm: Vector,
+    /// The suspension axis, the chassis' up axis (unit).
+    pub up: Vector,
+    /// Spring compression from the unloaded length (m, > 0 = wheel pushed up).
+    pub compression: f32,
     /// Spring constant (N/m).
     pub stiffness: f32,
     /// Damping constant (N·s/m).
@@ -125,6 +146,21 @@ pub(crate) struct Contact {
 }
 
 impl Contact {
+    /// The spring of a wheel with its own suspension row.
+    fn spring(&self) -> Option<&Spring> {
+        match &self.support {
+            Support::Spring(s) => Some(s),
+            Support::Given { .. } => None,
+        }
+    }
+
+    /// Applies the normal impulse `p` (N·s) of this contact to `body`.
+    fn apply_normal(&self, body: &mut Body, p: f32) {
+        match self.support {
+            Support::Spring(s) => body.apply(s.hardpoint_arm, s.up * p),
+            Support::Given { normal } => body.apply(self.contact_arm, normal * p),
+        }
+    }
     /// The slip velocity `[forward, lateral]` (m/s) of the contact point over the ground for a
     /// wheel spinning at `omega` (rad/s).
     pub fn slip_velocity(&self, body: &Body, omega: f32) -> [f32; 2] {
@@ -212,6 +248,31 @@ pub(crate) struct WheelRow {
     pub impulses: Impulses,
 }
 
+impl WheelRow {
+    /// A wheel in the air with an imposed spin of 0 and no impulses: the start of a row.
+    pub fn idle() -> WheelRow {
+        WheelRow {
+            contact: None,
+            grip: Grip::Coulomb {
+                compliance: [0.0; 2],
+                friction: 0.0,
+            },
+            spin: Spin::Imposed,
+            omega: 0.0,
+            impulses: Impulses::default(),
+        }
+    }
+
+    /// The wheel's spin rate after the solve (rad/s): the solved one if the spin is free,
+    /// else `imposed`, the velocity command's rate in full precision.
+    pub fn solved_spin(&self, imposed: f64) -> f64 {
+        match self.spin {
+            Spin::Imposed => imposed,
+            Spin::Free { .. } => f64::from(self.omega),
+        }
+    }
+}
+
 /// The impulses of one wheel's rows over a step.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub(crate) struct Impulses {
@@ -251,12 +312,16 @@ impl Axle {
         };
         for (i, ci) in contacts.iter().enumerate() {
             let Some(ci) = ci else { continue };
-            axle.spring_impulse[i] = dt * ci.stiffness * ci.compression;
-            axle.softness[i] = dt * (ci.stiffness * dt + ci.damping);
+            if let Some(si) = ci.spring() {
+                axle.spring_impulse[i] = dt * si.stiffness * si.compression;
+                axle.softness[i] = dt * (si.stiffness * dt + si.damping);
+            }
             for (j, cj) in contacts.iter().enumerate() {
                 let Some(cj) = cj else { continue };
-                axle.k_normal[i][j] =
-                    body.coupling(ci.hardpoint_arm, ci.up, cj.hardpoint_arm, cj.up);
+                if let (Some(si), Some(sj)) = (ci.spring(), cj.spring()) {
+                    axle.k_normal[i][j] =
+                        body.coupling(si.hardpoint_arm, si.up, sj.hardpoint_arm, sj.up);
+                }
                 for (m, dm) in [ci.forward, ci.lateral].into_iter().enumerate() {
                     for (n, dn) in [cj.forward, cj.lateral].into_iter().enumerate() {
                         axle.k_tyre[2 * i + m][2 * j + n] =
@@ -331,7 +396,7 @@ fn warm_start(body: &mut Body, wheels: &mut [WheelRow; 4]) {
         let i = &mut w.impulses;
         i.normal = i.normal.max(0.0);
         [i.forward, i.lateral] = w.grip.clamp(i.forward, i.lateral, i.normal);
-        body.apply(c.hardpoint_arm, c.up * i.normal);
+        c.apply_normal(body, i.normal);
         body.apply(c.contact_arm, c.forward * i.forward + c.lateral * i.lateral);
         w.omega -= c.radius * i.forward * w.spin.inv_inertia();
     }
@@ -372,11 +437,11 @@ fn brake_row(w: &mut WheelRow) {
 /// The implicit spring-dampers of an axle: `P = dt·k·x + dt·(k·dt + c)·ẋ` for each wheel with
 /// `ẋ` the compression rate after both impulses, `P ≥ 0`.
 fn suspension_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle) {
-    let contacts = [pair[0].contact, pair[1].contact];
+    let springs = [0, 1].map(|i| pair[i].contact.and_then(|c| c.spring().copied()));
     let mut m = [[1.0, 0.0], [0.0, 1.0]];
     let mut rhs = [0.0; 2];
     for i in 0..2 {
-        let Some(c) = contacts[i] else { continue };
+        let Some(c) = springs[i] else { continue };
         let rate = -c.up.dot(body.velocity_at(c.hardpoint_arm));
         let s = axle.softness[i];
         for (j, (out, k)) in m[i].iter_mut().zip(axle.k_normal[i]).enumerate() {
@@ -385,7 +450,7 @@ fn suspension_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle) {
         rhs[i] = axle.spring_impulse[i] + s * rate - pair[i].impulses.normal;
     }
     let Some(delta) = solve2(m, rhs) else { return };
-    for (i, c) in contacts.iter().enumerate() {
+    for (i, c) in springs.iter().enumerate() {
         let Some(c) = c else { continue };
         let old = pair[i].impulses.normal;
         let new = (old + delta[i]).max(0.0);

@@ -48,16 +48,14 @@
 //! The wipers are kinematic: their angle follows the Webots position controller (P = 10) at the
 //! commanded velocity within the wiper range; no body is simulated.
 
-mod build;
+mod cast;
 mod contact;
+mod joints;
 mod spec;
 mod state;
 
 use ackermann::{PerWheel, Wheel, WheelAngles};
-use rapier3d::parry::query::ShapeCastOptions;
-use rapier3d::prelude::{
-    Cylinder, Mat3, PhysicsWorld, Pose, QueryFilter, RigidBody, Rotation, Vector,
-};
+use rapier3d::prelude::{Mat3, PhysicsWorld, Pose, RigidBody, Rotation, Vector};
 
 use vehicle_model::tyre::LOW_SPEED;
 use vehicle_model::{
@@ -65,15 +63,21 @@ use vehicle_model::{
 };
 
 pub use spec::{
-    ChassisSpec, SpringDamper, SteeringSpec, TyreChoice, TyreSpec, VehicleSpec, WheelSpec,
+    ChassisSpec, Mounting, SpringDamper, SteeringSpec, TyreChoice, TyreSpec, VehicleSpec, WheelSpec,
 };
 pub use state::{TyreTelemetry, VehicleId, VehiclePlacement, VehicleState};
 
 use crate::error::{BodyOwner, BodyPart, ParamError, SimError};
 use crate::geom;
 use crate::motor::{self, PositionServo, VelocityRamp};
-use build::Parts;
-use contact::{Body, Contact, Grip, Impulses, Spin, WheelRow};
+use contact::{Body, Contact, Grip, Impulses, Spin, Support, WheelRow};
+
+/// The rapier side of a car, by mounting.
+#[derive(Debug, Clone)]
+enum Parts {
+    Cast(cast::Parts),
+    Joints(joints::Parts),
+}
 
 /// Smallest cosine between the ground normal under a wheel and the chassis' up axis for the
 /// wheel to stand on it (about 84°): a steeper face (a wall beside the tyre) is no ground.
@@ -119,7 +123,13 @@ impl Vehicle {
             }
         };
         let origin = geom::pose_xyz_yaw([placement.x, placement.y, z], placement.yaw);
-        let parts = build::build(world, &spec, origin);
+        let parts = match spec.mounting {
+            Mounting::Cast => Parts::Cast(cast::build(world, &spec, origin)),
+            Mounting::Joints => Parts::Joints(
+                joints::build(world, &spec, origin)
+                    .ok_or(SimError::JointRefused(BodyOwner::Vehicle(id.0)))?,
+            ),
+        };
         Ok(Vehicle {
             id,
             spec,
@@ -260,11 +270,27 @@ impl Vehicle {
     }
 
     /// Applies the commands for the coming step of `dt` seconds: steering, wheel spins, then
-    /// the suspension, tyre and brake solve, whose chassis velocity rapier integrates.
+    /// the tyre and brake solve (with the suspension, for a cast car), whose results rapier
+    /// integrates.
     pub(crate) fn pre_step(&mut self, world: &mut PhysicsWorld, dt: f64) {
-        self.steer(dt);
         self.step_wipers(dt);
-        let Some(chassis) = world.bodies.get(self.parts.chassis) else {
+        match &self.parts {
+            Parts::Cast(p) => {
+                let p = p.clone();
+                self.pre_step_cast(world, &p, dt);
+            }
+            Parts::Joints(p) => {
+                let p = p.clone();
+                self.pre_step_joints(world, &p, dt);
+            }
+        }
+    }
+
+    /// The cast car's step: the steering is this crate's; the suspension, tyres, brakes and
+    /// spins are solved together on the chassis, whose velocity goes to rapier.
+    fn pre_step_cast(&mut self, world: &mut PhysicsWorld, parts: &cast::Parts, dt: f64) {
+        self.steer(dt);
+        let Some(chassis) = world.bodies.get(parts.chassis) else {
             return;
         };
         let frame = Frame::of(chassis);
@@ -272,49 +298,137 @@ impl Vehicle {
         let mut body = Body {
             linvel: chassis.linvel() + world.gravity * dt as f32,
             angvel: chassis.angvel(),
-            inv_mass: self.parts.inv_mass,
-            inv_inertia: rotation * self.parts.inv_inertia * rotation.transpose(),
+            inv_mass: parts.inv_mass,
+            inv_inertia: rotation * parts.inv_inertia * rotation.transpose(),
         };
-        let mut rows = [WheelRow {
-            contact: None,
-            grip: Grip::Coulomb {
-                compliance: [0.0; 2],
-                friction: 0.0,
-            },
-            spin: Spin::Imposed,
-            omega: 0.0,
-            impulses: Impulses::default(),
-        }; 4];
+        let mut rows = [WheelRow::idle(); 4];
         let mut imposed = [0.0; 4];
         let mut axes = [Vector::ZERO; 4];
         let mut roads = [0.0; 4];
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
             let (steer, axis) = self.wheel_axis(w, &frame);
             axes[i] = axis;
-            let (spin, omega) = self.spin(w, dt);
-            imposed[i] = omega;
-            rows[i].spin = spin;
-            rows[i].omega = omega as f32;
-            rows[i].impulses = self.impulses[w];
-            if let Some((contact, road)) = self.find_contact(world, w, &frame, steer, axis) {
+            imposed[i] = self.start_row(w, &mut rows[i], dt);
+            if let Some((contact, road)) =
+                cast::find_contact(world, &self.spec, w, &frame, steer, axis)
+            {
                 roads[i] = road;
-                self.set_grip(w, &mut rows[i], contact, &body, f64::from(road), dt);
+                // The load the tyre's coefficients are taken at: the last step's, or the
+                // spring's at the current compression for a wheel that just landed.
+                let previous = f64::from(self.impulses[w].normal) / dt;
+                let load = match contact.support {
+                    Support::Spring(s) if previous <= 0.0 => f64::from(s.stiffness * s.compression),
+                    _ => previous,
+                };
+                let footing = Footing {
+                    road: f64::from(road),
+                    load,
+                };
+                self.set_grip(w, &mut rows[i], contact, &body, footing, dt);
                 rows[i].contact = Some(contact);
             }
         }
         contact::solve(&mut body, &mut rows, dt as f32);
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
-            let omega = match rows[i].spin {
-                Spin::Imposed => imposed[i],
-                Spin::Free { .. } => f64::from(rows[i].omega),
-            };
+            let omega = rows[i].solved_spin(imposed[i]);
             self.react_to_spin(&mut body, w, axes[i], omega);
             self.finish_wheel(w, &rows[i], &body, f64::from(roads[i]), omega, dt);
         }
-        if let Some(chassis) = world.bodies.get_mut(self.parts.chassis) {
+        if let Some(chassis) = world.bodies.get_mut(parts.chassis) {
             chassis.set_linvel(body.linvel, true);
             chassis.set_angvel(body.angvel, true);
         }
+    }
+
+    /// The step of a car on joints: rapier's steering motors get the position controller's
+    /// velocities; the tyres, brakes and spins are solved on the whole car with the loads of
+    /// rapier's last contacts, and go to rapier as tyre forces and spin motors.
+    fn pre_step_joints(&mut self, world: &mut PhysicsWorld, parts: &joints::Parts, dt: f64) {
+        let target = self
+            .commands
+            .as_ref()
+            .map_or(WheelAngles::new(0.0, 0.0), |c| c.steering);
+        let measured = self.state.steering;
+        let rates = [
+            self.steering_servo.velocity(target.right, measured.right),
+            self.steering_servo.velocity(target.left, measured.left),
+        ];
+        joints::steer(world, parts, rates, self.spec.steering.max_torque);
+        let (Some(pose), Some(chassis)) = (
+            joints::car_pose(world, parts),
+            world.bodies.get(parts.chassis),
+        ) else {
+            return;
+        };
+        let rotation = Mat3::from_quat(pose.rotation);
+        let frame = Frame {
+            pose,
+            com: pose.transform_point(parts.com),
+            up: pose.rotation * Vector::Z,
+        };
+        let mut body = Body {
+            linvel: chassis.velocity_at_point(frame.com) + world.gravity * dt as f32,
+            angvel: chassis.angvel(),
+            inv_mass: parts.inv_mass,
+            inv_inertia: rotation * parts.inv_inertia * rotation.transpose(),
+        };
+        let mut rows = [WheelRow::idle(); 4];
+        let mut imposed = [0.0; 4];
+        let mut roads = [0.0; 4];
+        let mut grounds = [None; 4];
+        for (i, w) in Wheel::ALL.into_iter().enumerate() {
+            imposed[i] = self.start_row(w, &mut rows[i], dt);
+            let (Some(g), Some((centre, axis))) = (
+                joints::ground_contact(world, parts, w, frame.up),
+                joints::wheel_frame(world, parts, w),
+            ) else {
+                continue;
+            };
+            let n = g.normal;
+            let lateral = (axis - n * n.dot(axis)).normalize_or_zero();
+            if lateral == Vector::ZERO {
+                continue;
+            }
+            let radius = self.spec.wheels[w].radius as f32;
+            let contact = Contact {
+                support: Support::Given { normal: n },
+                contact_arm: centre - n * radius - frame.com,
+                forward: lateral.cross(n),
+                lateral,
+                radius,
+            };
+            rows[i].impulses.normal = g.impulse;
+            roads[i] = g.friction;
+            grounds[i] = g.body;
+            let footing = Footing {
+                road: f64::from(g.friction),
+                load: f64::from(g.impulse) / dt,
+            };
+            self.set_grip(w, &mut rows[i], contact, &body, footing, dt);
+            rows[i].contact = Some(contact);
+        }
+        contact::solve(&mut body, &mut rows, dt as f32);
+        for (i, w) in Wheel::ALL.into_iter().enumerate() {
+            let omega = rows[i].solved_spin(imposed[i]);
+            let tyre = rows[i].contact.map(|c| joints::TyreImpulse {
+                impulse: c.forward * rows[i].impulses.forward
+                    + c.lateral * rows[i].impulses.lateral,
+                point: frame.com + c.contact_arm,
+                ground: grounds[i],
+            });
+            joints::drive(world, parts, w, omega, tyre, dt as f32);
+            self.finish_wheel(w, &rows[i], &body, f64::from(roads[i]), omega, dt);
+        }
+    }
+
+    /// Sets up wheel `w`'s row for the step (spin, warm start), in the air until a contact is
+    /// found; returns the spin rate a velocity command imposes (rad/s).
+    fn start_row(&mut self, w: Wheel, row: &mut WheelRow, dt: f64) -> f64 {
+        let (spin, omega) = self.spin(w, dt);
+        row.spin = spin;
+        row.omega = omega as f32;
+        row.impulses = self.impulses[w];
+        omega
     }
 
     /// The rotation of wheel `w` by its steering angle, and its spin axis in world axes (the
@@ -330,84 +444,25 @@ impl Vehicle {
         (steer, frame.pose.rotation * (steer * Vector::Y))
     }
 
-    /// Wheel `w`'s ground contact and the ground's friction: the tyre swept down the suspension
-    /// axis from one radius above its hard point to the hard point (the unloaded spring
-    /// length); the first static surface it meets, unless too steep to stand on.
-    fn find_contact(
-        &self,
-        world: &PhysicsWorld,
-        w: Wheel,
-        frame: &Frame,
-        steer: Rotation,
-        axis: Vector,
-    ) -> Option<(Contact, f32)> {
-        let s = self.spec.wheels[w];
-        let suspension = if w.is_front() {
-            self.spec.front_suspension
-        } else {
-            self.spec.rear_suspension
-        };
-        let (up, q) = (frame.up, frame.pose.rotation);
-        let radius = s.radius as f32;
-        let hard_point = frame.pose.transform_point(geom::vec3(s.position));
-        let start = Pose::from_parts(hard_point + up * radius, q * steer);
-        let tyre = Cylinder::new((0.5 * s.width) as f32, radius);
-        let options = ShapeCastOptions {
-            max_time_of_impact: radius,
-            target_distance: 0.0,
-            stop_at_penetration: true,
-            compute_impact_geometry_on_penetration: true,
-        };
-        let (collider, hit) =
-            world.cast_shape(&start, -up, &tyre, options, QueryFilter::exclude_dynamic())?;
-        let n = hit.normal1;
-        let lateral = (axis - n * n.dot(axis)).normalize_or_zero();
-        if n.dot(up) < MIN_GROUND_COSINE || lateral == Vector::ZERO {
-            return None;
-        }
-        let compression = radius - hit.time_of_impact;
-        let centre = hard_point + up * compression;
-        let friction = world.colliders.get(collider).map_or(1.0, |c| c.friction());
-        let contact = Contact {
-            hardpoint_arm: hard_point - frame.com,
-            up,
-            compression,
-            contact_arm: centre - n * radius - frame.com,
-            forward: lateral.cross(n),
-            lateral,
-            radius,
-            stiffness: suspension.stiffness as f32,
-            damping: suspension.damping as f32,
-        };
-        Some((contact, friction))
-    }
-
-    /// The tyre law of wheel `w` (on the ground at `contact`, on a road of friction `road`)
-    /// for the step: the slip-based tyre linearised at the velocities before the solve, with
-    /// its rolling resistance added to the wheel's brake, or Webots' contact.
+    /// The tyre law of wheel `w` (on the ground at `contact`, on `footing`) for the step: the
+    /// slip-based tyre linearised at the velocities before the solve, with its rolling
+    /// resistance added to the wheel's brake, or Webots' contact.
     fn set_grip(
         &self,
         w: Wheel,
         row: &mut WheelRow,
         contact: Contact,
         body: &Body,
-        road: f64,
+        footing: Footing,
         dt: f64,
     ) {
+        let Footing { road, load } = footing;
         row.grip = match self.spec.tyres.of(w) {
             TyreModel::Webots(c) => Grip::Coulomb {
                 compliance: c.force_dependent_slip.map(|fds| (fds / dt) as f32),
                 friction: road as f32,
             },
             TyreModel::MagicFormula(tyre) => {
-                // The load the tyre's coefficients are taken at: the last step's, or the
-                // spring's at the current compression for a wheel that just landed.
-                let previous = f64::from(self.impulses[w].normal) / dt;
-                let load = if previous > 0.0 {
-                    previous
-                } else {
-                    f64::from(contact.stiffness * contact.compression)
-                };
                 // Linearised at the spin the wheel starts the step with: the drive torque's
                 // spin-up is part of the solve (a free spin is a row coordinate), and a
                 // point near the step's solution keeps the linearisation accurate when a
@@ -463,7 +518,9 @@ impl Vehicle {
             self.slips[w] = TransientSlip::default();
             return;
         };
-        self.state.suspension[w] = f64::from(contact.compression);
+        if let Support::Spring(s) = contact.support {
+            self.state.suspension[w] = f64::from(s.compression);
+        }
         let i = row.impulses;
         let [fx, fy, fz] = [i.forward, i.lateral, i.normal].map(|p| f64::from(p) / dt);
         let v = contact_velocity(&contact, body, omega as f32);
@@ -523,16 +580,31 @@ impl Vehicle {
             part,
             time_ms,
         };
-        let chassis =
-            geom::finite_body(world, self.parts.chassis).ok_or(fail(BodyPart::Chassis))?;
         let mut s = self.state;
+        let (chassis, pose, com) = match &self.parts {
+            Parts::Cast(p) => {
+                let chassis = geom::finite_body(world, p.chassis).ok_or(fail(BodyPart::Chassis))?;
+                (chassis, *chassis.position(), chassis.center_of_mass())
+            }
+            Parts::Joints(p) => {
+                for (h, part) in p.bodies() {
+                    geom::finite_body(world, h).ok_or(fail(part))?;
+                }
+                let chassis = geom::finite_body(world, p.chassis).ok_or(fail(BodyPart::Chassis))?;
+                let r = joints::read(world, p).ok_or(fail(BodyPart::Chassis))?;
+                s.steering = WheelAngles::new(r.steering[0], r.steering[1]);
+                s.suspension = r.suspension;
+                s.wheel_speeds = r.spins;
+                let pose = joints::car_pose(world, p).ok_or(fail(BodyPart::Chassis))?;
+                (chassis, pose, pose.transform_point(p.com))
+            }
+        };
         for w in Wheel::ALL {
             s.wheel_angles[w] += s.wheel_speeds[w] * dt;
             if !(s.wheel_angles[w].is_finite() && s.wheel_speeds[w].is_finite()) {
                 return Err(fail(BodyPart::Wheel(w)));
             }
         }
-        let pose = *chassis.position();
         let q = pose.rotation;
         let origin = pose.translation;
         s.position = geom::arr3(origin);
@@ -541,7 +613,8 @@ impl Vehicle {
         s.velocity = geom::arr3(v);
         s.forward_speed = f64::from(v.dot(q * Vector::X));
         s.yaw_rate = f64::from(chassis.angvel().z);
-        let v_com = chassis.linvel();
+        // The whole car's centre of mass: the chassis body's, unless the wheels are bodies.
+        let v_com = chassis.velocity_at_point(com);
         if let Some(prev) = self.previous_com_velocity {
             let a = (v_com - prev) / dt as f32;
             s.longitudinal_acceleration = f64::from(a.dot(q * Vector::X));
@@ -551,6 +624,15 @@ impl Vehicle {
         self.state = s;
         Ok(())
     }
+}
+
+/// The ground under a tyre for one step.
+#[derive(Debug, Clone, Copy)]
+struct Footing {
+    /// The ground's friction coefficient (dimensionless).
+    road: f64,
+    /// The tyre's load (N).
+    load: f64,
 }
 
 /// The chassis' pose for one step.

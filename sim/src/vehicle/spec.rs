@@ -72,6 +72,19 @@ pub struct SteeringSpec {
     pub max_torque: f64,
 }
 
+/// How a car's wheels hang on its chassis in rapier (`[vehicle] mounting` in a world file).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Mounting {
+    /// One rigid chassis on four shape-cast wheels (`mounting = "cast"`, the default): the
+    /// suspension, tyres, brakes and spins are solved by this crate; the wheels stand on static
+    /// geometry only.
+    #[default]
+    Cast,
+    /// Wheels as rapier bodies on suspension, steering and spin joints (`mounting = "joints"`),
+    /// the tyre forces from the same solve: the wheels meet every body of the world.
+    Joints,
+}
+
 /// Which tyre a car rolls on, before it is fitted to the car ([`VehicleSpec::from_car_with`]).
 #[derive(Debug, Clone, PartialEq)]
 pub enum TyreChoice {
@@ -160,6 +173,8 @@ pub struct VehicleSpec {
     pub wiper_range: Option<[f64; 2]>,
     /// The tyres.
     pub tyres: TyreSpec,
+    /// How the wheels hang on the chassis.
+    pub mounting: Mounting,
 }
 
 /// The tyre model of `choice` for a wheel of `radius` (m) carrying `load` (N) at rest.
@@ -374,6 +389,7 @@ impl VehicleSpec {
                 front: TyreModel::Webots(WebotsContact::default()),
                 rear: TyreModel::Webots(WebotsContact::default()),
             },
+            mounting: Mounting::Cast,
         };
         spec.validate()?;
         // One nominal load for all four tyres, the car's mean static wheel load: the tyre's

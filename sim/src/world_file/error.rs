@@ -83,6 +83,8 @@ pub enum NameSet {
     TyreModel,
     /// `[vehicle.tyre] class`: `passenger-car`, `commercial`, `tractor`.
     TyreClass,
+    /// `[vehicle] mounting`: `cast`, `joints`.
+    Mounting,
 }
 
 impl fmt::Display for NameSet {
@@ -90,6 +92,7 @@ impl fmt::Display for NameSet {
         f.write_str(match self {
             NameSet::TyreModel => "tyre model",
             NameSet::TyreClass => "tyre class",
+            NameSet::Mounting => "wheel mounting",
         })
     }
 }

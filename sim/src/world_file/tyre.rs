@@ -86,7 +86,7 @@ fn is_webots(s: &Section<'_, '_>, key: &str, name: &str) -> Result<bool, WorldFi
 }
 
 /// An unknown `name` of the set `what` (whose names are `names`) at `key` of `s`.
-fn unknown_name(
+pub(super) fn unknown_name(
     s: &Section<'_, '_>,
     key: &str,
     what: NameSet,

@@ -8,10 +8,14 @@ use vehicle_model::{
     CarField, CarParams, FieldError, FieldKind, FieldValue, Model, ParamWarning, Wheel,
 };
 
-use super::error::{WorldFileError, WorldFileErrorKind, WorldWarning, closest};
+use super::error::{NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, closest};
 use super::read::{Section, as_f64, describe};
 use super::tyre;
-use crate::vehicle::TyreChoice;
+use crate::vehicle::{Mounting, TyreChoice};
+
+/// The key of the wheel mounting in `[vehicle]`, and its names.
+const MOUNTING: &str = "mounting";
+const MOUNTINGS: [(&str, Mounting); 2] = [("cast", Mounting::Cast), ("joints", Mounting::Joints)];
 
 /// A car as a world file describes it.
 #[derive(Debug, Clone, PartialEq)]
@@ -27,6 +31,8 @@ pub struct CarDescription {
     /// are fitted to each axle's radius and load when the car is built
     /// ([`VehicleSpec::from_car_with`](crate::VehicleSpec::from_car_with)).
     pub tyre: TyreChoice,
+    /// How the wheels hang on the chassis (`mounting = "cast"`, the default, or `"joints"`).
+    pub mounting: Mounting,
 }
 
 impl CarDescription {
@@ -41,6 +47,7 @@ impl CarDescription {
                 model,
                 params,
                 tyre,
+                mounting: Mounting::default(),
             },
             messages,
         )
@@ -60,7 +67,7 @@ pub(crate) fn model_names() -> impl Iterator<Item = &'static str> {
 
 /// Every key of `[vehicle]` that is not a wheel slot.
 fn top_keys() -> impl Iterator<Item = &'static str> {
-    ["model", "tyre"]
+    ["model", "tyre", MOUNTING]
         .into_iter()
         .chain(CarParams::<f64>::FIELD_NAMES)
 }
@@ -83,9 +90,20 @@ pub(crate) fn read_vehicle(
         })?,
     };
     let tyre = tyre::read_tyre(s, model)?;
+    let mounting = match s.string(MOUNTING)? {
+        None => Mounting::default(),
+        Some(name) => MOUNTINGS
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|&(_, m)| m)
+            .ok_or_else(|| {
+                let names = MOUNTINGS.map(|(n, _)| n);
+                tyre::unknown_name(s, MOUNTING, NameSet::Mounting, name, &names)
+            })?,
+    };
     let mut params = model.params::<f64>();
     for (key, value, key_span, _) in s.entries() {
-        if key == "model" || key == "tyre" {
+        if key == "model" || key == "tyre" || key == MOUNTING {
             continue;
         }
         if CarParams::<f64>::WHEEL_SLOT_NAMES.contains(&key) {
@@ -139,6 +157,7 @@ pub(crate) fn read_vehicle(
         model,
         params,
         tyre,
+        mounting,
     })
 }
 

@@ -13,15 +13,17 @@ fn body() -> Body {
 /// A contact straight below the centre of mass (no moment arms).
 fn contact(compression: f32) -> Contact {
     Contact {
-        hardpoint_arm: Vector::ZERO,
-        up: Vector::Z,
-        compression,
+        support: Support::Spring(Spring {
+            hardpoint_arm: Vector::ZERO,
+            up: Vector::Z,
+            compression,
+            stiffness: 1e5,
+            damping: 0.0,
+        }),
         contact_arm: Vector::ZERO,
         forward: Vector::X,
         lateral: Vector::Y,
         radius: 0.5,
-        stiffness: 1e5,
-        damping: 0.0,
     }
 }
 
@@ -197,7 +199,13 @@ fn an_axle_is_solved_without_favouring_a_side() {
     // and yawing: the forces are mirror images (x equal, y opposite), whichever wheel comes
     // first in the arrays.
     let side = |y: f32| Contact {
-        hardpoint_arm: Vector::new(0.0, y, 0.0),
+        support: Support::Spring(Spring {
+            hardpoint_arm: Vector::new(0.0, y, 0.0),
+            up: Vector::Z,
+            compression: 0.02,
+            stiffness: 1e5,
+            damping: 0.0,
+        }),
         contact_arm: Vector::new(0.0, y, -0.3),
         ..contact(0.02)
     };

@@ -1,11 +1,16 @@
-//! The chassis body of a car (see the [`vehicle`](super) module docs).
+//! The cast car (`mounting = "cast"`): its chassis body and its shape-cast wheel contacts (see
+//! the [`vehicle`](super) module docs).
 
+use ackermann::Wheel;
+use rapier3d::parry::query::ShapeCastOptions;
 use rapier3d::prelude::{
-    CoefficientCombineRule, ColliderBuilder, MassProperties, Mat3, PhysicsWorld, Pose,
-    RigidBodyBuilder, RigidBodyHandle, Vector,
+    CoefficientCombineRule, ColliderBuilder, Cylinder, MassProperties, Mat3, PhysicsWorld, Pose,
+    QueryFilter, RigidBodyBuilder, RigidBodyHandle, Rotation, Vector,
 };
 
+use super::contact::{Contact, Spring, Support};
 use super::spec::VehicleSpec;
+use super::{Frame, MIN_GROUND_COSINE};
 use crate::geom::{self, G_CAR_BODY};
 
 /// The rapier side of one car: its single rigid body.
@@ -73,6 +78,61 @@ pub(crate) fn build(world: &mut PhysicsWorld, spec: &VehicleSpec, origin: Pose) 
         inv_mass: mass_properties.inv_mass,
         inv_inertia: mass_properties.reconstruct_inverse_inertia_matrix(),
     }
+}
+
+/// Wheel `w`'s ground contact and the ground's friction: the tyre (turned by `steer`, spin
+/// axis `axis` in world axes) swept down the suspension axis from one radius above its hard
+/// point to the hard point (the unloaded spring length); the first static surface it meets,
+/// unless too steep to stand on.
+pub(crate) fn find_contact(
+    world: &PhysicsWorld,
+    spec: &VehicleSpec,
+    w: Wheel,
+    frame: &Frame,
+    steer: Rotation,
+    axis: Vector,
+) -> Option<(Contact, f32)> {
+    let s = spec.wheels[w];
+    let suspension = if w.is_front() {
+        spec.front_suspension
+    } else {
+        spec.rear_suspension
+    };
+    let (up, q) = (frame.up, frame.pose.rotation);
+    let radius = s.radius as f32;
+    let hard_point = frame.pose.transform_point(geom::vec3(s.position));
+    let start = Pose::from_parts(hard_point + up * radius, q * steer);
+    let tyre = Cylinder::new((0.5 * s.width) as f32, radius);
+    let options = ShapeCastOptions {
+        max_time_of_impact: radius,
+        target_distance: 0.0,
+        stop_at_penetration: true,
+        compute_impact_geometry_on_penetration: true,
+    };
+    let (collider, hit) =
+        world.cast_shape(&start, -up, &tyre, options, QueryFilter::exclude_dynamic())?;
+    let n = hit.normal1;
+    let lateral = (axis - n * n.dot(axis)).normalize_or_zero();
+    if n.dot(up) < MIN_GROUND_COSINE || lateral == Vector::ZERO {
+        return None;
+    }
+    let compression = radius - hit.time_of_impact;
+    let centre = hard_point + up * compression;
+    let friction = world.colliders.get(collider).map_or(1.0, |c| c.friction());
+    let contact = Contact {
+        support: Support::Spring(Spring {
+            hardpoint_arm: hard_point - frame.com,
+            up,
+            compression,
+            stiffness: suspension.stiffness as f32,
+            damping: suspension.damping as f32,
+        }),
+        contact_arm: centre - n * radius - frame.com,
+        forward: lateral.cross(n),
+        lateral,
+        radius,
+    };
+    Some((contact, friction))
 }
 
 #[cfg(test)]
