@@ -1,7 +1,8 @@
 //! Shared helpers of the car tests.
 #![allow(dead_code, clippy::unwrap_used, clippy::panic)]
 
-use sim::{Simulation, TyreChoice, VehicleId, VehiclePlacement, World, WorldConfig};
+use sim::{Simulation, TyreChoice, VehicleId, VehiclePlacement, VehicleSpec, World, WorldConfig};
+use vehicle_model::CarParams;
 use vehicle_model::{Model, WebotsContact};
 
 /// Tyre–ground friction of the speed tests. With Webots' default 1, the front-driven BmwX5
@@ -30,11 +31,23 @@ pub fn settled_on(model: Model, mu: f64, tyre: &TyreChoice) -> (Simulation, Vehi
     .unwrap();
     let mut sim = Simulation::new(world);
     let (id, report) = sim
-        .add_car_on(model.params(), tyre, VehiclePlacement::default())
+        .add_car_with(
+            model.params(),
+            tyre,
+            crate::MOUNTING,
+            VehiclePlacement::default(),
+        )
         .unwrap();
     assert!(report.is_empty(), "{report:?}");
     run(&mut sim, 1.0);
     (sim, id)
+}
+
+/// The car of `params` on the default tyres and the suite's mounting.
+pub fn spec(params: &CarParams<f64>) -> VehicleSpec {
+    let mut spec = VehicleSpec::from_car(params).unwrap();
+    spec.mounting = crate::MOUNTING;
+    spec
 }
 
 /// Steps `sim` for `seconds` (s).

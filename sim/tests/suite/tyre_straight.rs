@@ -26,7 +26,7 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod common;
+use crate::common;
 
 use sim::Simulation;
 use vehicle_model::{AutoShiftParams, Model, TyreModel, Wheel, WheelDrive};

@@ -3,7 +3,7 @@
 // Helpers outside `#[test]` functions unwrap too: clippy.toml only exempts test bodies.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod common;
+use crate::common;
 
 use sim::TyreChoice;
 

@@ -4,7 +4,7 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod common;
+use crate::common;
 
 use sim::TyreChoice;
 
@@ -21,9 +21,10 @@ fn settled(model: Model, dt_ms: u32) -> (Simulation, sim::VehicleId, f64) {
     .unwrap();
     let mut sim = Simulation::new(world);
     let (id, _) = sim
-        .add_car_on(
+        .add_car_with(
             model.params(),
             &TyreChoice::of_model(model),
+            crate::MOUNTING,
             VehiclePlacement::default(),
         )
         .unwrap();

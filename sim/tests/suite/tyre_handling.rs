@@ -3,7 +3,7 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod common;
+use crate::common;
 
 use sim::TyreChoice;
 
@@ -33,7 +33,7 @@ fn car_on(
     .unwrap();
     let mut sim = Simulation::new(world);
     let (id, report) = sim
-        .add_car_on(params, tyre, VehiclePlacement::default())
+        .add_car_with(params, tyre, crate::MOUNTING, VehiclePlacement::default())
         .unwrap();
     assert!(report.is_empty(), "{report:?}");
     common::run(&mut sim, 1.0);
@@ -357,7 +357,12 @@ fn parked_on_a_ten_percent_slope_with_the_brake_on_the_car_holds() {
     .unwrap();
     let mut sim = Simulation::new(world);
     let (id, _) = sim
-        .add_car(Model::BmwX5.params(), VehiclePlacement::default())
+        .add_car_with(
+            Model::BmwX5.params(),
+            &TyreChoice::default(),
+            crate::MOUNTING,
+            VehiclePlacement::default(),
+        )
         .unwrap();
     sim.driver_mut(id).unwrap().set_brake_intensity(1.0);
     common::run(&mut sim, 5.0);

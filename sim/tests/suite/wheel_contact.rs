@@ -9,7 +9,7 @@
 // Helpers outside `#[test]` functions unwrap too: clippy.toml only exempts test bodies.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod common;
+use crate::common;
 
 use sim::TyreChoice;
 
@@ -82,7 +82,7 @@ fn bmw_x5_free_wheels_roll_smoothly_at_45_degrees() {
             ..VehiclePlacement::default()
         };
         let (id, _) = sim
-            .add_car_on(Model::BmwX5.params(), &tyre, placement)
+            .add_car_with(Model::BmwX5.params(), &tyre, crate::MOUNTING, placement)
             .unwrap();
         common::run(&mut sim, 1.0);
         sim.driver_mut(id).unwrap().set_cruising_speed(20.0);

@@ -3,18 +3,17 @@
 // Helpers outside `#[test]` functions unwrap too: clippy.toml only exempts test bodies.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod common;
+use crate::common;
 
 use ackermann::Wheel;
 use sim::{
-    Obstacle, ParamError, SimError, Simulation, VehicleId, VehiclePlacement, VehicleSpec, World,
-    WorldConfig,
+    Obstacle, ParamError, SimError, Simulation, VehicleId, VehiclePlacement, World, WorldConfig,
 };
 use vehicle_model::{Driver, Model, WiperCommand};
 
 #[test]
 fn bmw_x5_spec_from_its_parameters() {
-    let spec = VehicleSpec::from_car(&Model::BmwX5.params()).unwrap();
+    let spec = common::spec(&Model::BmwX5.params());
     // Wheel centres at (L, ∓Tf/2, 0) and (0, ∓Tr/2, 0): L = 2.995, Tf = Tr = 1.628.
     let fr = spec.wheels[Wheel::FrontRight];
     assert_eq!(fr.position, [2.995, -0.814, 0.0]);
@@ -38,7 +37,7 @@ fn bmw_x5_spec_from_its_parameters() {
 
 #[test]
 fn invalid_parameters_name_the_field() {
-    let mut spec = VehicleSpec::from_car(&Model::Car.params()).unwrap();
+    let mut spec = common::spec(&Model::Car.params());
     spec.wheels[Wheel::RearLeft].radius = -0.3;
     let mut world = World::new(WorldConfig::default()).unwrap();
     let err = world
@@ -53,7 +52,7 @@ fn invalid_parameters_name_the_field() {
         })
     );
     assert!(world.vehicles().is_empty());
-    let mut spec = VehicleSpec::from_car(&Model::Car.params()).unwrap();
+    let mut spec = common::spec(&Model::Car.params());
     spec.chassis.inertia = [1.0, 1.0, 1.0, 2.0, 0.0, 0.0];
     let err = world.add_vehicle(spec, VehiclePlacement::default());
     assert!(matches!(
@@ -82,7 +81,7 @@ fn unknown_handles_are_errors() {
     let b_id = {
         let mut b = World::new(WorldConfig::default()).unwrap();
         b.add_vehicle(
-            VehicleSpec::from_car(&Model::Car.params()).unwrap(),
+            common::spec(&Model::Car.params()),
             VehiclePlacement::default(),
         )
         .unwrap()
@@ -101,7 +100,12 @@ fn world_with(obstacles: Vec<Obstacle>) -> (Simulation, VehicleId) {
     .unwrap();
     let mut sim = Simulation::new(world);
     let (id, _) = sim
-        .add_car(Model::ToyotaPrius.params(), VehiclePlacement::default())
+        .add_car_with(
+            Model::ToyotaPrius.params(),
+            &sim::TyreChoice::default(),
+            crate::MOUNTING,
+            VehiclePlacement::default(),
+        )
         .unwrap();
     common::run(&mut sim, 1.0);
     (sim, id)
@@ -162,10 +166,7 @@ fn wipers_follow_the_position_controller_at_the_commanded_velocity() {
     });
     let mut world = World::new(WorldConfig::default()).unwrap();
     let id = world
-        .add_vehicle(
-            VehicleSpec::from_car(&params).unwrap(),
-            VehiclePlacement::default(),
-        )
+        .add_vehicle(common::spec(&params), VehiclePlacement::default())
         .unwrap();
     world.vehicle_mut(id).unwrap().set_commands(&commands);
     for _ in 0..50 {
@@ -190,10 +191,7 @@ fn steering_follows_the_webots_position_controller() {
     commands.steering = ackermann::WheelAngles::new(0.3, 0.25);
     let mut world = World::new(WorldConfig::default()).unwrap();
     let id = world
-        .add_vehicle(
-            VehicleSpec::from_car(&params).unwrap(),
-            VehiclePlacement::default(),
-        )
+        .add_vehicle(common::spec(&params), VehiclePlacement::default())
         .unwrap();
     for _ in 0..50 {
         world.step().unwrap();
@@ -226,7 +224,7 @@ fn a_wheel_torque_in_the_air_turns_the_chassis_the_other_way() {
         z: Some(5.0),
         ..VehiclePlacement::default()
     };
-    let spec = VehicleSpec::from_car(&params).unwrap();
+    let spec = common::spec(&params);
     let id = world.add_vehicle(spec, placement).unwrap();
     world.vehicle_mut(id).unwrap().set_commands(&commands);
     for _ in 0..10 {
