@@ -18,13 +18,6 @@ fn number(r: &RunReport, s: Scenario, key: &str) -> f64 {
     }
 }
 
-fn flag(r: &RunReport, s: Scenario, key: &str) -> bool {
-    match r.result(s).and_then(|x| x.metric(key)) {
-        Some(Value::Bool(b)) => b,
-        other => panic!("{s} {key}: {other:?}"),
-    }
-}
-
 #[test]
 fn world_duration_caps_a_scenario() {
     let w = parse_str("w.toml", "duration = 0.5\n[vehicle]\nmodel = \"BmwX5\"\n").unwrap();
