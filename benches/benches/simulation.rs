@@ -14,7 +14,7 @@ use benches::report::{self, format_ns};
 use benches::scenes::{BASIC_TIME_STEP_MS, CarScene, RobotScene};
 use criterion::measurement::WallTime;
 use criterion::{BenchmarkGroup, BenchmarkId, Criterion, criterion_group};
-use sim::{RobotMode, TyreChoice};
+use sim::{Mounting, RobotMode, TyreChoice};
 use vehicle_model::WebotsContact;
 
 const PEER: &str = "simulation/peer_raycast_car/1";
@@ -78,6 +78,29 @@ fn webots_contact(g: &mut BenchmarkGroup<'_, WallTime>) {
     });
 }
 
+/// Car counts of the joints mounting's benchmarks: one car, and the scaling at 64.
+const JOINTS_CAR_COUNTS: [usize; 2] = [1, 64];
+
+/// Cars on rapier joints (`mounting = "joints"`) in speed mode, on the same circle.
+fn joints(g: &mut BenchmarkGroup<'_, WallTime>) {
+    for n in JOINTS_CAR_COUNTS {
+        let mut scene =
+            CarScene::mounted(n, LoopMode::Speed, &TyreChoice::default(), Mounting::Joints)
+                .unwrap();
+        let settle = if report::is_bench_run() {
+            SETTLE_STEPS
+        } else {
+            0
+        };
+        for _ in 0..settle {
+            scene.step().unwrap();
+        }
+        g.bench_function(BenchmarkId::new("car_speed_joints", n), |b| {
+            b.iter(|| scene.step().unwrap())
+        });
+    }
+}
+
 fn webots_tyre() -> TyreChoice {
     TyreChoice::Webots(WebotsContact::default())
 }
@@ -101,6 +124,7 @@ fn simulation(c: &mut Criterion) {
     peer(&mut g);
     cars(&mut g);
     webots_contact(&mut g);
+    joints(&mut g);
     robots(&mut g);
     g.finish();
 }
@@ -151,6 +175,21 @@ fn summary(since: SystemTime) {
             step_ns / t,
             t / peer
         );
+    }
+    if let Some(one) = median("simulation/car_speed_joints/1") {
+        println!(
+            "  car_speed on joints, 1 car: {} = {:.0}x real time (target >= 300x), {:.2}x the peer",
+            format_ns(one),
+            step_ns / one,
+            one / peer
+        );
+        if let Some(t) = median("simulation/car_speed_joints/64") {
+            println!(
+                "  car_speed on joints, 64 cars: {} per car, {:.2}x of 64 x 1 car (target <= 1)",
+                format_ns(t / 64.0),
+                t / (64.0 * one)
+            );
+        }
     }
     for mode in ["kinematics", "physics"] {
         if let Some(t) = median(&format!("simulation/differential_wheels/{mode}")) {

@@ -3,7 +3,8 @@
 //!
 //! It is built in this workspace's frame (x forward, y left, z up, flat ground at z = 0) with
 //! the same time step as the simulation, so that one of its steps can be set beside one step
-//! of a `sim` car: the ratio of the two is what the joint-based car costs over the minimum.
+//! of a `sim` car: the ratio of the two is what `sim`'s car (on shape-cast wheels or, with
+//! `mounting = "joints"`, on rapier joints) costs over the minimum.
 
 use rapier3d::control::{DynamicRayCastVehicleController, WheelTuning};
 use rapier3d::na::Unit;

@@ -6,8 +6,8 @@
 use core::fmt;
 
 use sim::{
-    DifferentialWheelsParams, RobotBody, RobotId, RobotMode, RobotPlacement, SimError, Simulation,
-    TyreChoice, VehicleId, VehiclePlacement, World, WorldConfig,
+    DifferentialWheelsParams, Mounting, RobotBody, RobotId, RobotMode, RobotPlacement, SimError,
+    Simulation, TyreChoice, VehicleId, VehiclePlacement, World, WorldConfig,
 };
 use vehicle_model::Model;
 
@@ -96,6 +96,19 @@ impl CarScene {
     /// # Errors
     /// [`SceneError`] if the model or `sim` rejects something (never for these constants).
     pub fn on(count: usize, mode: LoopMode, tyre: &TyreChoice) -> Result<Self, SceneError> {
+        Self::mounted(count, mode, tyre, Mounting::Cast)
+    }
+
+    /// As [`CarScene::on`], with the wheels mounted as `mounting` says.
+    ///
+    /// # Errors
+    /// [`SceneError`] if the model or `sim` rejects something (never for these constants).
+    pub fn mounted(
+        count: usize,
+        mode: LoopMode,
+        tyre: &TyreChoice,
+        mounting: Mounting,
+    ) -> Result<Self, SceneError> {
         let mut sim = Simulation::new(flat_world()?);
         let mut cars = Vec::with_capacity(count);
         for i in 0..count {
@@ -104,7 +117,7 @@ impl CarScene {
                 y: (i / GRID_COLUMNS) as f64 * CAR_SPACING,
                 ..VehiclePlacement::default()
             };
-            let (id, report) = sim.add_car_on(CAR_MODEL.params(), tyre, placement)?;
+            let (id, report) = sim.add_car_with(CAR_MODEL.params(), tyre, mounting, placement)?;
             if !report.is_empty() {
                 return Err(SceneError::Model(InvalidModel {
                     total: report.total(),
