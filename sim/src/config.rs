@@ -112,19 +112,33 @@ pub struct SolverSettings {
 }
 
 impl Default for SolverSettings {
-    /// 1 substep, 1 biased sweep, 1 friction sweep (rapier's own default uses 4 substeps):
-    /// a physics-mode DifferentialWheels robot then follows its analytic straight line and
-    /// spin within the 5 % its tests allow, its wheel contacts stay exact at any wheel speed,
-    /// and a step costs one constraint build. More substeps only add cost and, on a fast
-    /// wheel, the body-fixed contact error.
+    /// 1 substep, 1 biased sweep, [`DEFAULT_FRICTION_ITERATIONS`] friction sweeps (rapier's
+    /// own default uses 4 substeps): a physics-mode DifferentialWheels robot's wheel contacts
+    /// stay exact at any wheel speed and a step costs one constraint build. More substeps only
+    /// add cost and, on a fast wheel, the body-fixed contact error.
     fn default() -> Self {
         SolverSettings {
             iterations: 1,
             pgs_iterations: 1,
-            friction_iterations: 1,
+            friction_iterations: DEFAULT_FRICTION_ITERATIONS,
         }
     }
 }
+
+/// Friction sweeps per substep of [`SolverSettings::default`].
+///
+/// A robot wheel's hinge motor and its ground friction act on the same light body (50 g
+/// against the robot's 0.6 kg) and the friction is solved after the motor: with one sweep the
+/// wheel ends each step where the ground drags it rather than at the motor's target, the motor
+/// acts only through the next steps' warm start, and the wheel speed rings around its command
+/// (+50 % and −35 % on the e-puck after a speed step) so the wheels turn short of the
+/// commanded angle. Measured on the e-puck `square` in physics mode (end distance from the
+/// start, end heading error), the sweeps converge: 1 → 56 mm, −0.157 rad; 4 → 18 mm,
+/// −0.054 rad; 8 → 11 mm, −0.030 rad; 16 → 6.4 mm, −0.016 rad; 32 → 7.1 mm, −0.018 rad;
+/// 64 biased and 64 friction sweeps → 6.7 mm, −0.018 rad. 16 is where more sweeps stop
+/// changing the answer (the rest is the wheels' slip when a command steps the speed); a car's chassis contacts (walls, bodies) only get more accurate from them, at a
+/// cost proportional to the number of contacts, which is small.
+pub const DEFAULT_FRICTION_ITERATIONS: usize = 16;
 
 /// Everything that defines a world before any vehicle is added.
 ///

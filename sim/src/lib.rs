@@ -76,7 +76,8 @@ mod vehicle;
 mod world;
 
 pub use config::{
-    DEFAULT_BASIC_TIME_STEP_MS, DEFAULT_FRICTION, Obstacle, SolverSettings, WorldConfig,
+    DEFAULT_BASIC_TIME_STEP_MS, DEFAULT_FRICTION, DEFAULT_FRICTION_ITERATIONS, Obstacle,
+    SolverSettings, WorldConfig,
 };
 pub use diff_wheels::{
     DifferentialWheels, DifferentialWheelsParams, RobotBody, RobotId, RobotMode, RobotPlacement,

@@ -97,8 +97,9 @@ impl DifferentialWheelsParams {
 ///
 /// The robot is a vertical cylinder of radius `axleLength/2` and height `wheelRadius`, centred
 /// at wheel-axle height, carrying two frictionless caster balls (radius `wheelRadius/4`, at
-/// ±0.8·`axleLength/2` along x) that keep it level, and two cylindrical wheels on hinges along
-/// the axle (y axis). Webots takes the geometry from the robot's own solids; these defaults
+/// ±0.8·`axleLength/2` along x) that keep it level, and two wheels on hinges along the axle
+/// (y axis), with the mass and inertia of a cylinder `wheelWidth` wide, that touch the ground
+/// at one point under their mid-plane (a ball of `wheelRadius`). Webots takes the geometry from the robot's own solids; these defaults
 /// stand in for them.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RobotBody {
