@@ -4,7 +4,9 @@ use core::fmt;
 
 use ackermann::{Geometry, GeometryError, PerWheel, Real, Wheel};
 
-use crate::math::{Isometry, Rotation, Vec3};
+use nalgebra::{Isometry3, Point3, UnitVector3, Vector3};
+
+use crate::glue::{flip, isometry, rotation, x_axis, y_axis, z_axis};
 use crate::wheel::{ValidWheel, WheelParams, WheelSide, WheelWarnings};
 
 /// The `AckermannVehicle` dimensions (m). `Default` gives the PROTO defaults.
@@ -120,7 +122,7 @@ impl<T: Real> VehicleDimensions<T> {
 }
 
 /// One wheel of a [`VehicleLayout`]: its frame and joint axes in the vehicle frame (x forward,
-/// y left, z up, origin at the rear-axle centre at wheel-centre height).
+/// y left, z up, origin at the rear-axle centre at wheel-centre height; m and rad).
 ///
 /// Sign conventions (spec §4.3), which a simulator must keep to match Webots:
 /// * `steering_axis` is −z for both front wheels: a **positive** steering angle turns the
@@ -129,28 +131,31 @@ impl<T: Real> VehicleDimensions<T> {
 ///   **forward** (+x). Webots writes the spin axis as local (1, 0, 0) on right wheels and
 ///   (−1, 0, 0) on left wheels; both become +y through the wheel rotation.
 /// * `suspension_axis` is +z (a linear spring-damper along it).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy)]
 pub struct WheelFrame<T: Real> {
     /// Which wheel.
     pub wheel: Wheel,
-    /// The wheel frame (Webots `Transform`): translation to the wheel centre, (L, ∓Tf/2, 0) in
-    /// front and (0, ∓Tr/2, 0) at the rear (m), rotation +π/2 about z on the right and −π/2 on
-    /// the left (Webots writes ±1.5708). Rim, hub and bounding-cylinder meshes are in this frame;
+    /// The wheel frame (Webots `Transform`), mapping wheel-frame coordinates to the vehicle
+    /// frame: translation to the wheel centre, (L, ∓Tf/2, 0) in front and (0, ∓Tr/2, 0) at the
+    /// rear (m), rotation +π/2 rad about z on the right and −π/2 rad on the left (Webots writes
+    /// ±1.5708). Rim, hub and bounding-cylinder meshes are in this frame;
     /// it maps the wheel's local axle (+x) to +y (inwards) on the right and −y on the left, so
     /// the rim face (local −x) points outwards on both sides.
-    pub pose: Isometry<T>,
-    /// The tyre mesh frame: `pose`, followed on left wheels (`wheelSide TRUE`) by a rotation
-    /// of π about the local z axis (Webots writes 3.141578).
-    pub tyre_pose: Isometry<T>,
+    pub pose: Isometry3<T>,
+    /// The tyre mesh frame (translation in m): `pose`, followed on left wheels
+    /// (`wheelSide TRUE`) by a rotation of π rad about the local z axis (Webots writes
+    /// 3.141578).
+    pub tyre_pose: Isometry3<T>,
     /// The wheel's `wheelSide`.
     pub side: WheelSide,
-    /// Steering (Hinge2 axis 1) direction in the vehicle frame: `Some(−z)` for the front
-    /// wheels, `None` for the rear wheels (plain hinge).
-    pub steering_axis: Option<Vec3<T>>,
-    /// Spin axis in the vehicle frame: +y for every wheel (positive velocity drives forward).
-    pub spin_axis: Vec3<T>,
-    /// Suspension axis in the vehicle frame: +z.
-    pub suspension_axis: Vec3<T>,
+    /// Steering (Hinge2 axis 1) unit direction in the vehicle frame: `Some(−z)` for the front
+    /// wheels, `None` for the rear wheels (plain hinge). A positive angle (rad) turns right.
+    pub steering_axis: Option<UnitVector3<T>>,
+    /// Spin axis, a unit direction in the vehicle frame: +y for every wheel (a positive
+    /// velocity, rad/s, drives forward).
+    pub spin_axis: UnitVector3<T>,
+    /// Suspension axis, a unit direction in the vehicle frame: +z (travel in m along it).
+    pub suspension_axis: UnitVector3<T>,
 }
 
 impl<T: Real> WheelFrame<T> {
@@ -166,42 +171,65 @@ impl<T: Real> WheelFrame<T> {
         } else {
             (track * T::HALF, -T::FRAC_PI_2)
         };
-        let pose = Isometry::new(Vec3::new(x, y, T::ZERO), Rotation::about_z(angle));
+        let centre = Vector3::new(x, y, T::ZERO);
+        let pose = isometry(centre, rotation(&z_axis(), angle));
         let tyre_pose = match side {
             WheelSide::Right => pose,
-            WheelSide::Left => pose * Isometry::new(Vec3::ZERO, Rotation::about_z(T::PI)),
+            // `pose` followed by π about the local z axis, which is the vehicle's z axis too:
+            // one rotation of `angle + π` about z.
+            WheelSide::Left => isometry(centre, rotation(&z_axis(), angle + T::PI)),
         };
         WheelFrame {
             wheel,
             pose,
             tyre_pose,
             side,
-            steering_axis: wheel.is_front().then_some(-Vec3::Z),
-            spin_axis: Vec3::Y,
-            suspension_axis: Vec3::Z,
+            steering_axis: wheel.is_front().then(|| flip(z_axis())),
+            spin_axis: y_axis(),
+            suspension_axis: z_axis(),
         }
     }
 
     /// The wheel centre (m, vehicle frame): the joint anchor.
     #[inline]
-    pub fn centre(&self) -> Vec3<T> {
-        self.pose.translation
+    pub fn centre(&self) -> Point3<T> {
+        Point3::from(self.pose.translation.vector)
     }
 
-    /// The spin axis as Webots writes it in the wheel frame: (1, 0, 0) right, (−1, 0, 0) left.
+    /// The spin axis as Webots writes it in the wheel frame (unit direction): (1, 0, 0) right,
+    /// (−1, 0, 0) left.
     #[inline]
-    pub fn webots_spin_axis(&self) -> Vec3<T> {
+    pub fn webots_spin_axis(&self) -> UnitVector3<T> {
         if self.wheel.is_right() {
-            Vec3::X
+            x_axis()
         } else {
-            -Vec3::X
+            flip(x_axis())
         }
     }
 
-    /// The steering axis as Webots writes it in the wheel frame: (0, 0, −1), front wheels only.
+    /// The steering axis as Webots writes it in the wheel frame (unit direction): (0, 0, −1),
+    /// front wheels only.
     #[inline]
-    pub fn webots_steering_axis(&self) -> Option<Vec3<T>> {
-        self.wheel.is_front().then_some(-Vec3::Z)
+    pub fn webots_steering_axis(&self) -> Option<UnitVector3<T>> {
+        self.wheel.is_front().then(|| flip(z_axis()))
+    }
+}
+
+// By hand: nalgebra compares isometries only for `T: RealField`, a bound `Real` does not carry.
+// Equal frames have equal translations (m) and rotations (a unit quaternion and its negation are
+// the same rotation, as nalgebra's `UnitQuaternion` equality says).
+impl<T: Real> PartialEq for WheelFrame<T> {
+    fn eq(&self, other: &Self) -> bool {
+        let same = |a: &Isometry3<T>, b: &Isometry3<T>| {
+            a.translation == b.translation && a.rotation == b.rotation
+        };
+        self.wheel == other.wheel
+            && same(&self.pose, &other.pose)
+            && same(&self.tyre_pose, &other.tyre_pose)
+            && self.side == other.side
+            && self.steering_axis == other.steering_axis
+            && self.spin_axis == other.spin_axis
+            && self.suspension_axis == other.suspension_axis
     }
 }
 
@@ -210,13 +238,16 @@ impl<T: Real> WheelFrame<T> {
 ///
 /// ```
 /// use ackermann::Wheel;
-/// use proto_geom::{ShippedVehicle, Vec3};
+/// use proto_geom::ShippedVehicle;
+/// use proto_geom::nalgebra::{Point3, Vector3};
 ///
 /// let layout = ShippedVehicle::BmwX5.layout::<f64>();
 /// let fr = layout.frame(Wheel::FrontRight);
-/// assert_eq!(fr.centre(), Vec3::new(2.995, -0.814, 0.0)); // (L, −Tf/2, 0) m
-/// assert_eq!(fr.steering_axis, Some(Vec3::new(0.0, 0.0, -1.0)));
-/// assert_eq!(fr.spin_axis, Vec3::new(0.0, 1.0, 0.0));
+/// assert_eq!(fr.centre(), Point3::new(2.995, -0.814, 0.0)); // (L, −Tf/2, 0) m
+/// assert_eq!(fr.steering_axis.map(|a| a.into_inner()), Some(-Vector3::z()));
+/// assert_eq!(*fr.spin_axis, Vector3::y());
+/// // The wheel frame maps the wheel's axle (local +x) onto +y on the right side.
+/// assert!((fr.pose * Vector3::x() - Vector3::y()).norm() < 1e-15);
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct VehicleLayout<T: Real> {
@@ -285,10 +316,11 @@ impl<T: Real> VehicleLayout<T> {
         &self.frames
     }
 
-    /// Position of the engine speaker (Webots `Speaker "engine_speaker"`): (L, 0, 0) m.
+    /// Position of the engine speaker (Webots `Speaker "engine_speaker"`): (L, 0, 0) m in the
+    /// vehicle frame.
     #[inline]
-    pub fn engine_speaker(&self) -> Vec3<T> {
-        Vec3::new(self.dimensions.wheelbase, T::ZERO, T::ZERO)
+    pub fn engine_speaker(&self) -> Point3<T> {
+        Point3::new(self.dimensions.wheelbase, T::ZERO, T::ZERO)
     }
 
     /// The Ackermann geometry the car library sees: wheelbase, tracks, and the `tireRadius` of

@@ -16,7 +16,15 @@
 //!   binary glTF (.glb); with `alloc`, `RenderMesh` gives owned, shading-split meshes.
 //!
 //! Frame (as everywhere in this workspace): x forward, y left, z up, origin at the rear-axle
-//! centre at wheel-centre height; lengths in m. Inside a wheel, the axle is the local x axis.
+//! centre at wheel-centre height; lengths in m, angles in rad. Inside a wheel, the axle is the
+//! local x axis.
+//!
+//! Geometry is [`nalgebra`] (re-exported, so users get the matching version): positions are
+//! [`Point3`](nalgebra::Point3), directions and offsets [`Vector3`](nalgebra::Vector3) (unit
+//! axes [`UnitVector3`](nalgebra::UnitVector3)), rotations
+//! [`UnitQuaternion`](nalgebra::UnitQuaternion) and frames [`Isometry3`](nalgebra::Isometry3)
+//! (rotate, then translate), all generic over the crate's `f32`/`f64` scalar. Only the flat
+//! vertex buffers that meshes copy into caller memory stay `[T; 3]` arrays.
 //!
 //! ```
 //! use proto_geom::{TriMesh, WheelPreset};
@@ -35,8 +43,8 @@ extern crate alloc;
 #[cfg(feature = "std")]
 extern crate std;
 
+mod glue;
 mod layout;
-mod math;
 pub mod mesh;
 mod sensors;
 mod shipped;
@@ -50,10 +58,10 @@ mod render;
 pub use layout::{
     AckermannField, LayoutWarning, LayoutWarnings, VehicleDimensions, VehicleLayout, WheelFrame,
 };
-pub use math::{Isometry, Rotation, Vec3};
 pub use mesh::{
     BoxMesh, BufferTooSmall, CylinderMesh, RimCentreMesh, RimContourMesh, TriMesh, TyreMesh,
 };
+pub use nalgebra;
 pub use sensors::{SensorSlot, SensorSlots};
 pub use shipped::ShippedVehicle;
 pub use wheel::{

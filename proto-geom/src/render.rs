@@ -4,16 +4,17 @@ use alloc::collections::BTreeMap;
 use alloc::vec::Vec;
 
 use ackermann::Real;
+use nalgebra::{Isometry3, Point3, Vector3};
 
-use crate::math::{Isometry, Vec3};
+use crate::glue::{isometry_f64, point_f64, to_f32, vector_f64};
 use crate::mesh::TriMesh;
 
 /// One vertex of a [`RenderMesh`]: single precision, as GPUs and glTF want it.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct RenderVertex {
-    /// Position (m).
+    /// Position (m), a flat vertex-buffer entry.
     pub position: [f32; 3],
-    /// Unit normal.
+    /// Unit normal, a flat vertex-buffer entry.
     pub normal: [f32; 3],
     /// Texture coordinate `[u, v]` (VRML convention, origin bottom left); zero if the source
     /// mesh has none.
@@ -38,9 +39,11 @@ pub struct RenderMesh {
 }
 
 impl RenderMesh {
-    /// Flattens `mesh`, mapping positions and normals through `transform` (identity for the
-    /// mesh's own frame).
-    pub fn from_mesh<T: Real, M: TriMesh<T> + ?Sized>(mesh: &M, transform: &Isometry<T>) -> Self {
+    /// Flattens `mesh`, mapping positions and normals through `transform` (mesh frame to the
+    /// output frame, translation in m; identity for the mesh's own frame). The transform is
+    /// applied in `f64`, then rounded to `f32`.
+    pub fn from_mesh<T: Real, M: TriMesh<T> + ?Sized>(mesh: &M, transform: &Isometry3<T>) -> Self {
+        let transform = isometry_f64(transform);
         let mut map: BTreeMap<(u32, u32), u32> = BTreeMap::new();
         let mut out = RenderMesh {
             vertices: Vec::new(),
@@ -55,12 +58,16 @@ impl RenderMesh {
             for (v, n) in corners.into_iter().zip(normals) {
                 let next = u32::try_from(out.vertices.len()).unwrap_or(u32::MAX);
                 let index = *map.entry((v, n)).or_insert_with(|| {
-                    let p = mesh.position(v as usize).unwrap_or(Vec3::ZERO);
-                    let normal = mesh.normal(n as usize).unwrap_or(Vec3::X);
+                    let p = mesh
+                        .position(v as usize)
+                        .map_or(Point3::origin(), |p| point_f64(&p));
+                    let normal = mesh
+                        .normal(n as usize)
+                        .map_or(Vector3::x(), |n| vector_f64(&n));
                     let uv = mesh.tex_coord(v as usize).unwrap_or([T::ZERO; 2]);
                     out.vertices.push(RenderVertex {
-                        position: transform.transform_point(p).to_f32(),
-                        normal: transform.transform_vector(normal).to_f32(),
+                        position: to_f32((transform * p).coords.into()),
+                        normal: to_f32((transform * normal).into()),
                         tex_coord: uv.map(|c| c.to_f64() as f32),
                     });
                     next

@@ -1,6 +1,7 @@
 //! The vehicles shipped with Webots: dimensions, wheels and sensor slots (spec §4.5, §5).
 
 use ackermann::{PerWheel, Real, Wheel};
+use nalgebra::Point3;
 
 use crate::layout::{VehicleDimensions, VehicleLayout};
 use crate::sensors::SensorSlots;
@@ -156,7 +157,8 @@ impl ShippedVehicle {
     /// The sensor slots (spec §4.5), or `None` for `GreenPowerEVStar` and `Tractor`, which do
     /// not have the four slots.
     pub fn sensor_slots<T: Real>(self) -> Option<SensorSlots<T>> {
-        let s = SensorSlots::new;
+        let p = |[x, y, z]: [f64; 3]| Point3::new(T::from_f64(x), T::from_f64(y), T::from_f64(z));
+        let s = |front, top, rear| SensorSlots::new(p(front), p(top), p(rear));
         Some(match self {
             ShippedVehicle::BmwX5 => s([3.85, 0.0, 0.45], [1.0, 0.0, 1.45], [-1.0, 0.0, 0.3]),
             ShippedVehicle::ToyotaPrius => s([3.635, 0.0, 0.4], [1.1, 0.0, 1.3], [-0.85, 0.0, 0.3]),

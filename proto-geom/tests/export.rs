@@ -4,7 +4,8 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use proto_geom::export::{ChassisBox, Scene, vehicle_to_gltf};
-use proto_geom::{RenderMesh, ShippedVehicle, TriMesh, Vec3, WheelPreset};
+use proto_geom::nalgebra::{Isometry3, Vector3};
+use proto_geom::{RenderMesh, ShippedVehicle, TriMesh, WheelPreset};
 
 fn bmw_wheel() -> proto_geom::ValidWheel<f64> {
     WheelPreset::BmwX5Wheel.params::<f64>().validate().0
@@ -13,7 +14,7 @@ fn bmw_wheel() -> proto_geom::ValidWheel<f64> {
 #[test]
 fn render_mesh_splits_only_sharp_edges() {
     let w = bmw_wheel();
-    let id = proto_geom::Isometry::IDENTITY;
+    let id = Isometry3::identity();
     // Tyre: smooth, one normal per vertex → Webots' 370 vertices.
     let tyre = RenderMesh::from_mesh(&w.tyre(), &id);
     assert_eq!((tyre.vertices.len(), tyre.triangle_count()), (370, 648));
@@ -140,8 +141,8 @@ fn vehicle_glb_round_trip() {
     assert_eq!(r, [-0.5, -0.5, -0.5, 0.5]);
     // That rotation maps vehicle up (+z) to glTF up (+y) and forward (+x) to glTF +z.
     let q = vehicle_to_gltf();
-    assert!((q.rotate(Vec3::Z) - Vec3::Y).length() < 1e-15);
-    assert!((q.rotate(Vec3::X) - Vec3::Z).length() < 1e-15);
+    assert!((q * Vector3::z() - Vector3::y()).norm() < 1e-15);
+    assert!((q * Vector3::x() - Vector3::z()).norm() < 1e-15);
     // Every wheel node has tyre, rim and hub children; left tyres are turned by π about z.
     let fl = doc
         .nodes()

@@ -9,7 +9,8 @@ use common::{
     boundary_edges, double_areas, polygonal_revolution_volume, radial, vehicle_wheels,
     welded_boundary_edges,
 };
-use proto_geom::{CylinderMesh, TriMesh, ValidWheel, Vec3, WheelParams, WheelPhysics, WheelPreset};
+use proto_geom::nalgebra::Vector3;
+use proto_geom::{CylinderMesh, TriMesh, ValidWheel, WheelParams, WheelPhysics, WheelPreset};
 
 #[test]
 fn no_degenerate_triangles() {
@@ -81,8 +82,8 @@ fn closed_tyre_has_the_exact_positive_volume() {
         let mut closing = 0.0;
         for i in 0..len - 1 {
             let [a, b, c, d] =
-                [last + i, last + i + 1, i + 1, i].map(|v| tyre.position(v).unwrap());
-            closing += a.dot(b.cross(c)) + c.dot(d.cross(a));
+                [last + i, last + i + 1, i + 1, i].map(|v| tyre.position(v).unwrap().coords);
+            closing += a.dot(&b.cross(&c)) + c.dot(&d.cross(&a));
         }
         let volume = tyre.signed_volume() + closing / 6.0;
         let expected = polygonal_revolution_volume(&profile(&w), w.subdivision());
@@ -180,13 +181,16 @@ fn radii_and_widths() {
 fn check_normals<M: TriMesh<f64>>(name: &str, m: &M) {
     for t in 0..m.triangle_count() {
         let [a, b, c] = m.triangle_positions(t).unwrap();
-        let Some(face) = (b - a).cross(c - a).normalized() else {
+        let Some(face) = (b - a).cross(&(c - a)).try_normalize(0.0) else {
             continue;
         };
         for n in m.corner_normals(t).unwrap() {
-            assert!((n.length() - 1.0).abs() < 1e-12, "{name}: normal length");
+            assert!((n.norm() - 1.0).abs() < 1e-12, "{name}: normal length");
             // Smooth normals lean at most half a facet plus a shoulder step off the face.
-            assert!(n.dot(face) > 0.6, "{name}: triangle {t}: {n:?} vs {face:?}");
+            assert!(
+                n.dot(&face) > 0.6,
+                "{name}: triangle {t}: {n:?} vs {face:?}"
+            );
         }
     }
 }
@@ -213,26 +217,26 @@ fn normals_smooth_where_webots_smooths() {
             tyre.normal(ring * 37).unwrap(),
             tyre.normal(ring * 37 + 36).unwrap(),
         );
-        assert!((a - b).length() < 1e-12);
+        assert!((a - b).norm() < 1e-12);
     }
     // Sidewall ring A: +x; tread rings: radial.
-    assert_eq!(tyre.normal(0), Some(Vec3::new(1.0, 0.0, 0.0)));
+    assert_eq!(tyre.normal(0), Some(Vector3::new(1.0, 0.0, 0.0)));
     let tread = tyre.normal(4 * 37).unwrap();
-    assert!((tread - Vec3::new(0.0, -1.0, 0.0)).length() < 1e-12);
+    assert!((tread - Vector3::new(0.0, -1.0, 0.0)).norm() < 1e-12);
 
     // Rim contour (creaseAngle 2π/S + 0.01): the inner-cylinder corners of one vertex differ
     // from its annulus corners (a 90° crease), while around the axle the cylinder is smooth.
     let rim = w.rim_contour();
     assert!((rim.crease_angle() - (std::f64::consts::TAU / 36.0 + 0.01)).abs() < 1e-15);
     let annulus = rim.corner_normals(0).unwrap(); // strip 0, at x = −T/2
-    assert!(annulus.iter().all(|n| *n == Vec3::new(-1.0, 0.0, 0.0)));
+    assert!(annulus.iter().all(|n| *n == Vector3::new(-1.0, 0.0, 0.0)));
     let back = rim.corner_normals(2 * 2 * 36).unwrap(); // strip 2, at x = +T/2
-    assert!(back.iter().all(|n| *n == Vec3::new(1.0, 0.0, 0.0)));
+    assert!(back.iter().all(|n| *n == Vector3::new(1.0, 0.0, 0.0)));
     let cyl = rim.corner_normals(2 * 36).unwrap(); // strip 1, first triangle
     let [v0, ..] = rim.triangle(2 * 36).unwrap();
     let p = rim.position(v0 as usize).unwrap();
     // Inward radial normal at that corner.
-    assert!((cyl[0] + Vec3::new(0.0, p.y, p.z) * (1.0 / radial(p))).length() < 1e-12);
+    assert!((cyl[0] + Vector3::new(0.0, p.y, p.z) * (1.0 / radial(p))).norm() < 1e-12);
 
     // Rim centre (creaseAngle 0): flat, one normal per triangle; the front hub fan faces −x.
     let hub = w.rim_centre();
@@ -263,9 +267,9 @@ fn flat_curvature_gives_webots_zero_area_shoulders() {
     // E = 3 shoulder strips per side, 2S triangles each: 2·3·72 = 432 zero-area triangles.
     assert_eq!(areas.iter().filter(|a| **a < 1e-15).count(), 432);
     let tyre = w.tyre();
-    assert_eq!(tyre.normal(37), Some(Vec3::new(1.0, 0.0, 0.0))); // B_0: sidewall side
+    assert_eq!(tyre.normal(37), Some(Vector3::new(1.0, 0.0, 0.0))); // B_0: sidewall side
     let b3 = tyre.normal(4 * 37).unwrap(); // B_3: tread side
-    assert!((b3 - Vec3::new(0.0, -1.0, 0.0)).length() < 1e-12);
+    assert!((b3 - Vector3::new(0.0, -1.0, 0.0)).norm() < 1e-12);
 }
 
 #[test]

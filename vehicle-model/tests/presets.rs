@@ -1,5 +1,6 @@
 //! Every shipped model validates without warnings and matches the spec §5 tables.
 
+use proto_geom::nalgebra::{Translation3, Vector3};
 use vehicle_model::{
     CarParams, DriveType, Driver, EngineType, Model, Wheel, WheelPhysics, is_physical_inertia,
 };
@@ -227,10 +228,13 @@ fn derived_inertia_for_models_without_one() {
 fn sensor_slots_and_plain_car() {
     let bmw = Model::BmwX5.params::<f64>();
     let slots = bmw.sensor_slots.unwrap();
-    assert_eq!(slots.front.translation.to_array(), [3.85, 0.0, 0.45]);
+    assert_eq!(
+        slots.front.translation.vector,
+        Vector3::new(3.85, 0.0, 0.45)
+    );
     // Y-up (0, 1.35, 1.075) → (1.075, 0, 1.35).
     let czero = Model::CitroenCZero.params::<f64>().sensor_slots.unwrap();
-    assert_eq!(czero.top.translation.to_array(), [1.075, 0.0, 1.35]);
+    assert_eq!(czero.top.translation.vector, Vector3::new(1.075, 0.0, 1.35));
     assert_eq!(Model::Tractor.params::<f64>().sensor_slots, None);
 
     let car = Model::Car.params::<f64>();
@@ -354,17 +358,17 @@ fn sensor_slots_of_every_model() {
     ];
     for (model, front, top, rear) in rows {
         let s = model.params::<f64>().sensor_slots.unwrap();
-        assert_eq!(s.front.translation.to_array(), front, "{model}");
-        assert_eq!(s.top.translation.to_array(), top, "{model}");
-        assert_eq!(s.rear.translation.to_array(), rear, "{model}");
-        assert_eq!(s.centre.translation.to_array(), [0.0; 3], "{model}");
-        // The rear slot faces backward: +x maps to −x.
-        let back = s
-            .rear
-            .rotation
-            .rotate(proto_geom::Vec3::from_array([1.0, 0.0, 0.0]));
+        let at = |t: Translation3<f64>| -> [f64; 3] { t.vector.into() };
+        assert_eq!(at(s.front.translation), front, "{model}");
+        assert_eq!(at(s.top.translation), top, "{model}");
+        assert_eq!(at(s.rear.translation), rear, "{model}");
+        assert_eq!(at(s.centre.translation), [0.0; 3], "{model}");
+        // The front and top slots face forward, the rear slot backward: +x maps to −x.
+        assert_eq!(s.front.rotation.angle(), 0.0, "{model}");
+        assert_eq!(s.top.rotation.angle(), 0.0, "{model}");
+        let back = s.rear.rotation * Vector3::x();
         assert!(
-            (back.to_array()[0] + 1.0).abs() < 1e-12 && back.to_array()[1].abs() < 1e-12,
+            (back.x + 1.0).abs() < 1e-12 && back.y.abs() < 1e-12 && back.z.abs() < 1e-12,
             "{model}: {back:?}"
         );
     }

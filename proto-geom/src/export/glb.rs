@@ -8,13 +8,15 @@ use std::vec::Vec;
 use gltf_json as json;
 use json::validation::{Checked, USize64};
 
+use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+
 use super::Scene;
-use crate::math::{Rotation, Vec3};
 
 /// The rotation from the Webots/vehicle frame (x forward, y left, z up) to glTF's (y up,
-/// z forward, x left): glTF (x, y, z) = vehicle (y, z, x), a turn of −2π/3 about (1, 1, 1).
-pub fn vehicle_to_gltf() -> Rotation<f64> {
-    Rotation::from_xyzw([-0.5, -0.5, -0.5, 0.5])
+/// z forward, x left): glTF (x, y, z) = vehicle (y, z, x), a turn of −2π/3 rad about (1, 1, 1).
+pub fn vehicle_to_gltf() -> UnitQuaternion<f64> {
+    // w, i, j, k; already unit.
+    UnitQuaternion::new_unchecked(Quaternion::new(0.5, -0.5, -0.5, -0.5))
 }
 
 fn u64_len(n: usize) -> USize64 {
@@ -168,10 +170,10 @@ impl Scene {
             });
         }
 
-        let f = |v: Vec3<f64>| [v.x as f32, v.y as f32, v.z as f32];
+        let f = |v: Vector3<f64>| [v.x as f32, v.y as f32, v.z as f32];
         let node = |name: String,
-                    translation: Vec3<f64>,
-                    rotation: Rotation<f64>,
+                    translation: Vector3<f64>,
+                    rotation: UnitQuaternion<f64>,
                     mesh: Option<usize>,
                     children: &[usize]| json::Node {
             camera: None,
@@ -183,7 +185,8 @@ impl Scene {
             mesh: mesh.map(index_u32),
             name: Some(name),
             rotation: Some(json::scene::UnitQuaternion(
-                rotation.to_xyzw().map(|c| c as f32),
+                // glTF's order is [x, y, z, w], nalgebra's `coords`.
+                rotation.coords.map(|c| c as f32).into(),
             )),
             scale: None,
             translation: Some(f(translation)),
@@ -193,7 +196,7 @@ impl Scene {
         for n in &self.nodes {
             root.push(node(
                 n.name.clone(),
-                n.transform.translation,
+                n.transform.translation.vector,
                 n.transform.rotation,
                 n.mesh,
                 &n.children,
@@ -202,7 +205,7 @@ impl Scene {
         // A last node turns the z-up vehicle frame into glTF's y-up frame.
         let up = root.push(node(
             "webots_to_gltf".to_string(),
-            Vec3::ZERO,
+            Vector3::zeros(),
             vehicle_to_gltf(),
             None,
             &self.roots,

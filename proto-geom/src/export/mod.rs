@@ -27,9 +27,10 @@ use std::string::{String, ToString};
 use std::vec::Vec;
 
 use ackermann::{Real, Wheel};
+use nalgebra::{Isometry3, Point3, Vector3};
 
+use crate::glue::{identity, isometry_f64};
 use crate::layout::VehicleLayout;
-use crate::math::{Isometry, Rotation, Vec3};
 use crate::mesh::BoxMesh;
 use crate::render::RenderMesh;
 use crate::wheel::{PbrAppearance, ValidWheel, WheelParams, WheelShape, WheelSide};
@@ -68,8 +69,9 @@ impl Material {
 pub struct Node {
     /// Node name (OBJ object names are built from it).
     pub name: String,
-    /// Placement relative to the parent (m), in the vehicle frame convention (z up).
-    pub transform: Isometry<f64>,
+    /// Placement relative to the parent (translation in m), in the vehicle frame convention
+    /// (z up).
+    pub transform: Isometry3<f64>,
     /// Index into [`Scene::meshes`].
     pub mesh: Option<usize>,
     /// Indices into [`Scene::nodes`].
@@ -92,19 +94,19 @@ pub struct SceneMesh {
 /// The body shape is not this crate's business (it belongs to the car model above it), so the
 /// exporter takes it as a parameter.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ChassisBox<T> {
+pub struct ChassisBox<T: Real> {
     /// Box centre (m, vehicle frame: x forward, y left, z up from the wheel-centre plane).
-    pub centre: Vec3<T>,
+    pub centre: Point3<T>,
     /// Full lengths along x, y, z (m).
-    pub size: Vec3<T>,
+    pub size: Vector3<T>,
 }
 
 impl<T: Real> ChassisBox<T> {
     /// A box spanning x ∈ [`rear`, `front`], y ∈ ±`width`/2 and z ∈ [`bottom`, `top`] (m).
     pub fn from_extents(rear: T, front: T, width: T, bottom: T, top: T) -> Self {
         ChassisBox {
-            centre: Vec3::new((rear + front) * T::HALF, T::ZERO, (bottom + top) * T::HALF),
-            size: Vec3::new((front - rear).abs(), width.abs(), (top - bottom).abs()),
+            centre: Point3::new((rear + front) * T::HALF, T::ZERO, (bottom + top) * T::HALF),
+            size: Vector3::new((front - rear).abs(), width.abs(), (top - bottom).abs()),
         }
     }
 }
@@ -120,12 +122,6 @@ pub struct Scene {
     pub meshes: Vec<SceneMesh>,
     /// Materials.
     pub materials: Vec<Material>,
-}
-
-fn to_f64<T: Real>(t: &Isometry<T>) -> Isometry<f64> {
-    let v = |p: Vec3<T>| Vec3::new(p.x.to_f64(), p.y.to_f64(), p.z.to_f64());
-    let q = t.rotation.to_xyzw().map(Real::to_f64);
-    Isometry::new(v(t.translation), Rotation::from_xyzw(q))
 }
 
 /// The wheel with the fields that do not change its meshes normalised, to share meshes.
@@ -169,7 +165,7 @@ impl Scene {
         &mut self,
         parent: Option<usize>,
         name: &str,
-        transform: Isometry<f64>,
+        transform: Isometry3<f64>,
         mesh: Option<usize>,
     ) -> usize {
         let index = self.nodes.len();
@@ -193,7 +189,7 @@ impl Scene {
     fn add_wheel_meshes<T: Real>(&mut self, wheel: &ValidWheel<T>) -> WheelParts {
         let p = wheel.params();
         let tyre_mat = self.add_material(Material::from_appearance("tyre", &p.tire_appearance));
-        let id = Isometry::<T>::IDENTITY;
+        let id = identity::<T>();
         match p.shape {
             WheelShape::VehicleWheel => {
                 let rim_mat =
@@ -220,9 +216,9 @@ impl Scene {
     /// `tyre`, `rim` and `hub` (see [`WheelShape`] for the other shapes).
     pub fn wheel<T: Real>(wheel: &ValidWheel<T>) -> Self {
         let mut scene = Scene::new();
-        let root = scene.add_node(None, "wheel", Isometry::IDENTITY, None);
+        let root = scene.add_node(None, "wheel", Isometry3::identity(), None);
         for (name, mesh) in scene.add_wheel_meshes(wheel) {
-            scene.add_node(Some(root), name, Isometry::IDENTITY, Some(mesh));
+            scene.add_node(Some(root), name, Isometry3::identity(), Some(mesh));
         }
         scene
     }
@@ -237,7 +233,7 @@ impl Scene {
         chassis: &ChassisBox<T>,
     ) -> Self {
         let mut scene = Scene::new();
-        let root = scene.add_node(None, name, Isometry::IDENTITY, None);
+        let root = scene.add_node(None, name, Isometry3::identity(), None);
         let body = Material {
             name: "chassis".to_string(),
             base_color: [0.45, 0.5, 0.55],
@@ -246,12 +242,12 @@ impl Scene {
         };
         let body = scene.add_material(body);
         let chassis_mesh = BoxMesh::new(chassis.centre, chassis.size);
-        let chassis_mesh = RenderMesh::from_mesh(&chassis_mesh, &Isometry::IDENTITY);
+        let chassis_mesh = RenderMesh::from_mesh(&chassis_mesh, &identity::<T>());
         let chassis_mesh = scene.add_mesh("chassis", chassis_mesh, body);
         scene.add_node(
             Some(root),
             "chassis",
-            Isometry::IDENTITY,
+            Isometry3::identity(),
             Some(chassis_mesh),
         );
 
@@ -274,13 +270,14 @@ impl Scene {
                 Wheel::RearRight => "rear_right_wheel",
                 Wheel::RearLeft => "rear_left_wheel",
             };
-            let node = scene.add_node(Some(root), node_name, to_f64(&frame.pose), None);
-            let tyre_local = to_f64(&(frame.pose.inverse() * frame.tyre_pose));
+            let pose = isometry_f64(&frame.pose);
+            let node = scene.add_node(Some(root), node_name, pose, None);
+            let tyre_local = pose.inverse() * isometry_f64(&frame.tyre_pose);
             for (part, mesh) in parts {
                 let t = if part == "tyre" {
                     tyre_local
                 } else {
-                    Isometry::IDENTITY
+                    Isometry3::identity()
                 };
                 scene.add_node(Some(node), part, t, Some(mesh));
             }
@@ -300,8 +297,8 @@ impl Scene {
 
     /// Visits every node with a mesh, depth first, with its world transform and its name path
     /// (ancestor names joined by `.`, without the root's).
-    fn for_each_instance(&self, mut f: impl FnMut(&str, &Isometry<f64>, &SceneMesh)) {
-        let mut stack: Vec<(usize, Isometry<f64>, String)> = self
+    fn for_each_instance(&self, mut f: impl FnMut(&str, &Isometry3<f64>, &SceneMesh)) {
+        let mut stack: Vec<(usize, Isometry3<f64>, String)> = self
             .roots
             .iter()
             .rev()

@@ -2,6 +2,8 @@
 
 use std::io::{self, Write};
 
+use nalgebra::{Point3, Vector3};
+
 use super::Scene;
 
 impl Scene {
@@ -36,7 +38,7 @@ impl Scene {
                 }
                 for v in &m.vertices {
                     let [x, y, z] = v.position.map(f64::from);
-                    let p = world.transform_point(crate::Vec3::new(x, y, z));
+                    let p = world.transform_point(&Point3::new(x, y, z));
                     writeln!(w, "v {} {} {}", p.x as f32, p.y as f32, p.z as f32)?;
                 }
                 for v in &m.vertices {
@@ -44,7 +46,7 @@ impl Scene {
                 }
                 for v in &m.vertices {
                     let [x, y, z] = v.normal.map(f64::from);
-                    let n = world.transform_vector(crate::Vec3::new(x, y, z));
+                    let n = world.transform_vector(&Vector3::new(x, y, z));
                     writeln!(w, "vn {} {} {}", n.x as f32, n.y as f32, n.z as f32)?;
                 }
                 for t in m.indices.chunks_exact(3) {

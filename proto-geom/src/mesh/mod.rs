@@ -18,8 +18,9 @@ mod tyre;
 use core::fmt;
 
 use ackermann::Real;
+use nalgebra::{Point3, Vector3};
 
-use crate::math::Vec3;
+use crate::glue::{dot, norm};
 
 pub use primitive::{BoxMesh, CylinderMesh};
 pub use rim::{RimCentreMesh, RimContourMesh};
@@ -81,14 +82,14 @@ pub trait TriMesh<T: Real> {
     /// Number of entries in the normal list.
     fn normal_count(&self) -> usize;
 
-    /// Position of vertex `vertex` (m).
-    fn position(&self, vertex: usize) -> Option<Vec3<T>>;
+    /// Position of vertex `vertex` (m, mesh frame).
+    fn position(&self, vertex: usize) -> Option<Point3<T>>;
 
     /// Vertex indices of triangle `triangle`, counter-clockwise seen from outside.
     fn triangle(&self, triangle: usize) -> Option<[u32; 3]>;
 
-    /// Unit normal number `normal`.
-    fn normal(&self, normal: usize) -> Option<Vec3<T>>;
+    /// Unit normal number `normal` (a direction in the mesh frame).
+    fn normal(&self, normal: usize) -> Option<Vector3<T>>;
 
     /// Normal-list indices of the three corners of triangle `triangle`.
     fn triangle_normals(&self, triangle: usize) -> Option<[u32; 3]>;
@@ -109,7 +110,7 @@ pub trait TriMesh<T: Real> {
     }
 
     /// The three corner positions of triangle `triangle` (m).
-    fn triangle_positions(&self, triangle: usize) -> Option<[Vec3<T>; 3]> {
+    fn triangle_positions(&self, triangle: usize) -> Option<[Point3<T>; 3]> {
         let [a, b, c] = self.triangle(triangle)?;
         Some([
             self.position(a as usize)?,
@@ -118,8 +119,8 @@ pub trait TriMesh<T: Real> {
         ])
     }
 
-    /// The three corner normals of triangle `triangle`.
-    fn corner_normals(&self, triangle: usize) -> Option<[Vec3<T>; 3]> {
+    /// The three corner unit normals of triangle `triangle`.
+    fn corner_normals(&self, triangle: usize) -> Option<[Vector3<T>; 3]> {
         let [a, b, c] = self.triangle_normals(triangle)?;
         Some([
             self.normal(a as usize)?,
@@ -129,7 +130,7 @@ pub trait TriMesh<T: Real> {
     }
 
     /// Iterates over the vertex positions (m).
-    fn positions(&self) -> impl Iterator<Item = Vec3<T>> + '_
+    fn positions(&self) -> impl Iterator<Item = Point3<T>> + '_
     where
         Self: Sized,
     {
@@ -144,13 +145,14 @@ pub trait TriMesh<T: Real> {
         (0..self.triangle_count()).filter_map(|i| self.triangle(i))
     }
 
-    /// Copies the positions (m) into `out`; returns the number written.
+    /// Copies the positions (m) into `out` as flat `[x, y, z]` triples (a vertex buffer);
+    /// returns the number written.
     ///
     /// # Errors
     /// [`BufferTooSmall`] if `out` is shorter than [`TriMesh::vertex_count`] (nothing written).
     fn fill_positions(&self, out: &mut [[T; 3]]) -> Result<usize, BufferTooSmall> {
         fill(out, self.vertex_count(), |i| {
-            self.position(i).map(Vec3::to_array)
+            self.position(i).map(|p| p.coords.into())
         })
     }
 
@@ -162,14 +164,13 @@ pub trait TriMesh<T: Real> {
         fill(out, self.triangle_count(), |i| self.triangle(i))
     }
 
-    /// Copies the normal list into `out`; returns the number written.
+    /// Copies the normal list into `out` as flat `[x, y, z]` unit vectors; returns the number
+    /// written.
     ///
     /// # Errors
     /// [`BufferTooSmall`] if `out` is shorter than [`TriMesh::normal_count`].
     fn fill_normals(&self, out: &mut [[T; 3]]) -> Result<usize, BufferTooSmall> {
-        fill(out, self.normal_count(), |i| {
-            self.normal(i).map(Vec3::to_array)
-        })
+        fill(out, self.normal_count(), |i| self.normal(i).map(Into::into))
     }
 
     /// Copies the corners' normal indices into `out`; returns the number written.
@@ -230,8 +231,8 @@ fn triple_product_sum<T: Real, M: TriMesh<T> + ?Sized>(mesh: &M, scale: T) -> T 
     let mut v = T::ZERO;
     for t in 0..mesh.triangle_count() {
         if let Some([a, b, c]) = mesh.triangle_positions(t) {
-            let [a, b, c] = [a, b, c].map(|p| Vec3::new(p.x / scale, p.y / scale, p.z / scale));
-            v += a.dot(b.cross(c));
+            let [a, b, c] = [a, b, c].map(|p| scaled(&p, scale));
+            v += dot(&a, &b.cross(&c));
         }
     }
     v
@@ -242,11 +243,17 @@ fn double_area_sum<T: Real, M: TriMesh<T> + ?Sized>(mesh: &M, scale: T) -> T {
     let mut s = T::ZERO;
     for t in 0..mesh.triangle_count() {
         if let Some([a, b, c]) = mesh.triangle_positions(t) {
-            let [a, b, c] = [a, b, c].map(|p| Vec3::new(p.x / scale, p.y / scale, p.z / scale));
-            s += (b - a).cross(c - a).length();
+            let [a, b, c] = [a, b, c].map(|p| scaled(&p, scale));
+            s += norm(&(b - a).cross(&(c - a)));
         }
     }
     s
+}
+
+/// The position vector of `p` (m) with every coordinate divided by `scale`.
+#[inline]
+fn scaled<T: Real>(p: &Point3<T>, scale: T) -> Vector3<T> {
+    p.coords.map(|c| c / scale)
 }
 
 /// The largest coordinate magnitude of the mesh's vertices (m), at least `T::EPSILON` so that

@@ -2,9 +2,10 @@
 //! cylinders and simple chassis shapes.
 
 use ackermann::Real;
+use nalgebra::{Point3, Vector3};
 
 use super::{TriMesh, circle_angle, idx};
-use crate::math::Vec3;
+use crate::glue::x_axis;
 
 /// A closed cylinder of radius `radius` and length `height` (m) about the local x axis, centred
 /// on the origin, with S segments.
@@ -70,20 +71,24 @@ impl<T: Real> TriMesh<T> for CylinderMesh<T> {
         self.vertex_count()
     }
 
-    fn position(&self, vertex: usize) -> Option<Vec3<T>> {
+    fn position(&self, vertex: usize) -> Option<Point3<T>> {
         let h = self.half_height;
         let (part, k) = self.split(vertex)?;
         let ring = self.s as usize + 1;
         let (x, i, r) = match part {
             0 => (if k < ring { -h } else { h }, k % ring, self.radius),
             1 | 2 if k == 0 => {
-                return Some(Vec3::new(if part == 1 { -h } else { h }, T::ZERO, T::ZERO));
+                return Some(Point3::new(
+                    if part == 1 { -h } else { h },
+                    T::ZERO,
+                    T::ZERO,
+                ));
             }
             1 => (-h, k - 1, self.radius),
             _ => (h, k - 1, self.radius),
         };
         let a = circle_angle(i, self.s, T::ZERO);
-        Some(Vec3::new(x, r * a.cos(), r * a.sin()))
+        Some(Point3::new(x, r * a.cos(), r * a.sin()))
     }
 
     fn triangle(&self, triangle: usize) -> Option<[u32; 3]> {
@@ -113,15 +118,15 @@ impl<T: Real> TriMesh<T> for CylinderMesh<T> {
         })
     }
 
-    fn normal(&self, normal: usize) -> Option<Vec3<T>> {
+    fn normal(&self, normal: usize) -> Option<Vector3<T>> {
         let (part, k) = self.split(normal)?;
         Some(match part {
             0 => {
                 let a = circle_angle(k % (self.s as usize + 1), self.s, T::ZERO);
-                Vec3::new(T::ZERO, a.cos(), a.sin())
+                Vector3::new(T::ZERO, a.cos(), a.sin())
             }
-            1 => -Vec3::X,
-            _ => Vec3::X,
+            1 => -x_axis::<T>().into_inner(),
+            _ => x_axis().into_inner(),
         })
     }
 
@@ -158,9 +163,9 @@ impl<T: Real> TriMesh<T> for CylinderMesh<T> {
 
 /// An axis-aligned box (m): 6 faces of 4 vertices (24 vertices, 12 triangles), flat normals.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct BoxMesh<T> {
-    centre: Vec3<T>,
-    half: Vec3<T>,
+pub struct BoxMesh<T: Real> {
+    centre: Point3<T>,
+    half: Vector3<T>,
 }
 
 /// (normal, u axis, v axis) of each face, with u × v = normal.
@@ -173,8 +178,8 @@ const FACES: [([i8; 3], [i8; 3], [i8; 3]); 6] = [
     ([0, 0, -1], [0, 1, 0], [1, 0, 0]),
 ];
 
-fn axis<T: Real>(a: [i8; 3]) -> Vec3<T> {
-    Vec3::new(
+fn axis<T: Real>(a: [i8; 3]) -> Vector3<T> {
+    Vector3::new(
         T::from_i32(i32::from(a[0])),
         T::from_i32(i32::from(a[1])),
         T::from_i32(i32::from(a[2])),
@@ -182,17 +187,16 @@ fn axis<T: Real>(a: [i8; 3]) -> Vec3<T> {
 }
 
 impl<T: Real> BoxMesh<T> {
-    /// A box centred on `centre` with full edge lengths `size` = (x, y, z) (m). Negative or
-    /// non-finite sizes are taken as their absolute value or 0.
-    pub fn new(centre: Vec3<T>, size: Vec3<T>) -> Self {
-        let h = |v: T| v.finite_or(T::ZERO).abs() * T::HALF;
+    /// A box centred on `centre` (m, mesh frame) with full edge lengths `size` = (x, y, z) (m).
+    /// Negative or non-finite sizes are taken as their absolute value or 0.
+    pub fn new(centre: Point3<T>, size: Vector3<T>) -> Self {
         BoxMesh {
             centre,
-            half: Vec3::new(h(size.x), h(size.y), h(size.z)),
+            half: size.map(|v| v.finite_or(T::ZERO).abs() * T::HALF),
         }
     }
 
-    fn face(&self, f: usize) -> Option<(Vec3<T>, Vec3<T>, Vec3<T>)> {
+    fn face(&self, f: usize) -> Option<(Vector3<T>, Vector3<T>, Vector3<T>)> {
         let (n, u, v) = FACES.get(f)?;
         Some((axis(*n), axis(*u), axis(*v)))
     }
@@ -211,7 +215,7 @@ impl<T: Real> TriMesh<T> for BoxMesh<T> {
         24
     }
 
-    fn position(&self, vertex: usize) -> Option<Vec3<T>> {
+    fn position(&self, vertex: usize) -> Option<Point3<T>> {
         let (n, u, v) = self.face(vertex / 4)?;
         let (su, sv) = match vertex % 4 {
             0 => (-T::ONE, -T::ONE),
@@ -219,9 +223,7 @@ impl<T: Real> TriMesh<T> for BoxMesh<T> {
             2 => (T::ONE, T::ONE),
             _ => (-T::ONE, T::ONE),
         };
-        let scale = |d: Vec3<T>, k: T| {
-            Vec3::new(d.x * self.half.x, d.y * self.half.y, d.z * self.half.z) * k
-        };
+        let scale = |d: Vector3<T>, k: T| d.component_mul(&self.half) * k;
         Some(self.centre + scale(n, T::ONE) + scale(u, su) + scale(v, sv))
     }
 
@@ -237,7 +239,7 @@ impl<T: Real> TriMesh<T> for BoxMesh<T> {
         })
     }
 
-    fn normal(&self, normal: usize) -> Option<Vec3<T>> {
+    fn normal(&self, normal: usize) -> Option<Vector3<T>> {
         self.face(normal / 4).map(|(n, _, _)| n)
     }
 

@@ -1,9 +1,10 @@
 //! The `VehicleWheel` rim: the round contour and the centre with its beams.
 
 use ackermann::Real;
+use nalgebra::{Point3, Vector3};
 
 use super::{TriMesh, circle_angle, idx};
-use crate::math::Vec3;
+use crate::glue::{normalize, x_axis};
 use crate::wheel::ValidWheel;
 
 /// The rim contour of a `VehicleWheel` (Webots "Round contour" IndexedFaceSet): an annulus from
@@ -66,7 +67,7 @@ impl<T: Real> TriMesh<T> for RimContourMesh<T> {
         2 + self.ring_len()
     }
 
-    fn position(&self, vertex: usize) -> Option<Vec3<T>> {
+    fn position(&self, vertex: usize) -> Option<Point3<T>> {
         if vertex >= self.vertex_count() {
             return None;
         }
@@ -80,7 +81,7 @@ impl<T: Real> TriMesh<T> for RimContourMesh<T> {
             _ => (h, self.rim_radius),
         };
         let a = circle_angle(i, self.s, T::ZERO);
-        Some(Vec3::new(x, radius * a.cos(), radius * a.sin()))
+        Some(Point3::new(x, radius * a.cos(), radius * a.sin()))
     }
 
     fn triangle(&self, triangle: usize) -> Option<[u32; 3]> {
@@ -99,13 +100,13 @@ impl<T: Real> TriMesh<T> for RimContourMesh<T> {
         })
     }
 
-    fn normal(&self, normal: usize) -> Option<Vec3<T>> {
+    fn normal(&self, normal: usize) -> Option<Vector3<T>> {
         match normal {
-            0 => Some(-Vec3::X),
-            1 => Some(Vec3::X),
+            0 => Some(-x_axis::<T>().into_inner()),
+            1 => Some(x_axis().into_inner()),
             n if n < self.normal_count() => {
                 let a = circle_angle(n - 2, self.s, T::ZERO);
-                Some(Vec3::new(T::ZERO, -a.cos(), -a.sin()))
+                Some(Vector3::new(T::ZERO, -a.cos(), -a.sin()))
             }
             _ => None,
         }
@@ -235,13 +236,13 @@ impl<T: Real> TriMesh<T> for RimCentreMesh<T> {
         self.triangle_count()
     }
 
-    fn position(&self, vertex: usize) -> Option<Vec3<T>> {
+    fn position(&self, vertex: usize) -> Option<Point3<T>> {
         let len = self.n as usize + 1;
         if vertex == 0 {
-            return Some(Vec3::new(self.x_edge, T::ZERO, T::ZERO));
+            return Some(Point3::new(self.x_edge, T::ZERO, T::ZERO));
         }
         if vertex == self.back_centre() as usize {
-            return Some(Vec3::new(self.x_back, T::ZERO, T::ZERO));
+            return Some(Point3::new(self.x_back, T::ZERO, T::ZERO));
         }
         if vertex >= self.vertex_count() {
             return None;
@@ -249,7 +250,7 @@ impl<T: Real> TriMesh<T> for RimCentreMesh<T> {
         let (m, p) = ((vertex - 1) / len, (vertex - 1) % len);
         let (radius, shift, x) = self.block(m);
         let a = circle_angle(p, self.n, shift);
-        Some(Vec3::new(x, radius * a.cos(), radius * a.sin()))
+        Some(Point3::new(x, radius * a.cos(), radius * a.sin()))
     }
 
     fn triangle(&self, triangle: usize) -> Option<[u32; 3]> {
@@ -292,11 +293,11 @@ impl<T: Real> TriMesh<T> for RimCentreMesh<T> {
         Some(if second { [c, d, a] } else { [a, b, c] })
     }
 
-    fn normal(&self, normal: usize) -> Option<Vec3<T>> {
+    fn normal(&self, normal: usize) -> Option<Vector3<T>> {
         let [a, b, c] = self.triangle_positions(normal)?;
         // Every corrected triangle has positive area for valid parameters; the fallback only
         // keeps a unit vector for pathological inputs.
-        Some((b - a).cross(c - a).normalized().unwrap_or(-Vec3::X))
+        Some(normalize((b - a).cross(&(c - a))).unwrap_or(-x_axis::<T>().into_inner()))
     }
 
     fn triangle_normals(&self, triangle: usize) -> Option<[u32; 3]> {

@@ -1,9 +1,9 @@
 //! The `VehicleWheel` tyre (Webots `DEF TIRE` IndexedFaceSet).
 
 use ackermann::Real;
+use nalgebra::{Point3, Vector3};
 
 use super::{TriMesh, circle_angle, idx};
-use crate::math::Vec3;
 use crate::wheel::ValidWheel;
 
 /// The tyre of a `VehicleWheel`, with Webots' vertex order, triangle topology and texture
@@ -148,11 +148,11 @@ impl<T: Real> TriMesh<T> for TyreMesh<T> {
         self.vertex_count()
     }
 
-    fn position(&self, vertex: usize) -> Option<Vec3<T>> {
+    fn position(&self, vertex: usize) -> Option<Point3<T>> {
         let (r, i) = self.split(vertex)?;
         let ring = self.ring(r);
         let a = circle_angle(i, self.s, T::ZERO);
-        Some(Vec3::new(
+        Some(Point3::new(
             ring.x,
             -(ring.radius * a.cos()),
             ring.radius * a.sin(),
@@ -176,11 +176,15 @@ impl<T: Real> TriMesh<T> for TyreMesh<T> {
         })
     }
 
-    fn normal(&self, normal: usize) -> Option<Vec3<T>> {
+    fn normal(&self, normal: usize) -> Option<Vector3<T>> {
         let (r, i) = self.split(normal)?;
         let ring = self.ring(r);
         let a = circle_angle(i, self.s, T::ZERO);
-        Some(Vec3::new(ring.nx, -(ring.nr * a.cos()), ring.nr * a.sin()))
+        Some(Vector3::new(
+            ring.nx,
+            -(ring.nr * a.cos()),
+            ring.nr * a.sin(),
+        ))
     }
 
     fn triangle_normals(&self, triangle: usize) -> Option<[u32; 3]> {

@@ -1,10 +1,11 @@
 //! The wheel's bounding cylinder and the mass properties Webots derives from it.
 
 use ackermann::Real;
+use nalgebra::{UnitQuaternion, UnitVector3};
 
 use super::params::WheelPhysics;
 use super::validate::ValidWheel;
-use crate::math::{Rotation, Vec3};
+use crate::glue::{rotation, x_axis, y_axis};
 use crate::mesh::CylinderMesh;
 
 /// The collision shape of a wheel: a solid cylinder centred on the wheel centre whose axis is
@@ -24,17 +25,17 @@ pub struct BoundingCylinder<T> {
 }
 
 impl<T: Real> BoundingCylinder<T> {
-    /// The cylinder axis in the wheel frame: +x.
+    /// The cylinder axis in the wheel frame (unit direction): +x.
     #[inline]
-    pub fn axis(&self) -> Vec3<T> {
-        Vec3::X
+    pub fn axis(&self) -> UnitVector3<T> {
+        x_axis()
     }
 
-    /// The rotation Webots applies to its z-axis `Cylinder` (π/2 about +y, exact here where
+    /// The rotation Webots applies to its z-axis `Cylinder` (π/2 rad about +y, exact here where
     /// Webots writes 1.570796).
     #[inline]
-    pub fn webots_rotation(&self) -> Rotation<T> {
-        Rotation::from_axis_angle(Vec3::Y, T::FRAC_PI_2)
+    pub fn webots_rotation(&self) -> UnitQuaternion<T> {
+        rotation(&y_axis(), T::FRAC_PI_2)
     }
 
     /// Volume `π·r²·h` (m³), saturated at `T::MAX` for dimensions whose volume `T` cannot

@@ -3,7 +3,8 @@
 
 use std::collections::HashMap;
 
-use proto_geom::{TriMesh, ValidWheel, Vec3, WheelPreset, WheelShape};
+use proto_geom::nalgebra::Point3;
+use proto_geom::{TriMesh, ValidWheel, WheelPreset, WheelShape};
 
 /// The default `VehicleWheel`, the 2014 `AutomobileWheel` and every shipped `VehicleWheel`.
 pub fn vehicle_wheels() -> Vec<(&'static str, ValidWheel<f64>)> {
@@ -23,7 +24,7 @@ pub fn double_areas<M: TriMesh<f64>>(m: &M) -> Vec<f64> {
     (0..m.triangle_count())
         .map(|t| {
             let [a, b, c] = m.triangle_positions(t).unwrap();
-            (b - a).cross(c - a).length()
+            (b - a).cross(&(c - a)).norm()
         })
         .collect()
 }
@@ -49,7 +50,7 @@ pub fn boundary_edges<M: TriMesh<f64>>(m: &M) -> usize {
 }
 
 /// Radius of a point from the wheel axle (the x axis), m.
-pub fn radial(p: Vec3<f64>) -> f64 {
+pub fn radial(p: Point3<f64>) -> f64 {
     p.y.hypot(p.z)
 }
 
@@ -70,7 +71,7 @@ pub fn polygonal_revolution_volume(profile: &[(f64, f64)], s: u32) -> f64 {
 /// Like [`boundary_edges`], but over several meshes with vertices welded by position (1 µm),
 /// so texture seams and parts that meet (tyre and rim) are joined. Skips zero-length edges.
 pub fn welded_boundary_edges(meshes: &[&dyn TriMesh<f64>]) -> usize {
-    let key = |p: Vec3<f64>| {
+    let key = |p: Point3<f64>| {
         let q = |c: f64| (c * 1e6).round() as i64;
         (q(p.x), q(p.y), q(p.z))
     };

@@ -120,7 +120,8 @@ pub struct CarParams<T: Real> {
     /// `right_wiper_motor`, `left_wiper_motor` and `wiper_sensor` present).
     pub wipers: Option<WiperRange<T>>,
     /// Frames of the model's sensor slots (Webots fields `sensorsSlotFront`, `sensorsSlotTop`,
-    /// `sensorsSlotRear`, `sensorsSlotCenter`), `None` for a car without them.
+    /// `sensorsSlotRear`, `sensorsSlotCenter`) as nalgebra `Isometry3`s in the vehicle frame
+    /// (translations in m), `None` for a car without them.
     pub sensor_slots: Option<SensorSlots<T>>,
 }
 
