@@ -68,6 +68,8 @@ pub(crate) fn unwrap_delta(previous: f64, current: f64, predicted: f64) -> f64 {
 pub(crate) const G_STATIC: Group = Group::GROUP_1;
 /// Collision group of car chassis.
 pub(crate) const G_CAR_BODY: Group = Group::GROUP_2;
+/// Collision group of the dynamic boxes (`[[body]]`).
+pub(crate) const G_DYNAMIC: Group = Group::GROUP_3;
 /// Collision group of DifferentialWheels bodies (with their casters).
 pub(crate) const G_ROBOT_BODY: Group = Group::GROUP_4;
 /// Collision group of DifferentialWheels wheels.
@@ -75,15 +77,18 @@ pub(crate) const G_ROBOT_WHEEL: Group = Group::GROUP_5;
 
 /// The interaction groups of a collider in group `g`.
 ///
-/// Robot wheels touch only static geometry, so a wheel never collides with its own body; car
-/// chassis and robot bodies collide with each other. (Car wheels are shape casts, not colliders.)
+/// Robot wheels touch only static geometry and dynamic boxes, so a wheel never collides with
+/// its own body; car chassis, robot bodies and dynamic boxes collide with each other. (Car
+/// wheels are shape casts that see static geometry only, not colliders.)
 pub(crate) fn groups(g: Group) -> InteractionGroups {
     let filter = if g == G_STATIC {
         Group::ALL
+    } else if g == G_DYNAMIC {
+        G_STATIC | G_CAR_BODY | G_ROBOT_BODY | G_ROBOT_WHEEL | G_DYNAMIC
     } else if g == G_CAR_BODY || g == G_ROBOT_BODY {
-        G_STATIC | G_CAR_BODY | G_ROBOT_BODY
+        G_STATIC | G_CAR_BODY | G_ROBOT_BODY | G_DYNAMIC
     } else {
-        G_STATIC
+        G_STATIC | G_DYNAMIC
     };
     InteractionGroups::new(g, filter, InteractionTestMode::And)
 }
