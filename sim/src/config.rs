@@ -1,5 +1,7 @@
-//! The world description: gravity, time step, ground, static obstacles and solver settings.
+//! The world description: gravity, time step, ground, static obstacles, dynamic boxes and
+//! solver settings.
 
+use crate::body::BodySpec;
 use crate::error::ParamError;
 
 /// Webots default `WorldInfo.basicTimeStep` used by the car worlds (ms).
@@ -160,6 +162,8 @@ pub struct WorldConfig {
     pub ground_friction: f64,
     /// Static boxes and ramps.
     pub obstacles: Vec<Obstacle>,
+    /// Dynamic boxes, in the order [`World::bodies`](crate::World::bodies) reports them.
+    pub bodies: Vec<BodySpec>,
     /// Solver settings.
     pub solver: SolverSettings,
 }
@@ -171,6 +175,7 @@ impl Default for WorldConfig {
             basic_time_step_ms: DEFAULT_BASIC_TIME_STEP_MS,
             ground_friction: DEFAULT_FRICTION,
             obstacles: Vec::new(),
+            bodies: Vec::new(),
             solver: SolverSettings::default(),
         }
     }
@@ -183,7 +188,7 @@ impl WorldConfig {
     }
 
     /// Checks every field: finite gravity, a step of 1 ms to 1 s, a friction ≥ 0, valid
-    /// obstacles and 1 to 64 iterations of each solver kind.
+    /// obstacles and dynamic boxes and 1 to 64 iterations of each solver kind.
     pub fn validate(&self) -> Result<(), ParamError> {
         for g in self.gravity {
             ParamError::finite("gravity", g)?;
@@ -204,6 +209,9 @@ impl WorldConfig {
         ParamError::non_negative("ground.friction", self.ground_friction)?;
         for o in &self.obstacles {
             o.validate()?;
+        }
+        for b in &self.bodies {
+            b.validate()?;
         }
         ParamError::check(
             "solver.iterations",

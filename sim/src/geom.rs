@@ -70,6 +70,8 @@ pub(crate) const G_STATIC: Group = Group::GROUP_1;
 pub(crate) const G_CAR_BODY: Group = Group::GROUP_2;
 /// Collision group of the wheels of cars on joints.
 pub(crate) const G_CAR_WHEEL: Group = Group::GROUP_3;
+/// Collision group of the dynamic boxes (`[[body]]`).
+pub(crate) const G_DYNAMIC: Group = Group::GROUP_6;
 /// Collision group of DifferentialWheels bodies (with their casters).
 pub(crate) const G_ROBOT_BODY: Group = Group::GROUP_4;
 /// Collision group of DifferentialWheels wheels.
@@ -77,17 +79,20 @@ pub(crate) const G_ROBOT_WHEEL: Group = Group::GROUP_5;
 
 /// The interaction groups of a collider in group `g`.
 ///
-/// Robot wheels touch only static geometry, so a wheel never collides with its own body; car
-/// chassis, robot bodies and the wheels of cars on joints collide with each other (a car on
-/// joints never meets its own wheels: its multibody's self-contacts are off). The wheels of
-/// cast cars are shape casts, not colliders.
+/// Robot wheels touch only static geometry and dynamic boxes, so a wheel never collides with
+/// its own body; car chassis, robot bodies, dynamic boxes and the wheels of cars on joints
+/// collide with each other (a car on joints never meets its own wheels: its multibody's
+/// self-contacts are off). The wheels of cast cars are shape casts that see static geometry
+/// only, not colliders.
 pub(crate) fn groups(g: Group) -> InteractionGroups {
     let filter = if g == G_STATIC {
         Group::ALL
+    } else if g == G_DYNAMIC {
+        G_STATIC | G_CAR_BODY | G_ROBOT_BODY | G_ROBOT_WHEEL | G_DYNAMIC | G_CAR_WHEEL
     } else if g == G_CAR_BODY || g == G_ROBOT_BODY || g == G_CAR_WHEEL {
-        G_STATIC | G_CAR_BODY | G_ROBOT_BODY | G_CAR_WHEEL
+        G_STATIC | G_CAR_BODY | G_ROBOT_BODY | G_DYNAMIC | G_CAR_WHEEL
     } else {
-        G_STATIC
+        G_STATIC | G_DYNAMIC
     };
     InteractionGroups::new(g, filter, InteractionTestMode::And)
 }

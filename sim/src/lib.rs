@@ -1,6 +1,7 @@
 //! Physics simulation of Webots-style vehicles on rapier3d.
 //!
-//! * [`World`]: a fixed-step rapier world (flat ground, static boxes and ramps) holding cars
+//! * [`World`]: a fixed-step rapier world (flat ground, static boxes and ramps, dynamic boxes)
+//!   holding cars
 //!   ([`Vehicle`], built from a [`VehicleSpec`]) and legacy [`DifferentialWheels`] robots;
 //! * [`Simulation`]: a world whose cars are driven by `vehicle_model::Driver<f64>`, stepped
 //!   like a Webots controller calling `wbu_driver_step()`, with [`CarTelemetry`];
@@ -58,6 +59,7 @@
 #[doc = include_str!("../README.md")]
 struct ReadmeDoctests;
 
+mod body;
 pub mod cli;
 pub mod motor;
 pub mod placement;
@@ -75,6 +77,7 @@ mod simulation;
 mod vehicle;
 mod world;
 
+pub use body::{BODY_MASS_RANGE, BODY_SIZE_RANGE, BodyPose, BodySpec};
 pub use config::{
     DEFAULT_BASIC_TIME_STEP_MS, DEFAULT_FRICTION, DEFAULT_FRICTION_ITERATIONS, Obstacle,
     SolverSettings, WorldConfig,

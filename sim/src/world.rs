@@ -1,11 +1,13 @@
-//! The simulated world: rapier bodies, the ground and obstacles, cars and DifferentialWheels
-//! robots, stepped at a fixed `basicTimeStep`.
+//! The simulated world: rapier bodies, the ground and obstacles, dynamic boxes, cars and
+//! DifferentialWheels robots, stepped at a fixed `basicTimeStep`.
 
 use rapier3d::na::Unit;
 use rapier3d::prelude::{
-    CoefficientCombineRule, ColliderBuilder, IntegrationParameters, PhysicsWorld, Vector,
+    CoefficientCombineRule, ColliderBuilder, IntegrationParameters, PhysicsWorld, RigidBodyHandle,
+    Vector,
 };
 
+use crate::body::{self, BodyPose};
 use crate::config::{Obstacle, WorldConfig};
 use crate::diff_wheels::{
     DifferentialWheels, DifferentialWheelsParams, RobotId, RobotMode, RobotPlacement,
@@ -38,6 +40,8 @@ pub struct World {
     physics: PhysicsWorld,
     vehicles: Vec<Vehicle>,
     robots: Vec<DifferentialWheels>,
+    /// The dynamic boxes, in `config.bodies` order.
+    bodies: Vec<RigidBodyHandle>,
     time_ms: u64,
     last_substeps: usize,
     failure: Option<SimError>,
@@ -54,6 +58,7 @@ impl World {
             physics,
             vehicles: Vec::new(),
             robots: Vec::new(),
+            bodies: Vec::new(),
             time_ms: 0,
             last_substeps: 1,
             failure: None,
@@ -61,8 +66,10 @@ impl World {
         };
         world.build_static();
         // The ground and obstacles enter rapier's query structure in a step; the car wheels
-        // look for them before the first one. Nothing moves in this step.
+        // look for them before the first one. Nothing moves in this step: the dynamic boxes
+        // come after it, so that they start falling at time 0.
         world.physics.step();
+        world.bodies = body::build(&mut world.physics, &world.config.bodies);
         Ok(world)
     }
 
@@ -203,6 +210,16 @@ impl World {
         &self.robots
     }
 
+    /// The poses of the dynamic boxes after the last step, in the order of
+    /// [`WorldConfig::bodies`]. A box whose state stopped being finite ends the step with
+    /// [`SimError::NonFinite`] first, so every pose here is finite.
+    pub fn bodies(&self) -> Vec<BodyPose> {
+        self.bodies
+            .iter()
+            .filter_map(|h| body::pose(&self.physics, *h))
+            .collect()
+    }
+
     /// Advances the world by one `basicTimeStep`: applies every vehicle's and robot's commands,
     /// steps rapier (1 to [`MAX_SUBSTEPS`] times, see [`World::last_substeps`]), then reads the
     /// sensors back.
@@ -266,7 +283,11 @@ impl World {
         }
         self.last_substeps = substeps;
         self.time_ms += u64::from(self.config.basic_time_step_ms);
-        if !self.physics.quarantine().is_empty() {
+        let box_diverged = self
+            .bodies
+            .iter()
+            .any(|h| geom::finite_body(&self.physics, *h).is_none());
+        if box_diverged || !self.physics.quarantine().is_empty() {
             return Err(SimError::NonFinite {
                 owner: BodyOwner::World,
                 part: BodyPart::Other,

@@ -1,6 +1,6 @@
 //! World files: a TOML description of a world in Webots vocabulary (time step, ground,
-//! obstacles, one car on its tyres or one DifferentialWheels robot), and the built-in default
-//! world.
+//! obstacles, dynamic boxes, one car on its tyres or one DifferentialWheels robot), and the
+//! built-in default world.
 //!
 //! ```toml
 //! basicTimeStep = 10          # ms
@@ -29,6 +29,7 @@
 //! # Ok::<(), sim::world_file::WorldFileError>(())
 //! ```
 
+mod bodies;
 mod error;
 mod read;
 mod robot;
@@ -65,7 +66,7 @@ friction = 1.0
 pub const DEFAULT_WORLD_NAME: &str = "<default world>";
 
 /// Top-level keys of a world file.
-const ROOT_KEYS: [&str; 8] = [
+const ROOT_KEYS: [&str; 9] = [
     "basicTimeStep",
     "duration",
     "gravity",
@@ -74,6 +75,7 @@ const ROOT_KEYS: [&str; 8] = [
     "ground",
     "box",
     "ramp",
+    "body",
 ];
 
 /// What moves in the world.
@@ -92,7 +94,7 @@ pub struct WorldDescription {
     /// Where it came from: the path as given, or [`DEFAULT_WORLD_NAME`] (with the model name
     /// when one was asked for).
     pub source: String,
-    /// Time step, gravity, ground and obstacles (validated).
+    /// Time step, gravity, ground, obstacles and dynamic boxes (validated).
     pub config: WorldConfig,
     /// Simulated time after which stepping reports the end of the simulation (s, > 0), if set.
     pub duration: Option<f64>,

@@ -1,4 +1,5 @@
-//! The world itself: `WorldInfo`-like top-level keys, `[ground]`, `[[box]]` and `[[ramp]]`.
+//! The world itself: `WorldInfo`-like top-level keys, `[ground]`, `[[box]]` and `[[ramp]]`
+//! (and, through [`super::bodies`], `[[body]]`).
 
 use crate::config::{MAX_GRAVITY, Obstacle, WorldConfig};
 
@@ -79,6 +80,7 @@ pub(crate) fn read_world(root: &Section<'_, '_>) -> Result<WorldConfig, WorldFil
         });
         validate_last_obstacle(&r, &config)?;
     }
+    super::bodies::read_bodies(root, &mut config)?;
     config.validate().map_err(|e| {
         root.src.error(
             None,
@@ -134,7 +136,7 @@ fn validate_last_obstacle(
     })
 }
 
-fn missing(section: &Section<'_, '_>, key: &str) -> WorldFileError {
+pub(crate) fn missing(section: &Section<'_, '_>, key: &str) -> WorldFileError {
     section.src.error(
         section.span(),
         Some(section.key_path(key)),
