@@ -9,7 +9,7 @@ use rapier3d::prelude::{
 };
 
 use super::contact::{Contact, Spring, Support};
-use super::spec::VehicleSpec;
+use super::spec::{ChassisSpec, VehicleSpec};
 use super::{Frame, MIN_GROUND_COSINE};
 use crate::geom::{self, G_CAR_BODY};
 
@@ -30,12 +30,7 @@ pub(crate) struct Parts {
 /// its inertia (their spin is a separate coordinate, see the tyre solve).
 pub(crate) fn mass_properties(spec: &VehicleSpec) -> MassProperties {
     let c = &spec.chassis;
-    let [xx, yy, zz, xy, xz, yz] = c.inertia.map(|v| v as f32);
-    let inertia = Mat3::from_cols(
-        Vector::new(xx, xy, xz),
-        Vector::new(xy, yy, yz),
-        Vector::new(xz, yz, zz),
-    );
+    let inertia = body_inertia(c);
     let mut total =
         MassProperties::with_inertia_matrix(geom::vec3(c.center_of_mass), c.mass as f32, inertia);
     for s in spec.wheels.iter() {
@@ -48,6 +43,16 @@ pub(crate) fn mass_properties(spec: &VehicleSpec) -> MassProperties {
         );
     }
     total
+}
+
+/// The inertia tensor of the car body about its centre of mass (kg·m², car frame).
+pub(crate) fn body_inertia(c: &ChassisSpec) -> Mat3 {
+    let [xx, yy, zz, xy, xz, yz] = c.inertia.map(|v| v as f32);
+    Mat3::from_cols(
+        Vector::new(xx, xy, xz),
+        Vector::new(xy, yy, yz),
+        Vector::new(xz, yz, zz),
+    )
 }
 
 /// Creates the chassis of `spec` with the car origin at `origin`: one dynamic body with the
@@ -112,26 +117,20 @@ pub(crate) fn find_contact(
     let (collider, hit) =
         world.cast_shape(&start, -up, &tyre, options, QueryFilter::exclude_dynamic())?;
     let n = hit.normal1;
-    let lateral = (axis - n * n.dot(axis)).normalize_or_zero();
-    if n.dot(up) < MIN_GROUND_COSINE || lateral == Vector::ZERO {
+    if n.dot(up) < MIN_GROUND_COSINE {
         return None;
     }
     let compression = radius - hit.time_of_impact;
     let centre = hard_point + up * compression;
     let friction = world.colliders.get(collider).map_or(1.0, |c| c.friction());
-    let contact = Contact {
-        support: Support::Spring(Spring {
-            hardpoint_arm: hard_point - frame.com,
-            up,
-            compression,
-            stiffness: suspension.stiffness as f32,
-            damping: suspension.damping as f32,
-        }),
-        contact_arm: centre - n * radius - frame.com,
-        forward: lateral.cross(n),
-        lateral,
-        radius,
+    let spring = Spring {
+        hardpoint_arm: hard_point - frame.com,
+        up,
+        compression,
+        stiffness: suspension.stiffness as f32,
+        damping: suspension.damping as f32,
     };
+    let contact = Contact::on_ground(Support::Spring(spring), n, axis, centre, radius, frame.com)?;
     Some((contact, friction))
 }
 

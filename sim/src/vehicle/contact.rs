@@ -58,6 +58,25 @@ pub(crate) struct Body {
 }
 
 impl Body {
+    /// The chassis at velocities `linvel` (m/s, of the centre of mass) and `angvel` (rad/s),
+    /// with inverse mass `inv_mass` (1/kg) and the inverse inertia tensor `inv_inertia` of the
+    /// body frame (1/(kg·m²)), turned into world axes by the body's rotation `rotation`.
+    pub fn new(
+        linvel: Vector,
+        angvel: Vector,
+        inv_mass: f32,
+        inv_inertia: Mat3,
+        rotation: rapier3d::prelude::Rotation,
+    ) -> Body {
+        let r = Mat3::from_quat(rotation);
+        Body {
+            linvel,
+            angvel,
+            inv_mass,
+            inv_inertia: r * inv_inertia * r.transpose(),
+        }
+    }
+
     /// Velocity (m/s) of the chassis point at `arm` (m) from the centre of mass.
     pub fn velocity_at(&self, arm: Vector) -> Vector {
         self.linvel + self.angvel.cross(arm)
@@ -146,6 +165,29 @@ pub(crate) struct Spring {
 }
 
 impl Contact {
+    /// The contact of a tyre of `radius` (m) whose centre is at `centre` (m, world) and spin
+    /// axis `axis` (unit, world) on ground of unit normal `normal`, carried by `support`, with
+    /// arms from the centre of mass `com` (m, world): the contact point is the lowest point of
+    /// the tyre's centre plane, the lateral direction the wheel axis projected on the ground.
+    /// `None` if the axis stands along the normal (a wheel lying flat rolls nowhere).
+    pub fn on_ground(
+        support: Support,
+        normal: Vector,
+        axis: Vector,
+        centre: Vector,
+        radius: f32,
+        com: Vector,
+    ) -> Option<Contact> {
+        let lateral = (axis - normal * normal.dot(axis)).normalize_or_zero();
+        (lateral != Vector::ZERO).then(|| Contact {
+            support,
+            contact_arm: centre - normal * radius - com,
+            forward: lateral.cross(normal),
+            lateral,
+            radius,
+        })
+    }
+
     /// The spring of a wheel with its own suspension row.
     fn spring(&self) -> Option<&Spring> {
         match &self.support {

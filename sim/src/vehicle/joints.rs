@@ -41,11 +41,11 @@ use ackermann::{PerWheel, Wheel};
 use rapier3d::prelude::{
     CoefficientCombineRule, ColliderBuilder, ColliderHandle, GenericJoint, GenericJointBuilder,
     JointAxesMask, JointAxis, MassProperties, Mat3, Multibody, MultibodyJointHandle, PhysicsWorld,
-    Pose, RigidBodyBuilder, RigidBodyHandle, RigidBodyType, Vector,
+    Pose, RigidBody, RigidBodyBuilder, RigidBodyHandle, RigidBodyType, Vector,
 };
 
 use super::MIN_GROUND_COSINE;
-use super::cast::mass_properties;
+use super::cast::{body_inertia, mass_properties};
 use super::spec::{SpringDamper, VehicleSpec};
 use crate::geom::{self, G_CAR_BODY, G_CAR_WHEEL};
 use crate::motor::{self, WHEEL_MOTOR_MAX_TORQUE};
@@ -139,12 +139,7 @@ fn chassis_mass_properties(spec: &VehicleSpec) -> (MassProperties, [f64; 3]) {
         }
     }
     let com = moment.map(|m| m / mass);
-    let [xx, yy, zz, xy, xz, yz] = c.inertia.map(|v| v as f32);
-    let inertia = Mat3::from_cols(
-        Vector::new(xx, xy, xz),
-        Vector::new(xy, yy, yz),
-        Vector::new(xz, yz, zz),
-    );
+    let inertia = body_inertia(c);
     (
         MassProperties::with_inertia_matrix(Vector::ZERO, mass as f32, inertia),
         com,
@@ -319,9 +314,8 @@ pub(crate) fn build(world: &mut PhysicsWorld, spec: &VehicleSpec, origin: Pose) 
 }
 
 /// The car frame's pose in the world, from the chassis body.
-pub(crate) fn car_pose(world: &PhysicsWorld, parts: &Parts) -> Option<Pose> {
-    let chassis = world.bodies.get(parts.chassis)?;
-    Some(*chassis.position() * Pose::from_translation(-parts.chassis_offset))
+pub(crate) fn car_pose(chassis: &RigidBody, parts: &Parts) -> Pose {
+    *chassis.position() * Pose::from_translation(-parts.chassis_offset)
 }
 
 /// Sets the steering motors to the position controller's velocities `rates` (rad/s, positive

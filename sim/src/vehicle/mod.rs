@@ -55,7 +55,7 @@ mod spec;
 mod state;
 
 use ackermann::{PerWheel, Wheel, WheelAngles};
-use rapier3d::prelude::{Mat3, PhysicsWorld, Pose, RigidBody, Rotation, Vector};
+use rapier3d::prelude::{PhysicsWorld, Pose, RigidBody, Rotation, Vector};
 
 use vehicle_model::tyre::LOW_SPEED;
 use vehicle_model::{
@@ -191,15 +191,19 @@ impl Vehicle {
         self.commands = Some(*commands);
     }
 
+    /// The steering angles commanded (rad, positive = right): 0 before the first command.
+    fn steering_target(&self) -> WheelAngles<f64> {
+        self.commands
+            .as_ref()
+            .map_or(WheelAngles::new(0.0, 0.0), |c| c.steering)
+    }
+
     /// Moves the steering for the coming step of `dt` seconds: the Webots position controller's
     /// velocity command, reached within `maxSteeringTorque` against the wheel's inertia about
     /// the steering axis.
     fn steer(&mut self, dt: f64) {
         use vehicle_model::actuator::{SteeringMotor, SteeringState};
-        let target = self
-            .commands
-            .as_ref()
-            .map_or(WheelAngles::new(0.0, 0.0), |c| c.steering);
+        let target = self.steering_target();
         let motor = |w: Wheel| SteeringMotor {
             servo: self.steering_servo,
             max_torque: self.spec.steering.max_torque,
@@ -274,15 +278,9 @@ impl Vehicle {
     /// integrates.
     pub(crate) fn pre_step(&mut self, world: &mut PhysicsWorld, dt: f64) {
         self.step_wipers(dt);
-        match &self.parts {
-            Parts::Cast(p) => {
-                let p = p.clone();
-                self.pre_step_cast(world, &p, dt);
-            }
-            Parts::Joints(p) => {
-                let p = p.clone();
-                self.pre_step_joints(world, &p, dt);
-            }
+        match self.parts.clone() {
+            Parts::Cast(p) => self.pre_step_cast(world, &p, dt),
+            Parts::Joints(p) => self.pre_step_joints(world, &p, dt),
         }
     }
 
@@ -294,13 +292,13 @@ impl Vehicle {
             return;
         };
         let frame = Frame::of(chassis);
-        let rotation = Mat3::from_quat(frame.pose.rotation);
-        let mut body = Body {
-            linvel: chassis.linvel() + world.gravity * dt as f32,
-            angvel: chassis.angvel(),
-            inv_mass: parts.inv_mass,
-            inv_inertia: rotation * parts.inv_inertia * rotation.transpose(),
-        };
+        let mut body = Body::new(
+            chassis.linvel() + world.gravity * dt as f32,
+            chassis.angvel(),
+            parts.inv_mass,
+            parts.inv_inertia,
+            frame.pose.rotation,
+        );
         let mut rows = [WheelRow::idle(); 4];
         let mut imposed = [0.0; 4];
         let mut axes = [Vector::ZERO; 4];
@@ -344,34 +342,29 @@ impl Vehicle {
     /// velocities; the tyres, brakes and spins are solved on the whole car with the loads of
     /// rapier's last contacts, and go to rapier as tyre forces and spin motors.
     fn pre_step_joints(&mut self, world: &mut PhysicsWorld, parts: &joints::Parts, dt: f64) {
-        let target = self
-            .commands
-            .as_ref()
-            .map_or(WheelAngles::new(0.0, 0.0), |c| c.steering);
+        let target = self.steering_target();
         let measured = self.state.steering;
         let rates = [
             self.steering_servo.velocity(target.right, measured.right),
             self.steering_servo.velocity(target.left, measured.left),
         ];
         joints::steer(world, parts, rates, self.spec.steering.max_torque);
-        let (Some(pose), Some(chassis)) = (
-            joints::car_pose(world, parts),
-            world.bodies.get(parts.chassis),
-        ) else {
+        let Some(chassis) = world.bodies.get(parts.chassis) else {
             return;
         };
-        let rotation = Mat3::from_quat(pose.rotation);
+        let pose = joints::car_pose(chassis, parts);
         let frame = Frame {
             pose,
             com: pose.transform_point(parts.com),
             up: pose.rotation * Vector::Z,
         };
-        let mut body = Body {
-            linvel: chassis.velocity_at_point(frame.com) + world.gravity * dt as f32,
-            angvel: chassis.angvel(),
-            inv_mass: parts.inv_mass,
-            inv_inertia: rotation * parts.inv_inertia * rotation.transpose(),
-        };
+        let mut body = Body::new(
+            chassis.velocity_at_point(frame.com) + world.gravity * dt as f32,
+            chassis.angvel(),
+            parts.inv_mass,
+            parts.inv_inertia,
+            pose.rotation,
+        );
         let mut rows = [WheelRow::idle(); 4];
         let mut imposed = [0.0; 4];
         let mut roads = [0.0; 4];
@@ -384,18 +377,12 @@ impl Vehicle {
             ) else {
                 continue;
             };
-            let n = g.normal;
-            let lateral = (axis - n * n.dot(axis)).normalize_or_zero();
-            if lateral == Vector::ZERO {
-                continue;
-            }
             let radius = self.spec.wheels[w].radius as f32;
-            let contact = Contact {
-                support: Support::Given { normal: n },
-                contact_arm: centre - n * radius - frame.com,
-                forward: lateral.cross(n),
-                lateral,
-                radius,
+            let support = Support::Given { normal: g.normal };
+            let Some(contact) =
+                Contact::on_ground(support, g.normal, axis, centre, radius, frame.com)
+            else {
+                continue;
             };
             rows[i].impulses.normal = g.impulse;
             roads[i] = g.friction;
@@ -595,7 +582,7 @@ impl Vehicle {
                 s.steering = WheelAngles::new(r.steering[0], r.steering[1]);
                 s.suspension = r.suspension;
                 s.wheel_speeds = r.spins;
-                let pose = joints::car_pose(world, p).ok_or(fail(BodyPart::Chassis))?;
+                let pose = joints::car_pose(chassis, p);
                 (chassis, pose, pose.transform_point(p.com))
             }
         };
