@@ -35,6 +35,16 @@ const SETTLE_STEPS: usize = 800;
 /// Car counts of the scaling benchmarks.
 const CAR_COUNTS: [usize; 3] = [1, 8, 64];
 
+/// Runs `scene` for [`SETTLE_STEPS`] before it is measured; test mode (`cargo test
+/// --benches`) runs each benchmark once and does not settle.
+fn settle(scene: &mut CarScene) {
+    if report::is_bench_run() {
+        for _ in 0..SETTLE_STEPS {
+            scene.step().unwrap();
+        }
+    }
+}
+
 fn mode_name(mode: LoopMode) -> &'static str {
     match mode {
         LoopMode::Speed => "car_speed",
@@ -46,15 +56,7 @@ fn cars(g: &mut BenchmarkGroup<'_, WallTime>) {
     for mode in [LoopMode::Speed, LoopMode::Torque] {
         for n in CAR_COUNTS {
             let mut scene = CarScene::new(n, mode).unwrap();
-            // Test mode (`cargo test --benches`) runs each benchmark once: no need to settle.
-            let settle = if report::is_bench_run() {
-                SETTLE_STEPS
-            } else {
-                0
-            };
-            for _ in 0..settle {
-                scene.step().unwrap();
-            }
+            settle(&mut scene);
             g.bench_function(BenchmarkId::new(mode_name(mode), n), |b| {
                 b.iter(|| scene.step().unwrap())
             });
@@ -65,14 +67,7 @@ fn cars(g: &mut BenchmarkGroup<'_, WallTime>) {
 /// One car in speed mode on Webots' contact (`tyre = "webots"`), beside the slip-based tyre.
 fn webots_contact(g: &mut BenchmarkGroup<'_, WallTime>) {
     let mut scene = CarScene::on(1, LoopMode::Speed, &webots_tyre()).unwrap();
-    let settle = if report::is_bench_run() {
-        SETTLE_STEPS
-    } else {
-        0
-    };
-    for _ in 0..settle {
-        scene.step().unwrap();
-    }
+    settle(&mut scene);
     g.bench_function(BenchmarkId::new("car_speed_webots_contact", 1), |b| {
         b.iter(|| scene.step().unwrap())
     });
@@ -87,14 +82,7 @@ fn joints(g: &mut BenchmarkGroup<'_, WallTime>) {
         let mut scene =
             CarScene::mounted(n, LoopMode::Speed, &TyreChoice::default(), Mounting::Joints)
                 .unwrap();
-        let settle = if report::is_bench_run() {
-            SETTLE_STEPS
-        } else {
-            0
-        };
-        for _ in 0..settle {
-            scene.step().unwrap();
-        }
+        settle(&mut scene);
         g.bench_function(BenchmarkId::new("car_speed_joints", n), |b| {
             b.iter(|| scene.step().unwrap())
         });

@@ -13,28 +13,27 @@ use sim::{
 };
 use vehicle_model::Model;
 
+mod common;
+
+/// The mounting of the shared car helpers (`common`).
+const MOUNTING: Mounting = Mounting::Joints;
+
 /// A BmwX5 on joints at `placement` in `sim`.
 fn add_x5(sim: &mut Simulation, placement: VehiclePlacement) -> VehicleId {
     let tyre = TyreChoice::of_model(Model::BmwX5);
     let (id, _) = sim
-        .add_car_with(Model::BmwX5.params(), &tyre, Mounting::Joints, placement)
+        .add_car_with(Model::BmwX5.params(), &tyre, MOUNTING, placement)
         .unwrap();
     id
-}
-
-fn run(sim: &mut Simulation, seconds: f64) {
-    for _ in 0..(seconds / sim.world().dt()).round() as usize {
-        sim.step().unwrap();
-    }
 }
 
 #[test]
 fn the_steering_holds_its_command_at_rest() {
     let mut sim = Simulation::new(World::new(WorldConfig::default()).unwrap());
     let id = add_x5(&mut sim, VehiclePlacement::default());
-    run(&mut sim, 1.0);
+    common::run(&mut sim, 1.0);
     sim.driver_mut(id).unwrap().set_steering_angle(0.3);
-    run(&mut sim, 2.0);
+    common::run(&mut sim, 2.0);
     // The Ackermann angles of a 0.3 rad command on the X5 (L 2.995 m, track 1.628 m):
     // atan(L/(L/tan 0.3 ∓ T/2)), the inner (right) wheel steered more.
     let (l, t) = (2.995_f64, 1.628_f64);
@@ -72,7 +71,7 @@ fn a_car_drives_up_a_ten_centimetre_step_on_its_wheels() {
         .unwrap(),
     );
     let id = add_x5(&mut sim, VehiclePlacement::default());
-    run(&mut sim, 1.0);
+    common::run(&mut sim, 1.0);
     let z0 = sim.telemetry(id).unwrap().state.position[2];
     sim.driver_mut(id).unwrap().set_cruising_speed(10.0);
     let mut lost = 0;
@@ -115,7 +114,7 @@ fn two_cars_meeting_head_on_do_not_interpenetrate() {
             ..VehiclePlacement::default()
         },
     );
-    run(&mut sim, 1.0);
+    common::run(&mut sim, 1.0);
     for id in [a, b] {
         sim.driver_mut(id).unwrap().set_cruising_speed(20.0);
     }
@@ -159,9 +158,9 @@ fn a_car_pushes_a_200_kg_box_with_its_front_wheels() {
         .unwrap(),
     );
     let id = add_x5(&mut sim, VehiclePlacement::default());
-    run(&mut sim, 1.0);
+    common::run(&mut sim, 1.0);
     sim.driver_mut(id).unwrap().set_cruising_speed(5.0);
-    run(&mut sim, 10.0);
+    common::run(&mut sim, 10.0);
     let car = sim.telemetry(id).unwrap().state;
     let b = sim.world().bodies()[0];
     // 1.96 kN is well within the X5's drive: the car keeps pushing, its front tyres against

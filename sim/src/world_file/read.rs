@@ -5,7 +5,7 @@ use core::ops::{Range, RangeInclusive};
 
 use toml::de::{DeTable, DeValue};
 
-use super::error::{Location, WorldFileError, WorldFileErrorKind, WorldWarning, closest};
+use super::error::{Location, NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, closest};
 
 /// The file being read: its name (for messages) and its text (for line numbers).
 #[derive(Debug, Clone, Copy)]
@@ -148,6 +148,29 @@ impl<'a, 'i> Section<'a, 'i> {
             .iter()
             .find(|(k, _)| k.get_ref().as_ref() == key)
             .map(|(_, v)| (v.get_ref(), v.span()))
+    }
+
+    /// An unknown `name` of the set `what` (whose names are `names`) at `key`: the closest
+    /// names as suggestions, or all of them when none is close.
+    pub(crate) fn unknown_name(
+        &self,
+        key: &str,
+        what: NameSet,
+        name: &str,
+        names: &[&str],
+    ) -> WorldFileError {
+        let mut suggestions = closest(name, names.iter().copied());
+        if suggestions.is_empty() {
+            suggestions = names.iter().map(|n| n.to_string()).collect();
+        }
+        self.error(
+            key,
+            WorldFileErrorKind::UnknownName {
+                what,
+                name: name.to_string(),
+                suggestions,
+            },
+        )
     }
 
     /// An error about `key` of this section, located at the key (or the section).

@@ -81,30 +81,8 @@ fn is_webots(s: &Section<'_, '_>, key: &str, name: &str) -> Result<bool, WorldFi
     match name {
         WEBOTS => Ok(true),
         MAGIC_FORMULA => Ok(false),
-        _ => Err(unknown_name(s, key, NameSet::TyreModel, name, &MODEL_NAMES)),
+        _ => Err(s.unknown_name(key, NameSet::TyreModel, name, &MODEL_NAMES)),
     }
-}
-
-/// An unknown `name` of the set `what` (whose names are `names`) at `key` of `s`.
-pub(super) fn unknown_name(
-    s: &Section<'_, '_>,
-    key: &str,
-    what: NameSet,
-    name: &str,
-    names: &[&str],
-) -> WorldFileError {
-    let mut suggestions = closest(name, names.iter().copied());
-    if suggestions.is_empty() {
-        suggestions = names.iter().map(|n| n.to_string()).collect();
-    }
-    s.error(
-        key,
-        WorldFileErrorKind::UnknownName {
-            what,
-            name: name.to_string(),
-            suggestions,
-        },
-    )
 }
 
 /// Fails on the first key of `[vehicle.tyre]` it does not have; a curve coefficient there is
@@ -203,7 +181,7 @@ fn read_magic_formula(t: &Section<'_, '_>, model: Model) -> Result<TyreChoice, W
             .find(|c| c.name() == name)
             .ok_or_else(|| {
                 let names = TyreClass::ALL.map(TyreClass::name);
-                unknown_name(t, "class", NameSet::TyreClass, name, &names)
+                t.unknown_name("class", NameSet::TyreClass, name, &names)
             })?,
     };
     let mut overrides = Overrides {

@@ -98,7 +98,7 @@ pub(crate) fn read_vehicle(
             .map(|&(_, m)| m)
             .ok_or_else(|| {
                 let names = MOUNTINGS.map(|(n, _)| n);
-                tyre::unknown_name(s, MOUNTING, NameSet::Mounting, name, &names)
+                s.unknown_name(MOUNTING, NameSet::Mounting, name, &names)
             })?,
     };
     let mut params = model.params::<f64>();
