@@ -194,7 +194,7 @@ fn understeer(params: CarParams<f64>, v: f64, ay: f64) -> (f64, f64) {
 }
 
 known_joints_gap! {
-    "joints: K = 0.96 mrad/(m/s²) at 10 m/s against the single-track 1.15 (-17 %); the cast car is within 10 %. Cause not found yet",
+    "joints: K = 1.00 mrad/(m/s²) at 10 m/s against the single-track 1.15 (-13 %); the cast car is within 10 %. Cause not found yet",
     fn steady_cornering_has_the_single_track_understeer_gradient() {
         // Linear range (a_y = 1 m/s²): δ = L/R + K·a_y, on a BmwX5 with 63 % of its weight on the
         // front axle, which understeers clearly (K ≈ 1.2 mrad per m/s²), and with almost no wheel
