@@ -46,6 +46,7 @@ extern crate std;
 mod glue;
 mod layout;
 pub mod mesh;
+pub mod plausible;
 mod sensors;
 mod shipped;
 pub mod wheel;
@@ -62,6 +63,7 @@ pub use mesh::{
     BoxMesh, BufferTooSmall, CylinderMesh, RimCentreMesh, RimContourMesh, TriMesh, TyreMesh,
 };
 pub use nalgebra;
+pub use plausible::Plausible;
 pub use sensors::{SensorSlot, SensorSlots};
 pub use shipped::ShippedVehicle;
 pub use wheel::{

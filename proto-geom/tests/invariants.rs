@@ -10,7 +10,10 @@ use common::{
     welded_boundary_edges,
 };
 use proto_geom::nalgebra::Vector3;
-use proto_geom::{CylinderMesh, TriMesh, ValidWheel, WheelParams, WheelPhysics, WheelPreset};
+use proto_geom::{
+    CylinderMesh, TriMesh, ValidWheel, WheelField, WheelParams, WheelPhysics, WheelPreset,
+    WheelRule,
+};
 
 #[test]
 fn no_degenerate_triangles() {
@@ -300,29 +303,52 @@ fn cylinder_mesh_is_closed_and_exact() {
 }
 
 #[test]
-fn absurd_but_valid_sizes_give_finite_measures() {
-    // A 1e20 m tyre is valid (finite and > 0), but π·r²·h = 9.4e39 m³ and the sidewall area
-    // 2·π·(1e20)² = 6.3e40 m² exceed f32::MAX = 3.4e38: they saturate, the masses that
-    // cannot be represented are `None`, and nothing is ∞ or NaN.
-    let huge = |physics| {
-        WheelParams::<f32> {
-            tire_radius: 1e20,
+fn implausible_sizes_are_refused_and_the_largest_plausible_wheel_is_finite() {
+    // A 1e20 m tyre (π·r²·h = 9.4e39 m³, beyond f32::MAX) is outside the plausible lengths
+    // (1 mm to 1 km): it falls back to the default radius 0.4 m like a radius ≤ 0 does.
+    let (w, warnings) = WheelParams::<f32> {
+        tire_radius: 1e20,
+        ..Default::default()
+    }
+    .validate();
+    let warning = warnings.get(WheelField::TireRadius).unwrap();
+    assert_eq!(
+        (warning.rule, warning.value, warning.replacement),
+        (WheelRule::Implausible, 1e20_f32 as f64, 0.4_f32 as f64)
+    );
+    assert_eq!(
+        warning.to_string(),
+        "'tireRadius' must be within 0.001 to 1000 m (value 1.0000000200408773e20). Value reset to \
+         0.4000000059604645."
+    );
+    assert_eq!(w.params().tire_radius, 0.4);
+    // A 1e7 kg wheel is refused too (plausible masses: 1 g to 1,000 t), and so is a density
+    // of 1e6 kg/m³; both become the default `Physics {}`.
+    for physics in [WheelPhysics::Mass(1e7), WheelPhysics::Density(1e6)] {
+        let (w, warnings) = WheelParams::<f64> {
             physics,
             ..Default::default()
         }
-        .validate()
-    };
-    let (w, warnings) = huge(WheelPhysics::Density(1000.0));
-    assert!(warnings.is_empty());
-    assert_eq!(w.bounding_cylinder().unwrap().volume(), f32::MAX);
-    assert_eq!(w.mass(), None); // 1000 kg/m³ × 9.4e39 m³
-    assert_eq!(w.mass_properties(), None);
-    let (w, _) = huge(WheelPhysics::Mass(30.0));
-    assert_eq!(w.mass(), Some(30.0));
-    assert_eq!(w.mass_properties(), None); // axial 30·1e40/2 kg·m²
+        .validate();
+        assert_eq!(
+            warnings.get(WheelField::Physics).unwrap().rule,
+            WheelRule::Implausible
+        );
+        assert_eq!(w.params().physics, WheelPhysics::Density(1000.0));
+    }
+
+    // The largest plausible wheel (1 km radius, 1 km wide) still has finite measures in f32:
+    // π·(1e3)²·1e3 = 3.1e9 m³ and 1000 kg/m³ give 3.1e12 kg, far below f32::MAX.
+    let (w, warnings) = WheelParams::<f32> {
+        tire_radius: 1e3,
+        thickness: 1e3,
+        ..Default::default()
+    }
+    .validate();
+    assert!(warnings.iter().all(|w| w.rule != WheelRule::Implausible));
+    let volume = w.bounding_cylinder().unwrap().volume();
+    assert!((volume / (std::f32::consts::PI * 1e9) - 1.0).abs() < 1e-6);
     let tyre = w.tyre();
-    assert_eq!(tyre.area(), f32::MAX);
-    assert!(tyre.signed_volume().is_finite());
     for m in [
         &tyre as &dyn TriMesh<f32>,
         &w.rim_contour(),
@@ -330,16 +356,6 @@ fn absurd_but_valid_sizes_give_finite_measures() {
     ] {
         assert!(m.area().is_finite() && m.signed_volume().is_finite());
     }
-
-    // The same in f64 with a 1e200 m tyre (sidewall area 6.3e400 m² > f64::MAX).
-    let (w, _) = WheelParams::<f64> {
-        tire_radius: 1e200,
-        ..Default::default()
-    }
-    .validate();
-    assert_eq!(w.tyre().area(), f64::MAX);
-    assert!(w.tyre().signed_volume().is_finite());
-    assert_eq!(w.mass_properties(), None);
 
     // Ordinary wheels keep the direct computation: the default tyre's area is unchanged by
     // the fallback (the sum of the triangle areas, computed here independently).

@@ -416,6 +416,91 @@ fn invalid_car_values_are_replaced_with_located_warnings() {
 }
 
 #[test]
+fn implausible_values_are_refused_with_file_line_and_key() {
+    // Webots loads these and fails at the first step (or reports a negative stop distance);
+    // a world file refuses them before anything runs.
+    let cases = [
+        (
+            "mass = 1e300",
+            "vehicle.mass",
+            at(3, 1),
+            "implausible 'mass' value 1e300 (must be within 0.001 to 1000000 kg)",
+        ),
+        ("mass = 1e-300", "vehicle.mass", at(3, 1), "value 1e-300"),
+        (
+            "wheelbase = 1e-9",
+            "vehicle.wheelbase",
+            at(3, 1),
+            "must be within 0.001 to 1000 m",
+        ),
+        (
+            "trackFront = 1e300",
+            "vehicle.trackFront",
+            at(3, 1),
+            "trackFront",
+        ),
+        (
+            "centerOfMass = [1e300, 0, 0]",
+            "vehicle.centerOfMass",
+            at(3, 1),
+            "element 0 value 1e300",
+        ),
+        (
+            "translation = [1e300, 0, 0]",
+            "vehicle.translation",
+            at(3, 1),
+            "within -10000 to 10000 m",
+        ),
+        (
+            "suspensionFrontSpringConstant = 1e300",
+            "vehicle.suspensionFrontSpringConstant",
+            at(3, 1),
+            "N/m",
+        ),
+        (
+            "gearRatio = [-12.5, 1e6]",
+            "vehicle.gearRatio",
+            at(3, 1),
+            "its magnitude must be within 0.1 to 100",
+        ),
+        (
+            "inertiaMatrix = [1e300, 1e300, 1e300, 0, 0, 0]",
+            "vehicle.inertiaMatrix",
+            at(3, 1),
+            "kg·m²",
+        ),
+        (
+            "wheelFrontLeft.tireRadius = 1e300",
+            "vehicle.wheelFrontLeft.tireRadius",
+            at(3, 16),
+            "'tireRadius' must be within 0.001 to 1000 m (value 1e300)",
+        ),
+        (
+            "wheels.mass = 1e9",
+            "vehicle.wheels.mass",
+            at(3, 8),
+            "'physics' must have a mass of 0.001 to 1000000 kg",
+        ),
+    ];
+    for (line, key, location, text) in cases {
+        let e = err(&format!("[vehicle]\nmodel = \"BmwX5\"\n{line}\n"));
+        assert_eq!(
+            (e.key.as_deref(), e.location),
+            (Some(key), location),
+            "{line}: {e}"
+        );
+        assert!(
+            matches!(e.kind, WorldFileErrorKind::InvalidValue(_)),
+            "{line}: {e}"
+        );
+        assert!(e.to_string().contains(text), "{line}: {e}");
+    }
+    // The bounds are inclusive: the largest plausible mass loads.
+    let w = parse_str("w.toml", "[vehicle]\nmass = 1e6\n").unwrap();
+    assert_eq!(w.car().unwrap().params.body.mass, 1e6);
+}
+
+#[test]
 fn missing_file() {
     let e = world_file::load("/nonexistent/dir/world.toml").unwrap_err();
     assert_eq!(e.file, "/nonexistent/dir/world.toml");

@@ -165,8 +165,8 @@ pub use mode::{ControlMode, IndicatorState, WiperMode};
 pub use model::Model;
 pub use params::{
     BodyPhysics, CarField, CarParams, DEFAULT_BODY_MASS, DEFAULT_GEAR_RATIOS, EngineSound,
-    FieldError, FieldKind, FieldValue, GearRatios, MAX_PARAM_WARNINGS, ParamReport, ParamWarning,
-    WheelMotor, is_physical_inertia,
+    FieldError, FieldKind, FieldValue, GearRatios, MAX_PARAM_WARNINGS, NumberRule, ParamReport,
+    ParamWarning, Refusal, WheelMotor, is_physical_inertia,
 };
 pub use sound::{BLINKER_SOUND_FILE, SoundCommand, Sounds};
 pub use tyre::{

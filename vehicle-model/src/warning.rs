@@ -6,6 +6,8 @@
 
 use core::fmt;
 
+use proto_geom::plausible::Compact;
+
 /// Which enumeration a raw integer failed to convert to (see [`Warning::InvalidEnumValue`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum EnumKind {
@@ -192,22 +194,6 @@ impl fmt::Display for Warning {
 
 impl core::error::Error for Warning {}
 
-/// A number as a person reads it in a message: plainly between 1e-4 and 1e16, in exponent
-/// form beyond (so −1e308 is `-1e308`, not 309 digits); `NaN`, `inf`, `-inf` as such.
-struct Compact(f64);
-
-impl fmt::Display for Compact {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let v = self.0;
-        let magnitude = if v < 0.0 { -v } else { v };
-        if v.is_finite() && v != 0.0 && !(1e-4..1e16).contains(&magnitude) {
-            write!(f, "{v:e}")
-        } else {
-            write!(f, "{v}")
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     extern crate std;
@@ -262,9 +248,6 @@ mod tests {
             "Warning: wbu_car_set_indicator_period() called with an invalid 'period' argument \
              (-1e308)"
         );
-        assert_eq!(Compact(2.5e-7).to_string(), "2.5e-7");
-        assert_eq!(Compact(-0.25).to_string(), "-0.25");
-        assert_eq!(Compact(0.0).to_string(), "0");
         assert_eq!(
             Warning::TooManyGears { gear_number: 6 }.to_string(),
             "Warning: this car has only 6 gears."

@@ -4,8 +4,8 @@ mod common;
 
 use common::{Plant, all_finite};
 use vehicle_model::{
-    CarParams, ControlMode, Driver, EnumKind, IndicatorState, Model, PerWheel, Sensors, Warning,
-    Wheel, WheelAngles, WiperMode, wheel_from_webots_index,
+    CarField, CarParams, ControlMode, Driver, EnumKind, IndicatorState, Model, ParamWarning,
+    PerWheel, Sensors, Warning, Wheel, WheelAngles, WiperMode, wheel_from_webots_index,
 };
 
 const BAD: [f64; 8] = [
@@ -389,41 +389,59 @@ fn invalid_params_fall_back_to_defaults() {
 }
 
 #[test]
-fn extreme_valid_params_keep_the_motor_limits_finite() {
-    // Positive and finite, so validation keeps them; the derived limits would overflow f32:
-    // (1000/36)/1e-38/0.374 ≈ 7.4e39 and 3e38/0.374 ≈ 8.0e38 > f32::MAX ≈ 3.4e38.
+fn implausible_params_are_replaced_and_keep_the_motor_limits_finite() {
+    // Positive and finite, but outside the plausible ranges (0–100 km/h in 0.1 s or more, at
+    // most 1000 m/s): the derived limits would overflow f32, (1000/36)/1e-38/0.374 ≈ 7.4e39
+    // and 3e38/0.374 ≈ 8.0e38 > f32::MAX ≈ 3.4e38. Validation replaces both by the defaults.
     let mut p = Model::BmwX5.params::<f32>();
     p.time_0_to_100 = 1e-38;
     p.max_velocity = 3e38;
     let (mut d, report) = Driver::new(p, 10);
-    assert!(report.is_empty(), "{:?}", report.as_slice());
+    assert_eq!(
+        report.as_slice(),
+        &[
+            ParamWarning::Implausible {
+                field: CarField::Time0To100,
+                value: f64::from(1e-38_f32),
+                used: 10.0
+            },
+            ParamWarning::Implausible {
+                field: CarField::MaxVelocity,
+                value: f64::from(3e38_f32),
+                used: 50.0
+            },
+        ]
+    );
+    assert!(report.as_slice().iter().all(ParamWarning::is_implausible));
+    assert_eq!(
+        report.as_slice()[1].to_string(),
+        "Warning: implausible 'maxVelocity' value 3.0000000054977558e38 (must be within 0 to \
+         1000 m/s), used 50 instead."
+    );
+    // The default 10 s and 50 m/s on the 0.374 m BmwX5 tyre: (1000/36)/10/0.374 rad/s² and
+    // 50/0.374 rad/s.
     let m = d.params().wheel_motor(Wheel::FrontLeft);
-    assert_eq!((m.acceleration, m.max_velocity), (f32::MAX, f32::MAX));
-    assert!(all_finite(d.commands()));
+    let r = d.params().wheels[Wheel::FrontLeft].tire_radius;
+    assert!((m.acceleration - 1000.0 / 36.0 / 10.0 / r).abs() < 1e-4);
+    assert!((m.max_velocity - 50.0 / r).abs() < 1e-3);
     let mut plant = Plant::new(&d);
     d.set_cruising_speed(50.0);
     for _ in 0..5 {
         plant.run(&mut d);
         assert!(all_finite(d.commands()), "{:?}", d.commands().drive);
     }
-    // A tiny tyre (1e-38 m, also accepted) overflows both quotients the same way.
+    // A 1e-38 m tyre is refused too: the wheel falls back to the VehicleWheel default 0.4 m.
     let mut p = Model::TeslaModel3.params::<f32>();
     for w in Wheel::ALL {
         p.wheels[w].tire_radius = 1e-38;
     }
-    let (mut d, _) = Driver::new(p, 10);
-    d.set_cruising_speed(-30.0);
-    let mut plant = Plant::new(&d);
-    plant.run(&mut d);
-    let c = *d.commands();
-    assert!(all_finite(&c), "{:?}", c.drive);
-    assert_eq!(
-        c.drive[Wheel::RearLeft],
-        vehicle_model::WheelDrive::Velocity {
-            target: -f32::MAX,
-            acceleration: f32::MAX,
-            max_velocity: f32::MAX,
-        }
+    let (d, report) = Driver::new(p, 10);
+    assert_eq!(report.len(), 4);
+    assert!(report.as_slice().iter().all(ParamWarning::is_implausible));
+    assert!(
+        Wheel::ALL
+            .iter()
+            .all(|&w| d.params().wheels[w].tire_radius == 0.4)
     );
 }
 

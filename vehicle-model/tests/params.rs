@@ -328,3 +328,79 @@ fn set_field_errors_leave_params_unchanged() {
         "field 'rotation' takes a list of 4 numbers, got 3"
     );
 }
+
+#[test]
+fn every_number_outside_its_plausible_range_is_replaced() {
+    // Each field set through its Webots name to a value just beyond its plausible range (or,
+    // for lists, with one element beyond it): exactly one implausible warning for that field,
+    // and the value is replaced by a plausible one (validating twice finds nothing more).
+    for field in CarField::ALL {
+        let (Some(range), FieldKind::Number | FieldKind::Numbers { .. }) =
+            (field.plausible(), field.kind())
+        else {
+            continue;
+        };
+        let beyond = if range.max > 0.0 {
+            range.max * 10.0
+        } else {
+            range.min * 10.0
+        };
+        let mut p = Model::BmwX5.params::<f64>();
+        let set = match field.kind() {
+            FieldKind::Number => p.set_field(field.webots_name(), FieldValue::Number(beyond)),
+            _ => {
+                let mut list = [1.0, 2.0, 3.0, 0.5, 0.2, 0.1];
+                list[1] = beyond;
+                let n = match field.kind() {
+                    FieldKind::Numbers { max, .. } => max.min(6),
+                    _ => unreachable!(),
+                };
+                p.set_field(field.webots_name(), FieldValue::Numbers(&list[..n]))
+            }
+        };
+        set.unwrap_or_else(|e| panic!("{field}: {e}"));
+        let report = p.validate();
+        let implausible: Vec<_> = report.iter().filter(|w| w.is_implausible()).collect();
+        assert_eq!(implausible.len(), 1, "{field}: {:?}", report.as_slice());
+        assert_eq!(implausible[0].field(), Some(field), "{field}");
+        assert!(p.validate().is_empty(), "{field}");
+        if let ParamWarning::Implausible { value, used, .. } = *implausible[0] {
+            assert_eq!(value, beyond, "{field}");
+            assert!(range.contains(used), "{field}: {used}");
+        }
+    }
+}
+
+#[test]
+fn the_fuzzed_implausible_values_are_refused() {
+    // The values of the hardening review that loaded silently and failed (or produced a stop
+    // distance of −2682 m) later.
+    let cases: [(&str, FieldValue<'_, f64>); 8] = [
+        ("mass", FieldValue::Number(1e300)),
+        ("mass", FieldValue::Number(1e-300)),
+        ("wheelbase", FieldValue::Number(1e-9)),
+        ("trackFront", FieldValue::Number(1e300)),
+        ("suspensionFrontSpringConstant", FieldValue::Number(1e300)),
+        ("centerOfMass", FieldValue::Numbers(&[1e300, 0.0, 0.0])),
+        ("gearRatio", FieldValue::Numbers(&[-12.5, 1e6])),
+        ("wheelFrontLeft.tireRadius", FieldValue::Number(1e300)),
+    ];
+    for (name, value) in cases {
+        let mut p = Model::BmwX5.params::<f64>();
+        p.set_field(name, value).unwrap();
+        let report = p.validate();
+        assert!(
+            report.len() == 1 && report.as_slice()[0].is_implausible(),
+            "{name}: {:?}",
+            report.as_slice()
+        );
+    }
+    let mut p = Model::BmwX5.params::<f64>();
+    p.set_field("gearRatio", FieldValue::Numbers(&[-12.5, 1e6]))
+        .unwrap();
+    assert_eq!(
+        p.validate().as_slice()[0].to_string(),
+        "Warning: implausible 'gearRatio' element 1 value 1000000 (its magnitude must be within 0.1 \
+         to 100), used the default instead."
+    );
+}

@@ -9,6 +9,6 @@ pub use collision::{BoundingCylinder, MassProperties};
 pub use params::{PbrAppearance, WheelParams, WheelPhysics, WheelShape, WheelSide, slot_name};
 pub use preset::WheelPreset;
 pub use validate::{
-    MAX_EDGE_SUBDIVISION, MAX_RIM_BEAM_NUMBER, MAX_SUBDIVISION, MAX_WHEEL_WARNINGS, ValidWheel,
-    WheelField, WheelRule, WheelWarning, WheelWarnings,
+    MAX_EDGE_SUBDIVISION, MAX_RIM_BEAM_NUMBER, MAX_SUBDIVISION, MAX_WHEEL_WARNINGS, Requirement,
+    ValidWheel, WheelField, WheelRule, WheelWarning, WheelWarnings,
 };

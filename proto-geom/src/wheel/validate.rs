@@ -5,6 +5,7 @@ use core::fmt;
 use ackermann::Real;
 
 use super::params::{WheelParams, WheelPhysics};
+use crate::plausible::{self, Compact, Plausible};
 
 /// Largest accepted `subdivision` (not a Webots limit: Webots only prints an info message above
 /// 200). Keeps every vertex index of the tyre mesh within `u32`.
@@ -65,6 +66,25 @@ impl WheelField {
             WheelField::Physics => "physics",
         }
     }
+
+    /// The plausible range of the field's value ([`WheelRule::Implausible`]), `None` for the
+    /// integer fields (bounded by their own limits) and `physics` (a mass in
+    /// [`plausible::MASS`] or a density in [`plausible::DENSITY`]).
+    pub const fn plausible(self) -> Option<Plausible> {
+        match self {
+            WheelField::Subdivision
+            | WheelField::EdgeSubdivision
+            | WheelField::RimBeamNumber
+            | WheelField::Physics => None,
+            WheelField::CurvatureFactor => Some(Plausible {
+                min: 0.0,
+                max: 1.0,
+                unit: "",
+            }),
+            WheelField::RimBeamOffset => Some(plausible::OFFSET),
+            _ => Some(plausible::LENGTH),
+        }
+    }
 }
 
 impl fmt::Display for WheelField {
@@ -93,6 +113,10 @@ pub enum WheelRule {
     NotFinite,
     /// ≤ 0 → default (`rimRadius`: `tireRadius`/2; `physics`: density 1000 kg/m³).
     NotPositive,
+    /// Positive but outside the field's plausible range ([`WheelField::plausible`]; for
+    /// `physics`, [`plausible::MASS`] or [`plausible::DENSITY`]) → the "≤ 0" fallback. Not a
+    /// Webots check: Webots accepts a 10³⁰⁰ m tyre and fails at the first step.
+    Implausible,
     /// `rimBeamThickness` > `thickness` → `thickness`.
     RimBeamThicknessAboveThickness,
     /// `curvatureFactor` ∉ [0, 1] → default 0.35.
@@ -133,18 +157,26 @@ impl WheelWarning {
     pub fn is_info(&self) -> bool {
         self.rule == WheelRule::HighValue
     }
+
+    /// The rule the value broke, as a sentence without the replacement (`"'tireRadius' must be
+    /// in 0.001 to 1000 m (value 1e300)."`): what a world file that refuses the value says.
+    #[inline]
+    pub fn requirement(&self) -> Requirement<'_> {
+        Requirement(self)
+    }
 }
 
-impl fmt::Display for WheelWarning {
+impl fmt::Display for Requirement<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let name = self.field.webots_name();
-        let r = self.replacement;
-        match self.rule {
+        let w = self.0;
+        let name = w.field.webots_name();
+        let r = Compact(w.replacement);
+        match w.rule {
             WheelRule::HighValue => {
-                return write!(
+                write!(
                     f,
                     "High value for '{name}'. This can slow down the simulation."
-                );
+                )?;
             }
             WheelRule::SubdivisionTooLow => write!(f, "'{name}' must be greater or equal to 8.")?,
             WheelRule::EdgeSubdivisionTooLow => {
@@ -154,6 +186,20 @@ impl fmt::Display for WheelWarning {
             WheelRule::AboveLimit => write!(f, "'{name}' must be at most {r}.")?,
             WheelRule::NotFinite => write!(f, "'{name}' must be a finite number.")?,
             WheelRule::NotPositive => write!(f, "'{name}' must be strictly positive.")?,
+            WheelRule::Implausible => match w.field.plausible() {
+                Some(range) => write!(
+                    f,
+                    "'{name}' must be within {range} (value {}).",
+                    Compact(w.value)
+                )?,
+                None => write!(
+                    f,
+                    "'{name}' must have a mass of {} or a density of {} (value {}).",
+                    plausible::MASS,
+                    plausible::DENSITY,
+                    Compact(w.value)
+                )?,
+            },
             WheelRule::RimBeamThicknessAboveThickness => {
                 write!(f, "'{name}' must be smaller or equal to 'thickness'.")?;
             }
@@ -178,13 +224,25 @@ impl fmt::Display for WheelWarning {
                  divided by two."
             )?,
         }
-        if self.field == WheelField::Physics {
-            write!(f, " Value reset to density {r}.")
-        } else {
-            write!(f, " Value reset to {r}.")
+        Ok(())
+    }
+}
+
+impl fmt::Display for WheelWarning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.requirement())?;
+        let r = Compact(self.replacement);
+        match (self.rule, self.field) {
+            (WheelRule::HighValue, _) => Ok(()),
+            (_, WheelField::Physics) => write!(f, " Value reset to density {r}."),
+            _ => write!(f, " Value reset to {r}."),
         }
     }
 }
+
+/// The rule a [`WheelWarning`]'s value broke, without what replaced it ([`WheelWarning::requirement`]).
+#[derive(Debug, Clone, Copy)]
+pub struct Requirement<'a>(&'a WheelWarning);
 
 /// Capacity of [`WheelWarnings`]: at most one warning per checked field.
 pub const MAX_WHEEL_WARNINGS: usize = 13;
@@ -304,17 +362,31 @@ impl<T: Real> ValidWheel<T> {
     }
 }
 
-/// A real field: non-finite or ≤ 0 → `fallback`. Returns `None` if the value is kept.
+/// A real field: non-finite, ≤ 0 or outside `range` → `fallback`. Returns `None` if the
+/// value is kept.
 fn check_positive<T: Real>(
     w: &mut WheelWarnings,
     field: WheelField,
     value: T,
     fallback: T,
 ) -> Option<T> {
+    check_in(w, field, value, fallback, field.plausible())
+}
+
+/// [`check_positive`] with an explicit plausible range.
+fn check_in<T: Real>(
+    w: &mut WheelWarnings,
+    field: WheelField,
+    value: T,
+    fallback: T,
+    range: Option<Plausible>,
+) -> Option<T> {
     let rule = if !value.is_finite() {
         WheelRule::NotFinite
     } else if value <= T::ZERO {
         WheelRule::NotPositive
+    } else if range.is_some_and(|r| !r.contains(value.to_f64())) {
+        WheelRule::Implausible
     } else {
         return None;
     };
@@ -551,12 +623,13 @@ impl<T: Real> WheelParams<T> {
 
         let physics_value = match p.physics {
             WheelPhysics::None => None,
-            WheelPhysics::Density(v) | WheelPhysics::Mass(v) => Some(v),
+            WheelPhysics::Density(v) => Some((v, plausible::DENSITY)),
+            WheelPhysics::Mass(v) => Some((v, plausible::MASS)),
         };
-        if let Some(v) = physics_value {
+        if let Some((v, range)) = physics_value {
             let fallback = WheelPhysics::<T>::webots_default();
             let density = T::from_f64(1000.0);
-            if check_positive(&mut w, WheelField::Physics, v, density).is_some() {
+            if check_in(&mut w, WheelField::Physics, v, density, Some(range)).is_some() {
                 p.physics = fallback;
             }
         }

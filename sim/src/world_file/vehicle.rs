@@ -3,6 +3,7 @@
 
 use core::ops::Range;
 
+use proto_geom::WheelField;
 use toml::de::DeValue;
 use vehicle_model::{
     CarField, CarParams, FieldError, FieldKind, FieldValue, Model, ParamWarning, Wheel,
@@ -137,10 +138,24 @@ pub(crate) fn read_vehicle(
     let report = params.validate();
     for w in &report {
         let (key, span) = match warning_field(w) {
-            Some((slot, Some(field))) => locate_wheel_field(s, slot, field),
+            Some((slot, Some(field))) => {
+                let names: &[&str] = match field {
+                    WheelField::Physics => &["mass", "density"],
+                    _ => &[field.webots_name()],
+                };
+                locate_wheel_field(s, slot, names)
+            }
             Some((name, None)) => (Some(s.key_path(name)), s.key_span(name)),
             None => (None, None),
         };
+        // Webots accepts the invalid values it has a fallback for (so do we, with its
+        // warning); an implausible one is a mistake in the file, refused before it runs.
+        if w.is_implausible() {
+            let refusal = w.refusal().to_string();
+            return Err(s
+                .src
+                .error(span, key, WorldFileErrorKind::InvalidValue(refusal)));
+        }
         warnings.push(s.src.warning(span, key, message(w)));
     }
     if report.dropped() > 0 {
@@ -273,34 +288,11 @@ fn describe_value(v: &DeValue<'_>) -> String {
 }
 
 /// What a validation warning is about: a car field `(name, None)`, or a wheel field
-/// `(slot, Some(field))` with the world-file names of the field (`mass` and `density` for
-/// the wheel's `physics`).
-fn warning_field(w: &ParamWarning) -> Option<(&'static str, Option<&'static [&'static str]>)> {
+/// `(slot, Some(field))`.
+fn warning_field(w: &ParamWarning) -> Option<(&'static str, Option<WheelField>)> {
     match *w {
-        ParamWarning::Value { field, .. }
-        | ParamWarning::Element { field, .. }
-        | ParamWarning::Length { field, .. }
-        | ParamWarning::List { field } => Some((field.webots_name(), None)),
-        ParamWarning::Wheel { slot, warning } => {
-            let names: &'static [&'static str] = match warning.field.webots_name() {
-                "physics" => &["mass", "density"],
-                "subdivision" => &["subdivision"],
-                "edgeSubdivision" => &["edgeSubdivision"],
-                "rimBeamNumber" => &["rimBeamNumber"],
-                "thickness" => &["thickness"],
-                "rimBeamThickness" => &["rimBeamThickness"],
-                "tireRadius" => &["tireRadius"],
-                "curvatureFactor" => &["curvatureFactor"],
-                "rimRadius" => &["rimRadius"],
-                "rimBeamWidth" => &["rimBeamWidth"],
-                "centralInnerRadius" => &["centralInnerRadius"],
-                "centralOuterRadius" => &["centralOuterRadius"],
-                "rimBeamOffset" => &["rimBeamOffset"],
-                _ => &[],
-            };
-            Some((slot_name(slot), Some(names)))
-        }
-        _ => None,
+        ParamWarning::Wheel { slot, warning } => Some((slot_name(slot), Some(warning.field))),
+        _ => w.field().map(|field| (field.webots_name(), None)),
     }
 }
 

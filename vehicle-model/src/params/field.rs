@@ -3,6 +3,8 @@
 
 use core::fmt;
 
+use proto_geom::{Plausible, plausible};
+
 /// A field of [`CarParams`](crate::CarParams) that has a Webots name: the `AckermannVehicle` and
 /// `Car` PROTO fields plus the car body's `Physics` fields (`mass`, `centerOfMass`,
 /// `inertiaMatrix`). Wheel fields are addressed as `<slot>.<VehicleWheel field>`, see
@@ -71,6 +73,32 @@ pub enum CarField {
     CenterOfMass,
     /// Webots field `inertiaMatrix` (kg·m²: Ixx, Iyy, Izz, Ixy, Ixz, Iyz) of the car body's `Physics` node.
     InertiaMatrix,
+}
+
+/// The sign rule of a number field ([`CarField::number_rule`]); NaN and ±∞ never pass.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum NumberRule {
+    /// Any finite number.
+    Finite,
+    /// Finite and > 0.
+    Positive,
+    /// Finite and ≥ 0.
+    NonNegative,
+    /// Finite and in [0, 1].
+    UnitInterval,
+}
+
+impl NumberRule {
+    /// True if `value` obeys the rule.
+    pub fn accepts(self, value: f64) -> bool {
+        value.is_finite()
+            && match self {
+                NumberRule::Finite => true,
+                NumberRule::Positive => value > 0.0,
+                NumberRule::NonNegative => value >= 0.0,
+                NumberRule::UnitInterval => (0.0..=1.0).contains(&value),
+            }
+    }
 }
 
 /// What kind of value a field takes.
@@ -192,6 +220,81 @@ impl CarField {
             CarField::Type | CarField::EngineType | CarField::EngineSound => FieldKind::Text,
             _ => FieldKind::Number,
         }
+    }
+
+    /// The sign rule a number (or each number of a list) obeys before its plausible range.
+    pub const fn number_rule(self) -> NumberRule {
+        match self {
+            CarField::Translation
+            | CarField::Rotation
+            | CarField::MinSteeringAngle
+            | CarField::MaxSteeringAngle
+            | CarField::EngineFunctionCoefficients
+            | CarField::GearRatio
+            | CarField::CenterOfMass
+            | CarField::InertiaMatrix
+            | CarField::Type
+            | CarField::EngineType
+            | CarField::EngineSound => NumberRule::Finite,
+            CarField::SuspensionFrontSpringConstant
+            | CarField::SuspensionFrontDampingConstant
+            | CarField::SuspensionRearSpringConstant
+            | CarField::SuspensionRearDampingConstant
+            | CarField::MaxSteeringTorque => NumberRule::NonNegative,
+            CarField::HybridPowerSplitRatio => NumberRule::UnitInterval,
+            CarField::TrackFront
+            | CarField::TrackRear
+            | CarField::Wheelbase
+            | CarField::WheelsDampingConstant
+            | CarField::EngineSoundRpmReference
+            | CarField::BrakeCoefficient
+            | CarField::Time0To100
+            | CarField::MaxVelocity
+            | CarField::EngineMaxTorque
+            | CarField::EngineMaxPower
+            | CarField::EngineMinRpm
+            | CarField::EngineMaxRpm
+            | CarField::HybridPowerSplitRpm
+            | CarField::Mass => NumberRule::Positive,
+        }
+    }
+
+    /// The plausible range of the field's numbers (each element of a list; the magnitude of
+    /// each `gearRatio`), from [`proto_geom::plausible`]; `None` for `rotation` (any angle),
+    /// `hybridPowerSplitRatio` (its rule is already a range) and the text fields.
+    pub const fn plausible(self) -> Option<Plausible> {
+        Some(match self {
+            CarField::Translation => plausible::POSITION,
+            CarField::TrackFront | CarField::TrackRear | CarField::Wheelbase => plausible::LENGTH,
+            CarField::MinSteeringAngle | CarField::MaxSteeringAngle => plausible::STEERING_ANGLE,
+            CarField::SuspensionFrontSpringConstant | CarField::SuspensionRearSpringConstant => {
+                plausible::SPRING
+            }
+            CarField::SuspensionFrontDampingConstant | CarField::SuspensionRearDampingConstant => {
+                plausible::DAMPER
+            }
+            CarField::WheelsDampingConstant => plausible::ROTATIONAL_DAMPING,
+            CarField::MaxSteeringTorque
+            | CarField::BrakeCoefficient
+            | CarField::EngineMaxTorque => plausible::TORQUE,
+            CarField::EngineSoundRpmReference
+            | CarField::EngineMinRpm
+            | CarField::EngineMaxRpm
+            | CarField::HybridPowerSplitRpm => plausible::ENGINE_SPEED,
+            CarField::Time0To100 => plausible::TIME_0_TO_100,
+            CarField::MaxVelocity => plausible::SPEED,
+            CarField::EngineMaxPower => plausible::POWER,
+            CarField::EngineFunctionCoefficients => plausible::COEFFICIENT,
+            CarField::GearRatio => plausible::GEAR_RATIO,
+            CarField::Mass => plausible::MASS,
+            CarField::CenterOfMass => plausible::OFFSET,
+            CarField::InertiaMatrix => plausible::INERTIA,
+            CarField::Rotation
+            | CarField::HybridPowerSplitRatio
+            | CarField::Type
+            | CarField::EngineType
+            | CarField::EngineSound => return None,
+        })
     }
 
     /// The validation rule, as printed in warnings (e.g. `"must be > 0"`).

@@ -14,9 +14,9 @@ use proto_geom::{SensorSlots, WheelParams};
 use crate::wipers::WiperRange;
 
 pub use body::{BodyPhysics, is_physical_inertia};
-pub use field::{CarField, FieldError, FieldKind, FieldValue};
+pub use field::{CarField, FieldError, FieldKind, FieldValue, NumberRule};
 pub use sound_name::EngineSound;
-pub use validate::{MAX_PARAM_WARNINGS, ParamReport, ParamWarning};
+pub use validate::{MAX_PARAM_WARNINGS, ParamReport, ParamWarning, Refusal};
 
 /// The `gearRatio` table: total engine-to-wheel ratios, reverse first (at most
 /// [`MAX_GEAR_RATIOS`]).

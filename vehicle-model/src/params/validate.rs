@@ -3,7 +3,8 @@
 use core::fmt;
 
 use ackermann::{PerWheel, Real, Wheel};
-use proto_geom::WheelWarning;
+use proto_geom::plausible::Compact;
+use proto_geom::{Plausible, WheelRule, WheelWarning};
 
 use super::body::is_physical_inertia;
 use super::field::CarField;
@@ -27,6 +28,27 @@ pub enum ParamWarning {
         value: f64,
         /// The value used instead.
         used: f64,
+    },
+    /// A number obeyed its rule but lay outside its plausible range ([`CarField::plausible`]);
+    /// `used` was taken instead. A world file refuses such a value.
+    Implausible {
+        /// The field.
+        field: CarField,
+        /// The rejected value.
+        value: f64,
+        /// The value used instead.
+        used: f64,
+    },
+    /// Element `index` of a list field lay outside the field's plausible range (for
+    /// `gearRatio`, in magnitude); the whole field was reset to its default (for
+    /// `inertiaMatrix`: derived). A world file refuses such a value.
+    ImplausibleElement {
+        /// The field.
+        field: CarField,
+        /// Position of the first implausible element.
+        index: usize,
+        /// Its value.
+        value: f64,
     },
     /// Element `index` of a list field was NaN, infinite or (for `gearRatio`) zero; the whole
     /// field was reset to its default.
@@ -84,22 +106,79 @@ const fn slot_name(slot: Wheel) -> &'static str {
     }
 }
 
+/// The plausible range of `field` for a message (every field that can be implausible has one).
+fn plausible_text(field: CarField) -> Plausible {
+    field.plausible().unwrap_or(Plausible {
+        min: f64::MIN,
+        max: f64::MAX,
+        unit: "",
+    })
+}
+
+impl ParamWarning {
+    /// The field the warning is about (`None` for a wheel, the wipers or the time step).
+    pub fn field(&self) -> Option<CarField> {
+        match *self {
+            ParamWarning::Value { field, .. }
+            | ParamWarning::Implausible { field, .. }
+            | ParamWarning::ImplausibleElement { field, .. }
+            | ParamWarning::Element { field, .. }
+            | ParamWarning::Length { field, .. }
+            | ParamWarning::List { field } => Some(field),
+            ParamWarning::Wheel { .. }
+            | ParamWarning::WiperRange { .. }
+            | ParamWarning::TimeStep { .. } => None,
+        }
+    }
+
+    /// The broken rule of an implausible value ([`ParamWarning::is_implausible`]), without the
+    /// replacement: what a world file that refuses the value says (`implausible 'mass' value
+    /// 1e300 (must be within 0.001 to 1000000 kg)`).
+    pub fn refusal(&self) -> Refusal<'_> {
+        Refusal(self)
+    }
+
+    /// True for a value outside its plausible range (of the car or of a wheel): a world file
+    /// refuses it, where it accepts the Webots fallbacks with a warning.
+    pub fn is_implausible(&self) -> bool {
+        match *self {
+            ParamWarning::Implausible { .. } | ParamWarning::ImplausibleElement { .. } => true,
+            ParamWarning::Wheel { warning, .. } => warning.rule == WheelRule::Implausible,
+            _ => false,
+        }
+    }
+}
+
 impl fmt::Display for ParamWarning {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
             ParamWarning::Value { field, value, used } => write!(
                 f,
-                "Warning: invalid '{field}' value {value} ({}), used {used} instead.",
-                field.rule()
+                "Warning: invalid '{field}' value {} ({}), used {} instead.",
+                Compact(value),
+                field.rule(),
+                Compact(used)
             ),
+            ParamWarning::Implausible { used, .. } => {
+                write!(
+                    f,
+                    "Warning: {}, used {} instead.",
+                    self.refusal(),
+                    Compact(used)
+                )
+            }
+            ParamWarning::ImplausibleElement { .. } => {
+                write!(f, "Warning: {}, used the default instead.", self.refusal())
+            }
             ParamWarning::Element {
                 field,
                 index,
                 value,
             } => write!(
                 f,
-                "Warning: invalid '{field}' element {index} value {value} ({}), used the default \
+                "Warning: invalid '{field}' element {index} value {} ({}), used the default \
                  instead.",
+                Compact(value),
                 field.rule()
             ),
             ParamWarning::Length { field, len } => write!(
@@ -117,13 +196,52 @@ impl fmt::Display for ParamWarning {
             }
             ParamWarning::WiperRange { min, max } => write!(
                 f,
-                "Warning: invalid wiper range [{min}, {max}] rad (must be finite with min < max), \
-                 wipers removed."
+                "Warning: invalid wiper range [{}, {}] rad (must be finite with min < max), \
+                 wipers removed.",
+                Compact(min),
+                Compact(max)
             ),
             ParamWarning::TimeStep { value, used } => write!(
                 f,
                 "Warning: invalid 'basicTimeStep' {value} ms (must be > 0), used {used} instead."
             ),
+        }
+    }
+}
+
+/// What an implausible value broke, without its replacement ([`ParamWarning::refusal`]).
+#[derive(Debug, Clone, Copy)]
+pub struct Refusal<'a>(&'a ParamWarning);
+
+impl fmt::Display for Refusal<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self.0 {
+            ParamWarning::Implausible { field, value, .. } => write!(
+                f,
+                "implausible '{field}' value {} (must be within {})",
+                Compact(value),
+                plausible_text(field)
+            ),
+            ParamWarning::ImplausibleElement {
+                field,
+                index,
+                value,
+            } => write!(
+                f,
+                "implausible '{field}' element {index} value {} ({}must be within {})",
+                Compact(value),
+                if field == CarField::GearRatio {
+                    "its magnitude "
+                } else {
+                    ""
+                },
+                plausible_text(field)
+            ),
+            ParamWarning::Wheel { slot, warning } => {
+                write!(f, "{}: {}", slot_name(slot), warning.requirement())
+            }
+            // Not a refusal: the warning itself.
+            ref w => write!(f, "{w}"),
         }
     }
 }
@@ -183,13 +301,7 @@ impl ParamReport {
 
     /// The first kept warning about `field`, if any.
     pub fn get(&self, field: CarField) -> Option<&ParamWarning> {
-        self.warnings.iter().find(|w| match **w {
-            ParamWarning::Value { field: f, .. }
-            | ParamWarning::Element { field: f, .. }
-            | ParamWarning::Length { field: f, .. }
-            | ParamWarning::List { field: f } => f == field,
-            _ => false,
-        })
+        self.warnings.iter().find(|w| w.field() == Some(field))
     }
 }
 
@@ -201,49 +313,74 @@ impl<'a> IntoIterator for &'a ParamReport {
     }
 }
 
-/// Replaces `v` by `default` unless `ok(v)`, reporting it.
-fn check<T: Real>(
-    report: &mut ParamReport,
-    field: CarField,
-    v: &mut T,
-    default: T,
-    ok: impl Fn(T) -> bool,
-) {
-    if !(v.is_finite() && ok(*v)) {
+/// Replaces `v` by `default` unless it is finite, obeys `field`'s Webots rule
+/// ([`CarField::number_rule`]) and lies in its plausible range ([`CarField::plausible`]),
+/// reporting the replacement.
+fn check<T: Real>(report: &mut ParamReport, field: CarField, v: &mut T, default: T) {
+    let x = v.to_f64();
+    if !field.number_rule().accepts(x) {
         report.push(ParamWarning::Value {
             field,
-            value: v.to_f64(),
+            value: x,
+            used: default.to_f64(),
+        });
+        *v = default;
+    } else if let Some(range) = field.plausible()
+        && !range.contains(x)
+    {
+        report.push(ParamWarning::Implausible {
+            field,
+            value: x,
             used: default.to_f64(),
         });
         *v = default;
     }
 }
 
-fn positive<T: Real>(report: &mut ParamReport, field: CarField, v: &mut T, default: T) {
-    check(report, field, v, default, |x| x > T::ZERO);
+/// The first bad element of a list field, if any: not finite (for `gearRatio`, also zero),
+/// or outside the field's plausible range (for `gearRatio`, in magnitude).
+fn list_warning<T: Real>(field: CarField, values: &[T]) -> Option<ParamWarning> {
+    let range = field.plausible();
+    let gear = field == CarField::GearRatio;
+    values
+        .iter()
+        .map(|x| x.to_f64())
+        .enumerate()
+        .find_map(|(index, value)| {
+            if !field.number_rule().accepts(value) || (gear && value == 0.0) {
+                Some(ParamWarning::Element {
+                    field,
+                    index,
+                    value,
+                })
+            } else if range.is_some_and(|r| !r.contains(if gear { value.abs() } else { value })) {
+                Some(ParamWarning::ImplausibleElement {
+                    field,
+                    index,
+                    value,
+                })
+            } else {
+                None
+            }
+        })
 }
 
-fn non_negative<T: Real>(report: &mut ParamReport, field: CarField, v: &mut T, default: T) {
-    check(report, field, v, default, |x| x >= T::ZERO);
-}
-
-/// Resets a list to `default` if an element is not finite; returns false if it did.
-fn finite_list<T: Real, const N: usize>(
+/// Resets a fixed-size list to `default` if [`list_warning`] finds a bad element, reporting it;
+/// returns false if it did.
+fn check_list<T: Real, const N: usize>(
     report: &mut ParamReport,
     field: CarField,
     v: &mut [T; N],
     default: [T; N],
 ) -> bool {
-    if let Some((index, value)) = v.iter().enumerate().find(|(_, x)| !x.is_finite()) {
-        report.push(ParamWarning::Element {
-            field,
-            index,
-            value: value.to_f64(),
-        });
-        *v = default;
-        return false;
+    match list_warning(field, v) {
+        Some(warning) => {
+            report.push(warning);
+            *v = default;
+            false
+        }
+        None => true,
     }
-    true
 }
 
 impl<T: Real> CarParams<T> {
@@ -265,7 +402,9 @@ impl<T: Real> CarParams<T> {
     /// `maxVelocity` and the body `mass` must be > 0; the suspension constants ≥ 0;
     /// `minSteeringAngle < maxSteeringAngle` (else both reset); `gearRatio` entries non-zero;
     /// `rotation` needs a non-zero axis; an `inertiaMatrix` must be physical (else derived);
-    /// a wiper range needs `min < max` (else no wipers).
+    /// a wiper range needs `min < max` (else no wipers); and every number must lie in its
+    /// plausible range ([`CarField::plausible`], e.g. a mass of 1 g to 1,000 t), else it is
+    /// reported as [`ParamWarning::Implausible`] (a world file refuses it) and replaced.
     ///
     /// ```
     /// use vehicle_model::{CarField, CarParams, ParamWarning};
@@ -286,13 +425,13 @@ impl<T: Real> CarParams<T> {
         let d = CarParams::<T>::default();
         let mut r = ParamReport::new();
 
-        finite_list(
+        check_list(
             &mut r,
             CarField::Translation,
             &mut self.translation,
             d.translation,
         );
-        if finite_list(&mut r, CarField::Rotation, &mut self.rotation, d.rotation) {
+        if check_list(&mut r, CarField::Rotation, &mut self.rotation, d.rotation) {
             let [x, y, z, _] = self.rotation;
             if x == T::ZERO && y == T::ZERO && z == T::ZERO {
                 r.push(ParamWarning::List {
@@ -301,87 +440,99 @@ impl<T: Real> CarParams<T> {
                 self.rotation = d.rotation;
             }
         }
-        positive(
+        let e = &mut self.engine;
+        let de = &d.engine;
+        let numbers = [
+            (CarField::TrackFront, &mut self.track_front, d.track_front),
+            (CarField::TrackRear, &mut self.track_rear, d.track_rear),
+            (CarField::Wheelbase, &mut self.wheelbase, d.wheelbase),
+            (
+                CarField::MinSteeringAngle,
+                &mut self.min_steering_angle,
+                d.min_steering_angle,
+            ),
+            (
+                CarField::MaxSteeringAngle,
+                &mut self.max_steering_angle,
+                d.max_steering_angle,
+            ),
+            (
+                CarField::SuspensionFrontSpringConstant,
+                &mut self.suspension_front_spring_constant,
+                d.suspension_front_spring_constant,
+            ),
+            (
+                CarField::SuspensionFrontDampingConstant,
+                &mut self.suspension_front_damping_constant,
+                d.suspension_front_damping_constant,
+            ),
+            (
+                CarField::SuspensionRearSpringConstant,
+                &mut self.suspension_rear_spring_constant,
+                d.suspension_rear_spring_constant,
+            ),
+            (
+                CarField::SuspensionRearDampingConstant,
+                &mut self.suspension_rear_damping_constant,
+                d.suspension_rear_damping_constant,
+            ),
+            (
+                CarField::WheelsDampingConstant,
+                &mut self.wheels_damping_constant,
+                d.wheels_damping_constant,
+            ),
+            (
+                CarField::MaxSteeringTorque,
+                &mut self.max_steering_torque,
+                d.max_steering_torque,
+            ),
+            (
+                CarField::EngineSoundRpmReference,
+                &mut self.engine_sound_rpm_reference,
+                d.engine_sound_rpm_reference,
+            ),
+            (
+                CarField::BrakeCoefficient,
+                &mut self.brake_coefficient,
+                d.brake_coefficient,
+            ),
+            (
+                CarField::Time0To100,
+                &mut self.time_0_to_100,
+                d.time_0_to_100,
+            ),
+            (
+                CarField::MaxVelocity,
+                &mut self.max_velocity,
+                d.max_velocity,
+            ),
+            (CarField::EngineMaxTorque, &mut e.max_torque, de.max_torque),
+            (CarField::EngineMaxPower, &mut e.max_power, de.max_power),
+            (CarField::EngineMinRpm, &mut e.min_rpm, de.min_rpm),
+            (CarField::EngineMaxRpm, &mut e.max_rpm, de.max_rpm),
+            (
+                CarField::HybridPowerSplitRatio,
+                &mut e.hybrid_power_split_ratio,
+                de.hybrid_power_split_ratio,
+            ),
+            (
+                CarField::HybridPowerSplitRpm,
+                &mut e.hybrid_power_split_rpm,
+                de.hybrid_power_split_rpm,
+            ),
+            (CarField::Mass, &mut self.body.mass, d.body.mass),
+        ];
+        for (field, value, default) in numbers {
+            check(&mut r, field, value, default);
+        }
+        self.check_relations(&mut r, &d);
+        check_list(
             &mut r,
-            CarField::TrackFront,
-            &mut self.track_front,
-            d.track_front,
-        );
-        positive(
-            &mut r,
-            CarField::TrackRear,
-            &mut self.track_rear,
-            d.track_rear,
-        );
-        positive(
-            &mut r,
-            CarField::Wheelbase,
-            &mut self.wheelbase,
-            d.wheelbase,
-        );
-        self.validate_steering_limits(&mut r, &d);
-        non_negative(
-            &mut r,
-            CarField::SuspensionFrontSpringConstant,
-            &mut self.suspension_front_spring_constant,
-            d.suspension_front_spring_constant,
-        );
-        non_negative(
-            &mut r,
-            CarField::SuspensionFrontDampingConstant,
-            &mut self.suspension_front_damping_constant,
-            d.suspension_front_damping_constant,
-        );
-        non_negative(
-            &mut r,
-            CarField::SuspensionRearSpringConstant,
-            &mut self.suspension_rear_spring_constant,
-            d.suspension_rear_spring_constant,
-        );
-        non_negative(
-            &mut r,
-            CarField::SuspensionRearDampingConstant,
-            &mut self.suspension_rear_damping_constant,
-            d.suspension_rear_damping_constant,
-        );
-        positive(
-            &mut r,
-            CarField::WheelsDampingConstant,
-            &mut self.wheels_damping_constant,
-            d.wheels_damping_constant,
-        );
-        non_negative(
-            &mut r,
-            CarField::MaxSteeringTorque,
-            &mut self.max_steering_torque,
-            d.max_steering_torque,
+            CarField::EngineFunctionCoefficients,
+            &mut self.engine.function_coefficients,
+            d.engine.function_coefficients,
         );
         self.wheels = validate_wheels(&mut r, &self.wheels);
-        positive(
-            &mut r,
-            CarField::EngineSoundRpmReference,
-            &mut self.engine_sound_rpm_reference,
-            d.engine_sound_rpm_reference,
-        );
-        positive(
-            &mut r,
-            CarField::BrakeCoefficient,
-            &mut self.brake_coefficient,
-            d.brake_coefficient,
-        );
-        positive(
-            &mut r,
-            CarField::Time0To100,
-            &mut self.time_0_to_100,
-            d.time_0_to_100,
-        );
-        positive(
-            &mut r,
-            CarField::MaxVelocity,
-            &mut self.max_velocity,
-            d.max_velocity,
-        );
-        self.validate_engine(&mut r, &d);
         self.validate_gear_ratios(&mut r);
         self.validate_body(&mut r);
         if let Some(range) = self.wipers
@@ -402,22 +553,8 @@ impl<T: Real> CarParams<T> {
         (self, report)
     }
 
-    fn validate_steering_limits(&mut self, r: &mut ParamReport, d: &Self) {
-        let finite = |x: T| x.is_finite();
-        check(
-            r,
-            CarField::MinSteeringAngle,
-            &mut self.min_steering_angle,
-            d.min_steering_angle,
-            finite,
-        );
-        check(
-            r,
-            CarField::MaxSteeringAngle,
-            &mut self.max_steering_angle,
-            d.max_steering_angle,
-            finite,
-        );
+    /// The rules relating two fields, on values that each passed their own rule.
+    fn check_relations(&mut self, r: &mut ParamReport, d: &Self) {
         if self.min_steering_angle >= self.max_steering_angle {
             r.push(ParamWarning::Value {
                 field: CarField::MinSteeringAngle,
@@ -432,20 +569,7 @@ impl<T: Real> CarParams<T> {
             self.min_steering_angle = d.min_steering_angle;
             self.max_steering_angle = d.max_steering_angle;
         }
-    }
-
-    fn validate_engine(&mut self, r: &mut ParamReport, d: &Self) {
         let e = &mut self.engine;
-        let de = &d.engine;
-        positive(
-            r,
-            CarField::EngineMaxTorque,
-            &mut e.max_torque,
-            de.max_torque,
-        );
-        positive(r, CarField::EngineMaxPower, &mut e.max_power, de.max_power);
-        positive(r, CarField::EngineMinRpm, &mut e.min_rpm, de.min_rpm);
-        positive(r, CarField::EngineMaxRpm, &mut e.max_rpm, de.max_rpm);
         if e.max_rpm <= e.min_rpm {
             let used = T::from_f64(5.0) * e.min_rpm;
             r.push(ParamWarning::Value {
@@ -455,72 +579,43 @@ impl<T: Real> CarParams<T> {
             });
             e.max_rpm = used;
         }
-        finite_list(
-            r,
-            CarField::EngineFunctionCoefficients,
-            &mut e.function_coefficients,
-            de.function_coefficients,
-        );
-        check(
-            r,
-            CarField::HybridPowerSplitRatio,
-            &mut e.hybrid_power_split_ratio,
-            de.hybrid_power_split_ratio,
-            |x| (T::ZERO..=T::ONE).contains(&x),
-        );
-        positive(
-            r,
-            CarField::HybridPowerSplitRpm,
-            &mut e.hybrid_power_split_rpm,
-            de.hybrid_power_split_rpm,
-        );
     }
 
     fn validate_gear_ratios(&mut self, r: &mut ParamReport) {
         let len = self.gear_ratios.len();
-        if len < 2 {
-            r.push(ParamWarning::Length {
+        let warning = if len < 2 {
+            Some(ParamWarning::Length {
                 field: CarField::GearRatio,
                 len,
-            });
-            self.gear_ratios = gear_ratios(&DEFAULT_GEAR_RATIOS);
-        } else if let Some((index, value)) = self
-            .gear_ratios
-            .iter()
-            .enumerate()
-            .find(|(_, x)| !x.is_finite() || **x == T::ZERO)
-        {
-            r.push(ParamWarning::Element {
-                field: CarField::GearRatio,
-                index,
-                value: value.to_f64(),
-            });
+            })
+        } else {
+            list_warning(CarField::GearRatio, &self.gear_ratios)
+        };
+        if let Some(warning) = warning {
+            r.push(warning);
             self.gear_ratios = gear_ratios(&DEFAULT_GEAR_RATIOS);
         }
     }
 
     fn validate_body(&mut self, r: &mut ParamReport) {
         let b = &mut self.body;
-        positive(
-            r,
-            CarField::Mass,
-            &mut b.mass,
-            T::from_f64(super::DEFAULT_BODY_MASS),
-        );
         let mid_wheelbase = [self.wheelbase * T::HALF, T::ZERO, T::ZERO];
-        finite_list(
+        check_list(
             r,
             CarField::CenterOfMass,
             &mut b.center_of_mass,
             mid_wheelbase,
         );
-        if let Some(m) = b.inertia
-            && !is_physical_inertia(&m)
-        {
-            r.push(ParamWarning::List {
-                field: CarField::InertiaMatrix,
-            });
-            b.inertia = None;
+        if let Some(m) = b.inertia {
+            let warning = list_warning(CarField::InertiaMatrix, &m)
+                .filter(|w| matches!(w, ParamWarning::ImplausibleElement { .. }))
+                .or((!is_physical_inertia(&m)).then_some(ParamWarning::List {
+                    field: CarField::InertiaMatrix,
+                }));
+            if let Some(warning) = warning {
+                r.push(warning);
+                b.inertia = None;
+            }
         }
     }
 }
