@@ -1,6 +1,7 @@
 //! Dynamic rigid boxes of a world (`[[body]]` in a world file): free bodies under gravity that
 //! cars' chassis, robots and other boxes push around.
 
+use proto_geom::plausible;
 use rapier3d::prelude::{
     CoefficientCombineRule, ColliderBuilder, PhysicsWorld, RigidBodyBuilder, RigidBodyHandle,
 };
@@ -8,14 +9,6 @@ use rapier3d::prelude::{
 use crate::config::DEFAULT_FRICTION;
 use crate::error::ParamError;
 use crate::geom::{self, G_DYNAMIC};
-
-/// Smallest and largest edge of a dynamic box (m): below a millimetre rapier's contact margins
-/// dominate the shape, above a kilometre the f32 positions lose their 0.1 mm resolution.
-pub const BODY_SIZE_RANGE: [f64; 2] = [1e-3, 1e3];
-
-/// Lightest and heaviest dynamic box (kg): from a gram to a thousand tonnes, i.e. within six
-/// orders of magnitude of a car, beyond which rapier's contacts between them stop converging.
-pub const BODY_MASS_RANGE: [f64; 2] = [1e-3, 1e6];
 
 /// A dynamic box: a cuboid of uniform density free under gravity.
 ///
@@ -31,11 +24,12 @@ pub const BODY_MASS_RANGE: [f64; 2] = [1e-3, 1e6];
 pub struct BodySpec {
     /// Centre at the start (m, world frame).
     pub center: [f64; 3],
-    /// Full lengths along the box's own x, y, z (m, each in [`BODY_SIZE_RANGE`]).
+    /// Full lengths along the box's own x, y, z (m, each in [`plausible::LENGTH`]: below a millimetre rapier's contact
+    /// margins dominate the shape).
     pub size: [f64; 3],
     /// Heading at the start (rad, counter-clockwise about +z).
     pub yaw: f64,
-    /// Mass (kg, in [`BODY_MASS_RANGE`]), spread uniformly over the box.
+    /// Mass (kg, in [`plausible::MASS`]), spread uniformly over the box.
     pub mass: f64,
     /// Coulomb friction of its faces (≥ 0), multiplied by the other surface's (the ground's,
     /// a chassis' 1, another box's); `None` = [`DEFAULT_FRICTION`] (1), so that on the ground
@@ -49,19 +43,13 @@ impl BodySpec {
     /// `body.mass` and `body.friction`.
     pub fn validate(&self) -> Result<(), ParamError> {
         for c in self.center {
-            ParamError::finite("body.center", c)?;
+            ParamError::within("body.center", c, plausible::POSITION)?;
         }
-        let [lo, hi] = BODY_SIZE_RANGE;
         for s in self.size {
-            ParamError::check("body.size", s, "from 0.001 to 1000 m", |v| {
-                (lo..=hi).contains(&v)
-            })?;
+            ParamError::within("body.size", s, plausible::LENGTH)?;
         }
         ParamError::finite("body.yaw", self.yaw)?;
-        let [lo, hi] = BODY_MASS_RANGE;
-        ParamError::check("body.mass", self.mass, "from 0.001 to 1e6 kg", |v| {
-            (lo..=hi).contains(&v)
-        })?;
+        ParamError::within("body.mass", self.mass, plausible::MASS)?;
         if let Some(f) = self.friction {
             ParamError::non_negative("body.friction", f)?;
         }

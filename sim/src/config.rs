@@ -3,6 +3,7 @@
 
 use crate::body::BodySpec;
 use crate::error::ParamError;
+use proto_geom::plausible;
 
 /// Webots default `WorldInfo.basicTimeStep` used by the car worlds (ms).
 pub const DEFAULT_BASIC_TIME_STEP_MS: u32 = 10;
@@ -59,10 +60,10 @@ impl Obstacle {
                 friction,
             } => {
                 for c in center {
-                    ParamError::finite("obstacle.box.center", *c)?;
+                    ParamError::within("obstacle.box.center", *c, plausible::POSITION)?;
                 }
                 for h in half_extents {
-                    ParamError::positive("obstacle.box.half_extents", *h)?;
+                    ParamError::within("obstacle.box.half_extents", *h, plausible::LENGTH)?;
                 }
                 ParamError::finite("obstacle.box.yaw", *yaw)?;
                 if let Some(f) = friction {
@@ -78,12 +79,12 @@ impl Obstacle {
                 friction,
             } => {
                 for c in start {
-                    ParamError::finite("obstacle.ramp.start", *c)?;
+                    ParamError::within("obstacle.ramp.start", *c, plausible::POSITION)?;
                 }
                 ParamError::finite("obstacle.ramp.yaw", *yaw)?;
-                ParamError::positive("obstacle.ramp.length", *length)?;
-                ParamError::positive("obstacle.ramp.width", *width)?;
-                ParamError::positive("obstacle.ramp.height", *height)?;
+                ParamError::within("obstacle.ramp.length", *length, plausible::LENGTH)?;
+                ParamError::within("obstacle.ramp.width", *width, plausible::LENGTH)?;
+                ParamError::within("obstacle.ramp.height", *height, plausible::LENGTH)?;
                 if let Some(f) = friction {
                     ParamError::non_negative("obstacle.ramp.friction", *f)?;
                 }

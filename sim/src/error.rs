@@ -4,6 +4,8 @@
 use core::fmt;
 
 use ackermann::Wheel;
+use proto_geom::Plausible;
+use proto_geom::plausible::Compact;
 
 /// A parameter rejected at construction: the field (Webots field name where there is one) and
 /// the offending value.
@@ -13,8 +15,26 @@ pub struct ParamError {
     pub field: &'static str,
     /// The rejected value (NaN and ±∞ included).
     pub value: f64,
-    /// What the field must satisfy, e.g. `"> 0"`.
-    pub rule: &'static str,
+    /// What the field must satisfy.
+    pub rule: Rule,
+}
+
+/// What a [`ParamError`]'s field must satisfy. `Display` completes "must be …".
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Rule {
+    /// A rule in words, e.g. `"finite and > 0"`.
+    Text(&'static str),
+    /// A plausible physical range ([`proto_geom::plausible`]).
+    Within(Plausible),
+}
+
+impl fmt::Display for Rule {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Rule::Text(t) => f.write_str(t),
+            Rule::Within(range) => write!(f, "within {range}"),
+        }
+    }
 }
 
 impl ParamError {
@@ -28,7 +48,28 @@ impl ParamError {
         if ok(value) {
             Ok(value)
         } else {
-            Err(ParamError { field, value, rule })
+            Err(ParamError {
+                field,
+                value,
+                rule: Rule::Text(rule),
+            })
+        }
+    }
+
+    /// `value` must lie in the plausible `range` (finite, bounds included).
+    pub(crate) fn within(
+        field: &'static str,
+        value: f64,
+        range: Plausible,
+    ) -> Result<f64, ParamError> {
+        if range.contains(value) {
+            Ok(value)
+        } else {
+            Err(ParamError {
+                field,
+                value,
+                rule: Rule::Within(range),
+            })
         }
     }
 
@@ -55,7 +96,9 @@ impl fmt::Display for ParamError {
         write!(
             f,
             "invalid {} = {}: must be {}",
-            self.field, self.value, self.rule
+            self.field,
+            Compact(self.value),
+            self.rule
         )
     }
 }
@@ -77,8 +120,42 @@ pub enum BodyPart {
     LeftWheel,
     /// The right wheel of a DifferentialWheels robot.
     RightWheel,
+    /// The `[[body]]` box with this index (0-based, in world-file order).
+    Box(usize),
     /// A body that belongs to no vehicle or robot.
     Other,
+}
+
+impl fmt::Display for BodyPart {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let wheel = |w: &Wheel| match w {
+            Wheel::FrontRight => "front-right",
+            Wheel::FrontLeft => "front-left",
+            Wheel::RearRight => "rear-right",
+            Wheel::RearLeft => "rear-left",
+        };
+        match self {
+            BodyPart::Chassis => f.write_str("chassis"),
+            BodyPart::Wheel(w) => write!(f, "{} wheel", wheel(w)),
+            BodyPart::Knuckle(w) => write!(f, "{} steering knuckle", wheel(w)),
+            BodyPart::RobotBody => f.write_str("body"),
+            BodyPart::LeftWheel => f.write_str("left wheel"),
+            BodyPart::RightWheel => f.write_str("right wheel"),
+            BodyPart::Box(i) => write!(f, "box {}", i + 1),
+            BodyPart::Other => f.write_str("a body"),
+        }
+    }
+}
+
+impl fmt::Display for BodyOwner {
+    /// `car 1`, `robot 1` (1-based, as in a world file), `the world`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            BodyOwner::Vehicle(i) => write!(f, "car {}", i + 1),
+            BodyOwner::Robot(i) => write!(f, "robot {}", i + 1),
+            BodyOwner::World => f.write_str("the world"),
+        }
+    }
 }
 
 /// What owns a body named in [`SimError::NonFinite`].
@@ -129,10 +206,10 @@ impl fmt::Display for SimError {
                 time_ms,
             } => write!(
                 f,
-                "non-finite physics state of {part:?} of {owner:?} at t = {time_ms} ms: \
-                 the simulation diverged"
+                "the simulation diverged at t = {time_ms} ms: the pose or velocity of the \
+                 {part} of {owner} stopped being finite"
             ),
-            SimError::JointRefused(owner) => write!(f, "rapier refused a joint of {owner:?}"),
+            SimError::JointRefused(owner) => write!(f, "rapier refused a joint of {owner}"),
         }
     }
 }

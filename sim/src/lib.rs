@@ -77,7 +77,7 @@ mod simulation;
 mod vehicle;
 mod world;
 
-pub use body::{BODY_MASS_RANGE, BODY_SIZE_RANGE, BodyPose, BodySpec};
+pub use body::{BodyPose, BodySpec};
 pub use config::{
     DEFAULT_BASIC_TIME_STEP_MS, DEFAULT_FRICTION, DEFAULT_FRICTION_ITERATIONS, Obstacle,
     SolverSettings, WorldConfig,
@@ -86,7 +86,7 @@ pub use diff_wheels::{
     DifferentialWheels, DifferentialWheelsParams, RobotBody, RobotId, RobotMode, RobotPlacement,
     RobotPose, RobotWarning,
 };
-pub use error::{BodyOwner, BodyPart, ParamError, SimError};
+pub use error::{BodyOwner, BodyPart, ParamError, Rule, SimError};
 pub use simulation::{CarTelemetry, Simulation};
 pub use vehicle::{
     ChassisSpec, Mounting, SpringDamper, SteeringSpec, TyreChoice, TyreSpec, TyreTelemetry,

@@ -268,6 +268,34 @@ impl World {
         self.last_substeps
     }
 
+    /// The owner and part of the rapier body `handle` (`World`/`Other` for none of ours).
+    fn owner_of(&self, handle: Option<RigidBodyHandle>) -> (BodyOwner, BodyPart) {
+        let Some(h) = handle else {
+            return (BodyOwner::World, BodyPart::Other);
+        };
+        let vehicle = self
+            .vehicles
+            .iter()
+            .enumerate()
+            .find_map(|(i, v)| v.part_of(h).map(|part| (BodyOwner::Vehicle(i), part)));
+        let robot = || {
+            self.robots
+                .iter()
+                .enumerate()
+                .find_map(|(i, r)| r.part_of(h).map(|part| (BodyOwner::Robot(i), part)))
+        };
+        let body = || {
+            self.bodies
+                .iter()
+                .position(|b| *b == h)
+                .map(|i| (BodyOwner::World, BodyPart::Box(i)))
+        };
+        vehicle
+            .or_else(robot)
+            .or_else(body)
+            .unwrap_or((BodyOwner::World, BodyPart::Other))
+    }
+
     fn step_inner(&mut self) -> Result<(), SimError> {
         let dt = self.dt();
         for v in &mut self.vehicles {
@@ -283,14 +311,24 @@ impl World {
         }
         self.last_substeps = substeps;
         self.time_ms += u64::from(self.config.basic_time_step_ms);
-        let box_diverged = self
+        let quarantined = self.physics.quarantine();
+        let diverged = self
             .bodies
             .iter()
-            .any(|h| geom::finite_body(&self.physics, *h).is_none());
-        if box_diverged || !self.physics.quarantine().is_empty() {
+            .position(|h| geom::finite_body(&self.physics, *h).is_none())
+            .map(|i| (BodyOwner::World, BodyPart::Box(i)))
+            .or_else(|| {
+                let handle = quarantined
+                    .colliders()
+                    .iter()
+                    .find_map(|c| self.physics.colliders.get(*c).and_then(|c| c.parent()))
+                    .or_else(|| quarantined.bodies().first().copied());
+                (!quarantined.is_empty()).then(|| self.owner_of(handle))
+            });
+        if let Some((owner, part)) = diverged {
             return Err(SimError::NonFinite {
-                owner: BodyOwner::World,
-                part: BodyPart::Other,
+                owner,
+                part,
                 time_ms: self.time_ms,
             });
         }
@@ -328,5 +366,59 @@ fn integration_parameters(config: &WorldConfig) -> IntegrationParameters {
         contact_recycling: false,
         num_internal_stabilization_iterations: config.solver.friction_iterations,
         ..IntegrationParameters::default()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::vehicle::Mounting;
+    use ackermann::Wheel;
+    use vehicle_model::Model;
+
+    /// A world with a cast car and, 10 m to its left, a car on joints.
+    fn two_cars() -> World {
+        let mut world = World::new(WorldConfig::default()).unwrap();
+        for (i, mounting) in [Mounting::Cast, Mounting::Joints].into_iter().enumerate() {
+            let mut spec = VehicleSpec::from_car(&Model::BmwX5.params()).unwrap();
+            spec.mounting = mounting;
+            let placement = VehiclePlacement {
+                y: 10.0 * i as f64,
+                ..VehiclePlacement::default()
+            };
+            world.add_vehicle(spec, placement).unwrap();
+        }
+        world
+    }
+
+    #[test]
+    fn a_diverged_body_is_named_by_its_car_and_part() {
+        // A NaN velocity written into the second car's rear-left wheel: rapier quarantines the
+        // body at the start of the step, and the error names that car and wheel.
+        let mut world = two_cars();
+        world.step().unwrap();
+        let rear_left = Some(BodyPart::Wheel(Wheel::RearLeft));
+        let wheel = world
+            .physics
+            .bodies
+            .iter()
+            .map(|(h, _)| h)
+            .find(|h| world.vehicles[1].part_of(*h) == rear_left)
+            .unwrap();
+        world.physics.bodies[wheel].set_linvel(Vector::new(f32::NAN, 0.0, 0.0), true);
+        let err = world.step().unwrap_err();
+        assert_eq!(
+            err,
+            SimError::NonFinite {
+                owner: BodyOwner::Vehicle(1),
+                part: BodyPart::Wheel(Wheel::RearLeft),
+                time_ms: 20,
+            }
+        );
+        assert_eq!(
+            err.to_string(),
+            "the simulation diverged at t = 20 ms: the pose or velocity of the rear-left wheel \
+             of car 2 stopped being finite"
+        );
     }
 }

@@ -55,7 +55,7 @@ fn world_file_errors_name_file_line_and_key() {
     assert_eq!(e.key.as_deref(), Some("body[1].mass"));
     assert_eq!(
         e.to_string(),
-        "w.toml:5:1: invalid 'body[1].mass': -5 kg: must be from 0.001 to 1e6 kg"
+        "w.toml:5:1: invalid 'body[1].mass': -5: must be within 0.001 to 1000000 kg"
     );
 
     let e = error("size = [1, 2000, 1]\nmass = 5\ntranslation = [0, 0, 1]\n");

@@ -495,6 +495,38 @@ fn implausible_values_are_refused_with_file_line_and_key() {
         );
         assert!(e.to_string().contains(text), "{line}: {e}");
     }
+    // The robot, the boxes and the ramps likewise.
+    for (text, key, message) in [
+        (
+            "[differential_wheels]\nwheelRadius = 1e300\n",
+            "differential_wheels.wheelRadius",
+            "1e300: must be within 0.001 to 1000 m",
+        ),
+        (
+            "[differential_wheels]\naxleLength = 1e-9\n",
+            "differential_wheels.axleLength",
+            "1e-9: must be within 0.001 to 1000 m",
+        ),
+        (
+            "[differential_wheels]\nmaxSpeed = 1e300\n",
+            "differential_wheels.maxSpeed",
+            "maxSpeed × wheelRadius is at most 1000 m/s",
+        ),
+        (
+            "[vehicle]\n[[box]]\ntranslation = [1e300, 0, 0]\nsize = [1, 1, 1]\n",
+            "box[1].translation",
+            "1e300: must be within -10000 to 10000 m",
+        ),
+        (
+            "[vehicle]\n[[ramp]]\nstart = [0, 0]\nlength = 1e300\nwidth = 3\nheight = 1\n",
+            "ramp[1].length",
+            "within 0.001 to 1000 m",
+        ),
+    ] {
+        let e = err(text);
+        assert_eq!(e.key.as_deref(), Some(key), "{e}");
+        assert!(e.to_string().contains(message), "{e}");
+    }
     // The bounds are inclusive: the largest plausible mass loads.
     let w = parse_str("w.toml", "[vehicle]\nmass = 1e6\n").unwrap();
     assert_eq!(w.car().unwrap().params.body.mass, 1e6);

@@ -21,11 +21,11 @@ mod physics;
 
 use core::fmt;
 
-use rapier3d::prelude::PhysicsWorld;
+use rapier3d::prelude::{PhysicsWorld, RigidBodyHandle};
 
 pub use params::{DifferentialWheelsParams, RobotBody, RobotMode, RobotPlacement};
 
-use crate::error::{BodyOwner, SimError};
+use crate::error::{BodyOwner, BodyPart, SimError};
 use crate::rng::SplitMix64;
 use physics::PhysicsParts;
 
@@ -389,6 +389,15 @@ impl DifferentialWheels {
                 self.count(n.map(|s| s * dt));
             }
             ModeState::Physics(parts) => physics::command(world, parts, self.targets, p.max_force),
+        }
+    }
+
+    /// Which part of this robot the rapier body `handle` is, if any (kinematic robots have no
+    /// bodies).
+    pub(crate) fn part_of(&self, handle: RigidBodyHandle) -> Option<BodyPart> {
+        match &self.state {
+            ModeState::Physics(parts) => parts.part_of(handle),
+            _ => None,
         }
     }
 

@@ -1,6 +1,7 @@
 //! The fields of the Webots `DifferentialWheels` node and the simulation mode.
 
 use crate::error::ParamError;
+use proto_geom::plausible;
 
 /// The fields of a Webots `DifferentialWheels` node (spec §7.1), with the Webots defaults.
 ///
@@ -62,12 +63,22 @@ impl Default for DifferentialWheelsParams {
 
 impl DifferentialWheelsParams {
     /// Checks every field against its Webots range; the lengths, speeds and units must be
-    /// strictly positive because the kinematics divides by them.
+    /// strictly positive because the kinematics divides by them, and the lengths, power,
+    /// torque and wheel surface speed within their plausible ranges
+    /// ([`proto_geom::plausible`]).
     pub fn validate(&self) -> Result<(), ParamError> {
-        ParamError::non_negative("motorConsumption", self.motor_consumption)?;
-        ParamError::positive("axleLength", self.axle_length)?;
-        ParamError::positive("wheelRadius", self.wheel_radius)?;
+        ParamError::within("motorConsumption", self.motor_consumption, plausible::POWER)?;
+        ParamError::within("axleLength", self.axle_length, plausible::LENGTH)?;
+        ParamError::within("wheelRadius", self.wheel_radius, plausible::LENGTH)?;
         ParamError::positive("maxSpeed", self.max_speed)?;
+        // The wheel's surface speed at maxSpeed, not the angular speed itself, is what must
+        // stay physical.
+        ParamError::check(
+            "maxSpeed",
+            self.max_speed,
+            "such that maxSpeed × wheelRadius is at most 1000 m/s",
+            |v| plausible::SPEED.contains(v * self.wheel_radius),
+        )?;
         ParamError::positive("maxAcceleration", self.max_acceleration)?;
         ParamError::positive("speedUnit", self.speed_unit)?;
         ParamError::non_negative("slipNoise", self.slip_noise)?;
@@ -83,7 +94,7 @@ impl DifferentialWheelsParams {
             "-1 or finite and >= 0",
             |v| v == -1.0 || (v.is_finite() && v >= 0.0),
         )?;
-        ParamError::non_negative("maxForce", self.max_force)?;
+        ParamError::within("maxForce", self.max_force, plausible::TORQUE)?;
         Ok(())
     }
 
@@ -125,9 +136,9 @@ impl Default for RobotBody {
 impl RobotBody {
     /// Checks that masses and width are finite and positive.
     pub fn validate(&self) -> Result<(), ParamError> {
-        ParamError::positive("robot.body_mass", self.body_mass)?;
-        ParamError::positive("robot.wheel_mass", self.wheel_mass)?;
-        ParamError::positive("robot.wheel_width", self.wheel_width)?;
+        ParamError::within("robot.body_mass", self.body_mass, plausible::MASS)?;
+        ParamError::within("robot.wheel_mass", self.wheel_mass, plausible::MASS)?;
+        ParamError::within("robot.wheel_width", self.wheel_width, plausible::LENGTH)?;
         Ok(())
     }
 }
@@ -158,9 +169,9 @@ pub struct RobotPlacement {
 
 impl RobotPlacement {
     pub(crate) fn validate(&self) -> Result<(), ParamError> {
-        ParamError::finite("robot.x", self.x)?;
-        ParamError::finite("robot.y", self.y)?;
-        ParamError::finite("robot.z", self.z)?;
+        ParamError::within("robot.x", self.x, plausible::POSITION)?;
+        ParamError::within("robot.y", self.y, plausible::POSITION)?;
+        ParamError::within("robot.z", self.z, plausible::POSITION)?;
         ParamError::finite("robot.heading", self.heading)?;
         Ok(())
     }

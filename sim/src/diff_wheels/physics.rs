@@ -29,6 +29,21 @@ pub(crate) struct PhysicsParts {
 }
 
 /// What the physics step did to the robot.
+impl PhysicsParts {
+    /// Which part of the robot the rapier body `handle` is, if any.
+    pub(crate) fn part_of(&self, handle: RigidBodyHandle) -> Option<BodyPart> {
+        [
+            (self.body, BodyPart::RobotBody),
+            (self.wheels[0], BodyPart::LeftWheel),
+            (self.wheels[1], BodyPart::RightWheel),
+        ]
+        .into_iter()
+        .find(|(h, _)| *h == handle)
+        .map(|(_, part)| part)
+    }
+}
+
+/// What a physics-mode step measured.
 pub(crate) struct Measurement {
     /// Wheel rotation during the step (rad), `[left, right]`.
     pub deltas: [f64; 2],

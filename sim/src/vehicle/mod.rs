@@ -55,7 +55,8 @@ mod spec;
 mod state;
 
 use ackermann::{PerWheel, Wheel, WheelAngles};
-use rapier3d::prelude::{PhysicsWorld, Pose, RigidBody, Rotation, Vector};
+use proto_geom::plausible;
+use rapier3d::prelude::{PhysicsWorld, Pose, RigidBody, RigidBodyHandle, Rotation, Vector};
 
 use vehicle_model::tyre::LOW_SPEED;
 use vehicle_model::{
@@ -111,11 +112,11 @@ impl Vehicle {
         placement: VehiclePlacement,
     ) -> Result<Self, SimError> {
         spec.validate()?;
-        ParamError::finite("placement.x", placement.x)?;
-        ParamError::finite("placement.y", placement.y)?;
+        ParamError::within("placement.x", placement.x, plausible::POSITION)?;
+        ParamError::within("placement.y", placement.y, plausible::POSITION)?;
         ParamError::finite("placement.yaw", placement.yaw)?;
         let z = match placement.z {
-            Some(z) => ParamError::finite("placement.z", z)?,
+            Some(z) => ParamError::within("placement.z", z, plausible::POSITION)?,
             None => {
                 let [rr, rl] = [Wheel::RearRight, Wheel::RearLeft]
                     .map(|w| spec.wheels[w].radius - spec.wheels[w].position[2]);
@@ -552,6 +553,14 @@ impl Vehicle {
             };
             let next = angle + servo.velocity(cmd.target, angle) * dt;
             self.state.wiper = Some(next.clamp(lo, hi));
+        }
+    }
+
+    /// Which part of this car the rapier body `handle` is, if any.
+    pub(crate) fn part_of(&self, handle: RigidBodyHandle) -> Option<BodyPart> {
+        match &self.parts {
+            Parts::Cast(p) => (p.chassis == handle).then_some(BodyPart::Chassis),
+            Parts::Joints(p) => p.bodies().find(|(h, _)| *h == handle).map(|(_, part)| part),
         }
     }
 

@@ -2,10 +2,11 @@
 //! joint constants in f64 SI units.
 
 use ackermann::{PerWheel, Wheel};
+use proto_geom::plausible;
 use proto_geom::{VehicleDimensions, VehicleLayout};
 use vehicle_model::{CarParams, TyreClass, TyreField, TyreModel, WebotsContact};
 
-use crate::error::ParamError;
+use crate::error::{ParamError, Rule};
 
 /// Mass properties and collision box of the car body (without wheels), in the car frame
 /// (x forward, y left, z up, origin at the rear-axle centre at wheel-centre height).
@@ -187,7 +188,7 @@ fn fit_tyre(choice: &TyreChoice, radius: f64, load: f64) -> Result<TyreModel<f64
                 .map_err(|value| ParamError {
                     field: "forceDependentSlip",
                     value,
-                    rule: "finite and in [0, 1] m/s per N",
+                    rule: Rule::Text("finite and in [0, 1] m/s per N"),
                 })
         }
         TyreChoice::MagicFormula { class, overrides } => {
@@ -200,7 +201,7 @@ fn fit_tyre(choice: &TyreChoice, radius: f64, load: f64) -> Result<TyreModel<f64
                 .map_err(|e| ParamError {
                     field: e.field.path(),
                     value: e.value,
-                    rule: e.field.rule(),
+                    rule: Rule::Text(e.field.rule()),
                 })
         }
     }
@@ -232,15 +233,18 @@ impl VehicleSpec {
     /// tensor, finite positions and `min_angle ≤ max_angle`.
     pub fn validate(&self) -> Result<(), ParamError> {
         let c = &self.chassis;
-        ParamError::positive("physics.mass", c.mass)?;
+        ParamError::within("physics.mass", c.mass, plausible::MASS)?;
         for v in c.center_of_mass {
-            ParamError::finite("physics.centerOfMass", v)?;
+            ParamError::within("physics.centerOfMass", v, plausible::OFFSET)?;
         }
         for v in c.box_center {
-            ParamError::finite("chassis.box_center", v)?;
+            ParamError::within("chassis.box_center", v, plausible::OFFSET)?;
         }
         for v in c.box_half_extents {
-            ParamError::positive("chassis.box_half_extents", v)?;
+            ParamError::within("chassis.box_half_extents", v, plausible::LENGTH)?;
+        }
+        for v in c.inertia {
+            ParamError::within("physics.inertiaMatrix", v, plausible::INERTIA)?;
         }
         let [xx, yy, zz, xy, xz, yz] = c.inertia;
         let det = xx * (yy * zz - yz * yz) - xy * (xy * zz - yz * xz) + xz * (xy * yz - yy * xz);
@@ -258,11 +262,11 @@ impl VehicleSpec {
         for w in Wheel::ALL {
             let s = &self.wheels[w];
             for v in s.position {
-                ParamError::finite("wheel.position", v)?;
+                ParamError::within("wheel.position", v, plausible::OFFSET)?;
             }
-            ParamError::positive("tireRadius", s.radius)?;
-            ParamError::positive("thickness", s.width)?;
-            ParamError::positive("wheel.mass", s.mass)?;
+            ParamError::within("tireRadius", s.radius, plausible::LENGTH)?;
+            ParamError::within("thickness", s.width, plausible::LENGTH)?;
+            ParamError::within("wheel.mass", s.mass, plausible::MASS)?;
         }
         for (k, c) in [
             (
@@ -275,24 +279,39 @@ impl VehicleSpec {
             ),
         ] {
             ParamError::positive(k, c)?;
+            ParamError::within(k, c, plausible::SPRING)?;
         }
-        ParamError::non_negative(
+        ParamError::within(
             "suspensionFrontDampingConstant",
             self.front_suspension.damping,
+            plausible::DAMPER,
         )?;
-        ParamError::non_negative(
+        ParamError::within(
             "suspensionRearDampingConstant",
             self.rear_suspension.damping,
+            plausible::DAMPER,
         )?;
-        ParamError::finite("minSteeringAngle", self.steering.min_angle)?;
+        ParamError::within(
+            "minSteeringAngle",
+            self.steering.min_angle,
+            plausible::STEERING_ANGLE,
+        )?;
         ParamError::check(
             "maxSteeringAngle",
             self.steering.max_angle,
             "finite and >= minSteeringAngle",
-            |v| v.is_finite() && v >= self.steering.min_angle,
+            |v| plausible::STEERING_ANGLE.contains(v) && v >= self.steering.min_angle,
         )?;
-        ParamError::non_negative("maxSteeringTorque", self.steering.max_torque)?;
-        ParamError::non_negative("wheelsDampingConstant", self.wheels_damping)?;
+        ParamError::within(
+            "maxSteeringTorque",
+            self.steering.max_torque,
+            plausible::TORQUE,
+        )?;
+        ParamError::within(
+            "wheelsDampingConstant",
+            self.wheels_damping,
+            plausible::ROTATIONAL_DAMPING,
+        )?;
         if let Some([lo, hi]) = self.wiper_range {
             ParamError::finite("wiper.min", lo)?;
             ParamError::check("wiper.max", hi, "finite and > wiper.min", |v| {

@@ -3,6 +3,8 @@
 use crate::body::BodySpec;
 use crate::config::WorldConfig;
 
+use proto_geom::plausible::Compact;
+
 use super::error::{WorldFileError, WorldFileErrorKind};
 use super::read::Section;
 use super::statics::{missing, yaw_of};
@@ -38,14 +40,13 @@ pub(crate) fn read_bodies(
                 "body.yaw" => "rotation",
                 _ => "friction",
             };
-            let unit = match key {
-                "translation" | "size" => " m",
-                "mass" => " kg",
-                _ => "",
-            };
             b.error(
                 key,
-                WorldFileErrorKind::InvalidValue(format!("{}{unit}: must be {}", e.value, e.rule)),
+                WorldFileErrorKind::InvalidValue(format!(
+                    "{}: must be {}",
+                    Compact(e.value),
+                    e.rule
+                )),
             )
         })?;
         config.bodies.push(spec);

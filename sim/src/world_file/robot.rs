@@ -1,6 +1,7 @@
 //! `[differential_wheels]`: the legacy Webots robot, its mode, noise seed and placement.
 
 use crate::diff_wheels::{DifferentialWheelsParams, RobotBody, RobotMode, RobotPlacement};
+use proto_geom::plausible::Compact;
 
 use super::error::{WorldFileError, WorldFileErrorKind};
 use super::read::Section;
@@ -69,7 +70,7 @@ pub(crate) fn read_robot(s: &Section<'_, '_>) -> Result<RobotDescription, WorldF
     p.validate().map_err(|e| {
         s.error(
             e.field,
-            WorldFileErrorKind::InvalidValue(format!("{}: must be {}", e.value, e.rule)),
+            WorldFileErrorKind::InvalidValue(format!("{}: must be {}", Compact(e.value), e.rule)),
         )
     })?;
 

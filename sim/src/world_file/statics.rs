@@ -2,6 +2,7 @@
 //! (and, through [`super::bodies`], `[[body]]`).
 
 use crate::config::{MAX_GRAVITY, Obstacle, WorldConfig};
+use proto_geom::plausible::Compact;
 
 use super::error::{WorldFileError, WorldFileErrorKind};
 use super::read::Section;
@@ -105,7 +106,7 @@ fn located(
     config.validate().map_err(|e| {
         section.error(
             key,
-            WorldFileErrorKind::InvalidValue(format!("{}: must be {}", e.value, e.rule)),
+            WorldFileErrorKind::InvalidValue(format!("{}: must be {}", Compact(e.value), e.rule)),
         )
     })
 }
@@ -130,7 +131,7 @@ fn validate_last_obstacle(
         let message = match key {
             // The simulator checks half sizes; the file gives full sizes.
             "size" => format!("{} m: every size must be finite and > 0", 2.0 * e.value),
-            _ => format!("{}: must be {}", e.value, e.rule),
+            _ => format!("{}: must be {}", Compact(e.value), e.rule),
         };
         section.error(key, WorldFileErrorKind::InvalidValue(message))
     })

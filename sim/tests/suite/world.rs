@@ -7,7 +7,8 @@ use crate::common;
 
 use ackermann::Wheel;
 use sim::{
-    Obstacle, ParamError, SimError, Simulation, VehicleId, VehiclePlacement, World, WorldConfig,
+    Obstacle, ParamError, Rule, SimError, Simulation, VehicleId, VehiclePlacement, World,
+    WorldConfig,
 };
 use vehicle_model::{Driver, Model, WiperCommand};
 
@@ -48,8 +49,12 @@ fn invalid_parameters_name_the_field() {
         SimError::Param(ParamError {
             field: "tireRadius",
             value: -0.3,
-            rule: "finite and > 0"
+            rule: Rule::Within(proto_geom::plausible::LENGTH)
         })
+    );
+    assert_eq!(
+        err.to_string(),
+        "invalid tireRadius = -0.3: must be within 0.001 to 1000 m"
     );
     assert!(world.vehicles().is_empty());
     let mut spec = common::spec(&Model::Car.params());
