@@ -556,6 +556,11 @@ impl Vehicle {
         }
     }
 
+    /// True for a car on rapier joints ([`Mounting::Joints`]).
+    pub(crate) fn on_joints(&self) -> bool {
+        matches!(self.parts, Parts::Joints(_))
+    }
+
     /// Which part of this car the rapier body `handle` is, if any.
     pub(crate) fn part_of(&self, handle: RigidBodyHandle) -> Option<BodyPart> {
         match &self.parts {
