@@ -6,7 +6,7 @@ use core::ops::Range;
 use proto_geom::WheelField;
 use toml::de::DeValue;
 use vehicle_model::{
-    CarField, CarParams, FieldError, FieldKind, FieldValue, Model, ParamWarning, Wheel,
+    CarField, CarParams, FieldError, FieldKind, FieldValue, Model, ParamWarning, wheel_slot_name,
 };
 
 use super::error::{NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, closest};
@@ -291,7 +291,7 @@ fn describe_value(v: &DeValue<'_>) -> String {
 /// `(slot, Some(field))`.
 fn warning_field(w: &ParamWarning) -> Option<(&'static str, Option<WheelField>)> {
     match *w {
-        ParamWarning::Wheel { slot, warning } => Some((slot_name(slot), Some(warning.field))),
+        ParamWarning::Wheel { slot, warning } => Some((wheel_slot_name(slot), Some(warning.field))),
         _ => w.field().map(|field| (field.webots_name(), None)),
     }
 }
@@ -320,14 +320,4 @@ fn locate_wheel_field(
         }
     }
     (Some(s.key_path(slot)), None)
-}
-
-/// The Webots field name of a wheel slot.
-fn slot_name(w: Wheel) -> &'static str {
-    match w {
-        Wheel::FrontRight => "wheelFrontRight",
-        Wheel::FrontLeft => "wheelFrontLeft",
-        Wheel::RearRight => "wheelRearRight",
-        Wheel::RearLeft => "wheelRearLeft",
-    }
 }

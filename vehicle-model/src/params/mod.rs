@@ -6,6 +6,7 @@ mod field;
 mod set;
 mod sound_name;
 mod validate;
+mod warning;
 
 use ackermann::{DriveType, Geometry, GeometryError, PerWheel, Real, Wheel};
 use powertrain::{Brake, Engine, EngineParams, Gearbox, MAX_GEAR_RATIOS, PowertrainError};
@@ -15,8 +16,9 @@ use crate::wipers::WiperRange;
 
 pub use body::{BodyPhysics, is_physical_inertia};
 pub use field::{CarField, FieldError, FieldKind, FieldValue, NumberRule};
+pub use set::wheel_slot_name;
 pub use sound_name::EngineSound;
-pub use validate::{MAX_PARAM_WARNINGS, ParamReport, ParamWarning, Refusal};
+pub use warning::{MAX_PARAM_WARNINGS, ParamReport, ParamWarning, Refusal};
 
 /// The `gearRatio` table: total engine-to-wheel ratios, reverse first (at most
 /// [`MAX_GEAR_RATIOS`]).

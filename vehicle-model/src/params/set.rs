@@ -1,6 +1,6 @@
 //! Setting a field by its Webots name, e.g. from a world file.
 
-use ackermann::{DriveType, PerWheel, Real};
+use ackermann::{DriveType, PerWheel, Real, Wheel};
 use powertrain::EngineType;
 use proto_geom::{WheelParams, WheelPhysics};
 
@@ -14,8 +14,18 @@ const FIELD_COUNT: usize = CarField::ALL.len();
 /// A wheel slot prefix of [`CarParams::set_field`].
 #[derive(Clone, Copy)]
 enum WheelTarget {
-    One(usize),
+    One(Wheel),
     All,
+}
+
+/// The Webots `Car` field that holds the wheel of slot `wheel` (`"wheelFrontRight"`, …).
+pub const fn wheel_slot_name(wheel: Wheel) -> &'static str {
+    match wheel {
+        Wheel::FrontRight => "wheelFrontRight",
+        Wheel::FrontLeft => "wheelFrontLeft",
+        Wheel::RearRight => "wheelRearRight",
+        Wheel::RearLeft => "wheelRearLeft",
+    }
 }
 
 impl<T: Real> CarParams<T> {
@@ -35,10 +45,10 @@ impl<T: Real> CarParams<T> {
     /// The wheel slot prefixes of [`CarParams::set_field`]: the four `Car` slot fields, and
     /// `wheels` for all four at once.
     pub const WHEEL_SLOT_NAMES: [&'static str; 5] = [
-        "wheelFrontRight",
-        "wheelFrontLeft",
-        "wheelRearRight",
-        "wheelRearLeft",
+        wheel_slot_name(Wheel::FrontRight),
+        wheel_slot_name(Wheel::FrontLeft),
+        wheel_slot_name(Wheel::RearRight),
+        wheel_slot_name(Wheel::RearLeft),
         "wheels",
     ];
 
@@ -86,13 +96,10 @@ impl<T: Real> CarParams<T> {
     /// length, spelling, integer); the params are then unchanged.
     pub fn set_field(&mut self, name: &str, value: FieldValue<'_, T>) -> Result<(), FieldError> {
         if let Some((slot, field)) = name.split_once('.') {
-            let target = match slot {
-                "wheelFrontRight" => WheelTarget::One(0),
-                "wheelFrontLeft" => WheelTarget::One(1),
-                "wheelRearRight" => WheelTarget::One(2),
-                "wheelRearLeft" => WheelTarget::One(3),
-                "wheels" => WheelTarget::All,
-                _ => return Err(FieldError::UnknownField),
+            let target = match Wheel::ALL.into_iter().find(|w| wheel_slot_name(*w) == slot) {
+                Some(wheel) => WheelTarget::One(wheel),
+                None if slot == "wheels" => WheelTarget::All,
+                None => return Err(FieldError::UnknownField),
             };
             return set_wheel_field(&mut self.wheels, target, field, value);
         }
@@ -259,10 +266,7 @@ fn set_wheel_field<T: Real>(
         Ok(())
     };
     match target {
-        WheelTarget::One(i) => match wheels.get_mut(i) {
-            Some(w) => apply(w),
-            None => Err(FieldError::UnknownField),
-        },
+        WheelTarget::One(wheel) => apply(&mut wheels[wheel]),
         WheelTarget::All => wheels.iter_mut().try_for_each(apply),
     }
 }
