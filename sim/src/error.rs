@@ -194,6 +194,17 @@ pub enum SimError {
     JointRefused(BodyOwner),
 }
 
+impl SimError {
+    /// The [`SimError::NonFinite`] of a part of `owner` in the step ending at `time_ms`.
+    pub(crate) fn diverged(owner: BodyOwner, time_ms: u64) -> impl Fn(BodyPart) -> SimError {
+        move |part| SimError::NonFinite {
+            owner,
+            part,
+            time_ms,
+        }
+    }
+}
+
 impl fmt::Display for SimError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {

@@ -411,13 +411,8 @@ impl DifferentialWheels {
     ) -> Result<(), SimError> {
         self.time_ms = time_ms;
         if let ModeState::Physics(parts) = &mut self.state {
-            let m = physics::measure(world, parts, self.pose.heading, dt).map_err(|part| {
-                SimError::NonFinite {
-                    owner: BodyOwner::Robot(self.id.0),
-                    part,
-                    time_ms,
-                }
-            })?;
+            let m = physics::measure(world, parts, self.pose.heading, dt)
+                .map_err(SimError::diverged(BodyOwner::Robot(self.id.0), time_ms))?;
             self.wheel_speeds = m.speeds;
             self.pose = m.pose;
             self.count(m.deltas);

@@ -576,11 +576,7 @@ impl Vehicle {
         dt: f64,
         time_ms: u64,
     ) -> Result<(), SimError> {
-        let fail = |part| SimError::NonFinite {
-            owner: BodyOwner::Vehicle(self.id.0),
-            part,
-            time_ms,
-        };
+        let fail = SimError::diverged(BodyOwner::Vehicle(self.id.0), time_ms);
         let mut s = self.state;
         let (chassis, pose, com) = match &self.parts {
             Parts::Cast(p) => {
