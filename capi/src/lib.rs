@@ -70,3 +70,4 @@ pub use differential_wheels_api::*;
 pub use driver_api::*;
 pub use robot::WORLD_VARIABLE;
 pub use robot_api::*;
+pub use session::load_world;
