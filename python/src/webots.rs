@@ -165,10 +165,23 @@ fn wb_robot_get_device(name: &str) -> u16 {
     }
 }
 
+/// Runs `wbu_driver_step` `steps` times from Rust and returns the wall-clock time they took
+/// (s): the benchmark `python/bench/driver_step.py` times the same steps through
+/// `Driver.step()` in the same process, so that the difference is the cost of the Python call.
+#[pyfunction]
+fn bench_driver_steps(steps: u64) -> f64 {
+    let start = std::time::Instant::now();
+    for _ in 0..steps {
+        car::vehicle_capi_driver_step();
+    }
+    start.elapsed().as_secs_f64()
+}
+
 /// Adds the Webots functions to the module.
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     add_forwarded(m)?;
     m.add_function(wrap_pyfunction!(wb_robot_init, m)?)?;
     m.add_function(wrap_pyfunction!(wb_robot_get_device, m)?)?;
+    m.add_function(wrap_pyfunction!(bench_driver_steps, m)?)?;
     Ok(())
 }

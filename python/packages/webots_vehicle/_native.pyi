@@ -78,6 +78,9 @@ def wbu_car_get_left_steering_angle() -> float: ...
 def wbu_car_enable_limited_slip_differential(enable: int) -> None: ...
 def wbu_car_enable_indicator_auto_disabling(enable: int) -> None: ...
 
+def bench_driver_steps(steps: int) -> float:
+    """Runs ``wbu_driver_step`` ``steps`` times from Rust; the wall-clock time (s)."""
+
 class Simulation:
     """The core of :class:`webots_vehicle.Simulation` (one world, its cars, their telemetry).
     It belongs to the thread that created it."""
