@@ -1,7 +1,8 @@
 //! The Webots-compatible C API of the vehicle simulator: `libcar.so` (this crate, lib name
 //! `car`) and `libdriver.so` (a C shim over it), with the headers of `capi/include`.
 //!
-//! A Webots car controller written in C, C++ or Python runs unchanged against these libraries:
+//! A Webots car controller written in C or C++ runs unchanged against these libraries (Python
+//! controllers run on the Python package, whose `vehicle` module calls these functions):
 //! `wbu_driver_init()`, a `while (wbu_driver_step() != -1)` loop of `wbu_driver_*` and
 //! `wbu_car_*` calls, `wbu_driver_cleanup()`. The robot it drives is the car of a world file
 //! (or the DifferentialWheels robot of one), simulated by the `sim` crate on rapier3d; the
@@ -70,3 +71,4 @@ pub use differential_wheels_api::*;
 pub use driver_api::*;
 pub use robot::WORLD_VARIABLE;
 pub use robot_api::*;
+pub use session::load_world;

@@ -46,6 +46,22 @@ pub(crate) fn with_robot<R>(f: impl FnOnce(&mut Robot) -> R) -> R {
     f(robot)
 }
 
+/// Loads the world named by `VEHICLE_WORLD` if no robot is loaded yet, as `wb_robot_init`
+/// does, but hands back what is wrong with the world instead of ending the process: for
+/// bindings (the Python package) that turn it into an exception. The world's warnings are
+/// printed on stderr as `wb_robot_init` prints them. Does nothing if a robot is loaded.
+///
+/// # Errors
+/// What is wrong with the world, in one line naming the file, line, key and value (the text
+/// `wb_robot_init` prints after `Error: `).
+pub fn load_world() -> Result<(), String> {
+    let mut slot = lock();
+    if slot.is_none() {
+        *slot = Some(Robot::from_environment()?);
+    }
+    Ok(())
+}
+
 /// Frees the robot (Webots: `wb_robot_cleanup`, also reached from `wbu_car_cleanup` and
 /// `wbu_driver_cleanup`); every library is uninitialised afterwards. Does nothing if no world
 /// is loaded.

@@ -2,8 +2,9 @@
 
 use std::fmt::Write as _;
 
-use vehicle_model::{PerWheel, Wheel};
+use vehicle_model::{Driver, KMH_PER_MS, PerWheel, Wheel};
 
+use crate::simulation::CarTelemetry;
 use crate::vehicle::TyreTelemetry;
 
 /// One sample, taken after a world step. Car-only quantities are `None` for a
@@ -44,6 +45,64 @@ pub struct Sample {
     /// FR, FL, RR, RL.
     pub tyres: Option<PerWheel<TyreTelemetry>>,
 }
+
+impl Sample {
+    /// The sample of a driven car after a step: its telemetry `t` and its driver library `d`
+    /// (the commanded and measured steering).
+    pub fn of_car(t: &CarTelemetry, d: &Driver<f64>) -> Sample {
+        let s = &t.state;
+        Sample {
+            time: t.time,
+            x: s.position[0],
+            y: s.position[1],
+            yaw: s.roll_pitch_yaw[2],
+            speed_kmh: t.speed * KMH_PER_MS,
+            driver_speed_kmh: Some(t.estimated_speed_kmh).filter(|v| v.is_finite()),
+            rpm: t.rpm,
+            gear: t.gear.map(|g| g.number()),
+            steering_command: Some(d.commanded_steering_angle()),
+            steering: Some(d.steering_angle()),
+            throttle: Some(t.throttle),
+            brake: Some(t.brake),
+            lateral_accel: Some(s.lateral_acceleration),
+            longitudinal_accel: Some(s.longitudinal_acceleration),
+            tyres: Some(s.tyres),
+        }
+    }
+
+    /// The values of the columns of [`CSV_HEADER`] after `scenario`, in its order and units
+    /// (`None` where the quantity does not exist).
+    pub fn values(&self) -> [Option<f64>; SAMPLE_COLUMNS] {
+        let mut out = [None; SAMPLE_COLUMNS];
+        let vehicle = [
+            Some(self.time),
+            Some(self.x),
+            Some(self.y),
+            Some(self.yaw),
+            Some(self.speed_kmh),
+            self.driver_speed_kmh,
+            self.rpm,
+            self.gear.map(f64::from),
+            self.steering_command,
+            self.steering,
+            self.throttle,
+            self.brake,
+            self.lateral_accel,
+            self.longitudinal_accel,
+        ];
+        let tyres = Wheel::ALL.into_iter().flat_map(|w| {
+            let tyre = self.tyres.map(|t| t[w]);
+            TYRE_CELLS.map(|v| tyre.map(v))
+        });
+        for (cell, v) in out.iter_mut().zip(vehicle.into_iter().chain(tyres)) {
+            *cell = v;
+        }
+        out
+    }
+}
+
+/// The number of columns of a [`Sample`] in [`CSV_HEADER`] (all but `scenario`).
+pub const SAMPLE_COLUMNS: usize = 14 + 6 * 4;
 
 /// The six columns of one tyre, prefixed with the wheel's short name.
 macro_rules! tyre_columns {
@@ -113,33 +172,8 @@ pub fn write_csv<'a>(runs: impl IntoIterator<Item = &'a Telemetry>) -> String {
     for run in runs {
         for s in &run.samples {
             out.push_str(&run.scenario);
-            for v in [
-                Some(s.time),
-                Some(s.x),
-                Some(s.y),
-                Some(s.yaw),
-                Some(s.speed_kmh),
-            ] {
+            for v in s.values() {
                 cell(&mut out, v);
-            }
-            cell(&mut out, s.driver_speed_kmh);
-            cell(&mut out, s.rpm);
-            cell(&mut out, s.gear.map(f64::from));
-            for v in [
-                s.steering_command,
-                s.steering,
-                s.throttle,
-                s.brake,
-                s.lateral_accel,
-                s.longitudinal_accel,
-            ] {
-                cell(&mut out, v);
-            }
-            for w in Wheel::ALL {
-                let tyre = s.tyres.map(|t| t[w]);
-                for v in TYRE_CELLS {
-                    cell(&mut out, tyre.map(v));
-                }
             }
             out.push('\n');
         }
@@ -181,6 +215,7 @@ mod tests {
     fn tyre_columns_in_wheel_order() {
         let columns: Vec<&str> = CSV_HEADER.split(',').collect();
         assert_eq!(columns.len(), 15 + 24);
+        assert_eq!(columns.len(), SAMPLE_COLUMNS + 1);
         assert_eq!(
             columns[15..21],
             [

@@ -134,24 +134,7 @@ impl CarRig {
         let t = self.sim.telemetry(self.id)?;
         self.state = t.state;
         let d = self.sim.driver(self.id)?;
-        let s = &t.state;
-        self.samples.push(Sample {
-            time: t.time,
-            x: s.position[0],
-            y: s.position[1],
-            yaw: s.roll_pitch_yaw[2],
-            speed_kmh: t.speed * KMH,
-            driver_speed_kmh: Some(t.estimated_speed_kmh).filter(|v| v.is_finite()),
-            rpm: t.rpm,
-            gear: t.gear.map(|g| g.number()),
-            steering_command: Some(d.commanded_steering_angle()),
-            steering: Some(d.steering_angle()),
-            throttle: Some(t.throttle),
-            brake: Some(t.brake),
-            lateral_accel: Some(s.lateral_acceleration),
-            longitudinal_accel: Some(s.longitudinal_acceleration),
-            tyres: Some(s.tyres),
-        });
+        self.samples.push(Sample::of_car(&t, d));
         if t.time >= self.next_progress {
             progress(t.time, self.expected);
             self.next_progress = t.time + PROGRESS_PERIOD;

@@ -1,0 +1,31 @@
+"""The vehicle simulator from Python.
+
+Two APIs in one package:
+
+* Webots' own modules, ``controller`` (``Robot``, ``Supervisor``) and ``vehicle``
+  (``Driver``, ``Car``), so that a Webots car controller runs unchanged; the world comes from
+  the environment variable ``VEHICLE_WORLD``.
+* This package's simulator API: :class:`Simulation` (a world from a world file, a model name
+  or keyword arguments), its cars (:class:`SimCar`), stepping, telemetry as numpy arrays
+  (:class:`Telemetry`, ``to_pandas()``), and the ``vehicle-sim`` scenarios with their metrics
+  (:meth:`Simulation.run`).
+
+Units: m, m/s, rad (positive steering turns right), rad/s, N, s; km/h where the Webots driver
+API uses it (cruising speed, ``speed_kmh``); ms for ``basicTimeStep``. Frame: x forward, y
+left, z up.
+"""
+
+from webots_vehicle._native import WorldError
+from webots_vehicle.simulation import SCENARIOS, RunResult, SimCar, Simulation, VehicleWarning
+from webots_vehicle.telemetry import COLUMNS, Telemetry
+
+__all__ = [
+    "COLUMNS",
+    "SCENARIOS",
+    "RunResult",
+    "SimCar",
+    "Simulation",
+    "Telemetry",
+    "VehicleWarning",
+    "WorldError",
+]

@@ -1,0 +1,287 @@
+"""The Pythonic simulator API: :class:`Simulation`, :class:`SimCar`, :class:`RunResult`."""
+
+import json
+import operator
+import os
+import warnings
+from typing import Any, Dict, List, Optional, Tuple, Union
+
+from webots_vehicle import _native
+from webots_vehicle._world_text import document
+from webots_vehicle.telemetry import COLUMNS, Telemetry
+
+__all__ = ["RunResult", "SimCar", "Simulation", "VehicleWarning"]
+
+#: The scenarios of :meth:`Simulation.run` (``vehicle-sim --scenario``); ``square`` and
+#: ``spin`` are for a DifferentialWheels world, the others for a car.
+SCENARIOS: Tuple[str, ...] = (
+    "accel-speed",
+    "accel-torque",
+    "brake",
+    "circle",
+    "lane-change",
+    "test-track",
+    "square",
+    "spin",
+)
+
+
+class VehicleWarning(UserWarning):
+    """A value accepted with a warning: a world-file field replaced by its default, or a
+    driver command clamped or refused (the text is Webots')."""
+
+
+def _warn(text: Optional[str]) -> None:
+    if text:
+        warnings.warn(text, VehicleWarning, stacklevel=3)
+
+
+class SimCar:
+    """A car of a :class:`Simulation`, driven through the Webots driver library's commands
+    (the same rules as ``vehicle.Driver``: clamped values come with a
+    :class:`VehicleWarning`)."""
+
+    def __init__(self, simulation: "Simulation", index: int) -> None:
+        self._simulation = simulation
+        self._core = simulation._core
+        self._index = index
+
+    @property
+    def index(self) -> int:
+        """The car's position in ``Simulation.cars``."""
+        return self._index
+
+    @property
+    def model(self) -> str:
+        """The Webots model name, e.g. ``"BmwX5"`` (``"Car"`` for the plain PROTO)."""
+        return self._core.model(self._index)
+
+    @property
+    def wheelbase(self) -> float:
+        """Distance between the axles (m)."""
+        return self._core.geometry(self._index)[0]
+
+    @property
+    def track_front(self) -> float:
+        """Distance between the front wheels (m)."""
+        return self._core.geometry(self._index)[1]
+
+    @property
+    def track_rear(self) -> float:
+        """Distance between the rear wheels (m)."""
+        return self._core.geometry(self._index)[2]
+
+    @property
+    def front_wheel_radius(self) -> float:
+        """Front tyre radius (m)."""
+        return self._core.geometry(self._index)[3]
+
+    @property
+    def rear_wheel_radius(self) -> float:
+        """Rear tyre radius (m)."""
+        return self._core.geometry(self._index)[4]
+
+    def set_cruising_speed(self, speed: float) -> None:
+        """Cruise control to ``speed`` km/h (negative: reverse); selects SPEED mode."""
+        _warn(self._core.set_cruising_speed(self._index, float(speed)))
+
+    def set_steering_angle(self, angle: float) -> None:
+        """Ackermann steering to ``angle`` rad (positive turns right)."""
+        _warn(self._core.set_steering_angle(self._index, float(angle)))
+
+    def set_throttle(self, throttle: float) -> None:
+        """Throttle from 0 to 1; selects TORQUE mode."""
+        _warn(self._core.set_throttle(self._index, float(throttle)))
+
+    def set_brake_intensity(self, intensity: float) -> None:
+        """Brake intensity from 0 to 1."""
+        _warn(self._core.set_brake_intensity(self._index, float(intensity)))
+
+    def set_gear(self, gear: int) -> None:
+        """Gear: -1 reverse, 0 neutral, 1.. forward (TORQUE mode)."""
+        g = max(-(2**31), min(2**31 - 1, operator.index(gear)))
+        _warn(self._core.set_gear(self._index, g))
+
+    @property
+    def state(self) -> Optional[Dict[str, float]]:
+        """The last sample (column name to value, NaN where a quantity does not exist), or
+        None before the first step."""
+        row = self._core.last_sample(self._index)
+        return None if row is None else dict(zip(COLUMNS, row))
+
+    @property
+    def telemetry(self) -> Telemetry:
+        """Every sample recorded since the car was added, one per step."""
+        return Telemetry(self._core.telemetry(self._index), f"car {self._index} ({self.model})")
+
+    def __repr__(self) -> str:
+        return f"<SimCar {self._index}: {self.model}>"
+
+
+class RunResult:
+    """What :meth:`Simulation.run` returns: the metrics of ``vehicle-sim --scenario NAME
+    --json`` and the telemetry of each single scenario."""
+
+    def __init__(self, report: Dict[str, Any], telemetry: Dict[str, Telemetry]) -> None:
+        self._report = report
+        self._telemetry = telemetry
+
+    @property
+    def scenario(self) -> str:
+        """The scenario asked for."""
+        return self._report["scenario"]
+
+    @property
+    def metrics(self) -> Dict[str, Dict[str, Union[float, bool, None]]]:
+        """Single scenario name to its metrics (the JSON keys, units in the names, e.g.
+        ``max_lateral_accel_mps2``; ``None`` for a metric not reached; each ends with its
+        ``sim_seconds``)."""
+        return self._report["scenarios"]
+
+    @property
+    def telemetry(self) -> Dict[str, Telemetry]:
+        """Single scenario name to its telemetry (the rows of ``telemetry.csv``)."""
+        return self._telemetry
+
+    @property
+    def sim_seconds(self) -> float:
+        """Simulated time of the whole run (s)."""
+        return self._report["sim_seconds"]
+
+    @property
+    def wall_seconds(self) -> float:
+        """Wall-clock time of the run (s)."""
+        return self._report["wall_seconds"]
+
+    @property
+    def warnings(self) -> List[str]:
+        """The world file's warnings and the scenarios' notes."""
+        return self._report["warnings"]
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The whole ``vehicle-sim --json`` object (world, vehicle, scenario, sim_seconds,
+        wall_seconds, realtime_factor, scenarios, warnings)."""
+        return self._report
+
+    def __repr__(self) -> str:
+        return f"<RunResult {self.scenario}: {self.metrics!r}>"
+
+
+class Simulation:
+    """A simulated world with its cars, stepped from Python.
+
+    ``Simulation()`` is the default world (a BmwX5 on flat ground, ``basicTimeStep`` 10 ms);
+    ``Simulation("ToyotaPrius")`` the default world with a shipped model;
+    ``Simulation("my_world.toml")`` a world file (``sim/README.md``, "World files");
+    ``Simulation(model="ToyotaPrius", basicTimeStep=20, duration=30.0, ground={"friction":
+    0.8})`` a world from keyword arguments in world-file vocabulary (``model=`` is short for
+    ``vehicle={"model": ...}``). A world that cannot be loaded raises
+    :class:`~webots_vehicle.WorldError` naming the file (or the keyword arguments), line and
+    key. Fields replaced by their defaults give a :class:`VehicleWarning`.
+
+    The world's car is ``cars[0]`` (also ``car``); :meth:`add_car` adds more. :meth:`step`
+    runs every car's driver library and one ``basicTimeStep`` of physics and records one
+    telemetry sample per car. :meth:`run` runs a ``vehicle-sim`` scenario on a fresh copy of
+    the world.
+    """
+
+    def __init__(
+        self, world: Union[str, "os.PathLike[str]", None] = None, **fields: Any
+    ) -> None:
+        if world is not None and fields:
+            raise TypeError("Simulation() takes a world or keyword arguments, not both")
+        if fields:
+            if "model" in fields:
+                vehicle = dict(fields.pop("vehicle", {}))
+                vehicle.setdefault("model", fields.pop("model"))
+                fields["vehicle"] = vehicle
+            self._core = _native.Simulation.parse("<Simulation keyword arguments>", document(fields))
+        else:
+            self._core = _native.Simulation.load("" if world is None else os.fspath(world))
+        for w in self._core.warnings:
+            _warn(w)
+        self._cars = [SimCar(self, i) for i in range(self._core.car_count)]
+
+    @property
+    def source(self) -> str:
+        """Where the world came from (a path, ``<default world>``, ...)."""
+        return self._core.source
+
+    @property
+    def vehicle(self) -> str:
+        """What the world file drives: its car model, or ``"DifferentialWheels"``."""
+        return self._core.vehicle
+
+    @property
+    def warnings(self) -> List[str]:
+        """Every warning so far (world-file fields and car parameters replaced by defaults)."""
+        return self._core.warnings
+
+    @property
+    def time(self) -> float:
+        """Simulated time (s)."""
+        return self._core.time
+
+    @property
+    def basic_time_step(self) -> int:
+        """The step (ms)."""
+        return self._core.basic_time_step
+
+    @property
+    def duration(self) -> Optional[float]:
+        """The world's duration (s), after which :meth:`step` returns False; None if unset."""
+        return self._core.duration
+
+    @property
+    def is_over(self) -> bool:
+        """True once the world's duration has elapsed."""
+        return self._core.is_over
+
+    @property
+    def cars(self) -> List[SimCar]:
+        """The cars, the world file's first."""
+        return list(self._cars)
+
+    @property
+    def car(self) -> SimCar:
+        """The world file's car (``cars[0]``); IndexError in a world without a car."""
+        if not self._cars:
+            raise IndexError(f"the world {self.source} has no car (it holds a {self.vehicle})")
+        return self._cars[0]
+
+    def add_car(self, model: str = "Car", **fields: Any) -> SimCar:
+        """Adds a car of the shipped ``model`` with ``fields`` overriding its ``Car`` fields in
+        world-file vocabulary, e.g. ``add_car("ToyotaPrius", translation=[0, 5, 0.4],
+        rotation=[0, 0, 1, 0.5], mounting="joints")`` (m, rad). It starts at rest at the
+        current time; its telemetry starts with the next step."""
+        text = "[vehicle]\n" + document({"model": model, **fields})
+        index, car_warnings = self._core.add_car("<add_car keyword arguments>", text)
+        for w in car_warnings:
+            _warn(w)
+        car = SimCar(self, index)
+        self._cars.append(car)
+        return car
+
+    def step(self, steps: int = 1) -> bool:
+        """Advances ``steps`` basic time steps: each runs every car's driver library, then the
+        physics, then records a sample per car. Returns False once the world's duration has
+        elapsed (the steps past it are not run), True otherwise."""
+        return self._core.step(max(0, int(steps)))
+
+    def run_for(self, seconds: float) -> bool:
+        """Steps for ``seconds`` of simulated time (rounded up to whole steps); as
+        :meth:`step`."""
+        steps = -(-int(round(float(seconds) * 1e6)) // (self.basic_time_step * 1000))
+        return self.step(steps)
+
+    def run(self, scenario: str) -> RunResult:
+        """Runs the ``vehicle-sim`` scenario ``scenario`` (see ``SCENARIOS``) on a fresh copy
+        of the world this simulation was built from (cars added and time stepped here do not
+        take part) and returns its metrics, as ``vehicle-sim --scenario NAME --json``
+        reports them, and its telemetry."""
+        report, tables = self._core.run(scenario)
+        telemetry = {name: Telemetry(table, name) for name, table in tables}
+        return RunResult(json.loads(report), telemetry)
+
+    def __repr__(self) -> str:
+        return f"<Simulation {self.source}: {len(self._cars)} car(s), t = {self.time:.3f} s>"

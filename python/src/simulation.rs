@@ -1,0 +1,379 @@
+//! `_native.Simulation`: the core of the Pythonic `webots_vehicle.Simulation`.
+//!
+//! A world described by a world file (or a model name, or world-file text built from keyword
+//! arguments by the Python side), its car driven by `vehicle_model::Driver` as
+//! `sim::Simulation` drives it, more cars added from `[vehicle]` tables, one telemetry sample
+//! per car and step (the columns of `vehicle-sim`'s CSV), and the `vehicle-sim` scenarios run
+//! on a fresh copy of the world.
+
+use pyo3::exceptions::{PyIndexError, PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyBytes;
+
+use sim::scenario::{self, Scenario};
+use sim::telemetry::{CSV_HEADER, SAMPLE_COLUMNS, Sample};
+use sim::world_file::{self, WorldDescription, WorldFileError, WorldVehicle};
+use sim::{SimError, VehicleId, World};
+use vehicle_model::Warning;
+
+use crate::WorldError;
+
+/// One driven car and what it recorded.
+struct Car {
+    id: VehicleId,
+    model: &'static str,
+    samples: Vec<Sample>,
+}
+
+/// A simulation of one world: see the module docs. It belongs to the thread that created it
+/// (`unsendable`: the driver library keeps per-car state in cells, which are not `Sync`);
+/// another thread gets a RuntimeError.
+#[pyclass(module = "webots_vehicle._native", unsendable)]
+pub(crate) struct Simulation {
+    description: WorldDescription,
+    simulation: sim::Simulation,
+    cars: Vec<Car>,
+    warnings: Vec<String>,
+    /// Set when the physics failed; stepping is over.
+    failure: Option<String>,
+}
+
+/// `WorldError` with the error's message and its `file`, `line`, `column` and `key`
+/// attributes (`None` where unknown).
+fn world_error(py: Python<'_>, e: &WorldFileError) -> PyErr {
+    let err = WorldError::new_err(e.to_string());
+    let value = err.value(py);
+    let (line, column) = e.location.map(|l| (l.line, l.column)).unzip();
+    // Setting attributes on a fresh exception instance cannot fail in practice; if it did, the
+    // message still says everything.
+    let _ = value.setattr("file", &e.file);
+    let _ = value.setattr("line", line);
+    let _ = value.setattr("column", column);
+    let _ = value.setattr("key", e.key.as_deref());
+    err
+}
+
+/// A physics failure as a Python `RuntimeError`.
+fn sim_error(e: &SimError) -> PyErr {
+    PyRuntimeError::new_err(format!("the simulation failed: {e}"))
+}
+
+/// The driver's warning as a Python string (the Python side issues it as a warning).
+fn warning_text(w: Option<Warning>) -> Option<String> {
+    w.map(|w| w.to_string().trim_end().to_string())
+}
+
+impl Simulation {
+    /// Builds the world of `description` with its car (car 0) or DifferentialWheels robot.
+    fn build(description: WorldDescription) -> PyResult<Simulation> {
+        let world = World::new(description.config.clone()).map_err(|e| sim_error(&e))?;
+        let mut this = Simulation {
+            warnings: description
+                .warnings
+                .iter()
+                .map(ToString::to_string)
+                .collect(),
+            simulation: sim::Simulation::new(world),
+            cars: Vec::new(),
+            failure: None,
+            description,
+        };
+        match this.description.vehicle.clone() {
+            WorldVehicle::Car(car) => {
+                let source = this.description.source.clone();
+                let report = this.add(&car, &source)?;
+                this.warnings.extend(report);
+            }
+            WorldVehicle::DifferentialWheels(r) => {
+                this.simulation
+                    .world_mut()
+                    .add_differential_wheels(r.params, r.mode, r.placement)
+                    .map_err(|e| sim_error(&e))?;
+            }
+        }
+        Ok(this)
+    }
+
+    /// Adds the car of `car` at its `translation`/`rotation`; returns the parameter report.
+    fn add(&mut self, car: &world_file::CarDescription, source: &str) -> PyResult<Vec<String>> {
+        let placement = sim::placement::car_placement(&car.params);
+        let (id, report) = self
+            .simulation
+            .add_car_with(car.params.clone(), &car.tyre, car.mounting, placement)
+            .map_err(|e| sim_error(&e))?;
+        self.cars.push(Car {
+            id,
+            model: car.model.webots_name(),
+            samples: Vec::new(),
+        });
+        Ok(report.iter().map(|w| format!("{source}: {w}")).collect())
+    }
+
+    fn car(&self, car: usize) -> PyResult<&Car> {
+        self.cars
+            .get(car)
+            .ok_or_else(|| PyIndexError::new_err(format!("no car {car} in this simulation")))
+    }
+
+    fn driver_mut(&mut self, car: usize) -> PyResult<&mut vehicle_model::Driver<f64>> {
+        let id = self.car(car)?.id;
+        self.simulation.driver_mut(id).map_err(|e| sim_error(&e))
+    }
+
+    fn driver(&self, car: usize) -> PyResult<&vehicle_model::Driver<f64>> {
+        let id = self.car(car)?.id;
+        self.simulation.driver(id).map_err(|e| sim_error(&e))
+    }
+
+    /// True once the world's `duration` has elapsed or the physics failed (as the C API's
+    /// `wbu_driver_step` decides -1).
+    fn over(&self) -> bool {
+        let elapsed_ms = self.simulation.world().time_ms() as f64;
+        self.failure.is_some()
+            || self
+                .description
+                .duration
+                .is_some_and(|d| elapsed_ms >= d * 1000.0 - 1e-6)
+    }
+}
+
+#[pymethods]
+impl Simulation {
+    /// The world `spec`: a world-file path or a shipped model name ("" is the default world).
+    #[staticmethod]
+    fn load(py: Python<'_>, spec: &str) -> PyResult<Simulation> {
+        let description = world_file::load(spec).map_err(|e| world_error(py, &e))?;
+        Simulation::build(description)
+    }
+
+    /// The world of world-file `text`; `name` names it in messages.
+    #[staticmethod]
+    fn parse(py: Python<'_>, name: &str, text: &str) -> PyResult<Simulation> {
+        let description = world_file::parse_str(name, text).map_err(|e| world_error(py, &e))?;
+        Simulation::build(description)
+    }
+
+    /// The telemetry columns, in order (those of `vehicle-sim`'s CSV after `scenario`).
+    #[staticmethod]
+    fn columns() -> Vec<&'static str> {
+        CSV_HEADER.split(',').skip(1).collect()
+    }
+
+    /// Where the world came from.
+    #[getter]
+    fn source(&self) -> &str {
+        &self.description.source
+    }
+
+    /// What drives in the world file: the car model or `DifferentialWheels`.
+    #[getter]
+    fn vehicle(&self) -> &'static str {
+        self.description.vehicle_name()
+    }
+
+    /// The world's and the cars' warnings so far (fields replaced by their defaults).
+    #[getter]
+    fn warnings(&self) -> Vec<String> {
+        self.warnings.clone()
+    }
+
+    /// Simulated time (s).
+    #[getter]
+    fn time(&self) -> f64 {
+        self.simulation.world().time()
+    }
+
+    /// The world's basicTimeStep (ms).
+    #[getter]
+    fn basic_time_step(&self) -> u32 {
+        self.simulation.world().config().basic_time_step_ms
+    }
+
+    /// The world's duration (s), if any.
+    #[getter]
+    fn duration(&self) -> Option<f64> {
+        self.description.duration
+    }
+
+    /// The number of cars.
+    #[getter]
+    fn car_count(&self) -> usize {
+        self.cars.len()
+    }
+
+    /// True once the world's duration has elapsed (or the physics failed).
+    #[getter]
+    fn is_over(&self) -> bool {
+        self.over()
+    }
+
+    /// Adds the car of the `[vehicle]` table of world-file `text` (named `name` in messages);
+    /// returns its index and the warnings of its fields.
+    fn add_car(
+        &mut self,
+        py: Python<'_>,
+        name: &str,
+        text: &str,
+    ) -> PyResult<(usize, Vec<String>)> {
+        let description = world_file::parse_str(name, text).map_err(|e| world_error(py, &e))?;
+        let WorldVehicle::Car(car) = &description.vehicle else {
+            return Err(PyValueError::new_err(
+                "add_car needs a car, not a DifferentialWheels robot",
+            ));
+        };
+        let mut warnings: Vec<String> = description
+            .warnings
+            .iter()
+            .map(ToString::to_string)
+            .collect();
+        warnings.extend(self.add(car, name)?);
+        self.warnings.extend(warnings.iter().cloned());
+        Ok((self.cars.len() - 1, warnings))
+    }
+
+    /// The Webots model name of car `car`.
+    fn model(&self, car: usize) -> PyResult<&'static str> {
+        Ok(self.car(car)?.model)
+    }
+
+    /// Wheelbase, front track, rear track, front and rear tyre radius of car `car` (m).
+    fn geometry(&self, car: usize) -> PyResult<(f64, f64, f64, f64, f64)> {
+        let d = self.driver(car)?;
+        Ok((
+            d.wheelbase(),
+            d.track_front(),
+            d.track_rear(),
+            d.front_wheel_radius(),
+            d.rear_wheel_radius(),
+        ))
+    }
+
+    /// Advances up to `steps` basic time steps (each: every driver steps, then the physics),
+    /// recording one sample per car; stops at the world's duration. Returns False once the
+    /// simulation is over. A physics failure raises RuntimeError (and ends the simulation).
+    fn step(&mut self, steps: u64) -> PyResult<bool> {
+        for _ in 0..steps {
+            if self.over() {
+                break;
+            }
+            if let Err(e) = self.simulation.step() {
+                let err = sim_error(&e);
+                self.failure = Some(e.to_string());
+                return Err(err);
+            }
+            for car in &mut self.cars {
+                let t = self
+                    .simulation
+                    .telemetry(car.id)
+                    .map_err(|e| sim_error(&e))?;
+                let d = self.simulation.driver(car.id).map_err(|e| sim_error(&e))?;
+                car.samples.push(Sample::of_car(&t, d));
+            }
+        }
+        Ok(!self.over())
+    }
+
+    /// Cruise control to `speed` km/h (SPEED mode); returns the driver's warning, if any.
+    fn set_cruising_speed(&mut self, car: usize, speed: f64) -> PyResult<Option<String>> {
+        Ok(warning_text(
+            self.driver_mut(car)?.set_cruising_speed(speed),
+        ))
+    }
+
+    /// Steering angle (rad, positive right); returns the driver's warning, if any.
+    fn set_steering_angle(&mut self, car: usize, angle: f64) -> PyResult<Option<String>> {
+        Ok(warning_text(
+            self.driver_mut(car)?.set_steering_angle(angle),
+        ))
+    }
+
+    /// Throttle (0 to 1, TORQUE mode); returns the driver's warning, if any.
+    fn set_throttle(&mut self, car: usize, throttle: f64) -> PyResult<Option<String>> {
+        Ok(warning_text(self.driver_mut(car)?.set_throttle(throttle)))
+    }
+
+    /// Brake intensity (0 to 1); returns the driver's warning, if any.
+    fn set_brake_intensity(&mut self, car: usize, intensity: f64) -> PyResult<Option<String>> {
+        Ok(warning_text(
+            self.driver_mut(car)?.set_brake_intensity(intensity),
+        ))
+    }
+
+    /// Gear (-1 reverse, 0 neutral, 1.. forward); returns the driver's warning, if any.
+    fn set_gear(&mut self, car: usize, gear: i32) -> PyResult<Option<String>> {
+        Ok(warning_text(self.driver_mut(car)?.set_gear(gear)))
+    }
+
+    /// The number of samples car `car` has recorded.
+    fn sample_count(&self, car: usize) -> PyResult<usize> {
+        Ok(self.car(car)?.samples.len())
+    }
+
+    /// The last sample of car `car` (NaN where a quantity does not exist), None before the
+    /// first step.
+    fn last_sample(&self, car: usize) -> PyResult<Option<Vec<f64>>> {
+        Ok(self.car(car)?.samples.last().map(row))
+    }
+
+    /// Every sample of car `car` as native-endian f64 bytes, row-major (rows × columns).
+    fn telemetry<'py>(&self, py: Python<'py>, car: usize) -> PyResult<Bound<'py, PyBytes>> {
+        Ok(table(py, &self.car(car)?.samples))
+    }
+
+    /// Runs the `vehicle-sim` scenario `name` on a fresh copy of this simulation's world file
+    /// (not on the cars added or the time stepped here). Returns the JSON object of
+    /// `vehicle-sim --json` and each single scenario's name and telemetry table.
+    #[allow(clippy::type_complexity)]
+    fn run<'py>(
+        &self,
+        py: Python<'py>,
+        name: &str,
+    ) -> PyResult<(String, Vec<(&'static str, Bound<'py, PyBytes>)>)> {
+        let scenario = Scenario::from_name(name).ok_or_else(|| {
+            let names: Vec<&str> = Scenario::ALL.iter().map(|s| s.name()).collect();
+            PyValueError::new_err(format!(
+                "unknown scenario '{name}' (one of: {})",
+                names.join(", ")
+            ))
+        })?;
+        let description = &self.description;
+        let report = py
+            .detach(|| scenario::run(description, scenario, &mut |_| {}))
+            .map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+        let world_warnings: Vec<String> = description
+            .warnings
+            .iter()
+            .map(ToString::to_string)
+            .collect();
+        let json = sim::report::to_json(&report, &world_warnings);
+        let tables = report
+            .results
+            .iter()
+            .map(|r| (r.scenario.name(), table(py, &r.telemetry.samples)))
+            .collect();
+        Ok((json, tables))
+    }
+}
+
+/// One sample's values, NaN where a quantity does not exist.
+fn row(s: &Sample) -> Vec<f64> {
+    s.values().iter().map(|v| v.unwrap_or(f64::NAN)).collect()
+}
+
+/// `samples` as native-endian f64 bytes, row-major.
+fn table<'py>(py: Python<'py>, samples: &[Sample]) -> Bound<'py, PyBytes> {
+    let mut bytes = Vec::with_capacity(samples.len() * SAMPLE_COLUMNS * 8);
+    for s in samples {
+        for v in s.values() {
+            bytes.extend_from_slice(&v.unwrap_or(f64::NAN).to_ne_bytes());
+        }
+    }
+    PyBytes::new(py, &bytes)
+}
+
+/// Adds the class to the module.
+pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<Simulation>()?;
+    m.add("TELEMETRY_COLUMNS", SAMPLE_COLUMNS)?;
+    Ok(())
+}

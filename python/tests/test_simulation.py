@@ -1,0 +1,147 @@
+"""The package's own simulator API: webots_vehicle.Simulation."""
+
+import csv
+import json
+import math
+import subprocess
+
+import numpy as np
+import pytest
+
+import webots_vehicle as wv
+from conftest import ROOT, WORLDS
+
+# Differences in timing only: everything else of the JSON object is deterministic.
+TIMING = {"wall_seconds", "realtime_factor"}
+
+
+def test_a_scenario_gives_the_metrics_and_telemetry_of_vehicle_sim(vehicle_sim, tmp_path):
+    result = wv.Simulation("BmwX5").run("lane-change")
+    out = subprocess.run(
+        [str(vehicle_sim), "--world", "BmwX5", "--scenario", "lane-change", "--json",
+         "--out", str(tmp_path)],
+        capture_output=True, text=True, check=True,
+    )
+    cli = json.loads(out.stdout)
+    ours = result.to_dict()
+    assert {k: v for k, v in ours.items() if k not in TIMING} == {
+        k: v for k, v in cli.items() if k not in TIMING
+    }
+    assert set(ours) == set(cli)
+    metrics = result.metrics["lane-change"]
+    assert metrics == cli["scenarios"]["lane-change"]
+    assert metrics["left_track"] is False and 2.0 < metrics["max_lateral_accel_mps2"] < 5.0
+    assert result.sim_seconds == metrics["sim_seconds"]
+
+    # The telemetry arrays have the CSV's columns and its values: the CSV rounds to 1e-6
+    # (half away from zero, Rust's f64::round), so ours are rounded the same way first.
+    with open(tmp_path / "telemetry.csv", newline="") as f:
+        rows = list(csv.reader(f))
+    header, rows = rows[0], rows[1:]
+    telemetry = result.telemetry["lane-change"]
+    assert header == ["scenario", *telemetry.columns]
+    assert len(telemetry) == len(rows) == 1550
+    scaled = telemetry.to_numpy() * 1e6
+    rounded = np.sign(scaled) * np.floor(np.abs(scaled) + 0.5) / 1e6
+    expected = np.array([[float(v) if v else math.nan for v in row[1:]] for row in rows])
+    np.testing.assert_array_equal(rounded, expected)
+
+
+def test_a_world_from_a_file_a_model_or_keywords():
+    default = wv.Simulation()
+    assert (default.source, default.vehicle, default.basic_time_step) == ("<default world>", "BmwX5", 10)
+    prius = wv.Simulation("ToyotaPrius")
+    assert prius.car.model == "ToyotaPrius" and prius.car.wheelbase == 2.8
+    from_file = wv.Simulation(WORLDS / "cruise_8s.toml")
+    assert from_file.duration == 8.0 and from_file.source == str(WORLDS / "cruise_8s.toml")
+    keywords = wv.Simulation(
+        model="TeslaModel3", basicTimeStep=20, duration=2.0, ground={"friction": 0.8},
+        vehicle={"wheelbase": 3.0, "tyre": {"model": "webots"}},
+    )
+    assert keywords.basic_time_step == 20 and keywords.duration == 2.0
+    assert keywords.car.model == "TeslaModel3" and keywords.car.wheelbase == 3.0
+    with pytest.raises(TypeError):
+        wv.Simulation("BmwX5", duration=1.0)
+
+
+def test_a_broken_world_raises_with_the_file_line_and_key():
+    with pytest.raises(wv.WorldError) as e:
+        wv.Simulation(WORLDS / "misspelt_key.toml")
+    assert (e.value.file, e.value.line, e.value.column, e.value.key) == (
+        str(WORLDS / "misspelt_key.toml"), 5, 1, "vehicle.wheelbse")
+    with pytest.raises(wv.WorldError, match="unknown key 'vehicle.wheelbse'"):
+        wv.Simulation(model="BmwX5", vehicle={"wheelbse": 2.0})
+    with pytest.raises(wv.WorldError, match="BmwX5"):
+        wv.Simulation("BmwX6")
+
+
+def test_fields_replaced_by_defaults_warn():
+    with pytest.warns(wv.VehicleWarning, match="invalid 'wheelbase' value -2"):
+        sim = wv.Simulation(model="BmwX5", vehicle={"wheelbase": -2})
+    # The Car PROTO's default.
+    assert sim.car.wheelbase == 4.0
+    assert any("wheelbase" in w for w in sim.warnings)
+
+
+def test_cars_step_and_record_telemetry_as_numpy_arrays():
+    sim = wv.Simulation(model="BmwX5", duration=3.0)
+    first = sim.car
+    second = sim.add_car("ToyotaPrius", translation=[0, 10, 0.4])
+    assert [c.model for c in sim.cars] == ["BmwX5", "ToyotaPrius"]
+    assert first.state is None
+    first.set_cruising_speed(30)  # km/h
+    second.set_throttle(0.5)
+    second.set_gear(1)
+    second.set_steering_angle(0.1)  # rad, right
+    assert sim.step(100) is True
+    assert sim.time == pytest.approx(1.0)
+    assert sim.run_for(2.0) is False  # the world ends at 3 s
+    assert sim.is_over and sim.step() is False and sim.time == pytest.approx(3.0)
+
+    t1, t2 = first.telemetry, second.telemetry
+    assert len(t1) == len(t2) == 300
+    assert list(t1.columns) == list(wv.COLUMNS) and len(wv.COLUMNS) == 38
+    np.testing.assert_allclose(t1.time_s, np.arange(1, 301) * 0.01, rtol=0, atol=1e-12)
+    # Speed mode: no engine model, so no rpm or gear (NaN); torque mode has both.
+    assert np.isnan(t1["rpm"]).all() and np.isnan(t1["gear"]).all()
+    assert (t2.gear[-50:] == 1).all() and (t2.rpm[-50:] > 0).all()
+    assert np.all(np.diff(t1.x_m[:150]) > 0)  # driving forward
+    # The second car turns right (positive steering): its heading falls.
+    assert t2.yaw_rad[-1] < -0.05
+    assert t2.y_m[0] == pytest.approx(10.0, abs=0.01)
+    assert first.state["time_s"] == pytest.approx(3.0)
+    assert first.state["speed_kmh"] == t1.speed_kmh[-1]
+
+    pandas = pytest.importorskip("pandas")
+    frame = t1.to_pandas()
+    assert isinstance(frame, pandas.DataFrame)
+    assert list(frame.columns) == list(wv.COLUMNS) and len(frame) == 300
+    assert frame["speed_kmh"].iloc[-1] == t1.speed_kmh[-1]
+
+
+def test_driver_commands_warn_and_clamp_as_the_driver_library_does():
+    sim = wv.Simulation("BmwX5")
+    with pytest.warns(wv.VehicleWarning, match="NaN"):
+        sim.car.set_steering_angle(float("nan"))
+    with pytest.warns(wv.VehicleWarning, match="only 6 gears"):
+        sim.car.set_gear(10**12)
+    with pytest.warns(wv.VehicleWarning, match="'throttle' should be smaller or equal to 1"):
+        sim.car.set_throttle(float("inf"))
+    sim.step(10)
+    state = sim.car.state
+    for column in ("x_m", "y_m", "yaw_rad", "speed_kmh", "throttle", "steering_rad"):
+        assert math.isfinite(state[column]), column
+
+
+def test_unknown_scenarios_and_wrong_vehicles_are_errors():
+    with pytest.raises(ValueError, match="unknown scenario 'drift'"):
+        wv.Simulation().run("drift")
+    with pytest.raises(RuntimeError, match="needs a DifferentialWheels robot"):
+        wv.Simulation().run("square")
+    robot = wv.Simulation(ROOT / "sim" / "worlds" / "e-puck.toml")
+    assert robot.vehicle == "DifferentialWheels" and robot.cars == []
+    with pytest.raises(IndexError):
+        robot.car
+    spin = robot.run("spin")
+    assert spin.metrics["spin"]["turns"] > 0
+    assert set(wv.SCENARIOS) >= {"lane-change", "test-track", "square", "spin"}
