@@ -55,7 +55,7 @@ mod spec;
 mod state;
 
 use ackermann::{PerWheel, Wheel, WheelAngles};
-use rapier3d::prelude::{PhysicsWorld, Pose, RigidBody, Rotation, Vector};
+use rapier3d::prelude::{PhysicsWorld, Pose, RigidBody, RigidBodyHandle, Rotation, Vector};
 
 use vehicle_model::tyre::LOW_SPEED;
 use vehicle_model::{
@@ -156,6 +156,18 @@ impl Vehicle {
     /// This car's handle.
     pub fn id(&self) -> VehicleId {
         self.id
+    }
+
+    /// The rapier bodies of this car: the chassis, then (on joints) the knuckles and wheels.
+    pub(crate) fn bodies(&self) -> Vec<RigidBodyHandle> {
+        match &self.parts {
+            Parts::Cast(p) => vec![p.chassis],
+            Parts::Joints(p) => [p.chassis]
+                .into_iter()
+                .chain(p.knuckles)
+                .chain(p.wheels.iter().copied())
+                .collect(),
+        }
     }
 
     /// The description the car was built from.
