@@ -255,4 +255,21 @@ mod tests {
             })
         );
     }
+
+    #[test]
+    fn a_controller_drives_one_vehicle() {
+        let description = world_file::parse_str(
+            "w.toml",
+            "[[vehicle]]\n[[vehicle]]\ntranslation = [0, 10, 0]\n",
+        )
+        .unwrap();
+        let Err(e) = Robot::build(&description) else {
+            panic!("a world of two cars was accepted");
+        };
+        assert_eq!(
+            e,
+            "cannot drive the world w.toml: it holds 2 vehicles (Car-1, Car-2), and a \
+             controller drives exactly one car or robot"
+        );
+    }
 }

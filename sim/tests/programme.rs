@@ -293,3 +293,21 @@ fn programme_errors_name_file_line_and_key() {
         (Some(4), Some("differential_wheels.programme[1].speed"))
     );
 }
+
+#[test]
+fn the_shipped_worlds_load_and_the_overtaking_world_overtakes() {
+    for entry in std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/worlds")).unwrap() {
+        let path = entry.unwrap().path();
+        let w = sim::world_file::load_file(&path);
+        assert!(w.is_ok(), "{}: {}", path.display(), w.unwrap_err());
+    }
+    let w = sim::world_file::load(concat!(env!("CARGO_MANIFEST_DIR"), "/worlds/two-cars.toml"))
+        .unwrap();
+    assert_eq!(w.vehicle_names(), ["prius", "bmw", "DifferentialWheels"]);
+    let r = scenario::run(&w, Scenario::default_for(&w), &mut |_| {}).unwrap();
+    // The BmwX5 passes the Prius on the left without touching it, by more than a metre, and
+    // ends ahead of it.
+    assert_eq!(r.results[0].metric("touched"), Some(Value::Bool(false)));
+    assert!(number(&r, None, "min_gap_m") > 1.0);
+    assert!(number(&r, Some("bmw"), "final_x_m") > number(&r, Some("prius"), "final_x_m"));
+}
