@@ -4,7 +4,7 @@
 use std::env::{self, VarError};
 use std::ffi::c_int;
 
-use sim::world_file::{self, WorldDescription, WorldVehicle};
+use sim::world_file::{self, WorldDescription};
 use sim::{RobotId, SimError, Simulation, VehicleId, World};
 use vehicle_model::Driver;
 
@@ -74,26 +74,26 @@ impl Robot {
             eprintln!("Warning: {w}");
         }
         Robot::build(&description)
-            .map_err(|e| format!("cannot build the world {}: {e}", description.source))
     }
 
-    /// Builds the world of `description` with its car (on the world's tyres) or robot.
-    fn build(description: &WorldDescription) -> Result<Robot, SimError> {
-        let mut simulation = Simulation::new(World::new(description.config.clone())?);
-        let body = match &description.vehicle {
-            WorldVehicle::DifferentialWheels(r) => Body::DifferentialWheels(
+    /// Builds the world of `description` with its car (on the world's tyres) or robot: one
+    /// vehicle, the one the controller drives.
+    fn build(description: &WorldDescription) -> Result<Robot, String> {
+        let failed = |e: SimError| format!("cannot build the world {}: {e}", description.source);
+        let mut simulation =
+            Simulation::new(World::new(description.config.clone()).map_err(failed)?);
+        let body = match (description.cars.as_slice(), &description.robot) {
+            ([], Some(r)) => Body::DifferentialWheels(
                 simulation
                     .world_mut()
-                    .add_differential_wheels(r.params, r.mode, r.placement)?,
+                    .add_differential_wheels(r.params, r.mode, r.placement)
+                    .map_err(failed)?,
             ),
-            WorldVehicle::Car(car) => {
+            ([car], None) => {
                 let placement = sim::placement::car_placement(&car.params);
-                let (id, report) = simulation.add_car_with(
-                    car.params.clone(),
-                    &car.tyre,
-                    car.mounting,
-                    placement,
-                )?;
+                let (id, report) = simulation
+                    .add_car_with(car.params.clone(), &car.tyre, car.mounting, placement)
+                    .map_err(failed)?;
                 // The loader validated the fields already; anything left is still reported.
                 for w in &report {
                     eprintln!("Warning: {}: {w}", description.source);
@@ -102,6 +102,14 @@ impl Robot {
                     id,
                     libraries: Libraries::None,
                 }
+            }
+            _ => {
+                return Err(format!(
+                    "cannot drive the world {}: it holds {}, and a controller drives exactly \
+                     one car or robot",
+                    description.source,
+                    description.vehicles_label()
+                ));
             }
         };
         Ok(Robot {
@@ -245,6 +253,23 @@ mod tests {
             TyreModel::Webots(WebotsContact {
                 force_dependent_slip: [0.002; 2]
             })
+        );
+    }
+
+    #[test]
+    fn a_controller_drives_one_vehicle() {
+        let description = world_file::parse_str(
+            "w.toml",
+            "[[vehicle]]\n[[vehicle]]\ntranslation = [0, 10, 0]\n",
+        )
+        .unwrap();
+        let Err(e) = Robot::build(&description) else {
+            panic!("a world of two cars was accepted");
+        };
+        assert_eq!(
+            e,
+            "cannot drive the world w.toml: it holds 2 vehicles (Car-1, Car-2), and a \
+             controller drives exactly one car or robot"
         );
     }
 }

@@ -7,7 +7,7 @@
 //! ```
 //!
 //! Without `--wheel` or `--vehicle` the default `VehicleWheel {}` is exported. An OBJ file gets
-//! its materials in a `.mtl` file beside it.
+//! its materials in a `.mtl` file beside it. `--help` prints the usage.
 
 use std::error::Error;
 use std::fs::File;
@@ -60,27 +60,80 @@ fn write_obj(scene: &Scene, path: &Path) -> Result<(), Box<dyn Error>> {
     Ok(())
 }
 
-fn main() -> Result<(), Box<dyn Error>> {
-    let mut args = std::env::args().skip(1);
-    let (mut wheel, mut vehicle, mut obj, mut glb) = (None, None, None, None);
+/// The usage text of `--help`.
+const USAGE: &str = "\
+Usage: export [--wheel NAME | --vehicle NAME] [--obj FILE] [--glb FILE]
+       export --list
+       export --help
+
+Writes a Webots wheel (default: VehicleWheel) or a whole shipped vehicle to Wavefront OBJ
+(with its .mtl beside it) and/or binary glTF.
+
+  --wheel NAME    a shipped wheel PROTO (see --list)
+  --vehicle NAME  a shipped vehicle PROTO (see --list)
+  --obj FILE      write Wavefront OBJ
+  --glb FILE      write binary glTF
+  --list          list the wheels and vehicles
+  -h, --help      print this help";
+
+/// What the command line asks for.
+#[derive(Debug, Default, PartialEq)]
+struct Args {
+    help: bool,
+    list: bool,
+    wheel: Option<String>,
+    vehicle: Option<String>,
+    obj: Option<String>,
+    glb: Option<String>,
+}
+
+/// Parses the arguments (without the program name).
+fn parse_args(args: impl IntoIterator<Item = String>) -> Result<Args, String> {
+    let mut a = Args::default();
+    let mut args = args.into_iter();
     while let Some(arg) = args.next() {
-        match arg.as_str() {
-            "--wheel" => wheel = args.next(),
-            "--vehicle" => vehicle = args.next(),
-            "--obj" => obj = args.next(),
-            "--glb" => glb = args.next(),
-            "--list" => {
-                let wheels: Vec<_> = WheelPreset::ALL.iter().map(|w| w.proto_name()).collect();
-                let vehicles: Vec<_> = ShippedVehicle::ALL.iter().map(|v| v.proto_name()).collect();
-                println!("wheels:   {}", wheels.join(" "));
-                println!("vehicles: {}", vehicles.join(" "));
-                return Ok(());
+        let slot = match arg.as_str() {
+            "-h" | "--help" => {
+                a.help = true;
+                continue;
             }
-            other => return Err(format!("unknown argument {other:?} (see --list)").into()),
-        }
+            "--list" => {
+                a.list = true;
+                continue;
+            }
+            "--wheel" => &mut a.wheel,
+            "--vehicle" => &mut a.vehicle,
+            "--obj" => &mut a.obj,
+            "--glb" => &mut a.glb,
+            other => return Err(format!("unknown argument {other:?} (see --help)")),
+        };
+        *slot = Some(args.next().ok_or(format!("{arg} needs a value"))?);
+    }
+    Ok(a)
+}
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let Args {
+        help,
+        list,
+        wheel,
+        vehicle,
+        obj,
+        glb,
+    } = parse_args(std::env::args().skip(1))?;
+    if help {
+        println!("{USAGE}");
+        return Ok(());
+    }
+    if list {
+        let wheels: Vec<_> = WheelPreset::ALL.iter().map(|w| w.proto_name()).collect();
+        let vehicles: Vec<_> = ShippedVehicle::ALL.iter().map(|v| v.proto_name()).collect();
+        println!("wheels:   {}", wheels.join(" "));
+        println!("vehicles: {}", vehicles.join(" "));
+        return Ok(());
     }
     if obj.is_none() && glb.is_none() {
-        return Err("nothing to write: give --obj FILE and/or --glb FILE".into());
+        return Err("nothing to write: give --obj FILE and/or --glb FILE (see --help)".into());
     }
 
     let scene = if let Some(name) = vehicle {
@@ -125,4 +178,27 @@ fn main() -> Result<(), Box<dyn Error>> {
         println!("wrote {path}");
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(args: &[&str]) -> Result<Args, String> {
+        parse_args(args.iter().map(|a| a.to_string()))
+    }
+
+    #[test]
+    fn help_is_not_an_error() {
+        // Before, `--help` was an "unknown argument" error.
+        assert!(parse(&["--help"]).unwrap().help);
+        assert!(parse(&["-h"]).unwrap().help);
+        let a = parse(&["--vehicle", "BmwX5", "--glb", "b.glb"]).unwrap();
+        assert_eq!(
+            (a.vehicle.as_deref(), a.glb.as_deref()),
+            (Some("BmwX5"), Some("b.glb"))
+        );
+        assert_eq!(parse(&["--obj"]).unwrap_err(), "--obj needs a value");
+        assert!(parse(&["--fast"]).unwrap_err().contains("unknown argument"));
+    }
 }

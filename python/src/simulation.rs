@@ -12,7 +12,7 @@ use pyo3::types::PyBytes;
 
 use sim::scenario::{self, Scenario};
 use sim::telemetry::{CSV_HEADER, SAMPLE_COLUMNS, Sample};
-use sim::world_file::{self, WorldDescription, WorldFileError, WorldVehicle};
+use sim::world_file::{self, WorldDescription, WorldFileError};
 use sim::{SimError, VehicleId, World};
 use vehicle_model::Warning;
 
@@ -78,18 +78,16 @@ impl Simulation {
             failure: None,
             description,
         };
-        match this.description.vehicle.clone() {
-            WorldVehicle::Car(car) => {
-                let source = this.description.source.clone();
-                let report = this.add(&car, &source)?;
-                this.warnings.extend(report);
-            }
-            WorldVehicle::DifferentialWheels(r) => {
-                this.simulation
-                    .world_mut()
-                    .add_differential_wheels(r.params, r.mode, r.placement)
-                    .map_err(|e| sim_error(&e))?;
-            }
+        let source = this.description.source.clone();
+        for car in this.description.cars.clone() {
+            let report = this.add(&car, &source)?;
+            this.warnings.extend(report);
+        }
+        if let Some(r) = this.description.robot.clone() {
+            this.simulation
+                .world_mut()
+                .add_differential_wheels(r.params, r.mode, r.placement)
+                .map_err(|e| sim_error(&e))?;
         }
         Ok(this)
     }
@@ -156,7 +154,7 @@ impl Simulation {
     /// The telemetry columns, in order (those of `vehicle-sim`'s CSV after `scenario`).
     #[staticmethod]
     fn columns() -> Vec<&'static str> {
-        CSV_HEADER.split(',').skip(1).collect()
+        CSV_HEADER.split(',').skip(2).collect()
     }
 
     /// Where the world came from.
@@ -165,10 +163,10 @@ impl Simulation {
         &self.description.source
     }
 
-    /// What drives in the world file: the car model or `DifferentialWheels`.
+    /// What drives in the world file: its car model, `DifferentialWheels`, or `N vehicles (names)`.
     #[getter]
-    fn vehicle(&self) -> &'static str {
-        self.description.vehicle_name()
+    fn vehicle(&self) -> String {
+        self.description.vehicles_label()
     }
 
     /// The world's and the cars' warnings so far (fields replaced by their defaults).
@@ -216,7 +214,7 @@ impl Simulation {
         text: &str,
     ) -> PyResult<(usize, Vec<String>)> {
         let description = world_file::parse_str(name, text).map_err(|e| world_error(py, &e))?;
-        let WorldVehicle::Car(car) = &description.vehicle else {
+        let Some(car) = description.car() else {
             return Err(PyValueError::new_err(
                 "add_car needs a car, not a DifferentialWheels robot",
             ));
@@ -262,12 +260,8 @@ impl Simulation {
                 return Err(err);
             }
             for car in &mut self.cars {
-                let t = self
-                    .simulation
-                    .telemetry(car.id)
-                    .map_err(|e| sim_error(&e))?;
-                let d = self.simulation.driver(car.id).map_err(|e| sim_error(&e))?;
-                car.samples.push(Sample::of_car(&t, d));
+                let sample = Sample::of_car(&self.simulation, car.id).map_err(|e| sim_error(&e))?;
+                car.samples.push(sample);
             }
         }
         Ok(!self.over())
@@ -328,7 +322,7 @@ impl Simulation {
         &self,
         py: Python<'py>,
         name: &str,
-    ) -> PyResult<(String, Vec<(&'static str, Bound<'py, PyBytes>)>)> {
+    ) -> PyResult<(String, Vec<(String, Bound<'py, PyBytes>)>)> {
         let scenario = Scenario::from_name(name).ok_or_else(|| {
             let names: Vec<&str> = Scenario::ALL.iter().map(|s| s.name()).collect();
             PyValueError::new_err(format!(
@@ -345,11 +339,12 @@ impl Simulation {
             .iter()
             .map(ToString::to_string)
             .collect();
-        let json = sim::report::to_json(&report, &world_warnings);
+        let files = sim::report::output_names(&report);
+        let json = sim::report::to_json(&report, &world_warnings, &files);
         let tables = report
             .results
             .iter()
-            .map(|r| (r.scenario.name(), table(py, &r.telemetry.samples)))
+            .flat_map(|r| r.telemetry.iter().map(|t| (r.name.clone(), table(py, &t.samples))))
             .collect();
         Ok((json, tables))
     }

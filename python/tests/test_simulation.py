@@ -39,11 +39,11 @@ def test_a_scenario_gives_the_metrics_and_telemetry_of_vehicle_sim(vehicle_sim, 
         rows = list(csv.reader(f))
     header, rows = rows[0], rows[1:]
     telemetry = result.telemetry["lane-change"]
-    assert header == ["scenario", *telemetry.columns]
-    assert len(telemetry) == len(rows) == 1550
+    assert header == ["scenario", "car", *telemetry.columns]
+    assert len(telemetry) == len(rows) == 1551
     scaled = telemetry.to_numpy() * 1e6
     rounded = np.sign(scaled) * np.floor(np.abs(scaled) + 0.5) / 1e6
-    expected = np.array([[float(v) if v else math.nan for v in row[1:]] for row in rows])
+    expected = np.array([[float(v) if v else math.nan for v in row[2:]] for row in rows])
     np.testing.assert_array_equal(rounded, expected)
 
 

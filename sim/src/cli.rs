@@ -1,4 +1,5 @@
-//! The `vehicle-sim` command: argument parsing, the run, the progress bar and the outputs.
+//! The `vehicle-sim` command: its options (clap), the run with its progress bar (indicatif),
+//! and the outputs.
 //!
 //! [`main`] is the whole program with its streams and exit code passed in, so tests run it
 //! in-process.
@@ -7,6 +8,10 @@ use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
+use clap::builder::PossibleValue;
+use clap::error::ErrorKind;
+use clap::{Parser, ValueEnum};
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use vehicle_model::Model;
 
 use crate::report;
@@ -18,219 +23,189 @@ pub const EXIT_OK: i32 = 0;
 /// Exit code when the world cannot be loaded, the simulation fails or the outputs cannot be
 /// written.
 pub const EXIT_FAILURE: i32 = 1;
-/// Exit code of a command-line usage error (unknown option, missing value, unknown scenario).
+/// Exit code of a command-line usage error (unknown option, missing or invalid value, unknown
+/// scenario, a scenario the world cannot run).
 pub const EXIT_USAGE: i32 = 2;
 
 /// The default output directory.
 pub const DEFAULT_OUT_DIR: &str = "vehicle-sim-out";
 
-/// What the command line asks for.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Options {
-    /// `--world`: a world file or a shipped model name; `None` for the default world.
-    pub world: Option<String>,
-    /// `--scenario`; `None` for the world's default (`test-track` or `square`).
-    pub scenario: Option<Scenario>,
-    /// `--out`: where the CSV, JSON and plots go.
-    pub out: PathBuf,
-    /// `--json`: print the metrics as one JSON object on stdout instead of the table.
-    pub json: bool,
-}
+/// How long a run goes before it draws a progress bar (on a terminal): shorter runs finish
+/// before a bar would be readable.
+pub const PROGRESS_DELAY: Duration = Duration::from_millis(300);
 
-impl Default for Options {
-    fn default() -> Self {
-        Options {
-            world: None,
-            scenario: None,
-            out: PathBuf::from(DEFAULT_OUT_DIR),
-            json: false,
-        }
+impl ValueEnum for Scenario {
+    fn value_variants<'a>() -> &'a [Self] {
+        &Scenario::ALL
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        Some(PossibleValue::new(self.name()).help(self.description()))
     }
 }
 
-/// What to do.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum Command {
-    /// Print the help text.
-    Help,
-    /// Run a scenario.
-    Run(Options),
+/// A simulated duration (s): finite and > 0.
+fn seconds(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(s) if s.is_finite() && s > 0.0 => Ok(s),
+        _ => Err(format!("'{text}' is not a number of seconds > 0")),
+    }
 }
 
-/// The help text.
-pub fn help() -> String {
-    let scenarios: String = Scenario::ALL
-        .iter()
-        .map(|s| format!("  {:<14}{}\n", s.name(), s.description()))
-        .collect();
-    let mut models = String::from("Models:");
-    let mut line_len = models.len();
+/// The shipped models, wrapped at 80 columns, for the help.
+fn models_help() -> String {
+    let mut out = String::from("Models:");
+    let mut line_len = out.len();
     for (i, m) in Model::ALL.iter().map(|m| m.webots_name()).enumerate() {
         let sep = if i + 1 == Model::ALL.len() { "" } else { "," };
         if line_len + m.len() + 2 > 80 {
-            models.push_str("\n       ");
+            out.push_str("\n       ");
             line_len = 7;
         }
-        models.push(' ');
-        models.push_str(m);
-        models.push_str(sep);
+        out.push(' ');
+        out.push_str(m);
+        out.push_str(sep);
         line_len += m.len() + 1 + sep.len();
     }
+    out
+}
+
+/// What the command line asks for.
+#[derive(Debug, Clone, PartialEq, Parser)]
+#[command(
+    name = "vehicle-sim",
+    version,
+    about = "Drive Webots-style cars and a DifferentialWheels robot on rapier3d physics and \
+             report metrics, telemetry CSV and SVG plots.",
+    after_help = after_help()
+)]
+pub struct Options {
+    /// A TOML world file, or a shipped model name for the default world with that car
+    /// (default: BmwX5 on flat ground, 10 ms)
+    #[arg(long, value_name = "FILE|MODEL")]
+    pub world: Option<String>,
+    /// The driving programme (default: `programme` when the world has one or holds several
+    /// vehicles, else `test-track` for a car, `square` for a robot)
+    #[arg(long, value_name = "NAME")]
+    pub scenario: Option<Scenario>,
+    /// Output directory
+    #[arg(long, value_name = "DIR", default_value = DEFAULT_OUT_DIR)]
+    pub out: PathBuf,
+    /// Print the metrics as one JSON object on stdout instead of the table
+    #[arg(long)]
+    pub json: bool,
+    /// Write no files (no telemetry, metrics or plots)
+    #[arg(long)]
+    pub no_files: bool,
+    /// Print nothing but errors (and the JSON of --json): no table, progress, warnings or
+    /// notes
+    #[arg(short, long)]
+    pub quiet: bool,
+    /// Simulated time (s) of the run, instead of the world's `duration`: caps each built-in
+    /// scenario, sets the length of a programme
+    #[arg(long, value_name = "SECONDS", value_parser = seconds)]
+    pub duration: Option<f64>,
+    /// Seed of the DifferentialWheels robot's slip and encoder noise, instead of the world's
+    /// `seed` (cars have no noise)
+    #[arg(long, value_name = "N")]
+    pub seed: Option<u64>,
+}
+
+fn after_help() -> String {
     format!(
-        "vehicle-sim: drive a Webots-style car (or DifferentialWheels robot) on rapier3d physics\n\
-         and report metrics, telemetry CSV and SVG plots.\n\n\
-         Usage: vehicle-sim [--world FILE|MODEL] [--scenario NAME] [--out DIR] [--json]\n\n\
-         Options:\n\
-         \x20 --world FILE|MODEL  a TOML world file, or a shipped model name for the default\n\
-         \x20                     world with that car (default: BmwX5 on flat ground, 10 ms)\n\
-         \x20 --scenario NAME     the driving programme (default: test-track for a car,\n\
-         \x20                     square for a DifferentialWheels robot)\n\
-         \x20 --out DIR           output directory (default: {DEFAULT_OUT_DIR})\n\
-         \x20 --json              print the metrics as one JSON object on stdout\n\
-         \x20 -h, --help          print this help\n\n\
-         Scenarios:\n{scenarios}\n\
-         {models}\n\n\
-         Exit status: 0 success, 1 world or simulation error, 2 usage error.\n\
-         World file reference: sim/README.md.\n"
+        "{}\n\nExit status: 0 success, 1 world, simulation or output error, 2 usage error.\n\
+         World file reference: sim/README.md.",
+        models_help()
     )
 }
 
-/// Parses the arguments (without the program name).
-///
-/// # Errors
-/// A message for an unknown option, a missing or repeated value, or an unknown scenario.
-pub fn parse_args<I, S>(args: I) -> Result<Command, String>
-where
-    I: IntoIterator<Item = S>,
-    S: Into<String>,
-{
-    let mut o = Options::default();
-    let mut seen: Vec<&'static str> = Vec::new();
-    let mut args = args.into_iter().map(Into::into);
-    while let Some(arg) = args.next() {
-        let (name, inline) = match arg.split_once('=') {
-            Some((n, v)) if n.starts_with("--") => (n.to_string(), Some(v.to_string())),
-            _ => (arg.clone(), None),
-        };
-        let option: &'static str = match name.as_str() {
-            "-h" | "--help" => return Ok(Command::Help),
-            "--json" => {
-                if inline.is_some() {
-                    return Err("option '--json' takes no value".to_string());
-                }
-                o.json = true;
-                continue;
-            }
-            "--world" => "--world",
-            "--scenario" => "--scenario",
-            "--out" => "--out",
-            other if other.starts_with('-') => {
-                return Err(format!("unknown option '{other}'"));
-            }
-            other => return Err(format!("unexpected argument '{other}'")),
-        };
-        if seen.contains(&option) {
-            return Err(format!("option '{option}' given twice"));
-        }
-        seen.push(option);
-        let value = match inline {
-            Some(v) => v,
-            None => args
-                .next()
-                .filter(|v| !v.starts_with("--"))
-                .ok_or_else(|| format!("option '{option}' needs a value"))?,
-        };
-        match option {
-            "--world" => o.world = Some(value),
-            "--out" => o.out = PathBuf::from(value),
-            _ => {
-                let s = Scenario::from_name(&value).ok_or_else(|| {
-                    let names: Vec<&str> = Scenario::ALL.iter().map(|s| s.name()).collect();
-                    format!("unknown scenario '{value}' (one of: {})", names.join(", "))
-                })?;
-                o.scenario = Some(s);
-            }
-        }
-    }
-    Ok(Command::Run(o))
-}
-
-/// A progress bar on stderr, drawn only on a terminal and once the run has lasted a second.
-struct ProgressBar {
+/// A progress bar on stderr, drawn only on a terminal once the run has lasted
+/// [`PROGRESS_DELAY`].
+struct Bar {
     enabled: bool,
     start: Instant,
-    drawn: bool,
+    bar: Option<ProgressBar>,
 }
 
-impl ProgressBar {
-    const WIDTH: usize = 30;
+impl Bar {
+    /// Per-mille steps of the bar.
+    const LENGTH: u64 = 1000;
 
     fn new(enabled: bool) -> Self {
-        ProgressBar {
+        Bar {
             enabled,
             start: Instant::now(),
-            drawn: false,
+            bar: None,
         }
     }
 
-    fn update(&mut self, err: &mut dyn Write, p: Progress) {
-        if !self.enabled || self.start.elapsed() < Duration::from_secs(1) {
+    fn update(&mut self, p: Progress) {
+        if !self.enabled || self.start.elapsed() < PROGRESS_DELAY {
             return;
         }
-        let filled = ((p.fraction * Self::WIDTH as f64).round() as usize).min(Self::WIDTH);
-        let _ = write!(
-            err,
-            "\r[{}{}] {:3.0}%  {} ({}/{}) t = {:.1} s   ",
-            "#".repeat(filled),
-            "-".repeat(Self::WIDTH - filled),
-            100.0 * p.fraction,
+        let bar = self.bar.get_or_insert_with(|| {
+            let bar =
+                ProgressBar::with_draw_target(Some(Self::LENGTH), ProgressDrawTarget::stderr());
+            if let Ok(style) = ProgressStyle::with_template("[{bar:30}] {percent:>3}%  {msg}") {
+                bar.set_style(style.progress_chars("#>-"));
+            }
+            bar
+        });
+        bar.set_position((p.fraction.clamp(0.0, 1.0) * Self::LENGTH as f64) as u64);
+        bar.set_message(format!(
+            "{} ({}/{}) t = {:.1} s",
             p.scenario,
             p.index + 1,
             p.count,
             p.time
-        );
-        let _ = err.flush();
-        self.drawn = true;
+        ));
     }
 
-    fn clear(&mut self, err: &mut dyn Write) {
-        if self.drawn {
-            let _ = write!(err, "\r{}\r", " ".repeat(Self::WIDTH + 60));
-            let _ = err.flush();
-            self.drawn = false;
+    fn clear(&mut self) {
+        if let Some(bar) = self.bar.take() {
+            bar.finish_and_clear();
         }
     }
 }
 
-/// Loads the world of `--world`, or the default world.
-fn load_world(spec: Option<&str>) -> Result<WorldDescription, world_file::WorldFileError> {
-    match spec {
-        Some(s) => world_file::load(s),
-        None => Ok(world_file::default_world()),
+/// Loads the world of `--world` (or the default world) with the overrides of `--duration`
+/// and `--seed`.
+fn load_world(options: &Options) -> Result<WorldDescription, world_file::WorldFileError> {
+    let mut world = match options.world.as_deref() {
+        Some(s) => world_file::load(s)?,
+        None => world_file::default_world(),
+    };
+    if let Some(d) = options.duration {
+        world.duration = Some(d);
     }
+    if let (Some(seed), Some(robot)) = (options.seed, world.robot.as_mut()) {
+        robot.params.seed = seed;
+    }
+    Ok(world)
 }
 
 /// The whole `vehicle-sim` program: parses `args` (without the program name), runs, writes
-/// the outputs and the report to `out`, messages to `err`, and returns the exit code. A
-/// progress bar is drawn on `err` when `err_is_terminal`.
+/// the outputs and the report to `out`, messages to `err`, and returns the exit code. When
+/// `err_is_terminal`, a progress bar is drawn on the process's stderr.
 pub fn main(
     args: impl IntoIterator<Item = String>,
     out: &mut dyn Write,
     err: &mut dyn Write,
     err_is_terminal: bool,
 ) -> i32 {
-    let options = match parse_args(args) {
-        Ok(Command::Help) => {
-            let _ = out.write_all(help().as_bytes());
+    let args = std::iter::once("vehicle-sim".to_string()).chain(args);
+    let options = match Options::try_parse_from(args) {
+        Ok(o) => o,
+        Err(e) if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) => {
+            let _ = write!(out, "{}", e.render());
             return EXIT_OK;
         }
-        Ok(Command::Run(o)) => o,
         Err(e) => {
-            let _ = writeln!(err, "vehicle-sim: error: {e}\nTry 'vehicle-sim --help'.");
+            let _ = write!(err, "{}", e.render());
             return EXIT_USAGE;
         }
     };
-    let world = match load_world(options.world.as_deref()) {
+    let world = match load_world(&options) {
         Ok(w) => w,
         Err(e) => {
             let _ = writeln!(err, "vehicle-sim: error: {e}");
@@ -238,15 +213,24 @@ pub fn main(
         }
     };
     let warnings: Vec<String> = world.warnings.iter().map(ToString::to_string).collect();
-    for w in &warnings {
-        let _ = writeln!(err, "vehicle-sim: warning: {w}");
+    if !options.quiet {
+        for w in &warnings {
+            let _ = writeln!(err, "vehicle-sim: warning: {w}");
+        }
     }
     let scenario = options
         .scenario
         .unwrap_or_else(|| Scenario::default_for(&world));
-    let mut bar = ProgressBar::new(err_is_terminal);
-    let result = scenario::run(&world, scenario, &mut |p| bar.update(err, p));
-    bar.clear(err);
+    if let Err(e) = scenario.check(&world) {
+        let _ = writeln!(
+            err,
+            "vehicle-sim: error: {e}\nFor more information, try '--help'."
+        );
+        return EXIT_USAGE;
+    }
+    let mut bar = Bar::new(err_is_terminal && !options.quiet);
+    let result = scenario::run(&world, scenario, &mut |p| bar.update(p));
+    bar.clear();
     let report = match result {
         Ok(r) => r,
         Err(e) => {
@@ -254,23 +238,32 @@ pub fn main(
             return EXIT_FAILURE;
         }
     };
-    for note in report.results.iter().flat_map(|r| &r.notes) {
-        let _ = writeln!(err, "vehicle-sim: note: {note}");
+    if !options.quiet {
+        for note in report.results.iter().flat_map(|r| &r.notes) {
+            let _ = writeln!(err, "vehicle-sim: note: {note}");
+        }
     }
-    let written = match report::write_outputs(&report, &warnings, &options.out) {
-        Ok(w) => w,
-        Err(e) => {
-            let _ = writeln!(err, "vehicle-sim: error: cannot write the outputs: {e}");
-            return EXIT_FAILURE;
+    let names = if options.no_files {
+        Vec::new()
+    } else {
+        match report::write_outputs(&report, &warnings, &options.out) {
+            Ok(_) => report::output_names(&report),
+            Err(e) => {
+                let _ = writeln!(err, "vehicle-sim: error: cannot write the outputs: {e}");
+                return EXIT_FAILURE;
+            }
         }
     };
     let text = if options.json {
-        report::to_json(&report, &warnings) + "\n"
+        report::to_json(&report, &warnings, &names) + "\n"
+    } else if options.quiet {
+        String::new()
+    } else if options.no_files {
+        format!(
+            "{}no files written (--no-files)\n",
+            report::summary_table(&report)
+        )
     } else {
-        let names: Vec<String> = written
-            .iter()
-            .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
-            .collect();
         format!(
             "{}outputs in {}: {}\n",
             report::summary_table(&report),
@@ -300,60 +293,67 @@ pub fn run_process() -> i32 {
 mod tests {
     use super::*;
 
+    fn parse(args: &[&str]) -> Result<Options, clap::Error> {
+        Options::try_parse_from(std::iter::once("vehicle-sim").chain(args.iter().copied()))
+    }
+
     #[test]
     fn parses_every_option() {
-        let c = parse_args([
+        let o = parse(&[
             "--world",
             "w.toml",
             "--scenario=brake",
             "--out",
             "o",
             "--json",
+            "--no-files",
+            "-q",
+            "--duration",
+            "2.5",
+            "--seed",
+            "7",
         ])
         .unwrap();
         assert_eq!(
-            c,
-            Command::Run(Options {
+            o,
+            Options {
                 world: Some("w.toml".into()),
                 scenario: Some(Scenario::Brake),
                 out: PathBuf::from("o"),
                 json: true,
-            })
+                no_files: true,
+                quiet: true,
+                duration: Some(2.5),
+                seed: Some(7),
+            }
         );
-        assert_eq!(parse_args(["-h"]).unwrap(), Command::Help);
+        let d = parse(&[]).unwrap();
+        assert_eq!(d.out, PathBuf::from(DEFAULT_OUT_DIR));
+        assert_eq!((d.world, d.scenario, d.json), (None, None, false));
         assert_eq!(
-            parse_args(Vec::<String>::new()).unwrap(),
-            Command::Run(Options::default())
+            parse(&["--scenario", "programme"]).unwrap().scenario,
+            Some(Scenario::Programme)
         );
     }
 
     #[test]
     fn usage_errors() {
+        let kind = |args: &[&str]| parse(args).unwrap_err().kind();
+        assert_eq!(kind(&["--fast"]), ErrorKind::UnknownArgument);
+        assert_eq!(kind(&["--world"]), ErrorKind::InvalidValue);
+        assert_eq!(kind(&["--scenario", "drift"]), ErrorKind::InvalidValue);
+        assert_eq!(kind(&["x"]), ErrorKind::UnknownArgument);
         assert_eq!(
-            parse_args(["--fast"]).unwrap_err(),
-            "unknown option '--fast'"
+            kind(&["--out", "a", "--out", "b"]),
+            ErrorKind::ArgumentConflict
         );
-        assert_eq!(
-            parse_args(["--world"]).unwrap_err(),
-            "option '--world' needs a value"
-        );
-        assert_eq!(
-            parse_args(["--out", "--json"]).unwrap_err(),
-            "option '--out' needs a value"
-        );
-        assert!(
-            parse_args(["--scenario", "drift"])
-                .unwrap_err()
-                .contains("unknown scenario 'drift'")
-        );
-        assert_eq!(parse_args(["x"]).unwrap_err(), "unexpected argument 'x'");
-        assert_eq!(
-            parse_args(["--out", "a", "--out", "b"]).unwrap_err(),
-            "option '--out' given twice"
-        );
-        assert_eq!(
-            parse_args(["--json=1"]).unwrap_err(),
-            "option '--json' takes no value"
-        );
+        assert_eq!(kind(&["--duration=-1"]), ErrorKind::ValueValidation);
+        assert_eq!(kind(&["--duration", "inf"]), ErrorKind::ValueValidation);
+        assert_eq!(kind(&["--seed", "x"]), ErrorKind::ValueValidation);
+        assert_eq!(kind(&["--help"]), ErrorKind::DisplayHelp);
+        assert_eq!(kind(&["--version"]), ErrorKind::DisplayVersion);
+        // A misspelt scenario gets a suggestion.
+        let e = parse(&["--scenario", "brak"]).unwrap_err().to_string();
+        assert!(e.contains("brake"), "{e}");
     }
 }

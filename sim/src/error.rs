@@ -9,7 +9,8 @@ use proto_geom::plausible::Compact;
 
 /// A parameter rejected at construction: the field (Webots field name where there is one) and
 /// the offending value.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+#[error("invalid {field} = {}: must be {rule}", Compact(*value))]
 pub struct ParamError {
     /// The field, e.g. `"basicTimeStep"`, `"ground.friction"`, `"wheelRadius"`.
     pub field: &'static str,
@@ -91,20 +92,6 @@ impl ParamError {
     }
 }
 
-impl fmt::Display for ParamError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "invalid {} = {}: must be {}",
-            self.field,
-            Compact(self.value),
-            self.rule
-        )
-    }
-}
-
-impl std::error::Error for ParamError {}
-
 /// A part of a simulated object, named in [`SimError::NonFinite`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum BodyPart {
@@ -170,17 +157,24 @@ pub enum BodyOwner {
 }
 
 /// A simulator error.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum SimError {
     /// A parameter was rejected; nothing was created.
-    Param(ParamError),
+    #[error("{0}")]
+    Param(#[from] ParamError),
     /// A vehicle handle that this world did not issue.
+    #[error("no vehicle with index {0} in this world")]
     UnknownVehicle(usize),
     /// A robot handle that this world did not issue.
+    #[error("no robot with index {0} in this world")]
     UnknownRobot(usize),
     /// A body's pose or velocity stopped being finite (or rapier quarantined it) during the step
     /// that ended at `time_ms`. The world refuses to step any further.
+    #[error(
+        "the simulation diverged at t = {time_ms} ms: the pose or velocity of the {part} of \
+         {owner} stopped being finite"
+    )]
     NonFinite {
         /// The owner of the body.
         owner: BodyOwner,
@@ -191,9 +185,9 @@ pub enum SimError {
     },
     /// rapier refused a joint of a car on joints (it refuses joints that close a loop, which a
     /// car's tree of joints never does); nothing usable was created.
+    #[error("rapier refused a joint of {0}")]
     JointRefused(BodyOwner),
 }
-
 impl SimError {
     /// The [`SimError::NonFinite`] of a part of `owner` in the step ending at `time_ms`.
     pub(crate) fn diverged(owner: BodyOwner, time_ms: u64) -> impl Fn(BodyPart) -> SimError {
@@ -205,37 +199,3 @@ impl SimError {
     }
 }
 
-impl fmt::Display for SimError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            SimError::Param(e) => e.fmt(f),
-            SimError::UnknownVehicle(i) => write!(f, "no vehicle with index {i} in this world"),
-            SimError::UnknownRobot(i) => write!(f, "no robot with index {i} in this world"),
-            SimError::NonFinite {
-                owner,
-                part,
-                time_ms,
-            } => write!(
-                f,
-                "the simulation diverged at t = {time_ms} ms: the pose or velocity of the \
-                 {part} of {owner} stopped being finite"
-            ),
-            SimError::JointRefused(owner) => write!(f, "rapier refused a joint of {owner}"),
-        }
-    }
-}
-
-impl std::error::Error for SimError {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match self {
-            SimError::Param(e) => Some(e),
-            _ => None,
-        }
-    }
-}
-
-impl From<ParamError> for SimError {
-    fn from(e: ParamError) -> Self {
-        SimError::Param(e)
-    }
-}

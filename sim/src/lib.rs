@@ -7,10 +7,13 @@
 //!   like a Webots controller calling `wbu_driver_step()`, with [`CarTelemetry`];
 //! * [`motor`]: the Webots motor semantics (velocity ramp, position servo) the joints emulate,
 //!   from [`vehicle_model::actuator`] in f64, and rapier's rigid velocity motor;
-//! * [`world_file`]: TOML worlds in Webots vocabulary (`basicTimeStep`, `[vehicle]` with any
-//!   `Car` field, `[differential_wheels]`, obstacles), loaded by path or model name;
+//! * [`world_file`]: TOML worlds in Webots vocabulary (`basicTimeStep`, `[vehicle]` or several
+//!   `[[vehicle]]` with any `Car` field and a driving programme, `[differential_wheels]`,
+//!   obstacles), loaded by path or model name;
+//! * [`programme`]: timed driver commands named after the Webots driver setters;
 //! * [`scenario`], [`telemetry`], [`report`], [`cli`]: the `vehicle-sim` command's driving
-//!   programmes, metrics, CSV, SVG plots and JSON (see `README.md`).
+//!   programmes, metrics, CSV, SVG plots and JSON (see `README.md`); the report takes any
+//!   run, also one driven through this API (`examples/custom_route.rs`).
 //!
 //! The public API is in f64 and SI units (m, m/s, rad, rad/s, N·m, s; the step in ms as
 //! Webots' `basicTimeStep`); rapier (pinned `=0.36.1`) runs in f32 inside and is never exposed.
@@ -63,6 +66,7 @@ mod body;
 pub mod cli;
 pub mod motor;
 pub mod placement;
+pub mod programme;
 pub mod report;
 pub mod rng;
 pub mod scenario;

@@ -1,15 +1,18 @@
-//! Per-step telemetry of a scenario run and its CSV form.
+//! Per-step telemetry of a run (one [`Telemetry`] per vehicle and scenario) and its CSV form.
 
-use std::fmt::Write as _;
+use std::io::Write;
 
-use vehicle_model::{Driver, KMH_PER_MS, PerWheel, Wheel};
+use vehicle_model::{KMH_PER_MS, PerWheel, Wheel};
 
-use crate::simulation::CarTelemetry;
-use crate::vehicle::TyreTelemetry;
+use crate::diff_wheels::RobotId;
+use crate::error::SimError;
+use crate::simulation::Simulation;
+use crate::vehicle::{TyreTelemetry, VehicleId};
+use crate::world::World;
 
-/// One sample, taken after a world step. Car-only quantities are `None` for a
-/// DifferentialWheels robot, and `rpm`/`gear` are `None` in speed (cruise-control) mode,
-/// where Webots has no engine model.
+/// One sample: the state at the start of a run (time 0) or after a world step. Car-only
+/// quantities are `None` for a DifferentialWheels robot, and `rpm`/`gear` are `None` in speed
+/// (cruise-control) mode, where Webots has no engine model.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Sample {
     /// Time since the scenario started (s).
@@ -47,11 +50,15 @@ pub struct Sample {
 }
 
 impl Sample {
-    /// The sample of a driven car after a step: its telemetry `t` and its driver library `d`
-    /// (the commanded and measured steering).
-    pub fn of_car(t: &CarTelemetry, d: &Driver<f64>) -> Sample {
+    /// The state of car `id` of `sim` now, as its driver and the chassis measure it.
+    ///
+    /// # Errors
+    /// [`SimError::UnknownVehicle`] for a car without a driver in `sim`.
+    pub fn of_car(sim: &Simulation, id: VehicleId) -> Result<Sample, SimError> {
+        let t = sim.telemetry(id)?;
+        let d = sim.driver(id)?;
         let s = &t.state;
-        Sample {
+        Ok(Sample {
             time: t.time,
             x: s.position[0],
             y: s.position[1],
@@ -67,11 +74,35 @@ impl Sample {
             lateral_accel: Some(s.lateral_acceleration),
             longitudinal_accel: Some(s.longitudinal_acceleration),
             tyres: Some(s.tyres),
-        }
+        })
     }
 
-    /// The values of the columns of [`CSV_HEADER`] after `scenario`, in its order and units
-    /// (`None` where the quantity does not exist).
+    /// The pose and speed of DifferentialWheels robot `id` of `world` now (its speed is the
+    /// mean of its wheels' rim speeds).
+    ///
+    /// # Errors
+    /// [`SimError::UnknownRobot`] for a robot not in `world`.
+    pub fn of_robot(world: &World, id: RobotId) -> Result<Sample, SimError> {
+        let robot = world.robot(id)?;
+        let pose = robot.pose();
+        let [l, r] = robot.wheel_speeds();
+        Ok(Sample {
+            time: world.time(),
+            x: pose.position[0],
+            y: pose.position[1],
+            yaw: pose.heading,
+            speed_kmh: 0.5 * (l + r) * robot.params().wheel_radius * KMH_PER_MS,
+            ..Sample::default()
+        })
+    }
+
+    /// The speed along the heading (m/s).
+    pub fn speed(&self) -> f64 {
+        self.speed_kmh / KMH_PER_MS
+    }
+
+    /// The values of the columns of [`CSV_HEADER`] after `scenario` and `car`, in its order and
+    /// units (`None` where the quantity does not exist).
     pub fn values(&self) -> [Option<f64>; SAMPLE_COLUMNS] {
         let mut out = [None; SAMPLE_COLUMNS];
         let vehicle = [
@@ -101,7 +132,7 @@ impl Sample {
     }
 }
 
-/// The number of columns of a [`Sample`] in [`CSV_HEADER`] (all but `scenario`).
+/// The number of columns of a [`Sample`] in [`CSV_HEADER`] (all but `scenario` and `car`).
 pub const SAMPLE_COLUMNS: usize = 14 + 6 * 4;
 
 /// The six columns of one tyre, prefixed with the wheel's short name.
@@ -129,7 +160,7 @@ macro_rules! tyre_columns {
 /// wheel order `fr`, `fl`, `rr`, `rl` ([`TyreTelemetry`]: slip ratio, slip angle in rad,
 /// the road's forces along the wheel's heading and axis and the load in N, friction use 0–1).
 pub const CSV_HEADER: &str = concat!(
-    "scenario,time_s,x_m,y_m,yaw_rad,speed_kmh,driver_speed_kmh,rpm,gear,",
+    "scenario,car,time_s,x_m,y_m,yaw_rad,speed_kmh,driver_speed_kmh,rpm,gear,",
     "steering_command_rad,steering_rad,throttle,brake,lateral_accel_mps2,longitudinal_accel_mps2",
     tyre_columns!("fr"),
     tyre_columns!("fl"),
@@ -137,11 +168,25 @@ pub const CSV_HEADER: &str = concat!(
     tyre_columns!("rl"),
 );
 
-/// A scenario's samples, in time order.
+/// What kind of vehicle a [`Telemetry`] follows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum VehicleKind {
+    /// A car.
+    #[default]
+    Car,
+    /// A DifferentialWheels robot.
+    Robot,
+}
+
+/// One vehicle's samples in one scenario, in time order.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Telemetry {
-    /// Name of the scenario that produced them.
+    /// Name of the scenario (or run) that produced them.
     pub scenario: String,
+    /// Name of the vehicle (the `car` column).
+    pub vehicle: String,
+    /// A car or a robot.
+    pub kind: VehicleKind,
     /// The samples.
     pub samples: Vec<Sample>,
 }
@@ -156,29 +201,56 @@ const TYRE_CELLS: [fn(TyreTelemetry) -> f64; 6] = [
     |t| t.friction_use,
 ];
 
-fn cell(out: &mut String, v: Option<f64>) {
-    out.push(',');
-    if let Some(v) = v.filter(|v| v.is_finite()) {
-        // Six significant decimals are below any quantity's measurement noise here.
-        let _ = write!(out, "{}", (v * 1e6).round() / 1e6);
+/// Decimal places of the CSV cells: six are below any quantity's measurement noise here (the
+/// physics runs in f32, about seven significant digits).
+const CSV_DECIMALS: i32 = 6;
+
+/// A CSV cell: `v` rounded to [`CSV_DECIMALS`] places, empty for a missing or non-finite value;
+/// a value that rounds to zero is `0`, never `-0`.
+fn cell(v: Option<f64>) -> String {
+    match v.filter(|v| v.is_finite()) {
+        Some(v) => {
+            let scale = 10f64.powi(CSV_DECIMALS);
+            // Adding +0.0 turns the −0.0 of a tiny negative value into 0.0.
+            format!("{}", (v * scale).round() / scale + 0.0)
+        }
+        None => String::new(),
     }
 }
 
-/// Writes `runs` as one CSV table (header [`CSV_HEADER`]), one row per sample, the scenario
-/// name in the first column. Missing values are empty cells.
-pub fn write_csv<'a>(runs: impl IntoIterator<Item = &'a Telemetry>) -> String {
-    let mut out = String::from(CSV_HEADER);
-    out.push('\n');
+/// Writes `runs` as one CSV table (header [`CSV_HEADER`]) to `out`, one row per sample, the
+/// scenario and vehicle names in the first two columns. Missing values are empty cells.
+///
+/// # Errors
+/// The first write error.
+pub fn write_csv<'a>(
+    out: impl Write,
+    runs: impl IntoIterator<Item = &'a Telemetry>,
+) -> Result<(), csv::Error> {
+    let mut w = csv::WriterBuilder::new()
+        .has_headers(false)
+        .from_writer(out);
+    w.write_record(CSV_HEADER.split(','))?;
+    let mut row: Vec<String> = Vec::with_capacity(CSV_HEADER.split(',').count());
     for run in runs {
         for s in &run.samples {
-            out.push_str(&run.scenario);
-            for v in s.values() {
-                cell(&mut out, v);
-            }
-            out.push('\n');
+            row.clear();
+            row.push(run.scenario.clone());
+            row.push(run.vehicle.clone());
+            row.extend(s.values().map(cell));
+            w.write_record(&row)?;
         }
     }
-    out
+    w.flush()?;
+    Ok(())
+}
+
+/// [`write_csv`] into a string.
+pub fn to_csv<'a>(runs: impl IntoIterator<Item = &'a Telemetry>) -> String {
+    let mut out = Vec::new();
+    // Writing to memory cannot fail.
+    let _ = write_csv(&mut out, runs);
+    String::from_utf8_lossy(&out).into_owned()
 }
 
 #[cfg(test)]
@@ -189,24 +261,32 @@ mod tests {
     fn csv_rows_and_blank_cells() {
         let t = Telemetry {
             scenario: "brake".into(),
+            vehicle: "BmwX5".into(),
+            kind: VehicleKind::Car,
             samples: vec![Sample {
                 time: 0.01,
                 x: 1.0 / 3.0,
+                // Rounds to -0 at six decimals: written 0.
+                y: -4e-8,
                 speed_kmh: 100.0,
                 gear: Some(2),
                 rpm: Some(f64::NAN),
                 ..Sample::default()
             }],
         };
-        let csv = write_csv([&t]);
+        let csv = to_csv([&t]);
         let mut lines = csv.lines();
         assert_eq!(lines.next(), Some(CSV_HEADER));
         let row = lines.next().unwrap();
-        // 15 vehicle columns, then 24 empty tyre cells.
+        // 16 vehicle columns, then 24 empty tyre cells.
         assert_eq!(
             row,
-            format!("brake,0.01,0.333333,0,0,100,,,2,,,,,,{}", ",".repeat(24))
+            format!(
+                "brake,BmwX5,0.01,0.333333,0,0,100,,,2,,,,,,{}",
+                ",".repeat(24)
+            )
         );
+        assert!(!row.contains("-0"), "{row}");
         assert_eq!(row.split(',').count(), CSV_HEADER.split(',').count());
         assert_eq!(lines.next(), None);
     }
@@ -214,10 +294,9 @@ mod tests {
     #[test]
     fn tyre_columns_in_wheel_order() {
         let columns: Vec<&str> = CSV_HEADER.split(',').collect();
-        assert_eq!(columns.len(), 15 + 24);
-        assert_eq!(columns.len(), SAMPLE_COLUMNS + 1);
+        assert_eq!(columns.len(), 16 + 24);
         assert_eq!(
-            columns[15..21],
+            columns[16..22],
             [
                 "fr_slip_ratio",
                 "fr_slip_angle_rad",
@@ -227,9 +306,9 @@ mod tests {
                 "fr_friction_use"
             ]
         );
-        assert_eq!(columns[21], "fl_slip_ratio");
-        assert_eq!(columns[27], "rr_slip_ratio");
-        assert_eq!(columns[38], "rl_friction_use");
+        assert_eq!(columns[22], "fl_slip_ratio");
+        assert_eq!(columns[28], "rr_slip_ratio");
+        assert_eq!(columns[39], "rl_friction_use");
 
         // Wheel i gets slip ratio 0.01·i, slip angle −0.02 rad, forces 100·i, −50, 4000 + i N
         // and friction use 0.25.
@@ -246,16 +325,18 @@ mod tests {
         });
         let t = Telemetry {
             scenario: "lane-change".into(),
+            vehicle: "car".into(),
+            kind: VehicleKind::Car,
             samples: vec![Sample {
                 tyres: Some(tyres),
                 ..Sample::default()
             }],
         };
-        let csv = write_csv([&t]);
+        let csv = to_csv([&t]);
         let row: Vec<&str> = csv.lines().nth(1).unwrap().split(',').collect();
         assert_eq!(row.len(), columns.len());
-        assert_eq!(row[15..21], ["0", "-0.02", "0", "-50", "4000", "0.25"]);
-        assert_eq!(row[21..27], ["0.01", "-0.02", "100", "-50", "4001", "0.25"]);
-        assert_eq!(row[33..39], ["0.03", "-0.02", "300", "-50", "4003", "0.25"]);
+        assert_eq!(row[16..22], ["0", "-0.02", "0", "-50", "4000", "0.25"]);
+        assert_eq!(row[22..28], ["0.01", "-0.02", "100", "-50", "4001", "0.25"]);
+        assert_eq!(row[34..40], ["0.03", "-0.02", "300", "-50", "4003", "0.25"]);
     }
 }

@@ -1,5 +1,5 @@
-//! The `vehicle-sim` binary: help, usage errors and their exit code, JSON output and the files
-//! it writes. Scenarios are kept short with a world `duration`.
+//! The `vehicle-sim` binary: help, options, usage errors and their exit code, JSON output and
+//! the files it writes. Scenarios are kept short with a world `duration` or `--duration`.
 
 // Helpers outside #[test] functions unwrap too: a failure is a test failure.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -36,13 +36,26 @@ fn help_lists_options_scenarios_and_models() {
         "--scenario",
         "--out",
         "--json",
+        "--no-files",
+        "--quiet",
+        "--duration",
+        "--seed",
+        "--version",
         "test-track",
         "lane-change",
         "square",
+        "programme",
         "BmwX5",
+        "Exit status",
     ] {
         assert!(help.contains(word), "help lacks {word}:\n{help}");
     }
+    let out = vehicle_sim(&["--version"]);
+    assert_eq!(out.status.code(), Some(0));
+    assert_eq!(
+        text(&out.stdout).trim(),
+        format!("vehicle-sim {}", env!("CARGO_PKG_VERSION"))
+    );
 }
 
 #[test]
@@ -51,10 +64,18 @@ fn unknown_option_is_a_usage_error() {
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty());
     let err = text(&out.stderr);
-    assert!(err.contains("unknown option '--fastest'"), "{err}");
+    assert!(err.contains("unexpected argument '--fastest'"), "{err}");
     assert!(err.contains("--help"), "{err}");
-    assert_eq!(vehicle_sim(&["--scenario", "drift"]).status.code(), Some(2));
-    assert_eq!(vehicle_sim(&["--world"]).status.code(), Some(2));
+    for args in [
+        &["--scenario", "drift"][..],
+        &["--world"],
+        &["--duration", "0"],
+        &["--seed", "x"],
+    ] {
+        let out = vehicle_sim(args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
 }
 
 #[test]
@@ -77,14 +98,44 @@ fn world_errors_exit_1_with_the_location() {
         )),
         "{err}"
     );
-    let out = vehicle_sim(&["--world", "DifferentialWheels"]);
+    // Neither a file nor a model: said so, with the models (before: "cannot read the world
+    // file").
+    let out = vehicle_sim(&["--world", "Nope"]);
     assert_eq!(out.status.code(), Some(1));
-    // A car scenario on a robot world.
+    let err = text(&out.stderr);
+    assert!(
+        err.contains("'Nope' is neither a world file nor a vehicle model"),
+        "{err}"
+    );
+    assert!(
+        err.contains("models: ") && err.contains("ToyotaPrius"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn a_scenario_the_world_cannot_run_is_a_usage_error() {
+    let dir = scratch("wrong-vehicle");
+    // A car scenario on a robot world: exit 2 (before: 1), nothing written.
     let robot = dir.join("r.toml");
     std::fs::write(&robot, "[differential_wheels]\n").unwrap();
-    let out = vehicle_sim(&["--world", robot.to_str().unwrap(), "--scenario", "brake"]);
-    assert_eq!(out.status.code(), Some(1));
-    assert!(text(&out.stderr).contains("needs a car"));
+    let out_dir = dir.join("out");
+    let out = vehicle_sim(&[
+        "--world",
+        robot.to_str().unwrap(),
+        "--scenario",
+        "brake",
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = text(&out.stderr);
+    assert!(err.contains("needs a world with one car"), "{err}");
+    assert!(err.contains("--help"), "{err}");
+    assert!(!out_dir.exists());
+    // And a robot scenario on a car world.
+    assert_eq!(vehicle_sim(&["--scenario", "spin"]).status.code(), Some(2));
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
@@ -143,12 +194,170 @@ fn json_metrics_of_a_short_car_run() {
     // The tyres' friction use is plotted for the lane change only.
     assert!(!out_dir.join("friction_use.svg").exists());
     let csv = std::fs::read_to_string(out_dir.join("telemetry.csv")).unwrap();
-    // Header plus one row per 10 ms step.
-    assert_eq!(csv.lines().count(), 1 + 100);
-    // 15 columns of the car, 6 per tyre.
+    // Header, the state at t = 0 (before: none), then one row per 10 ms step.
+    assert_eq!(csv.lines().count(), 1 + 1 + 100);
+    let first: Vec<&str> = csv.lines().nth(1).unwrap().split(',').collect();
+    assert_eq!(first[..3], ["accel-speed", "BmwX5", "0"]);
+    // 16 columns of the car (with its name), 6 per tyre; no `-0` cell (before: many, in
+    // the lateral quantities of a car driving straight).
     for line in csv.lines() {
-        assert_eq!(line.split(',').count(), 15 + 4 * 6, "{line}");
+        assert_eq!(line.split(',').count(), 16 + 4 * 6, "{line}");
+        assert!(line.split(',').all(|c| c != "-0"), "{line}");
     }
+    // Every number of metrics.json has at most 6 significant digits (before:
+    // 88.50999999999999).
+    let json = std::fs::read_to_string(out_dir.join("metrics.json")).unwrap();
+    let j: serde_json::Value = serde_json::from_str(&json).unwrap();
+    for (key, v) in j["scenarios"]["accel-speed"].as_object().unwrap() {
+        if let Some(x) = v.as_f64() {
+            let digits = x
+                .to_string()
+                .trim_start_matches(['-', '0', '.'])
+                .chars()
+                .filter(char::is_ascii_digit)
+                .count();
+            assert!(digits <= 6, "{key}: {x}");
+        }
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The file names in `dir`, sorted.
+fn listing(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn outputs_are_this_runs_and_listed_in_metrics_json() {
+    let dir = scratch("outputs");
+    let out_dir = dir.join("out");
+    let run = |scenario: &str, extra: &[&str]| {
+        let mut args = vec![
+            "--scenario",
+            scenario,
+            "--duration",
+            "0.5",
+            "--json",
+            "--out",
+            out_dir.to_str().unwrap(),
+        ];
+        args.extend(extra);
+        json_of(&vehicle_sim(&args))
+    };
+    // A lane change writes its own plots...
+    let j = run("lane-change", &[]);
+    assert!(
+        j["files"]
+            .as_array()
+            .unwrap()
+            .contains(&"lane_change.svg".into())
+    );
+    // ... which a brake run into the same directory removes (before: left behind).
+    std::fs::write(out_dir.join("notes.txt"), "mine").unwrap();
+    let j = run("brake", &[]);
+    let mut files: Vec<String> = j["files"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f.as_str().unwrap().to_string())
+        .collect();
+    let on_disk = std::fs::read_to_string(out_dir.join("metrics.json")).unwrap();
+    assert_eq!(
+        serde_json::from_str::<serde_json::Value>(&on_disk).unwrap()["files"],
+        j["files"]
+    );
+    files.push("notes.txt".into());
+    files.sort();
+    assert_eq!(listing(&out_dir), files);
+    assert!(!out_dir.join("lane_change.svg").exists());
+    // --json writes the files too; --no-files writes none and lists none.
+    let fresh = dir.join("none");
+    let out = vehicle_sim(&[
+        "--duration",
+        "0.2",
+        "--scenario",
+        "brake",
+        "--json",
+        "--no-files",
+        "--out",
+        fresh.to_str().unwrap(),
+    ]);
+    let j = json_of(&out);
+    assert_eq!(j["files"], serde_json::json!([]));
+    assert!(!fresh.exists());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn duration_quiet_and_the_tilt_note_once() {
+    let dir = scratch("quiet");
+    // The Tractor's rotation pitches it: one note for the run (before: one per scenario, 5).
+    let out = vehicle_sim(&[
+        "--world",
+        "Tractor",
+        "--duration",
+        "0.1",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(
+        text(&out.stderr).matches("tilts it").count(),
+        1,
+        "{}",
+        text(&out.stderr)
+    );
+    // --duration caps each of the five scenarios.
+    let table = text(&out.stdout);
+    assert!(table.contains("simulated 0.5 s"), "{table}");
+    // --quiet: nothing on either stream, the files still written.
+    std::fs::remove_dir_all(&dir).unwrap();
+    let out = vehicle_sim(&[
+        "--world",
+        "Tractor",
+        "--duration",
+        "0.1",
+        "--quiet",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(out.stdout.is_empty() && out.stderr.is_empty());
+    assert!(dir.join("telemetry.csv").exists());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn seed_overrides_the_robots_noise_seed() {
+    let dir = scratch("seed");
+    let world = dir.join("noisy.toml");
+    std::fs::write(
+        &world,
+        "[differential_wheels]\nslipNoise = 0.2\nwheelRadius = 0.05\nseed = 1\n",
+    )
+    .unwrap();
+    let heading = |seed: &str| {
+        let out = vehicle_sim(&[
+            "--world",
+            world.to_str().unwrap(),
+            "--scenario",
+            "spin",
+            "--seed",
+            seed,
+            "--json",
+            "--no-files",
+        ]);
+        json_of(&out)["scenarios"]["spin"]["final_heading_rad"]
+            .as_f64()
+            .unwrap()
+    };
+    assert_eq!(heading("7"), heading("7"));
+    assert_ne!(heading("7"), heading("8"));
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
@@ -175,16 +384,26 @@ fn lane_change_writes_the_tyres_friction_use() {
         "{stdout}"
     );
     let svg = std::fs::read_to_string(dir.join("friction_use.svg")).unwrap();
-    // One labelled line per tyre, and the grip limit as a dashed guide.
-    for label in ["front right", "front left", "rear right", "rear left"] {
+    // One labelled line per tyre, and the grip limit as a dashed guide, in the legend.
+    for label in [
+        "front right",
+        "front left",
+        "rear right",
+        "rear left",
+        "grip limit",
+    ] {
         assert_eq!(
-            svg.matches(&format!(">{label}</text>")).count(),
+            svg.matches(&format!(">\n{label}\n</text>")).count(),
             1,
             "{label}"
         );
     }
-    assert_eq!(svg.matches("<path").count(), 4 + 1);
     assert!(svg.contains("friction use (0 to 1)"));
+    // The cones have a legend entry in both maps (before: none).
+    for plot in ["lane_change.svg", "trajectory.svg"] {
+        let svg = std::fs::read_to_string(dir.join(plot)).unwrap();
+        assert_eq!(svg.matches(">\ncones\n</text>").count(), 1, "{plot}");
+    }
 
     let csv = std::fs::read_to_string(dir.join("telemetry.csv")).unwrap();
     let mut lines = csv.lines();
@@ -195,7 +414,7 @@ fn lane_change_writes_the_tyres_friction_use() {
         .map(|l| {
             // Empty cells (no rpm in speed mode) read as NaN.
             l.split(',')
-                .skip(1)
+                .skip(2)
                 .map(|c| {
                     if c.is_empty() {
                         f64::NAN
@@ -206,7 +425,7 @@ fn lane_change_writes_the_tyres_friction_use() {
                 .collect()
         })
         .collect();
-    let cell = |row: &Vec<f64>, column: usize| row[column - 1];
+    let cell = |row: &Vec<f64>, column: usize| row[column - 2];
     let mut peak = [0.0_f64; 4];
     for row in rows.iter().filter(|r| r[0] > 1.0) {
         for (i, (&u, &z)) in use_columns.iter().zip(&load_columns).enumerate() {
@@ -286,5 +505,9 @@ fn json_metrics_of_a_robot_run_and_the_table() {
     assert!(table.contains("DifferentialWheels"), "{table}");
     assert!(table.contains("turns made"), "{table}");
     assert!(table.contains("x real time"), "{table}");
+    // The robot's speed is plotted in m/s (before: km/h).
+    let svg = std::fs::read_to_string(out_dir.join("speed.svg")).unwrap();
+    assert!(svg.contains("robot speed (m/s)"), "{svg}");
+    assert!(!svg.contains("km/h"));
     std::fs::remove_dir_all(&dir).unwrap();
 }

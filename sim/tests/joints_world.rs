@@ -6,7 +6,7 @@
 
 use ackermann::Wheel;
 use sim::scenario::{self, Scenario, Value};
-use sim::world_file::{self, WorldVehicle};
+use sim::world_file;
 use sim::{
     BodySpec, Mounting, Obstacle, Simulation, TyreChoice, VehicleId, VehiclePlacement, World,
     WorldConfig,
@@ -177,9 +177,9 @@ fn a_car_pushes_a_200_kg_box_with_its_front_wheels() {
 }
 
 /// Every numeric metric of `test-track` on one mounting, by scenario and name.
-fn test_track(mounting: Mounting) -> Vec<(Scenario, String, f64)> {
+fn test_track(mounting: Mounting) -> Vec<(String, String, f64)> {
     let mut world = world_file::default_world();
-    if let WorldVehicle::Car(car) = &mut world.vehicle {
+    for car in &mut world.cars {
         car.mounting = mounting;
     }
     let report = scenario::run(&world, Scenario::TestTrack, &mut |_| {}).unwrap();
@@ -188,7 +188,7 @@ fn test_track(mounting: Mounting) -> Vec<(Scenario, String, f64)> {
         .iter()
         .flat_map(|r| {
             r.metrics.iter().filter_map(move |m| match m.value {
-                Value::Number(v) => Some((r.scenario, m.key.to_string(), v)),
+                Value::Number(v) => Some((r.name.clone(), m.key.to_string(), v)),
                 _ => None,
             })
         })

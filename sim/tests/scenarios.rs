@@ -12,7 +12,7 @@ fn run(world: &world_file::WorldDescription, scenario: Scenario) -> RunReport {
 }
 
 fn number(r: &RunReport, s: Scenario, key: &str) -> f64 {
-    match r.result(s).and_then(|x| x.metric(key)) {
+    match r.result(s.name()).and_then(|x| x.metric(key)) {
         Some(Value::Number(v)) => v,
         other => panic!("{s} {key}: {other:?}"),
     }
@@ -24,7 +24,7 @@ fn world_duration_caps_a_scenario() {
     let r = run(&w, Scenario::AccelSpeed);
     assert_eq!(r.sim_seconds, 0.5);
     assert_eq!(r.results[0].metric("time_0_100_s"), Some(Value::Missing));
-    let json = sim::report::to_json(&r, &[]);
+    let json = sim::report::to_json(&r, &[], &[]);
     assert!(json.contains("\"time_0_100_s\":null"), "{json}");
 }
 
@@ -35,7 +35,7 @@ fn scenarios_refuse_the_other_vehicle() {
         scenario::run(&robot, Scenario::Circle, &mut |_| {}).unwrap_err(),
         ScenarioError::WrongVehicle {
             scenario: Scenario::Circle,
-            vehicle: "DifferentialWheels"
+            vehicle: "DifferentialWheels".into()
         }
     );
     let car = world_file::default_world();

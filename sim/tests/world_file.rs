@@ -5,7 +5,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use sim::world_file::{
-    self, DEFAULT_WORLD, Location, WorldFileError, WorldFileErrorKind, WorldVehicle, parse_str,
+    self, DEFAULT_WORLD, Location, WorldFileError, WorldFileErrorKind, parse_str,
 };
 use sim::{Obstacle, RobotMode};
 use vehicle_model::{DriveType, Model};
@@ -31,7 +31,7 @@ fn default_world_is_a_bmw_x5_on_flat_ground() {
     assert!(w.warnings.is_empty());
     // The embedded text parses to the same world.
     let parsed = parse_str("d.toml", DEFAULT_WORLD).unwrap();
-    assert_eq!((parsed.config, parsed.vehicle), (w.config, w.vehicle));
+    assert_eq!((parsed.config, parsed.cars), (w.config, w.cars));
 }
 
 #[test]
@@ -153,9 +153,8 @@ rotation = [0, 0, -1, 0.75]
 "#,
     )
     .unwrap();
-    let WorldVehicle::DifferentialWheels(r) = &w.vehicle else {
-        panic!("expected a robot");
-    };
+    assert!(w.cars.is_empty());
+    let r = w.robot().unwrap();
     assert_eq!(w.config.basic_time_step_ms, 32);
     assert_eq!(r.params.axle_length, 0.052);
     assert_eq!(r.params.wheel_radius, 0.0205);
@@ -173,7 +172,7 @@ rotation = [0, 0, -1, 0.75]
         (r.placement.x, r.placement.y, r.placement.heading),
         (1.0, 2.0, -0.75)
     );
-    assert_eq!(w.vehicle_name(), "DifferentialWheels");
+    assert_eq!(w.vehicles_label(), "DifferentialWheels");
     // Kinematics by default.
     let k = parse_str("r.toml", "[differential_wheels]\n").unwrap();
     assert_eq!(k.robot().unwrap().mode, RobotMode::Kinematics);
@@ -325,6 +324,31 @@ fn unknown_model_suggests_shipped_models() {
 }
 
 #[test]
+fn a_name_that_is_neither_file_nor_model_lists_the_models() {
+    // Before: "Nope: cannot read the world file: No such file or directory".
+    let e = world_file::load("Nope").unwrap_err();
+    let WorldFileErrorKind::NeitherFileNorModel { name, .. } = &e.kind else {
+        panic!("{e:?}");
+    };
+    assert_eq!(name, "Nope");
+    let text = e.to_string();
+    for m in Model::ALL {
+        assert!(text.contains(m.webots_name()), "{text}");
+    }
+    assert!(
+        text.starts_with("'Nope' is neither a world file nor a vehicle model"),
+        "{text}"
+    );
+    assert!(
+        text.contains("BmwX5") && text.contains("ToyotaPrius"),
+        "{text}"
+    );
+    // A path is a path: the system's message.
+    let e = world_file::load("missing/w.toml").unwrap_err();
+    assert!(matches!(e.kind, WorldFileErrorKind::Io(_)), "{e:?}");
+}
+
+#[test]
 fn invalid_values() {
     // Rejected by the simulator: errors naming the key.
     let e = err("basicTimeStep = 0\n[vehicle]\n");
@@ -376,11 +400,17 @@ fn invalid_values() {
     let e = err("basicTimeStep = 10\n");
     assert!(
         e.to_string()
-            .contains("no [vehicle] and no [differential_wheels]"),
+            .contains("no [vehicle], [[vehicle]] or [differential_wheels]"),
         "{e}"
     );
-    let e = err("[vehicle]\n[differential_wheels]\n");
-    assert!(e.to_string().contains("not both"), "{e}");
+    // A car and the robot share a world (before: "not both"); names must differ.
+    let w = parse_str("w.toml", "[vehicle]\n[differential_wheels]\n").unwrap();
+    assert_eq!(w.vehicle_names(), ["Car", "DifferentialWheels"]);
+    let e = err("[vehicle]\nname = \"x\"\n[differential_wheels]\nname = \"x\"\n");
+    assert_eq!(
+        (e.location, e.key.as_deref()),
+        (at(4, 1), Some("differential_wheels.name"))
+    );
 }
 
 #[test]

@@ -1,17 +1,65 @@
 //! What a run leaves behind: the summary table, the metrics as JSON, and the output directory
-//! (telemetry CSV, SVG plots, JSON).
+//! (telemetry CSV, SVG plots, JSON). Every function takes any [`RunReport`]: a built-in
+//! scenario's, a programme's, or one put together from a run driven through the public API.
 
-mod svg;
+mod figures;
+mod plot;
 
-use std::fmt::Write as _;
+use std::fs::File;
+use std::io::{BufWriter, Write as _};
 use std::path::{Path, PathBuf};
 
-pub use svg::{Figure, Panel, Series};
+use std::fmt::Write as _;
 
-use vehicle_model::Wheel;
+use serde::ser::{Serialize, SerializeMap, Serializer};
 
-use crate::scenario::{RunReport, Scenario, Value};
-use crate::telemetry::{Sample, write_csv};
+pub use figures::{Outline, OutlineKind, figures};
+pub use plot::{Figure, Panel, PlotError, Series, SeriesKind};
+
+use crate::scenario::{Metric, RunReport, ScenarioResult, Value};
+use crate::telemetry::write_csv;
+
+/// The telemetry file.
+pub const TELEMETRY_CSV: &str = "telemetry.csv";
+/// The metrics file.
+pub const METRICS_JSON: &str = "metrics.json";
+
+/// Every file a run may write into its output directory. A run removes those of this list
+/// that it does not write itself, so that the directory never mixes two runs' outputs; other
+/// files are left alone.
+pub const KNOWN_OUTPUTS: [&str; 8] = [
+    TELEMETRY_CSV,
+    METRICS_JSON,
+    "speed.svg",
+    "rpm_gear.svg",
+    "steering.svg",
+    "lane_change.svg",
+    "friction_use.svg",
+    "trajectory.svg",
+];
+
+/// Significant digits of the metrics in JSON: the physics runs in f32 (about seven
+/// significant digits), so a seventh digit is noise.
+pub const METRIC_DIGITS: usize = 6;
+/// Significant digits of the wall-clock time and real-time factor in JSON: they vary by more
+/// than 1 % from one run to the next.
+pub const TIMING_DIGITS: usize = 3;
+
+/// `x` rounded to `digits` significant digits (the shortest decimal that reads back as that),
+/// unchanged if not finite.
+///
+/// ```
+/// assert_eq!(sim::report::significant(88.50999999999999, 6), 88.51);
+/// assert_eq!(sim::report::significant(-0.000_012_345_67, 3), -0.0000123);
+/// ```
+pub fn significant(x: f64, digits: usize) -> f64 {
+    if !x.is_finite() || x == 0.0 {
+        return x + 0.0;
+    }
+    format!("{:.*e}", digits.saturating_sub(1), x)
+        .parse()
+        .unwrap_or(x)
+}
 
 /// A value for the summary table: three significant decimals at most, `yes`/`no`, or `n/a`.
 pub fn format_value(v: Value) -> String {
@@ -52,20 +100,19 @@ pub fn summary_table(report: &RunReport) -> String {
     for r in &report.results {
         for (i, m) in r.metrics.iter().enumerate() {
             let name = if i == 0 {
-                r.scenario.name().to_string()
+                r.name.clone()
             } else {
                 String::new()
             };
-            rows.push([
-                name,
-                m.label.to_string(),
-                format_value(m.value),
-                m.unit.to_string(),
-            ]);
+            let label = match &m.vehicle {
+                Some(v) => format!("{v}: {}", m.label),
+                None => m.label.to_string(),
+            };
+            rows.push([name, label, format_value(m.value), m.unit.to_string()]);
         }
         rows.push([
             if r.metrics.is_empty() {
-                r.scenario.name().to_string()
+                r.name.clone()
             } else {
                 String::new()
             },
@@ -113,42 +160,102 @@ pub fn summary_table(report: &RunReport) -> String {
     out
 }
 
-/// `s` as a JSON string literal.
-fn json_string(s: &str) -> String {
-    let mut out = String::with_capacity(s.len() + 2);
-    out.push('"');
-    for c in s.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            '\n' => out.push_str("\\n"),
-            '\r' => out.push_str("\\r"),
-            '\t' => out.push_str("\\t"),
-            c if u32::from(c) < 0x20 => {
-                let _ = write!(out, "\\u{:04x}", u32::from(c));
-            }
-            c => out.push(c),
+/// A metric value in JSON: a number rounded to [`METRIC_DIGITS`], a boolean, or `null` for a
+/// missing or non-finite one.
+struct JsonValue(Value);
+
+impl Serialize for JsonValue {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self.0 {
+            Value::Number(x) if x.is_finite() => s.serialize_f64(significant(x, METRIC_DIGITS)),
+            Value::Bool(b) => s.serialize_bool(b),
+            Value::Number(_) | Value::Missing => s.serialize_none(),
         }
     }
-    out.push('"');
-    out
 }
 
-/// A JSON number, or `null` for NaN and ±∞ (which JSON cannot represent).
-fn json_number(x: f64) -> String {
-    if x.is_finite() {
-        format!("{x}")
-    } else {
-        "null".to_string()
+/// Metrics as a JSON object, in display order.
+struct JsonMetrics<'a>(Vec<&'a Metric>);
+
+impl Serialize for JsonMetrics<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut map = s.serialize_map(Some(self.0.len()))?;
+        for m in &self.0 {
+            map.serialize_entry(m.key, &JsonValue(m.value))?;
+        }
+        map.end()
     }
 }
 
-fn json_value(v: Value) -> String {
-    match v {
-        Value::Number(x) => json_number(x),
-        Value::Bool(b) => b.to_string(),
-        Value::Missing => "null".to_string(),
+/// A scenario's object: its run-wide metrics, `vehicles` (each vehicle's metrics) when it has
+/// per-vehicle ones, and `sim_seconds`.
+struct JsonResult<'a>(&'a ScenarioResult);
+
+impl Serialize for JsonResult<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let r = self.0;
+        let mut map = s.serialize_map(None)?;
+        for m in r.metrics.iter().filter(|m| m.vehicle.is_none()) {
+            map.serialize_entry(m.key, &JsonValue(m.value))?;
+        }
+        let mut vehicles: Vec<&str> = Vec::new();
+        for v in r.metrics.iter().filter_map(|m| m.vehicle.as_deref()) {
+            if !vehicles.contains(&v) {
+                vehicles.push(v);
+            }
+        }
+        if !vehicles.is_empty() {
+            map.serialize_entry("vehicles", &JsonVehicles(r, vehicles))?;
+        }
+        map.serialize_entry("sim_seconds", &significant(r.sim_seconds, METRIC_DIGITS))?;
+        map.end()
     }
+}
+
+/// The per-vehicle metrics of a result, by vehicle name.
+struct JsonVehicles<'a>(&'a ScenarioResult, Vec<&'a str>);
+
+impl Serialize for JsonVehicles<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut map = s.serialize_map(Some(self.1.len()))?;
+        for v in &self.1 {
+            let metrics = self
+                .0
+                .metrics
+                .iter()
+                .filter(|m| m.vehicle.as_deref() == Some(*v))
+                .collect();
+            map.serialize_entry(v, &JsonMetrics(metrics))?;
+        }
+        map.end()
+    }
+}
+
+/// The results by name, in run order.
+struct JsonResults<'a>(&'a [ScenarioResult]);
+
+impl Serialize for JsonResults<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut map = s.serialize_map(Some(self.0.len()))?;
+        for r in self.0 {
+            map.serialize_entry(&r.name, &JsonResult(r))?;
+        }
+        map.end()
+    }
+}
+
+/// The whole metrics document.
+#[derive(serde::Serialize)]
+struct JsonReport<'a> {
+    world: &'a str,
+    vehicle: &'a str,
+    scenario: &'a str,
+    sim_seconds: f64,
+    wall_seconds: f64,
+    realtime_factor: Option<f64>,
+    scenarios: JsonResults<'a>,
+    files: &'a [&'a str],
+    warnings: Vec<&'a str>,
 }
 
 /// The metrics as one JSON object:
@@ -157,279 +264,128 @@ fn json_value(v: Value) -> String {
 /// {"world": "<default world>", "vehicle": "BmwX5", "scenario": "brake",
 ///  "sim_seconds": 12.3, "wall_seconds": 0.8, "realtime_factor": 15.4,
 ///  "scenarios": {"brake": {"stop_distance_m": 42.1, …, "sim_seconds": 12.3}},
-///  "warnings": []}
+///  "files": ["telemetry.csv", …], "warnings": []}
 /// ```
 ///
-/// A metric that was not reached is `null`; `warnings` holds the world file's warnings
-/// (`world_warnings`) and the scenarios' notes.
-pub fn to_json(report: &RunReport, world_warnings: &[String]) -> String {
-    let mut out = String::from("{");
-    let _ = write!(
-        out,
-        "\"world\":{},\"vehicle\":{},\"scenario\":{},\"sim_seconds\":{},\"wall_seconds\":{},\
-         \"realtime_factor\":{},\"scenarios\":{{",
-        json_string(&report.world),
-        json_string(&report.vehicle),
-        json_string(report.scenario.name()),
-        json_number(report.sim_seconds),
-        json_number(report.wall_seconds),
-        json_number(report.realtime_factor()),
-    );
-    for (i, r) in report.results.iter().enumerate() {
-        if i > 0 {
-            out.push(',');
-        }
-        let _ = write!(out, "{}:{{", json_string(r.scenario.name()));
-        for m in &r.metrics {
-            let _ = write!(out, "{}:{},", json_string(m.key), json_value(m.value));
-        }
-        let _ = write!(out, "\"sim_seconds\":{}}}", json_number(r.sim_seconds));
-    }
-    out.push_str("},\"warnings\":[");
-    let notes = report.results.iter().flat_map(|r| r.notes.iter());
-    for (i, w) in world_warnings.iter().chain(notes).enumerate() {
-        if i > 0 {
-            out.push(',');
-        }
-        out.push_str(&json_string(w));
-    }
-    out.push_str("]}");
-    out
+/// Metrics have [`METRIC_DIGITS`] significant digits, the timings [`TIMING_DIGITS`]. A metric
+/// that was not reached is `null`; per-vehicle metrics (a programme's) are in the scenario's
+/// `vehicles` object by vehicle name; `files` lists the files the run wrote (`files`);
+/// `warnings` holds the world file's warnings (`world_warnings`) and the scenarios' notes.
+pub fn to_json(report: &RunReport, world_warnings: &[String], files: &[&str]) -> String {
+    let realtime = report.realtime_factor();
+    let doc = JsonReport {
+        world: &report.world,
+        vehicle: &report.vehicle,
+        scenario: &report.scenario,
+        sim_seconds: significant(report.sim_seconds, METRIC_DIGITS),
+        wall_seconds: significant(report.wall_seconds, TIMING_DIGITS),
+        realtime_factor: realtime
+            .is_finite()
+            .then(|| significant(realtime, TIMING_DIGITS)),
+        scenarios: JsonResults(&report.results),
+        files,
+        warnings: world_warnings
+            .iter()
+            .map(String::as_str)
+            .chain(
+                report
+                    .results
+                    .iter()
+                    .flat_map(|r| r.notes.iter().map(String::as_str)),
+            )
+            .collect(),
+    };
+    // Serialising strings, numbers and booleans into memory cannot fail.
+    serde_json::to_string(&doc).unwrap_or_default()
 }
 
-/// One series per scenario of `f(sample)` against time, skipping scenarios where `f` gives
-/// nothing.
-fn series(report: &RunReport, f: impl Fn(&Sample) -> Option<f64>) -> Vec<Series> {
-    report
-        .results
-        .iter()
-        .filter_map(|r| {
-            let points: Vec<[f64; 2]> = r
-                .telemetry
-                .samples
-                .iter()
-                .filter_map(|s| f(s).map(|v| [s.time, v]))
-                .collect();
-            (!points.is_empty()).then(|| Series {
-                name: r.scenario.name().to_string(),
-                points,
-            })
-        })
+/// Why the outputs could not be written.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum OutputError {
+    /// A file or the directory could not be written (or a stale output removed).
+    #[error("{}: {source}", path.display())]
+    Io {
+        /// The path concerned.
+        path: PathBuf,
+        /// What the system reported.
+        source: std::io::Error,
+    },
+    /// The telemetry could not be written.
+    #[error("{}: {source}", path.display())]
+    Csv {
+        /// The CSV file.
+        path: PathBuf,
+        /// What the CSV writer reported.
+        source: csv::Error,
+    },
+    /// A plot could not be drawn.
+    #[error(transparent)]
+    Plot(#[from] PlotError),
+}
+
+/// The names of the files [`write_outputs`] writes for `report`: `telemetry.csv`,
+/// `metrics.json` and the plots of [`figures`], in that order.
+pub fn output_names(report: &RunReport) -> Vec<&'static str> {
+    [TELEMETRY_CSV, METRICS_JSON]
+        .into_iter()
+        .chain(figures(report).into_iter().map(|(name, _)| name))
         .collect()
 }
 
-/// The plots of a run, by file name: speed, rpm and gear, steering, the lane change and its
-/// tyres' friction use, and the trajectory; a plot without data (e.g. rpm for a robot) is left
-/// out.
-pub fn figures(report: &RunReport) -> Vec<(&'static str, Figure)> {
-    let title = |what: &str| format!("{what}: {}, {}", report.vehicle, report.scenario);
-    let time = "time (s)".to_string();
-    let mut out = Vec::new();
-    out.push((
-        "speed.svg",
-        Figure {
-            title: title("Speed"),
-            x_label: time.clone(),
-            panels: vec![Panel {
-                y_label: "speed (km/h)".into(),
-                series: series(report, |s| Some(s.speed_kmh)),
-                steps: false,
-                guides: Vec::new(),
-            }],
-            equal_aspect: false,
-        },
-    ));
-    // Scenarios whose engine never turned (braking in neutral) would only add a flat line.
-    let rpm: Vec<Series> = series(report, |s| s.rpm)
-        .into_iter()
-        .filter(|s| s.points.iter().any(|p| p[1] != 0.0))
-        .collect();
-    let engine_runs: Vec<&str> = rpm.iter().map(|s| s.name.as_str()).collect();
-    let gears: Vec<Series> = series(report, |s| s.gear.map(f64::from))
-        .into_iter()
-        .filter(|s| engine_runs.contains(&s.name.as_str()))
-        .collect();
-    if !rpm.is_empty() {
-        out.push((
-            "rpm_gear.svg",
-            Figure {
-                title: title("Engine speed and gear"),
-                x_label: time.clone(),
-                panels: vec![
-                    Panel {
-                        y_label: "engine speed (rpm)".into(),
-                        series: rpm,
-                        steps: false,
-                        guides: Vec::new(),
-                    },
-                    Panel {
-                        y_label: "gear".into(),
-                        series: gears,
-                        steps: true,
-                        guides: Vec::new(),
-                    },
-                ],
-                equal_aspect: false,
-            },
-        ));
-    }
-    let turning = |s: &Sample| s.steering_command.is_some_and(|d| d != 0.0);
-    let steered: Vec<_> = report
-        .results
-        .iter()
-        .filter(|r| r.telemetry.samples.iter().any(turning))
-        .collect();
-    if !steered.is_empty() {
-        let mut lines = Vec::new();
-        for r in steered {
-            for (what, f) in [
-                (
-                    "commanded",
-                    (|s: &Sample| s.steering_command) as fn(&Sample) -> Option<f64>,
-                ),
-                ("measured", |s: &Sample| s.steering),
-            ] {
-                lines.push(Series {
-                    name: format!("{} ({what})", r.scenario.name()),
-                    points: r
-                        .telemetry
-                        .samples
-                        .iter()
-                        .filter_map(|s| f(s).map(|v| [s.time, v]))
-                        .collect(),
-                });
-            }
-        }
-        out.push((
-            "steering.svg",
-            Figure {
-                title: title("Steering angle (positive = right)"),
-                x_label: time,
-                panels: vec![Panel {
-                    y_label: "steering angle (rad)".into(),
-                    series: lines,
-                    steps: false,
-                    guides: Vec::new(),
-                }],
-                equal_aspect: false,
-            },
-        ));
-    }
-    if let Some(r) = report.result(Scenario::LaneChange) {
-        out.push((
-            "lane_change.svg",
-            Figure {
-                title: title("Double lane change, lateral scale exaggerated"),
-                x_label: "x (m)".into(),
-                panels: vec![Panel {
-                    y_label: "y (m)".into(),
-                    series: vec![Series {
-                        name: "rear-axle centre".into(),
-                        points: r.telemetry.samples.iter().map(|s| [s.x, s.y]).collect(),
-                    }],
-                    steps: false,
-                    guides: r.guides.clone(),
-                }],
-                equal_aspect: false,
-            },
-        ));
-    }
-    if let Some(figure) = report.result(Scenario::LaneChange).and_then(|r| {
-        friction_use(
-            &r.telemetry.samples,
-            title("Tyre friction use, double lane change"),
-        )
-    }) {
-        out.push(("friction_use.svg", figure));
-    }
-    out.push((
-        "trajectory.svg",
-        Figure {
-            title: title("Trajectory seen from above"),
-            x_label: "x (m)".into(),
-            panels: vec![Panel {
-                y_label: "y (m)".into(),
-                series: report
-                    .results
-                    .iter()
-                    .map(|r| Series {
-                        name: r.scenario.name().to_string(),
-                        points: r.telemetry.samples.iter().map(|s| [s.x, s.y]).collect(),
-                    })
-                    .collect(),
-                steps: false,
-                guides: report
-                    .results
-                    .iter()
-                    .flat_map(|r| r.guides.iter().cloned())
-                    .collect(),
-            }],
-            equal_aspect: true,
-        },
-    ));
-    out
-}
-
-/// The friction use (0–1) of each tyre against time, one line per wheel, with the grip limit
-/// (1) as a guide; `None` for samples without tyres (a robot).
-fn friction_use(samples: &[Sample], title: String) -> Option<Figure> {
-    let names = ["front right", "front left", "rear right", "rear left"];
-    let series: Vec<Series> = Wheel::ALL
-        .into_iter()
-        .zip(names)
-        .map(|(w, name)| Series {
-            name: name.to_string(),
-            points: samples
-                .iter()
-                .filter_map(|s| s.tyres.map(|t| [s.time, t[w].friction_use]))
-                .collect(),
-        })
-        .filter(|s| !s.points.is_empty())
-        .collect();
-    let span = series
-        .first()
-        .and_then(|s| Some([s.points.first()?[0], s.points.last()?[0]]))?;
-    Some(Figure {
-        title,
-        x_label: "time (s)".into(),
-        panels: vec![Panel {
-            y_label: "friction use (0 to 1)".into(),
-            series,
-            steps: false,
-            guides: vec![vec![[span[0], 1.0], [span[1], 1.0]]],
-        }],
-        equal_aspect: false,
-    })
-}
-
 /// Writes `telemetry.csv`, `metrics.json` and the plots of [`figures`] into `dir` (created
-/// if needed) and returns the paths written.
+/// if needed), removes the [`KNOWN_OUTPUTS`] of an earlier run that this one does not write,
+/// and returns the paths written.
 ///
 /// # Errors
-/// The first I/O error, with the path it concerns.
+/// The first error, with the path it concerns.
 pub fn write_outputs(
     report: &RunReport,
     world_warnings: &[String],
     dir: &Path,
-) -> Result<Vec<PathBuf>, std::io::Error> {
-    let annotate = |path: &Path, e: std::io::Error| {
-        std::io::Error::new(e.kind(), format!("{}: {e}", path.display()))
+) -> Result<Vec<PathBuf>, OutputError> {
+    let io = |path: &Path| {
+        let path = path.to_path_buf();
+        move |source| OutputError::Io { path, source }
     };
-    std::fs::create_dir_all(dir).map_err(|e| annotate(dir, e))?;
-    let mut written = Vec::new();
-    let mut write = |name: &str, text: String| -> Result<(), std::io::Error> {
+    let plots = figures(report)
+        .into_iter()
+        .map(|(name, f)| f.to_svg().map(|svg| (name, svg)))
+        .collect::<Result<Vec<_>, _>>()?;
+    let names = output_names(report);
+    std::fs::create_dir_all(dir).map_err(io(dir))?;
+    for stale in KNOWN_OUTPUTS.iter().filter(|n| !names.contains(n)) {
+        let path = dir.join(stale);
+        match std::fs::remove_file(&path) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => return Err(io(&path)(e)),
+            _ => {}
+        }
+    }
+    let mut written = Vec::with_capacity(names.len());
+    let path = dir.join(TELEMETRY_CSV);
+    let file = File::create(&path).map_err(io(&path))?;
+    write_csv(
+        BufWriter::new(file),
+        report.results.iter().flat_map(|r| &r.telemetry),
+    )
+    .map_err(|source| OutputError::Csv {
+        path: path.clone(),
+        source,
+    })?;
+    written.push(path);
+    let mut write = |name: &str, text: &str| -> Result<(), OutputError> {
         let path = dir.join(name);
-        std::fs::write(&path, text).map_err(|e| annotate(&path, e))?;
+        let mut file = File::create(&path).map_err(io(&path))?;
+        file.write_all(text.as_bytes()).map_err(io(&path))?;
         written.push(path);
         Ok(())
     };
     write(
-        "telemetry.csv",
-        write_csv(report.results.iter().map(|r| &r.telemetry)),
+        METRICS_JSON,
+        &(to_json(report, world_warnings, &names) + "\n"),
     )?;
-    write("metrics.json", to_json(report, world_warnings) + "\n")?;
-    for (name, figure) in figures(report) {
-        write(name, figure.to_svg())?;
+    for (name, svg) in &plots {
+        write(name, svg)?;
     }
     Ok(written)
 }
@@ -437,76 +393,75 @@ pub fn write_outputs(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::TyreTelemetry;
     use crate::scenario::{Metric, ScenarioResult};
-    use crate::telemetry::Telemetry;
-    use vehicle_model::PerWheel;
+    use crate::telemetry::{Sample, Telemetry};
 
     fn report() -> RunReport {
         RunReport {
             world: "w \"1\".toml".into(),
             vehicle: "BmwX5".into(),
-            scenario: Scenario::Brake,
+            scenario: "brake".into(),
             results: vec![ScenarioResult {
-                scenario: Scenario::Brake,
+                name: "brake".into(),
                 metrics: vec![
-                    Metric::number("stop_distance_m", "stopping distance", "m", 42.123_456),
+                    Metric::number("stop_distance_m", "stopping distance", "m", 42.123_456_7),
                     Metric::maybe("stop_time_s", "stopping time", "s", None),
                     Metric::flag("at_rest", "at rest", true),
+                    Metric::number("initial_speed_kmh", "speed", "km/h", 88.50999999999999),
                 ],
                 sim_seconds: 12.5,
-                telemetry: Telemetry {
+                telemetry: vec![Telemetry {
                     scenario: "brake".into(),
                     samples: vec![Sample::default()],
-                },
+                    ..Telemetry::default()
+                }],
                 notes: vec!["a note".into()],
-                guides: Vec::new(),
+                ..ScenarioResult::default()
             }],
             sim_seconds: 12.5,
-            wall_seconds: 0.5,
+            wall_seconds: 0.512_345,
+            obstacles: Vec::new(),
         }
     }
 
     #[test]
-    fn json_has_every_metric_and_escapes_strings() {
-        let j = to_json(&report(), &["warn\n".into()]);
+    fn json_rounds_to_meaningful_digits_and_escapes_strings() {
+        let j = to_json(&report(), &["warn\n".into()], &["telemetry.csv"]);
+        // 42.1234567 has 6 significant digits kept, 88.50999999999999 reads 88.51; the wall
+        // time 3, and the real-time factor 12.5 / 0.512345 = 24.397… reads 24.4.
         assert_eq!(
             j,
             "{\"world\":\"w \\\"1\\\".toml\",\"vehicle\":\"BmwX5\",\"scenario\":\"brake\",\
-             \"sim_seconds\":12.5,\"wall_seconds\":0.5,\"realtime_factor\":25,\"scenarios\":\
-             {\"brake\":{\"stop_distance_m\":42.123456,\"stop_time_s\":null,\"at_rest\":true,\
-             \"sim_seconds\":12.5}},\"warnings\":[\"warn\\n\",\"a note\"]}"
+             \"sim_seconds\":12.5,\"wall_seconds\":0.512,\"realtime_factor\":24.4,\"scenarios\":\
+             {\"brake\":{\"stop_distance_m\":42.1235,\"stop_time_s\":null,\"at_rest\":true,\
+             \"initial_speed_kmh\":88.51,\"sim_seconds\":12.5}},\"files\":[\"telemetry.csv\"],\
+             \"warnings\":[\"warn\\n\",\"a note\"]}"
         );
     }
 
     #[test]
-    fn friction_use_has_one_labelled_line_per_tyre() {
-        let tyres = PerWheel::from_fn(|w| TyreTelemetry {
-            friction_use: if w.is_front() { 0.5 } else { 0.25 },
-            ..TyreTelemetry::default()
-        });
-        let samples: Vec<Sample> = (0..3)
-            .map(|i| Sample {
-                time: 0.01 * f64::from(i),
-                tyres: Some(tyres),
-                ..Sample::default()
-            })
-            .collect();
-        let f = friction_use(&samples, "t".into()).unwrap();
-        let panel = &f.panels[0];
-        let names: Vec<&str> = panel.series.iter().map(|s| s.name.as_str()).collect();
-        assert_eq!(
-            names,
-            ["front right", "front left", "rear right", "rear left"]
-        );
-        assert_eq!(
-            panel.series[0].points,
-            [[0.0, 0.5], [0.01, 0.5], [0.02, 0.5]]
-        );
-        assert_eq!(panel.series[3].points[2], [0.02, 0.25]);
-        assert_eq!(panel.guides, [vec![[0.0, 1.0], [0.02, 1.0]]]);
-        // A robot has no tyres.
-        assert_eq!(friction_use(&[Sample::default()], "t".into()), None);
+    fn json_groups_per_vehicle_metrics() {
+        let mut r = report();
+        r.results[0].metrics = vec![
+            Metric::number("distance_m", "distance", "m", 10.0).of("a"),
+            Metric::number("distance_m", "distance", "m", 20.0).of("b"),
+            Metric::flag("touched", "touched", false),
+        ];
+        let j: serde_json::Value = serde_json::from_str(&to_json(&r, &[], &[])).unwrap();
+        let brake = &j["scenarios"]["brake"];
+        assert_eq!(brake["vehicles"]["a"]["distance_m"], 10.0);
+        assert_eq!(brake["vehicles"]["b"]["distance_m"], 20.0);
+        assert_eq!(brake["touched"], false);
+        let t = summary_table(&r);
+        assert!(t.contains("b: distance"), "{t}");
+    }
+
+    #[test]
+    fn significant_digits() {
+        assert_eq!(significant(88.50999999999999, 6), 88.51);
+        assert_eq!(significant(1234567.0, 3), 1230000.0);
+        assert_eq!(significant(-0.0, 3).to_string(), "0");
+        assert!(significant(f64::NAN, 3).is_nan());
     }
 
     #[test]
@@ -515,10 +470,39 @@ mod tests {
         assert!(t.contains("brake     stopping distance  42.12  m"), "{t}");
         assert!(t.contains("stopping time"));
         assert!(t.contains("n/a"));
-        assert!(t.contains("(25 x real time)"));
+        assert!(t.contains("(24.40 x real time)"), "{t}");
         assert_eq!(format_value(Value::Number(7.123_456)), "7.123");
         assert_eq!(format_value(Value::Number(3.0)), "3");
         assert_eq!(format_value(Value::Bool(false)), "no");
         assert_eq!(format_value(Value::Number(-0.000_04)), "0.000");
+    }
+
+    #[test]
+    fn a_run_replaces_the_known_outputs_of_an_earlier_one() {
+        let dir = std::env::temp_dir().join(format!("sim-report-stale-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        // An earlier lane-change run left its plot; the user keeps notes beside it.
+        std::fs::write(dir.join("lane_change.svg"), "old").unwrap();
+        std::fs::write(dir.join("notes.txt"), "mine").unwrap();
+        let written = write_outputs(&report(), &[], &dir).unwrap();
+        let mut on_disk: Vec<String> = std::fs::read_dir(&dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        on_disk.sort();
+        assert_eq!(
+            on_disk,
+            [
+                "metrics.json",
+                "notes.txt",
+                "speed.svg",
+                "telemetry.csv",
+                "trajectory.svg"
+            ]
+        );
+        let names: Vec<_> = written.iter().map(|p| p.file_name().unwrap()).collect();
+        assert_eq!(names, output_names(&report()));
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

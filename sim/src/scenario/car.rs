@@ -6,7 +6,7 @@ use vehicle_model::Driver;
 
 use crate::placement::car_placement;
 use crate::simulation::Simulation;
-use crate::telemetry::{Sample, Telemetry};
+use crate::telemetry::{Sample, Telemetry, VehicleKind};
 use crate::vehicle::{VehicleId, VehicleSpec, VehicleState};
 use crate::world::World;
 use crate::world_file::{CarDescription, WorldDescription};
@@ -23,11 +23,13 @@ const PROGRESS_PERIOD: f64 = 0.5;
 pub(crate) struct CarRig {
     sim: Simulation,
     id: VehicleId,
+    name: String,
     state: VehicleState,
     spec: VehicleSpec,
     samples: Vec<Sample>,
     notes: Vec<String>,
     guides: Vec<Vec<[f64; 2]>>,
+    cones: Vec<[f64; 2]>,
     next_progress: f64,
     /// The world's time limit for this scenario (s).
     pub(crate) limit: f64,
@@ -45,14 +47,6 @@ impl CarRig {
         expected: f64,
     ) -> Result<Self, ScenarioError> {
         let mut sim = Simulation::new(World::new(desc.config.clone())?);
-        let mut notes = Vec::new();
-        let [ax, ay, _, angle] = car.params.rotation;
-        if angle != 0.0 && (ax != 0.0 || ay != 0.0) {
-            notes.push(format!(
-                "the car's rotation {:?} tilts it: only its heading is used, it starts level",
-                car.params.rotation
-            ));
-        }
         // The world file validated the params already: the report is empty.
         let (id, _) = sim.add_car_with(
             car.params.clone(),
@@ -62,14 +56,17 @@ impl CarRig {
         )?;
         let vehicle = sim.world().vehicle(id)?;
         let (state, spec) = (*vehicle.state(), *vehicle.spec());
+        let samples = vec![Sample::of_car(&sim, id)?];
         Ok(CarRig {
             sim,
             id,
+            name: car.name.clone(),
             state,
             spec,
-            samples: Vec::new(),
-            notes,
+            samples,
+            notes: Vec::new(),
             guides: Vec::new(),
+            cones: Vec::new(),
             next_progress: 0.0,
             limit,
             expected,
@@ -128,16 +125,17 @@ impl CarRig {
     }
 
     /// One `wbu_driver_step`: the driver turns the readings of the last step into commands,
-    /// the world advances one `basicTimeStep` with them, and the new state is recorded.
+    /// the world advances one `basicTimeStep` with them, and the new state is recorded (after
+    /// the state at time 0, recorded when the rig was built).
     pub(crate) fn step(&mut self, progress: &mut dyn FnMut(f64, f64)) -> Result<(), ScenarioError> {
         self.sim.step()?;
-        let t = self.sim.telemetry(self.id)?;
-        self.state = t.state;
-        let d = self.sim.driver(self.id)?;
-        self.samples.push(Sample::of_car(&t, d));
-        if t.time >= self.next_progress {
-            progress(t.time, self.expected);
-            self.next_progress = t.time + PROGRESS_PERIOD;
+        let sample = Sample::of_car(&self.sim, self.id)?;
+        self.state = *self.sim.world().vehicle(self.id)?.state();
+        let t = sample.time;
+        self.samples.push(sample);
+        if t >= self.next_progress {
+            progress(t, self.expected);
+            self.next_progress = t + PROGRESS_PERIOD;
         }
         Ok(())
     }
@@ -145,6 +143,11 @@ impl CarRig {
     /// Adds a line of the course (m, world frame) to draw under the trajectory.
     pub(crate) fn guide(&mut self, line: Vec<[f64; 2]>) {
         self.guides.push(line);
+    }
+
+    /// Adds a cone of the course (m, world frame).
+    pub(crate) fn cone(&mut self, at: [f64; 2]) {
+        self.cones.push(at);
     }
 
     /// Adds a message for the user.
@@ -160,15 +163,18 @@ impl CarRig {
     /// The scenario's result.
     pub(crate) fn finish(self, scenario: Scenario, metrics: Vec<Metric>) -> ScenarioResult {
         ScenarioResult {
-            scenario,
+            name: scenario.name().to_string(),
             metrics,
             sim_seconds: self.sim.world().time(),
-            telemetry: Telemetry {
+            telemetry: vec![Telemetry {
                 scenario: scenario.name().to_string(),
+                vehicle: self.name,
+                kind: VehicleKind::Car,
                 samples: self.samples,
-            },
+            }],
             notes: self.notes,
             guides: self.guides,
+            cones: self.cones,
         }
     }
 }

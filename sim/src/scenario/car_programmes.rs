@@ -38,6 +38,9 @@ const MIN_LOOKAHEAD: f64 = 4.0;
 /// Longest look-ahead of the lane-change driver (m): beyond it the driver would cut the
 /// 25–30 m lane sections.
 const MAX_LOOKAHEAD: f64 = 25.0;
+/// Largest distance between two cones along a lane edge of the lane change (m), as ISO
+/// 3888-1 courses are laid out.
+const CONE_SPACING: f64 = 5.0;
 /// Window of the moving average applied to the lateral acceleration (s): the body's
 /// acceleration is a finite difference of the solver's velocities, whose step-to-step jitter
 /// is not a vehicle behaviour.
@@ -62,10 +65,10 @@ pub(crate) fn run(
         Scenario::Brake => (brake, t0100 + 8.0),
         Scenario::Circle => (circle, 40.0),
         Scenario::LaneChange => (lane_change, 0.6 * t0100 + 12.0),
-        Scenario::TestTrack | Scenario::Square | Scenario::Spin => {
+        Scenario::TestTrack | Scenario::Square | Scenario::Spin | Scenario::Programme => {
             return Err(ScenarioError::WrongVehicle {
                 scenario,
-                vehicle: world.vehicle_name(),
+                vehicle: world.vehicles_label(),
             });
         }
     };
@@ -428,6 +431,12 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
             for side in [-0.5, 0.5] {
                 let y = g.center + side * g.width;
                 rig.guide(vec![to_world(g.start, y), to_world(g.end, y)]);
+                // Cones at both ends of each edge and at most CONE_SPACING apart between.
+                let n = ((g.end - g.start) / CONE_SPACING).ceil().max(1.0) as usize;
+                for k in 0..=n {
+                    let x = g.start + (g.end - g.start) * k as f64 / n as f64;
+                    rig.cone(to_world(x, y));
+                }
             }
         }
     }

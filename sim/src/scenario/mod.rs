@@ -17,11 +17,17 @@
 //! | `test-track` | car | all five above, each on a fresh world | all of the above |
 //! | `square` | robot | a square of side 10 × `axleLength`, open loop | final pose, `closure_error_m` |
 //! | `spin` | robot | turns on the spot for 10 s | final pose, `turns` |
+//! | `programme` | any | every car's and the robot's programme from the world file | per vehicle: [`motion_metrics`]; for several cars `min_gap_m`, `touched` |
+//!
+//! The built-in car scenarios need a world with exactly one car (and no robot), the robot
+//! scenarios one with exactly the robot; `programme` runs any world.
 
 mod car;
 mod car_programmes;
 mod fit;
 mod lane;
+mod metrics;
+mod programme;
 mod robot;
 
 use core::fmt;
@@ -29,10 +35,13 @@ use std::time::Instant;
 
 pub use fit::{Circle, fit_circle};
 pub use lane::{LaneSection, double_lane_change};
+pub use metrics::motion_metrics;
+pub use programme::PROGRAMME_TAIL;
 
 use crate::error::SimError;
+use crate::report::Outline;
 use crate::telemetry::Telemetry;
-use crate::world_file::{WorldDescription, WorldVehicle};
+use crate::world_file::WorldDescription;
 
 /// A driving programme.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -53,11 +62,13 @@ pub enum Scenario {
     Square,
     /// A DifferentialWheels robot turns on the spot.
     Spin,
+    /// The programmes of the world file's cars and robot.
+    Programme,
 }
 
 impl Scenario {
     /// Every scenario.
-    pub const ALL: [Scenario; 8] = [
+    pub const ALL: [Scenario; 9] = [
         Scenario::AccelSpeed,
         Scenario::AccelTorque,
         Scenario::Brake,
@@ -66,6 +77,7 @@ impl Scenario {
         Scenario::TestTrack,
         Scenario::Square,
         Scenario::Spin,
+        Scenario::Programme,
     ];
 
     /// The scenarios `test-track` runs, in order.
@@ -88,6 +100,7 @@ impl Scenario {
             Scenario::TestTrack => "test-track",
             Scenario::Square => "square",
             Scenario::Spin => "spin",
+            Scenario::Programme => "programme",
         }
     }
 
@@ -107,20 +120,48 @@ impl Scenario {
             Scenario::TestTrack => "all five car scenarios in turn",
             Scenario::Square => "DifferentialWheels: drive a square, open loop",
             Scenario::Spin => "DifferentialWheels: turn on the spot for 10 s",
+            Scenario::Programme => "the world file's driving programmes, every car and robot",
         }
     }
 
-    /// True for the scenarios of a car, false for those of a DifferentialWheels robot.
-    pub const fn is_for_car(self) -> bool {
-        !matches!(self, Scenario::Square | Scenario::Spin)
+    /// What vehicles the scenario drives.
+    pub const fn needs(self) -> Needs {
+        match self {
+            Scenario::Square | Scenario::Spin => Needs::OneRobot,
+            Scenario::Programme => Needs::Any,
+            _ => Needs::OneCar,
+        }
     }
 
-    /// What `vehicle-sim` runs on `world` without `--scenario`: `test-track` for a car,
-    /// `square` for a robot.
+    /// What `vehicle-sim` runs on `world` without `--scenario`: `programme` when the world
+    /// has a programme or more than one vehicle, else `test-track` for a car and `square` for
+    /// a robot.
     pub fn default_for(world: &WorldDescription) -> Scenario {
-        match world.vehicle {
-            WorldVehicle::Car(_) => Scenario::TestTrack,
-            WorldVehicle::DifferentialWheels(_) => Scenario::Square,
+        match (world.cars.len(), &world.robot) {
+            _ if world.has_programme() => Scenario::Programme,
+            (1, None) => Scenario::TestTrack,
+            (0, Some(_)) => Scenario::Square,
+            _ => Scenario::Programme,
+        }
+    }
+
+    /// Checks that `world` holds what the scenario drives.
+    ///
+    /// # Errors
+    /// [`ScenarioError::WrongVehicle`] naming what the world holds.
+    pub fn check(self, world: &WorldDescription) -> Result<(), ScenarioError> {
+        let ok = match self.needs() {
+            Needs::OneCar => world.cars.len() == 1 && world.robot.is_none(),
+            Needs::OneRobot => world.cars.is_empty() && world.robot.is_some(),
+            Needs::Any => true,
+        };
+        if ok {
+            Ok(())
+        } else {
+            Err(ScenarioError::WrongVehicle {
+                scenario: self,
+                vehicle: world.vehicles_label(),
+            })
         }
     }
 
@@ -143,8 +184,20 @@ impl Scenario {
             Scenario::TestTrack => 360.0,
             Scenario::Square => 600.0,
             Scenario::Spin => 10.0,
+            Scenario::Programme => f64::INFINITY,
         }
     }
+}
+
+/// What a scenario drives.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Needs {
+    /// A world with exactly one car and no robot.
+    OneCar,
+    /// A world with the DifferentialWheels robot and no car.
+    OneRobot,
+    /// Any world.
+    Any,
 }
 
 impl fmt::Display for Scenario {
@@ -175,7 +228,7 @@ impl Value {
 }
 
 /// A measured result of a scenario.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Metric {
     /// Key in the JSON output, unit suffixed (e.g. `time_0_100_s`).
     pub key: &'static str,
@@ -185,10 +238,14 @@ pub struct Metric {
     pub unit: &'static str,
     /// The value.
     pub value: Value,
+    /// The vehicle it is about, by name, when a run drives several (`None`: the run's one
+    /// vehicle, or the run as a whole).
+    pub vehicle: Option<String>,
 }
 
 impl Metric {
-    pub(crate) const fn number(
+    /// A number in `unit` under `key` (unit-suffixed, e.g. `distance_m`) with a table `label`.
+    pub const fn number(
         key: &'static str,
         label: &'static str,
         unit: &'static str,
@@ -199,10 +256,12 @@ impl Metric {
             label,
             unit,
             value: Value::Number(v),
+            vehicle: None,
         }
     }
 
-    pub(crate) fn maybe(
+    /// A number, or [`Value::Missing`] for `None` or a non-finite value.
+    pub fn maybe(
         key: &'static str,
         label: &'static str,
         unit: &'static str,
@@ -215,59 +274,95 @@ impl Metric {
             value: v
                 .filter(|v| v.is_finite())
                 .map_or(Value::Missing, Value::Number),
+            vehicle: None,
         }
     }
 
-    pub(crate) const fn flag(key: &'static str, label: &'static str, v: bool) -> Self {
+    /// A yes/no outcome.
+    pub const fn flag(key: &'static str, label: &'static str, v: bool) -> Self {
         Metric {
             key,
             label,
             unit: "",
             value: Value::Bool(v),
+            vehicle: None,
         }
+    }
+
+    /// The same metric about the vehicle named `vehicle`.
+    pub fn of(mut self, vehicle: &str) -> Self {
+        self.vehicle = Some(vehicle.to_string());
+        self
     }
 }
 
-/// The outcome of one single scenario.
-#[derive(Debug, Clone, PartialEq)]
+/// The outcome of one single scenario, or of any run driven through the public API.
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct ScenarioResult {
-    /// Which.
-    pub scenario: Scenario,
+    /// Its name (a [`Scenario::name`] or any other, e.g. `"my-route"`).
+    pub name: String,
     /// The measured results, in display order.
     pub metrics: Vec<Metric>,
     /// Simulated time (s).
     pub sim_seconds: f64,
-    /// Every step's sample.
-    pub telemetry: Telemetry,
+    /// Every vehicle's samples (from time 0, then one per step).
+    pub telemetry: Vec<Telemetry>,
     /// Messages the run produced (e.g. a driver warning), for stderr.
     pub notes: Vec<String>,
-    /// Lines of the course drawn under the trajectory (m, world frame), e.g. the cone lines of
+    /// Lines of the course drawn under the trajectory (m, world frame), e.g. the lane edges of
     /// the lane change.
     pub guides: Vec<Vec<[f64; 2]>>,
+    /// Cones of the course (m, world frame), drawn as markers.
+    pub cones: Vec<[f64; 2]>,
 }
 
 impl ScenarioResult {
-    /// The metric `key`, if the scenario reports it.
+    /// A result named `name` with `telemetry`, lasting the last sample's time; no metrics,
+    /// notes, guides or cones yet.
+    pub fn new(name: &str, telemetry: Vec<Telemetry>) -> Self {
+        let sim_seconds = telemetry
+            .iter()
+            .filter_map(|t| t.samples.last().map(|s| s.time))
+            .fold(0.0, f64::max);
+        ScenarioResult {
+            name: name.to_string(),
+            sim_seconds,
+            telemetry,
+            ..ScenarioResult::default()
+        }
+    }
+
+    /// The first metric `key`, if the scenario reports it.
     pub fn metric(&self, key: &str) -> Option<Value> {
         self.metrics.iter().find(|m| m.key == key).map(|m| m.value)
     }
+
+    /// The metric `key` of the vehicle named `vehicle`.
+    pub fn metric_of(&self, vehicle: &str, key: &str) -> Option<Value> {
+        self.metrics
+            .iter()
+            .find(|m| m.key == key && m.vehicle.as_deref() == Some(vehicle))
+            .map(|m| m.value)
+    }
 }
 
-/// The outcome of a `vehicle-sim` run.
-#[derive(Debug, Clone, PartialEq)]
+/// The outcome of a `vehicle-sim` run, or of any run put together through the public API.
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct RunReport {
     /// Where the world came from.
     pub world: String,
-    /// What drove: the car model, or `DifferentialWheels`.
+    /// What drove: the car model, `DifferentialWheels`, or the vehicles by name.
     pub vehicle: String,
-    /// The scenario asked for.
-    pub scenario: Scenario,
+    /// The scenario asked for, by name.
+    pub scenario: String,
     /// One result per single scenario run.
     pub results: Vec<ScenarioResult>,
     /// Total simulated time (s).
     pub sim_seconds: f64,
     /// Wall-clock time of the simulation (s).
     pub wall_seconds: f64,
+    /// The world's boxes, ramps and dynamic boxes (at their start), seen from above.
+    pub obstacles: Vec<Outline>,
 }
 
 impl RunReport {
@@ -280,59 +375,31 @@ impl RunReport {
         }
     }
 
-    /// The result of `scenario`, if it ran.
-    pub fn result(&self, scenario: Scenario) -> Option<&ScenarioResult> {
-        self.results.iter().find(|r| r.scenario == scenario)
+    /// The result named `name`, if it ran.
+    pub fn result(&self, name: &str) -> Option<&ScenarioResult> {
+        self.results.iter().find(|r| r.name == name)
     }
 }
 
 /// Why a scenario could not run.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum ScenarioError {
-    /// The scenario is for the other kind of vehicle.
+    /// The world does not hold what the scenario drives (see [`Scenario::needs`]).
+    #[error("scenario '{scenario}' needs {}, but the world holds {vehicle}", match scenario.needs() {
+        Needs::OneCar => "a world with one car",
+        Needs::OneRobot => "a world with one DifferentialWheels robot",
+        Needs::Any => "any world",
+    })]
     WrongVehicle {
         /// The scenario asked for.
         scenario: Scenario,
-        /// What the world holds.
-        vehicle: &'static str,
+        /// What the world holds ([`WorldDescription::vehicles_label`]).
+        vehicle: String,
     },
     /// The simulator refused the world or diverged.
-    Sim(SimError),
-}
-
-impl fmt::Display for ScenarioError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            ScenarioError::WrongVehicle { scenario, vehicle } => {
-                let wanted = if scenario.is_for_car() {
-                    "a car"
-                } else {
-                    "a DifferentialWheels robot"
-                };
-                write!(
-                    f,
-                    "scenario '{scenario}' needs {wanted}, but the world holds a {vehicle}"
-                )
-            }
-            ScenarioError::Sim(e) => write!(f, "simulation failed: {e}"),
-        }
-    }
-}
-
-impl std::error::Error for ScenarioError {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match self {
-            ScenarioError::Sim(e) => Some(e),
-            ScenarioError::WrongVehicle { .. } => None,
-        }
-    }
-}
-
-impl From<SimError> for ScenarioError {
-    fn from(e: SimError) -> Self {
-        ScenarioError::Sim(e)
-    }
+    #[error("simulation failed: {0}")]
+    Sim(#[from] SimError),
 }
 
 /// Where a run is, for a progress display.
@@ -358,22 +425,35 @@ pub(crate) fn limit(scenario: Scenario, world: &WorldDescription) -> f64 {
         .map_or(scenario.time_limit(), |d| d.min(scenario.time_limit()))
 }
 
+/// The notes of a world before it runs: a car whose rotation tilts it starts level.
+fn world_notes(world: &WorldDescription) -> Vec<String> {
+    world
+        .cars
+        .iter()
+        .filter_map(|car| {
+            let [ax, ay, _, angle] = car.params.rotation;
+            (angle != 0.0 && (ax != 0.0 || ay != 0.0)).then(|| {
+                format!(
+                    "the rotation {:?} of {} tilts it: only its heading is used, it starts level",
+                    car.params.rotation, car.name
+                )
+            })
+        })
+        .collect()
+}
+
 /// Runs `scenario` on `world`, calling `progress` every few simulated seconds.
 ///
 /// # Errors
-/// [`ScenarioError::WrongVehicle`] for a car scenario in a robot world (or the reverse), and
-/// [`ScenarioError::Sim`] if the world cannot be built or the simulation diverges.
+/// [`ScenarioError::WrongVehicle`] when the world does not hold what the scenario drives
+/// ([`Scenario::check`]), and [`ScenarioError::Sim`] if the world cannot be built or the
+/// simulation diverges.
 pub fn run(
     world: &WorldDescription,
     scenario: Scenario,
     progress: &mut dyn FnMut(Progress),
 ) -> Result<RunReport, ScenarioError> {
-    if scenario.is_for_car() != matches!(world.vehicle, WorldVehicle::Car(_)) {
-        return Err(ScenarioError::WrongVehicle {
-            scenario,
-            vehicle: world.vehicle_name(),
-        });
-    }
+    scenario.check(world)?;
     let start = Instant::now();
     let parts = scenario.parts();
     let count = parts.len();
@@ -393,19 +473,32 @@ pub fn run(
                 fraction: (index as f64 + within) / count as f64,
             });
         };
-        let result = match &world.vehicle {
-            WorldVehicle::Car(car) => car_programmes::run(world, car, part, &mut report)?,
-            WorldVehicle::DifferentialWheels(robot) => robot::run(world, robot, part, &mut report)?,
+        let result = match (part.needs(), world.cars.first(), &world.robot) {
+            (Needs::Any, ..) => programme::run(world, &mut report)?,
+            (Needs::OneCar, Some(car), _) => car_programmes::run(world, car, part, &mut report)?,
+            (_, _, Some(robot)) => robot::run(world, robot, part, &mut report)?,
+            _ => {
+                return Err(ScenarioError::WrongVehicle {
+                    scenario,
+                    vehicle: world.vehicles_label(),
+                });
+            }
         };
         results.push(result);
+    }
+    if let Some(first) = results.first_mut() {
+        let mut notes = world_notes(world);
+        notes.append(&mut first.notes);
+        first.notes = notes;
     }
     let sim_seconds = results.iter().map(|r| r.sim_seconds).sum();
     Ok(RunReport {
         world: world.source.clone(),
-        vehicle: world.vehicle_name().to_string(),
-        scenario,
+        vehicle: world.vehicles_label(),
+        scenario: scenario.name().to_string(),
         results,
         sim_seconds,
         wall_seconds: start.elapsed().as_secs_f64(),
+        obstacles: Outline::of_world(&world.config),
     })
 }

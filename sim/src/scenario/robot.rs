@@ -1,14 +1,13 @@
 //! The DifferentialWheels scenarios, driven through `wb_differential_wheels_set_speed`.
 
-use core::f64::consts::{FRAC_PI_2, PI, TAU};
+use core::f64::consts::{FRAC_PI_2, TAU};
 
 use crate::diff_wheels::RobotId;
-use crate::telemetry::{Sample, Telemetry};
+use crate::telemetry::{Sample, Telemetry, VehicleKind};
 use crate::world::World;
 use crate::world_file::{RobotDescription, WorldDescription};
 
-use super::car::KMH;
-use super::{Metric, Scenario, ScenarioError, ScenarioResult, limit};
+use super::{Metric, Scenario, ScenarioError, ScenarioResult, limit, motion_metrics};
 
 /// Fraction of `maxSpeed` the scenarios drive the wheels at.
 const SPEED_FRACTION: f64 = 0.5;
@@ -18,6 +17,7 @@ const SQUARE_SIDE_AXLES: f64 = 10.0;
 struct RobotRig {
     world: World,
     id: RobotId,
+    name: String,
     samples: Vec<Sample>,
     limit: f64,
     expected: f64,
@@ -32,10 +32,12 @@ impl RobotRig {
     ) -> Result<Self, ScenarioError> {
         let mut world = World::new(desc.config.clone())?;
         let id = world.add_differential_wheels(robot.params, robot.mode, robot.placement)?;
+        let samples = vec![Sample::of_robot(&world, id)?];
         Ok(RobotRig {
             world,
             id,
-            samples: Vec::new(),
+            name: robot.name.clone(),
+            samples,
             limit,
             expected: limit,
             next_progress: 0.0,
@@ -66,18 +68,7 @@ impl RobotRig {
                 break;
             }
             self.world.step()?;
-            let robot = self.world.robot(self.id)?;
-            let pose = robot.pose();
-            let [l, r] = robot.wheel_speeds();
-            let radius = robot.params().wheel_radius;
-            self.samples.push(Sample {
-                time: self.world.time(),
-                x: pose.position[0],
-                y: pose.position[1],
-                yaw: pose.heading,
-                speed_kmh: 0.5 * (l + r) * radius * KMH,
-                ..Sample::default()
-            });
+            self.samples.push(Sample::of_robot(&self.world, self.id)?);
             if self.time() >= self.next_progress {
                 progress(self.time(), self.expected);
                 self.next_progress = self.time() + 0.5;
@@ -120,33 +111,19 @@ impl RobotRig {
         scenario: Scenario,
         mut metrics: Vec<Metric>,
     ) -> Result<ScenarioResult, ScenarioError> {
-        let robot = self.world.robot(self.id)?;
-        let pose = robot.pose();
-        let heading = (pose.heading + PI).rem_euclid(TAU) - PI;
-        let path: f64 = self
-            .samples
-            .windows(2)
-            .map(|w| match w {
-                [a, b] => (b.x - a.x).hypot(b.y - a.y),
-                _ => 0.0,
-            })
-            .sum();
-        metrics.extend([
-            Metric::number("final_x_m", "final x", "m", pose.position[0]),
-            Metric::number("final_y_m", "final y", "m", pose.position[1]),
-            Metric::number("final_heading_rad", "final heading", "rad", heading),
-            Metric::number("distance_m", "path length", "m", path),
-        ]);
+        let telemetry = Telemetry {
+            scenario: scenario.name().to_string(),
+            vehicle: self.name,
+            kind: VehicleKind::Robot,
+            samples: self.samples,
+        };
+        metrics.extend(motion_metrics(&telemetry));
         Ok(ScenarioResult {
-            scenario,
+            name: scenario.name().to_string(),
             metrics,
             sim_seconds: self.world.time(),
-            telemetry: Telemetry {
-                scenario: scenario.name().to_string(),
-                samples: self.samples,
-            },
-            notes: Vec::new(),
-            guides: Vec::new(),
+            telemetry: vec![telemetry],
+            ..ScenarioResult::default()
         })
     }
 }
@@ -190,9 +167,10 @@ pub(crate) fn run(
         | Scenario::Brake
         | Scenario::Circle
         | Scenario::LaneChange
-        | Scenario::TestTrack => Err(ScenarioError::WrongVehicle {
+        | Scenario::TestTrack
+        | Scenario::Programme => Err(ScenarioError::WrongVehicle {
             scenario,
-            vehicle: world.vehicle_name(),
+            vehicle: world.vehicles_label(),
         }),
         Scenario::Square => {
             let side = SQUARE_SIDE_AXLES * p.axle_length;

@@ -159,6 +159,18 @@ impl Vehicle {
         self.id
     }
 
+    /// The rapier bodies of this car: the chassis, then (on joints) the knuckles and wheels.
+    pub(crate) fn bodies(&self) -> Vec<RigidBodyHandle> {
+        match &self.parts {
+            Parts::Cast(p) => vec![p.chassis],
+            Parts::Joints(p) => [p.chassis]
+                .into_iter()
+                .chain(p.knuckles)
+                .chain(p.wheels.iter().copied())
+                .collect(),
+        }
+    }
+
     /// The description the car was built from.
     pub fn spec(&self) -> &VehicleSpec {
         &self.spec

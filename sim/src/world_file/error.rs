@@ -69,6 +69,14 @@ pub enum WorldFileErrorKind {
         /// Valid names, best first.
         suggestions: Vec<String>,
     },
+    /// `--world` (or `VEHICLE_WORLD`) named neither an existing file nor a shipped model; the
+    /// message lists every shipped model.
+    NeitherFileNorModel {
+        /// The name given.
+        name: String,
+        /// The closest model names, best first (possibly none).
+        suggestions: Vec<String>,
+    },
     /// A value of the right type that the simulator refuses, e.g. `basicTimeStep = 0`.
     InvalidValue(String),
     /// A required key or section is absent, or two sections exclude each other.
@@ -85,6 +93,10 @@ pub enum NameSet {
     TyreClass,
     /// `[vehicle] mounting`: `cast`, `joints`.
     Mounting,
+    /// A programme's `indicator`: `off`, `right`, `left`.
+    Indicator,
+    /// A programme's `wiper_mode`: `down`, `slow`, `normal`, `fast`.
+    WiperMode,
 }
 
 impl fmt::Display for NameSet {
@@ -93,6 +105,8 @@ impl fmt::Display for NameSet {
             NameSet::TyreModel => "tyre model",
             NameSet::TyreClass => "tyre class",
             NameSet::Mounting => "wheel mounting",
+            NameSet::Indicator => "indicator state",
+            NameSet::WiperMode => "wiper mode",
         })
     }
 }
@@ -119,7 +133,8 @@ impl WorldFileError {
         match &self.kind {
             WorldFileErrorKind::UnknownKey { suggestions }
             | WorldFileErrorKind::UnknownModel { suggestions, .. }
-            | WorldFileErrorKind::UnknownName { suggestions, .. } => suggestions,
+            | WorldFileErrorKind::UnknownName { suggestions, .. }
+            | WorldFileErrorKind::NeitherFileNorModel { suggestions, .. } => suggestions,
             _ => &[],
         }
     }
@@ -145,11 +160,14 @@ fn write_suggestions(f: &mut fmt::Formatter<'_>, names: &[String]) -> fmt::Resul
 
 impl fmt::Display for WorldFileError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.file)?;
-        if let Some(l) = self.location {
-            write!(f, ":{}:{}", l.line, l.column)?;
+        // A name that is no file has no file to point at: the message names it.
+        if !matches!(self.kind, WorldFileErrorKind::NeitherFileNorModel { .. }) {
+            f.write_str(&self.file)?;
+            if let Some(l) = self.location {
+                write!(f, ":{}:{}", l.line, l.column)?;
+            }
+            f.write_str(": ")?;
         }
-        f.write_str(": ")?;
         let key = self.key.as_deref().unwrap_or("");
         match &self.kind {
             WorldFileErrorKind::Io(m) => write!(f, "cannot read the world file: {m}"),
@@ -172,6 +190,12 @@ impl fmt::Display for WorldFileError {
             } => {
                 write!(f, "unknown {what} '{name}'")?;
                 write_suggestions(f, suggestions)
+            }
+            WorldFileErrorKind::NeitherFileNorModel { name, suggestions } => {
+                write!(f, "'{name}' is neither a world file nor a vehicle model")?;
+                write_suggestions(f, suggestions)?;
+                let models: Vec<&str> = super::vehicle::model_names().collect();
+                write!(f, " (models: {})", models.join(", "))
             }
             WorldFileErrorKind::InvalidValue(m) => {
                 if key.is_empty() {
@@ -212,29 +236,10 @@ impl fmt::Display for WorldWarning {
     }
 }
 
-/// The Levenshtein distance between `a` and `b`, counted in characters, ignoring ASCII case
-/// differences at a cost of 0 (a user who typed `time0to100` meant `time0To100`).
-pub(crate) fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().map(|c| c.to_ascii_lowercase()).collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().map(|c| c.to_ascii_lowercase()).enumerate() {
-        let mut diagonal = row.first().copied().unwrap_or(0);
-        if let Some(first) = row.first_mut() {
-            *first = i + 1;
-        }
-        for (j, &cb) in b.iter().enumerate() {
-            let (Some(&left), Some(&up)) = (row.get(j), row.get(j + 1)) else {
-                break;
-            };
-            let cost = usize::from(ca != cb);
-            let value = (diagonal + cost).min(left + 1).min(up + 1);
-            diagonal = up;
-            if let Some(cell) = row.get_mut(j + 1) {
-                *cell = value;
-            }
-        }
-    }
-    row.last().copied().unwrap_or(0)
+/// The Levenshtein distance between `a` and `b` (in characters, by `strsim`), ignoring ASCII
+/// case (a user who typed `time0to100` meant `time0To100`).
+fn edit_distance(a: &str, b: &str) -> usize {
+    strsim::levenshtein(&a.to_ascii_lowercase(), &b.to_ascii_lowercase())
 }
 
 /// The names of `candidates` close to `name`, best first: at most 3, each within a third of

@@ -1,6 +1,6 @@
 //! World files: a TOML description of a world in Webots vocabulary (time step, ground,
-//! obstacles, dynamic boxes, one car on its tyres or one DifferentialWheels robot), and the
-//! built-in default world.
+//! obstacles, dynamic boxes, cars on their tyres with their driving programmes, a
+//! DifferentialWheels robot), and the built-in default world.
 //!
 //! ```toml
 //! basicTimeStep = 10          # ms
@@ -31,6 +31,7 @@
 
 mod bodies;
 mod error;
+mod programme;
 mod read;
 mod robot;
 mod statics;
@@ -39,7 +40,7 @@ mod vehicle;
 
 use std::path::Path;
 
-use toml::de::DeTable;
+use toml::de::{DeTable, DeValue};
 use vehicle_model::Model;
 
 use crate::config::WorldConfig;
@@ -78,17 +79,8 @@ const ROOT_KEYS: [&str; 9] = [
     "body",
 ];
 
-/// What moves in the world.
-#[derive(Debug, Clone, PartialEq)]
-pub enum WorldVehicle {
-    /// A car (`[vehicle]`), boxed: its parameters are large.
-    Car(Box<CarDescription>),
-    /// A DifferentialWheels robot (`[differential_wheels]`).
-    DifferentialWheels(RobotDescription),
-}
-
-/// A loaded world: everything needed to build a [`World`](crate::World) and put the vehicle
-/// in it.
+/// A loaded world: everything needed to build a [`World`](crate::World) and put its cars and
+/// robot in it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct WorldDescription {
     /// Where it came from: the path as given, or [`DEFAULT_WORLD_NAME`] (with the model name
@@ -98,37 +90,56 @@ pub struct WorldDescription {
     pub config: WorldConfig,
     /// Simulated time after which stepping reports the end of the simulation (s, > 0), if set.
     pub duration: Option<f64>,
-    /// The car or robot.
-    pub vehicle: WorldVehicle,
+    /// The cars (`[vehicle]`, or every `[[vehicle]]` in file order), each with a unique name.
+    pub cars: Vec<CarDescription>,
+    /// The DifferentialWheels robot (`[differential_wheels]`), if any.
+    pub robot: Option<RobotDescription>,
     /// Values that were accepted with a warning (e.g. an invalid car field replaced by its
     /// default, as Webots does), in file order.
     pub warnings: Vec<WorldWarning>,
 }
 
 impl WorldDescription {
-    /// The car, if the world has one.
+    /// The first car, if the world has one.
     pub fn car(&self) -> Option<&CarDescription> {
-        match &self.vehicle {
-            WorldVehicle::Car(c) => Some(c),
-            WorldVehicle::DifferentialWheels(_) => None,
-        }
+        self.cars.first()
     }
 
     /// The DifferentialWheels robot, if the world has one.
     pub fn robot(&self) -> Option<&RobotDescription> {
-        match &self.vehicle {
-            WorldVehicle::DifferentialWheels(r) => Some(r),
-            WorldVehicle::Car(_) => None,
-        }
+        self.robot.as_ref()
     }
 
-    /// A short name of what drives in this world: the car model's Webots name, or
-    /// `DifferentialWheels`.
-    pub fn vehicle_name(&self) -> &'static str {
-        match &self.vehicle {
-            WorldVehicle::Car(c) => c.model.webots_name(),
-            WorldVehicle::DifferentialWheels(_) => "DifferentialWheels",
-        }
+    /// The names of the cars, then of the robot.
+    pub fn vehicle_names(&self) -> Vec<&str> {
+        self.cars
+            .iter()
+            .map(|c| c.name.as_str())
+            .chain(self.robot.iter().map(|r| r.name.as_str()))
+            .collect()
+    }
+
+    /// What drives in this world, for messages: the car model's Webots name or
+    /// `DifferentialWheels` for a single vehicle, else `"3 vehicles (a, b, c)"` by name.
+    pub fn vehicles_label(&self) -> String {
+        let single = match (self.cars.as_slice(), &self.robot) {
+            ([car], None) => Some(car.model.webots_name()),
+            ([], Some(_)) => Some(robot::ROBOT_NAME),
+            _ => None,
+        };
+        single.map_or_else(
+            || {
+                let names = self.vehicle_names();
+                format!("{} vehicles ({})", names.len(), names.join(", "))
+            },
+            str::to_string,
+        )
+    }
+
+    /// True when a car or the robot has a programme.
+    pub fn has_programme(&self) -> bool {
+        self.cars.iter().any(|c| !c.programme.is_empty())
+            || self.robot.as_ref().is_some_and(|r| !r.programme.is_empty())
     }
 }
 
@@ -158,7 +169,8 @@ pub fn with_model(model: Model) -> WorldDescription {
         source,
         config: WorldConfig::default(),
         duration: None,
-        vehicle: WorldVehicle::Car(Box::new(car)),
+        cars: vec![car],
+        robot: None,
         warnings,
     }
 }
@@ -183,15 +195,14 @@ pub fn load(spec: &str) -> Result<WorldDescription, WorldFileError> {
             return Ok(with_model(model));
         }
         let looks_like_path = spec.contains(['/', '\\']) || spec.ends_with(".toml");
-        let suggestions = error::closest(spec, vehicle::model_names());
-        if !looks_like_path && !suggestions.is_empty() {
+        if !looks_like_path {
             return Err(WorldFileError {
                 file: spec.to_string(),
                 location: None,
                 key: None,
-                kind: WorldFileErrorKind::UnknownModel {
+                kind: WorldFileErrorKind::NeitherFileNorModel {
                     name: spec.to_string(),
-                    suggestions,
+                    suggestions: error::closest(spec, vehicle::model_names()),
                 },
             });
         }
@@ -240,38 +251,82 @@ pub fn parse_str(file: &str, text: &str) -> Result<WorldDescription, WorldFileEr
         d => d,
     };
     let mut warnings = Vec::new();
-    let car = root.table("vehicle")?;
-    let robot = root.table("differential_wheels")?;
-    let vehicle = match (car, robot) {
-        (Some(c), None) => WorldVehicle::Car(Box::new(vehicle::read_vehicle(&c, &mut warnings)?)),
-        (None, Some(r)) => WorldVehicle::DifferentialWheels(robot::read_robot(&r)?),
-        (Some(_), Some(r)) => {
-            return Err(src.error(
-                r.span(),
-                Some("differential_wheels".to_string()),
-                WorldFileErrorKind::Structure(
-                    "a world holds either a [vehicle] or a [differential_wheels], not both"
-                        .to_string(),
-                ),
-            ));
-        }
-        (None, None) => {
-            return Err(src.error(
-                None,
-                None,
-                WorldFileErrorKind::Structure(
-                    "the world has no [vehicle] and no [differential_wheels] section".to_string(),
-                ),
-            ));
-        }
+    let car_sections = match root.value("vehicle") {
+        Some(DeValue::Array(_)) => root.tables("vehicle")?,
+        _ => root.table("vehicle")?.into_iter().collect(),
     };
+    let mut cars = Vec::with_capacity(car_sections.len());
+    for c in &car_sections {
+        cars.push(vehicle::read_vehicle(c, &mut warnings)?);
+    }
+    let robot_section = root.table("differential_wheels")?;
+    let robot = robot_section.as_ref().map(robot::read_robot).transpose()?;
+    if cars.is_empty() && robot.is_none() {
+        return Err(src.error(
+            None,
+            None,
+            WorldFileErrorKind::Structure(
+                "the world has no [vehicle], [[vehicle]] or [differential_wheels] section"
+                    .to_string(),
+            ),
+        ));
+    }
+    name_cars(&mut cars);
+    let sections = car_sections.iter().chain(robot_section.as_ref());
+    let names = cars
+        .iter()
+        .map(|c| c.name.as_str())
+        .chain(robot.iter().map(|r| r.name.as_str()));
+    let mut seen: Vec<&str> = Vec::new();
+    for (name, section) in names.zip(sections) {
+        if seen.contains(&name) {
+            return Err(section.error(
+                vehicle::NAME,
+                WorldFileErrorKind::InvalidValue(format!(
+                    "\"{name}\": another vehicle of the world has this name"
+                )),
+            ));
+        }
+        seen.push(name);
+    }
     Ok(WorldDescription {
         source: file.to_string(),
         config,
         duration,
-        vehicle,
+        cars,
+        robot,
         warnings,
     })
+}
+
+/// Gives every car without a `name` its model's name, numbered `-1`, `-2`… (in file order)
+/// when several unnamed cars share a model.
+fn name_cars(cars: &mut [CarDescription]) {
+    let models: Vec<(Model, bool)> = cars.iter().map(|c| (c.model, c.name.is_empty())).collect();
+    let mut counts: Vec<(Model, usize)> = Vec::new();
+    for car in cars.iter_mut().filter(|c| c.name.is_empty()) {
+        let shared = models
+            .iter()
+            .filter(|&&(m, unnamed)| unnamed && m == car.model)
+            .count()
+            > 1;
+        let base = car.model.webots_name();
+        car.name = if shared {
+            let n = match counts.iter_mut().find(|(m, _)| *m == car.model) {
+                Some((_, n)) => {
+                    *n += 1;
+                    *n
+                }
+                None => {
+                    counts.push((car.model, 1));
+                    1
+                }
+            };
+            format!("{base}-{n}")
+        } else {
+            base.to_string()
+        };
+    }
 }
 
 #[cfg(test)]

@@ -4,8 +4,11 @@ use crate::diff_wheels::{DifferentialWheelsParams, RobotBody, RobotMode, RobotPl
 use proto_geom::plausible::Compact;
 
 use super::error::{WorldFileError, WorldFileErrorKind};
+use super::programme::{PROGRAMME, read_robot_programme};
 use super::read::Section;
 use super::statics::yaw_of;
+use super::vehicle::NAME;
+use crate::programme::{Programme, WheelSpeeds};
 
 /// The `DifferentialWheels` node fields, by their Webots names.
 pub(crate) const NODE_FIELDS: [&str; 10] = [
@@ -22,7 +25,9 @@ pub(crate) const NODE_FIELDS: [&str; 10] = [
 ];
 
 /// The keys of `[differential_wheels]` that are the simulator's own, not node fields.
-const SIM_KEYS: [&str; 7] = [
+const SIM_KEYS: [&str; 9] = [
+    NAME,
+    PROGRAMME,
     "physics",
     "seed",
     "translation",
@@ -41,7 +46,14 @@ pub struct RobotDescription {
     pub mode: RobotMode,
     /// Where the robot starts.
     pub placement: RobotPlacement,
+    /// Its name in telemetry, plots and metrics (`name`, default `DifferentialWheels`).
+    pub name: String,
+    /// Its timed wheel speeds (`[[differential_wheels.programme]]`), empty if none.
+    pub programme: Programme<WheelSpeeds>,
 }
+
+/// The default name of the robot.
+pub(crate) const ROBOT_NAME: &str = "DifferentialWheels";
 
 impl Default for RobotDescription {
     /// The Webots defaults in kinematics mode, at the origin facing +x.
@@ -50,6 +62,8 @@ impl Default for RobotDescription {
             params: DifferentialWheelsParams::default(),
             mode: RobotMode::Kinematics,
             placement: RobotPlacement::default(),
+            name: ROBOT_NAME.to_string(),
+            programme: Programme::default(),
         }
     }
 }
@@ -122,10 +136,14 @@ pub(crate) fn read_robot(s: &Section<'_, '_>) -> Result<RobotDescription, WorldF
         z,
         heading: yaw_of(s)?,
     };
+    let name = s.string(NAME)?.unwrap_or(ROBOT_NAME).to_string();
+    let programme = read_robot_programme(s, p.max_speed / p.speed_unit)?;
     Ok(RobotDescription {
         params: p,
         mode,
         placement,
+        name,
+        programme,
     })
 }
 

@@ -10,9 +10,14 @@ use vehicle_model::{
 };
 
 use super::error::{NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, closest};
+use super::programme::{PROGRAMME, read_car_programme};
 use super::read::{Section, as_f64, describe};
 use super::tyre;
+use crate::programme::Programme;
 use crate::vehicle::{Mounting, TyreChoice};
+
+/// The key of a vehicle's name in `[vehicle]` and `[differential_wheels]`.
+pub(crate) const NAME: &str = "name";
 
 /// The key of the wheel mounting in `[vehicle]`, and its names.
 const MOUNTING: &str = "mounting";
@@ -34,6 +39,11 @@ pub struct CarDescription {
     pub tyre: TyreChoice,
     /// How the wheels hang on the chassis (`mounting = "cast"`, the default, or `"joints"`).
     pub mounting: Mounting,
+    /// The car's name in telemetry, plots and metrics (`name`; by default the model's name,
+    /// numbered `-1`, `-2`… when several cars share a model).
+    pub name: String,
+    /// Its timed driver commands (`[[vehicle.programme]]`), empty if none.
+    pub programme: Programme,
 }
 
 impl CarDescription {
@@ -49,6 +59,8 @@ impl CarDescription {
                 params,
                 tyre,
                 mounting: Mounting::default(),
+                name: model.webots_name().to_string(),
+                programme: Programme::default(),
             },
             messages,
         )
@@ -68,7 +80,7 @@ pub(crate) fn model_names() -> impl Iterator<Item = &'static str> {
 
 /// Every key of `[vehicle]` that is not a wheel slot.
 fn top_keys() -> impl Iterator<Item = &'static str> {
-    ["model", "tyre", MOUNTING]
+    ["model", "tyre", MOUNTING, NAME, PROGRAMME]
         .into_iter()
         .chain(CarParams::<f64>::FIELD_NAMES)
 }
@@ -104,7 +116,7 @@ pub(crate) fn read_vehicle(
     };
     let mut params = model.params::<f64>();
     for (key, value, key_span, _) in s.entries() {
-        if key == "model" || key == "tyre" || key == MOUNTING {
+        if ["model", "tyre", MOUNTING, NAME, PROGRAMME].contains(&key) {
             continue;
         }
         if CarParams::<f64>::WHEEL_SLOT_NAMES.contains(&key) {
@@ -168,11 +180,16 @@ pub(crate) fn read_vehicle(
             ),
         ));
     }
+    let name = s.string(NAME)?.unwrap_or("").to_string();
+    let gears = i32::try_from(params.gear_ratios.len().saturating_sub(1)).unwrap_or(i32::MAX);
+    let programme = read_car_programme(s, gears)?;
     Ok(CarDescription {
         model,
         params,
         tyre,
         mounting,
+        name,
+        programme,
     })
 }
 

@@ -2,26 +2,26 @@
 //! and the mounting.
 
 use sim::scenario::{self, RunReport, Scenario};
-use sim::world_file::{self, WorldVehicle, parse_str};
+use sim::world_file::{self, parse_str};
 
 /// The scenario run of `world` with its car on the suite's mounting.
 fn run(world: &world_file::WorldDescription, scenario: Scenario) -> RunReport {
     let mut world = world.clone();
-    if let WorldVehicle::Car(car) = &mut world.vehicle {
+    for car in &mut world.cars {
         car.mounting = crate::MOUNTING;
     }
     scenario::run(&world, scenario, &mut |_| {}).unwrap()
 }
 
 fn number(r: &RunReport, s: Scenario, key: &str) -> f64 {
-    match r.result(s).and_then(|x| x.metric(key)) {
+    match r.result(s.name()).and_then(|x| x.metric(key)) {
         Some(scenario::Value::Number(v)) => v,
         other => panic!("{s} {key}: {other:?}"),
     }
 }
 
 fn flag(r: &RunReport, s: Scenario, key: &str) -> bool {
-    match r.result(s).and_then(|x| x.metric(key)) {
+    match r.result(s.name()).and_then(|x| x.metric(key)) {
         Some(scenario::Value::Bool(b)) => b,
         other => panic!("{s} {key}: {other:?}"),
     }
@@ -47,14 +47,15 @@ fn test_track_on_webots_contact() {
 /// The five car scenarios on a BmwX5 and what each must show, whichever the tyre.
 fn test_track(world: &world_file::WorldDescription) {
     let r = run(world, Scenario::TestTrack);
-    let names: Vec<Scenario> = r.results.iter().map(|x| x.scenario).collect();
-    assert_eq!(names, Scenario::TEST_TRACK);
+    let names: Vec<&str> = r.results.iter().map(|x| x.name.as_str()).collect();
+    assert_eq!(names, Scenario::TEST_TRACK.map(Scenario::name));
     let total: f64 = r.results.iter().map(|x| x.sim_seconds).sum();
     assert!((r.sim_seconds - total).abs() < 1e-9);
     for x in &r.results {
-        // One sample per 10 ms step.
+        // The state at time 0, then one sample per 10 ms step.
         let steps = (x.sim_seconds / 0.01).round() as usize;
-        assert_eq!(x.telemetry.samples.len(), steps, "{}", x.scenario);
+        assert_eq!(x.telemetry[0].samples.len(), 1 + steps, "{}", x.name);
+        assert_eq!(x.telemetry[0].samples[0].time, 0.0);
     }
 
     // Circle: the rear-axle centre of a car without tyre slip turns about the point on the

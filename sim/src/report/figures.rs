@@ -1,0 +1,456 @@
+//! The plots of a run: which figures, with which series, from any [`RunReport`].
+
+use vehicle_model::Wheel;
+
+use crate::config::{Obstacle, WorldConfig};
+use crate::scenario::{RunReport, Scenario, ScenarioResult};
+use crate::telemetry::{Sample, Telemetry, VehicleKind};
+
+use super::plot::{Figure, Panel, Series, SeriesKind};
+
+/// What an [`Outline`] is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OutlineKind {
+    /// A static `[[box]]`.
+    Box,
+    /// A `[[ramp]]`.
+    Ramp,
+    /// A dynamic `[[body]]` box, where it starts.
+    Body,
+}
+
+impl OutlineKind {
+    /// The legend text.
+    pub const fn legend(self) -> &'static str {
+        match self {
+            OutlineKind::Box => "boxes",
+            OutlineKind::Ramp => "ramps",
+            OutlineKind::Body => "dynamic boxes (start)",
+        }
+    }
+}
+
+/// An obstacle's footprint seen from above (m, world frame): a closed polygon.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Outline {
+    /// What it is.
+    pub kind: OutlineKind,
+    /// The corners, in order.
+    pub points: Vec<[f64; 2]>,
+}
+
+/// The corners of a rectangle from `x0` to `x1` along its heading `yaw` (rad) and `±half_w`
+/// across it, in a frame at `origin`.
+fn rectangle(origin: [f64; 2], yaw: f64, [x0, x1]: [f64; 2], half_w: f64) -> Vec<[f64; 2]> {
+    let (s, c) = yaw.sin_cos();
+    [[x0, -half_w], [x1, -half_w], [x1, half_w], [x0, half_w]]
+        .into_iter()
+        .map(|[x, y]| [origin[0] + c * x - s * y, origin[1] + s * x + c * y])
+        .collect()
+}
+
+impl Outline {
+    /// The footprints of the boxes, ramps and dynamic boxes (at their start) of `config`.
+    pub fn of_world(config: &WorldConfig) -> Vec<Outline> {
+        let obstacles = config.obstacles.iter().map(|o| match o {
+            Obstacle::Box {
+                center,
+                half_extents: [hx, hy, _],
+                yaw,
+                ..
+            } => Outline {
+                kind: OutlineKind::Box,
+                points: rectangle([center[0], center[1]], *yaw, [-hx, *hx], *hy),
+            },
+            Obstacle::Ramp {
+                start,
+                yaw,
+                length,
+                width,
+                ..
+            } => Outline {
+                kind: OutlineKind::Ramp,
+                points: rectangle(*start, *yaw, [0.0, *length], width / 2.0),
+            },
+        });
+        let bodies = config.bodies.iter().map(|b| Outline {
+            kind: OutlineKind::Body,
+            points: rectangle(
+                [b.center[0], b.center[1]],
+                b.yaw,
+                [-b.size[0] / 2.0, b.size[0] / 2.0],
+                b.size[1] / 2.0,
+            ),
+        });
+        obstacles.chain(bodies).collect()
+    }
+}
+
+/// Lines joined into one series, separated by a NaN point (a lift of the pen).
+fn joined<'a>(lines: impl IntoIterator<Item = &'a Vec<[f64; 2]>>) -> Vec<[f64; 2]> {
+    let mut out = Vec::new();
+    for line in lines {
+        if !out.is_empty() {
+            out.push([f64::NAN; 2]);
+        }
+        out.extend(line.iter().copied());
+    }
+    out
+}
+
+/// The legend name of `t` of result `r` in `report`: the scenario when every scenario drove
+/// one vehicle, the vehicle when one scenario ran, else both.
+fn name_of(report: &RunReport, r: &ScenarioResult, t: &Telemetry) -> String {
+    if report.results.iter().all(|x| x.telemetry.len() == 1) {
+        r.name.clone()
+    } else if report.results.len() == 1 {
+        t.vehicle.clone()
+    } else {
+        format!("{}: {}", r.name, t.vehicle)
+    }
+}
+
+/// Every telemetry of the run with its legend name.
+fn runs(report: &RunReport) -> impl Iterator<Item = (String, &Telemetry)> {
+    report
+        .results
+        .iter()
+        .flat_map(move |r| r.telemetry.iter().map(move |t| (name_of(report, r, t), t)))
+}
+
+/// One series per telemetry of `kind` of `f(sample)` against time, leaving out those where
+/// `f` gives nothing.
+fn series(
+    report: &RunReport,
+    kind: VehicleKind,
+    f: impl Fn(&Sample) -> Option<f64>,
+) -> Vec<Series> {
+    runs(report)
+        .filter(|(_, t)| t.kind == kind)
+        .filter_map(|(name, t)| {
+            let points: Vec<[f64; 2]> = t
+                .samples
+                .iter()
+                .filter_map(|s| f(s).map(|v| [s.time, v]))
+                .collect();
+            (!points.is_empty()).then(|| Series::line(name, points))
+        })
+        .collect()
+}
+
+/// The plots of a run, by file name: speed, rpm and gear, steering, the lane change and its
+/// tyres' friction use, and the trajectory; a plot without data (e.g. rpm for a robot) is left
+/// out. Car speeds are in km/h, robot speeds in m/s.
+pub fn figures(report: &RunReport) -> Vec<(&'static str, Figure)> {
+    let title = |what: &str| format!("{what}: {}, {}", report.vehicle, report.scenario);
+    let time = "time (s)".to_string();
+    let mut out = Vec::new();
+    let mut speed_panels = Vec::new();
+    let car_speeds = series(report, VehicleKind::Car, |s| Some(s.speed_kmh));
+    if !car_speeds.is_empty() {
+        speed_panels.push(Panel {
+            y_label: "car speed (km/h)".into(),
+            series: car_speeds,
+        });
+    }
+    let robot_speeds = series(report, VehicleKind::Robot, |s| Some(s.speed()));
+    if !robot_speeds.is_empty() {
+        speed_panels.push(Panel {
+            y_label: "robot speed (m/s)".into(),
+            series: robot_speeds,
+        });
+    }
+    out.push((
+        "speed.svg",
+        Figure {
+            title: title("Speed"),
+            x_label: time.clone(),
+            panels: speed_panels,
+            equal_aspect: false,
+        },
+    ));
+    // Runs whose engine never turned (braking in neutral) would only add a flat line.
+    let rpm: Vec<Series> = series(report, VehicleKind::Car, |s| s.rpm)
+        .into_iter()
+        .filter(|s| s.points.iter().any(|p| p[1] != 0.0))
+        .collect();
+    let engine_runs: Vec<&str> = rpm.iter().map(|s| s.name.as_str()).collect();
+    let gears: Vec<Series> = series(report, VehicleKind::Car, |s| s.gear.map(f64::from))
+        .into_iter()
+        .filter(|s| engine_runs.contains(&s.name.as_str()))
+        .map(|s| Series {
+            kind: SeriesKind::Steps,
+            ..s
+        })
+        .collect();
+    if !rpm.is_empty() {
+        out.push((
+            "rpm_gear.svg",
+            Figure {
+                title: title("Engine speed and gear"),
+                x_label: time.clone(),
+                panels: vec![
+                    Panel {
+                        y_label: "engine speed (rpm)".into(),
+                        series: rpm,
+                    },
+                    Panel {
+                        y_label: "gear".into(),
+                        series: gears,
+                    },
+                ],
+                equal_aspect: false,
+            },
+        ));
+    }
+    let turning = |s: &Sample| s.steering_command.is_some_and(|d| d != 0.0);
+    let mut lines = Vec::new();
+    for (name, t) in runs(report).filter(|(_, t)| t.samples.iter().any(turning)) {
+        for (what, f) in [
+            (
+                "commanded",
+                (|s: &Sample| s.steering_command) as fn(&Sample) -> Option<f64>,
+            ),
+            ("measured", |s: &Sample| s.steering),
+        ] {
+            lines.push(Series::line(
+                format!("{name} ({what})"),
+                t.samples
+                    .iter()
+                    .filter_map(|s| f(s).map(|v| [s.time, v]))
+                    .collect(),
+            ));
+        }
+    }
+    if !lines.is_empty() {
+        out.push((
+            "steering.svg",
+            Figure {
+                title: title("Steering angle (positive = right)"),
+                x_label: time,
+                panels: vec![Panel {
+                    y_label: "steering angle (rad)".into(),
+                    series: lines,
+                }],
+                equal_aspect: false,
+            },
+        ));
+    }
+    let lane_change = report.result(Scenario::LaneChange.name());
+    if let Some(r) = lane_change {
+        let mut series = course(r);
+        series.extend(r.telemetry.iter().map(|t| {
+            Series::line(
+                "rear-axle centre",
+                t.samples.iter().map(|s| [s.x, s.y]).collect(),
+            )
+        }));
+        out.push((
+            "lane_change.svg",
+            Figure {
+                title: title("Double lane change, lateral scale exaggerated"),
+                x_label: "x (m)".into(),
+                panels: vec![Panel {
+                    y_label: "y (m)".into(),
+                    series,
+                }],
+                equal_aspect: false,
+            },
+        ));
+    }
+    if let Some(figure) = lane_change.and_then(|r| {
+        friction_use(
+            &r.telemetry.first()?.samples,
+            title("Tyre friction use, double lane change"),
+        )
+    }) {
+        out.push(("friction_use.svg", figure));
+    }
+    out.push((
+        "trajectory.svg",
+        trajectory(report, title("Trajectory seen from above")),
+    ));
+    out
+}
+
+/// The course of `r` (lane edges and cones), as series.
+fn course(r: &ScenarioResult) -> Vec<Series> {
+    let mut out = Vec::new();
+    if !r.guides.is_empty() {
+        out.push(Series {
+            name: "lane edges".into(),
+            points: joined(&r.guides),
+            kind: SeriesKind::Guide,
+        });
+    }
+    if !r.cones.is_empty() {
+        out.push(Series {
+            name: "cones".into(),
+            points: r.cones.clone(),
+            kind: SeriesKind::Cones,
+        });
+    }
+    out
+}
+
+/// Every vehicle's path over the world's obstacles and the scenarios' courses.
+fn trajectory(report: &RunReport, title: String) -> Figure {
+    let mut series = Vec::new();
+    for kind in [OutlineKind::Box, OutlineKind::Ramp, OutlineKind::Body] {
+        let outlines: Vec<&Vec<[f64; 2]>> = report
+            .obstacles
+            .iter()
+            .filter(|o| o.kind == kind)
+            .map(|o| &o.points)
+            .collect();
+        if !outlines.is_empty() {
+            series.push(Series {
+                name: kind.legend().into(),
+                points: joined(outlines),
+                kind: SeriesKind::Outline,
+            });
+        }
+    }
+    for r in &report.results {
+        series.extend(course(r));
+    }
+    series.extend(
+        runs(report)
+            .map(|(name, t)| Series::line(name, t.samples.iter().map(|s| [s.x, s.y]).collect())),
+    );
+    Figure {
+        title,
+        x_label: "x (m)".into(),
+        panels: vec![Panel {
+            y_label: "y (m)".into(),
+            series,
+        }],
+        equal_aspect: true,
+    }
+}
+
+/// The friction use (0–1) of each tyre against time, one line per wheel, with the grip limit
+/// (1) as a guide; `None` for samples without tyres (a robot).
+fn friction_use(samples: &[Sample], title: String) -> Option<Figure> {
+    let names = ["front right", "front left", "rear right", "rear left"];
+    let mut series: Vec<Series> = Wheel::ALL
+        .into_iter()
+        .zip(names)
+        .map(|(w, name)| {
+            Series::line(
+                name,
+                samples
+                    .iter()
+                    .filter_map(|s| s.tyres.map(|t| [s.time, t[w].friction_use]))
+                    .collect(),
+            )
+        })
+        .filter(|s| !s.points.is_empty())
+        .collect();
+    let span = series
+        .first()
+        .and_then(|s| Some([s.points.first()?[0], s.points.last()?[0]]))?;
+    series.push(Series {
+        name: "grip limit".into(),
+        points: vec![[span[0], 1.0], [span[1], 1.0]],
+        kind: SeriesKind::Guide,
+    });
+    Some(Figure {
+        title,
+        x_label: "time (s)".into(),
+        panels: vec![Panel {
+            y_label: "friction use (0 to 1)".into(),
+            series,
+        }],
+        equal_aspect: false,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::BodySpec;
+    use crate::TyreTelemetry;
+    use vehicle_model::PerWheel;
+
+    #[test]
+    fn friction_use_has_one_labelled_line_per_tyre() {
+        let tyres = PerWheel::from_fn(|w| TyreTelemetry {
+            friction_use: if w.is_front() { 0.5 } else { 0.25 },
+            ..TyreTelemetry::default()
+        });
+        let samples: Vec<Sample> = (0..3)
+            .map(|i| Sample {
+                time: 0.01 * f64::from(i),
+                tyres: Some(tyres),
+                ..Sample::default()
+            })
+            .collect();
+        let f = friction_use(&samples, "t".into()).unwrap();
+        let panel = &f.panels[0];
+        let names: Vec<&str> = panel.series.iter().map(|s| s.name.as_str()).collect();
+        assert_eq!(
+            names,
+            [
+                "front right",
+                "front left",
+                "rear right",
+                "rear left",
+                "grip limit"
+            ]
+        );
+        assert_eq!(
+            panel.series[0].points,
+            [[0.0, 0.5], [0.01, 0.5], [0.02, 0.5]]
+        );
+        assert_eq!(panel.series[3].points[2], [0.02, 0.25]);
+        assert_eq!(panel.series[4].points, [[0.0, 1.0], [0.02, 1.0]]);
+        // A robot has no tyres.
+        assert_eq!(friction_use(&[Sample::default()], "t".into()), None);
+    }
+
+    #[test]
+    fn outlines_of_boxes_ramps_and_bodies() {
+        let config = WorldConfig {
+            obstacles: vec![
+                Obstacle::Box {
+                    center: [10.0, 5.0, 0.5],
+                    half_extents: [1.0, 2.0, 0.5],
+                    yaw: core::f64::consts::FRAC_PI_2,
+                    friction: None,
+                },
+                Obstacle::Ramp {
+                    start: [0.0, 0.0],
+                    yaw: 0.0,
+                    length: 10.0,
+                    width: 4.0,
+                    height: 1.0,
+                    friction: None,
+                },
+            ],
+            bodies: vec![BodySpec {
+                center: [3.0, 0.0, 0.5],
+                size: [1.0, 1.0, 1.0],
+                yaw: 0.0,
+                mass: 10.0,
+                friction: None,
+            }],
+            ..WorldConfig::default()
+        };
+        let o = Outline::of_world(&config);
+        let kinds: Vec<OutlineKind> = o.iter().map(|o| o.kind).collect();
+        assert_eq!(
+            kinds,
+            [OutlineKind::Box, OutlineKind::Ramp, OutlineKind::Body]
+        );
+        // The box turned a quarter turn: its 2 m (x) by 4 m (y) footprint spans 4 m in x.
+        let xs: Vec<f64> = o[0].points.iter().map(|p| p[0]).collect();
+        let span = xs.iter().copied().fold(f64::MIN, f64::max)
+            - xs.iter().copied().fold(f64::MAX, f64::min);
+        assert!((span - 4.0).abs() < 1e-12, "{xs:?}");
+        assert_eq!(
+            o[1].points,
+            [[0.0, -2.0], [10.0, -2.0], [10.0, 2.0], [0.0, 2.0]]
+        );
+    }
+}
