@@ -4,6 +4,7 @@
 use core::ops::Range;
 
 use proto_geom::WheelField;
+use proto_geom::plausible::Compact;
 use toml::de::DeValue;
 use vehicle_model::{
     CarField, CarParams, FieldError, FieldKind, FieldValue, Model, ParamWarning, Wheel,
@@ -12,7 +13,7 @@ use vehicle_model::{
 use super::error::{NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, closest};
 use super::read::{Section, as_f64, describe};
 use super::tyre;
-use crate::vehicle::{Mounting, TyreChoice};
+use crate::vehicle::{Mounting, TyreChoice, VehicleSpec};
 
 /// The key of the wheel mounting in `[vehicle]`, and its names.
 const MOUNTING: &str = "mounting";
@@ -168,6 +169,15 @@ pub(crate) fn read_vehicle(
             ),
         ));
     }
+    // Fields that are each plausible may still make a car that cannot be built (a 33 m tyre
+    // of the default density weighs more than 1e6 kg): a world that loads must build.
+    if let Err(e) = VehicleSpec::from_car_with(&params, &tyre) {
+        return Err(s.src.error(
+            s.span(),
+            Some("vehicle".to_string()),
+            WorldFileErrorKind::InvalidValue(format!("this car cannot be built: {e}")),
+        ));
+    }
     Ok(CarDescription {
         model,
         params,
@@ -267,7 +277,7 @@ fn set(
         FieldError::NotAnInteger { value, .. } => s.error_at(
             key,
             key_span.clone(),
-            WorldFileErrorKind::InvalidValue(format!("{value}: must be an integer")),
+            WorldFileErrorKind::InvalidValue(format!("{}: must be an integer", Compact(value))),
         ),
         _ => s.error_at(
             key,

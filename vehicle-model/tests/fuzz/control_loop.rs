@@ -226,7 +226,7 @@ fn unit_clamp<T: Real>(x: T, function: &'static str, argument: &'static str) -> 
 }
 
 /// Performs `op` on `d` and checks the warning it returns.
-fn apply<T: Real>(d: &mut Driver<T>, op: &Op) -> Result<(), String> {
+pub fn apply<T: Real>(d: &mut Driver<T>, op: &Op) -> Result<(), String> {
     let f = T::from_f64;
     match *op {
         Op::SteeringAngle(x) => expect(
@@ -377,7 +377,7 @@ fn read<T: Real>(d: &Driver<T>, index: i64) -> Result<(), String> {
 }
 
 /// The state invariants that hold after every call.
-fn check_state<T: Real>(d: &Driver<T>) -> Result<(), String> {
+pub fn check_state<T: Real>(d: &Driver<T>) -> Result<(), String> {
     let unit = |x: T| x >= T::ZERO && x <= T::ONE;
     if !(unit(d.throttle()) && unit(d.brake_intensity())) {
         return Err(format!(

@@ -11,11 +11,15 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 mod control_loop;
+mod strategies;
 
-use control_loop::{FieldEdit, Op, field_names, run};
+use control_loop::{field_names, run};
 use proptest::prelude::*;
 use proptest::test_runner::Config;
-use vehicle_model::{CarField, CarParams, Driver, FieldValue, Model, ParamWarning, Warning};
+use strategies::{basic_time_step, edit, op};
+use vehicle_model::{
+    CarField, CarParams, Driver, FieldValue, Model, ParamWarning, TyreClass, Warning,
+};
 
 /// Cases per property unless `PROPTEST_CASES` is set (each case runs up to 64 calls on one
 /// driver, a fraction of a millisecond).
@@ -28,96 +32,6 @@ fn config() -> Config {
         config.cases = DEFAULT_CASES;
     }
     config
-}
-
-/// Any f64, weighted towards the values that broke things before: NaN, ±∞, the extremes,
-/// zeros of both signs, subnormals and a few ordinary values.
-fn hostile() -> impl Strategy<Value = f64> {
-    prop_oneof![
-        3 => prop::sample::select(vec![
-            f64::NAN,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            1e300,
-            -1e300,
-            f64::MAX,
-            f64::MIN,
-            -1e308,
-            3.5e38,
-            -0.0,
-            0.0,
-            f64::MIN_POSITIVE,
-            1e-300,
-            5e-324,
-            0.5,
-            1.0,
-            -1.0,
-            30.0,
-            -7.0,
-        ]),
-        2 => -100.0..100.0f64,
-        1 => any::<f64>(),
-    ]
-}
-
-/// Any i32, weighted towards the edges of the gears, enum values and wheel indices.
-fn hostile_int() -> impl Strategy<Value = i32> {
-    prop_oneof![
-        3 => -3..8i32,
-        1 => prop::sample::select(vec![i32::MIN, i32::MAX, -1_000_000, 1 << 30]),
-        1 => any::<i32>(),
-    ]
-}
-
-/// One driver call.
-fn op() -> impl Strategy<Value = Op> {
-    prop_oneof![
-        1 => hostile().prop_map(Op::SteeringAngle),
-        1 => hostile().prop_map(Op::CruisingSpeed),
-        1 => hostile().prop_map(Op::Throttle),
-        1 => hostile().prop_map(Op::BrakeIntensity),
-        1 => hostile_int().prop_map(Op::Gear),
-        1 => hostile_int().prop_map(Op::Indicator),
-        1 => any::<bool>().prop_map(Op::HazardFlashers),
-        1 => hostile().prop_map(Op::IndicatorPeriod),
-        1 => hostile().prop_map(Op::RightSteeringAngle),
-        1 => hostile().prop_map(Op::LeftSteeringAngle),
-        1 => any::<bool>().prop_map(Op::LimitedSlip),
-        1 => hostile_int().prop_map(Op::WiperMode),
-        1 => any::<bool>().prop_map(Op::DippedBeams),
-        1 => any::<bool>().prop_map(Op::AntifogLights),
-        1 => any::<bool>().prop_map(Op::IndicatorAutoDisabling),
-        1 => prop_oneof![-2..6i64, any::<i64>()].prop_map(Op::Read),
-        4 => (
-            hostile(),
-            prop::array::uniform4(hostile()),
-            prop::array::uniform2(hostile()),
-            prop::option::of(hostile()),
-        )
-            .prop_map(|(time, wheel_angles, steering, wiper)| Op::Step {
-                time,
-                wheel_angles,
-                steering,
-                wiper,
-            }),
-    ]
-}
-
-/// A parameter edit: any settable field with one to seven hostile values.
-fn edit() -> impl Strategy<Value = FieldEdit> {
-    (
-        0..field_names().len(),
-        prop::collection::vec(hostile(), 1..=7),
-    )
-        .prop_map(|(field, values)| FieldEdit { field, values })
-}
-
-/// The basic time step (ms): usual values, 0 (refused, the default used) and extremes.
-fn basic_time_step() -> impl Strategy<Value = u32> {
-    prop_oneof![
-        3 => prop::sample::select(vec![1, 8, 10, 16, 20, 32, 100]),
-        1 => any::<u32>(),
-    ]
 }
 
 proptest! {
@@ -325,4 +239,26 @@ fn corpus_every_field_name_is_fuzzed() {
             "{name}"
         );
     }
+}
+
+#[test]
+fn corpus_default_tyres_of_extreme_wheels_validate() {
+    // Found by the world-file fuzzing: `tireRadius = 11` (plausible: up to 1000 m) loaded, but
+    // the derived lateral relaxation length, 1.0·11 m, was outside [0.001, 10] m and the car
+    // could not be built; a 1e6 kg car's wheel load, outside [1, 1e6] N, likewise. The derived
+    // values now saturate at those bounds.
+    for class in TyreClass::ALL {
+        for (radius, load) in [(11.0, 4000.0), (1000.0, 2.5e6), (0.001, 0.5), (0.4, 1e9)] {
+            let p = class.params::<f64>(radius, load);
+            assert!(p.validate().is_ok(), "{class:?} {radius} m {load} N");
+        }
+    }
+    let p = TyreClass::PassengerCar.params::<f64>(11.0, 2.5e6);
+    assert_eq!(p.lateral.relaxation_length, 10.0);
+    // 0.4·11 m is inside the range: unchanged (within rounding of the product).
+    assert!((p.longitudinal.relaxation_length - 4.4).abs() < 1e-12);
+    assert_eq!(p.nominal_load, 1e6);
+    let p = TyreClass::PassengerCar.params::<f64>(0.001, 0.5);
+    assert_eq!(p.longitudinal.relaxation_length, 0.001);
+    assert_eq!(p.nominal_load, 1.0);
 }
