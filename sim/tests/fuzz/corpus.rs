@@ -269,3 +269,21 @@ fn an_infinite_robot_speed_is_refused_like_the_driver_s() {
         step(&mut b.sim).unwrap();
     }
 }
+
+#[test]
+fn the_fuzz_dictionary_has_every_car_key() {
+    // The coverage-guided `world_file` target finds structure through this dictionary: a Car
+    // field added without its entry would be fuzzed only by chance.
+    let dict = std::fs::read_to_string(seeds().join("../../world_file.dict")).unwrap();
+    let mut keys: Vec<String> = vehicle_model::CarParams::<f64>::FIELD_NAMES
+        .map(String::from)
+        .to_vec();
+    for slot in vehicle_model::CarParams::<f64>::WHEEL_SLOT_NAMES {
+        for field in vehicle_model::CarParams::<f64>::WHEEL_FIELD_NAMES {
+            keys.push(format!("{slot}.{field}"));
+        }
+    }
+    for key in keys {
+        assert!(dict.lines().any(|l| l == format!("\"{key}\"")), "{key}");
+    }
+}
