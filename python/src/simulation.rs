@@ -344,7 +344,11 @@ impl Simulation {
         let tables = report
             .results
             .iter()
-            .flat_map(|r| r.telemetry.iter().map(|t| (r.name.clone(), table(py, &t.samples))))
+            .flat_map(|r| {
+                r.telemetry
+                    .iter()
+                    .map(|t| (r.name.clone(), table(py, &t.samples)))
+            })
             .collect();
         Ok((json, tables))
     }

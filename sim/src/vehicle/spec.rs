@@ -201,7 +201,8 @@ fn fit_tyre(choice: &TyreChoice, radius: f64, load: f64) -> Result<TyreModel<f64
                 .map_err(|e| ParamError {
                     field: e.field.path(),
                     value: e.value,
-                    rule: Rule::Text(e.field.rule()),
+                    // `ParamError` says "must be" itself.
+                    rule: Rule::Text(e.field.rule().trim_start_matches("must be ")),
                 })
         }
     }

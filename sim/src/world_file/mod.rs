@@ -40,6 +40,7 @@ mod vehicle;
 
 use std::path::Path;
 
+use proto_geom::plausible::Compact;
 use toml::de::{DeTable, DeValue};
 use vehicle_model::Model;
 
@@ -245,7 +246,10 @@ pub fn parse_str(file: &str, text: &str) -> Result<WorldDescription, WorldFileEr
         Some(d) if !(d.is_finite() && d > 0.0) => {
             return Err(root.error(
                 "duration",
-                WorldFileErrorKind::InvalidValue(format!("{d} s: must be finite and > 0")),
+                WorldFileErrorKind::InvalidValue(format!(
+                    "{} s: must be finite and > 0",
+                    Compact(d)
+                )),
             ));
         }
         d => d,

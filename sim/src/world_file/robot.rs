@@ -1,7 +1,7 @@
 //! `[differential_wheels]`: the legacy Webots robot, its mode, noise seed and placement.
 
 use crate::diff_wheels::{DifferentialWheelsParams, RobotBody, RobotMode, RobotPlacement};
-use proto_geom::plausible::Compact;
+use proto_geom::plausible::{Compact, POSITION};
 
 use super::error::{WorldFileError, WorldFileErrorKind};
 use super::programme::{PROGRAMME, read_robot_programme};
@@ -100,7 +100,10 @@ pub(crate) fn read_robot(s: &Section<'_, '_>) -> Result<RobotDescription, WorldF
                 if !(v.is_finite() && v > 0.0) {
                     return Err(s.error(
                         key,
-                        WorldFileErrorKind::InvalidValue(format!("{v}: must be finite and > 0")),
+                        WorldFileErrorKind::InvalidValue(format!(
+                            "{}: must be finite and > 0",
+                            Compact(v)
+                        )),
                     ));
                 }
                 *slot = v;
@@ -124,10 +127,14 @@ pub(crate) fn read_robot(s: &Section<'_, '_>) -> Result<RobotDescription, WorldF
     };
 
     let [x, y, z] = s.array::<3>("translation")?.unwrap_or([0.0; 3]);
-    if let Some(bad) = [x, y, z].into_iter().find(|v| !v.is_finite()) {
+    // The same bounds as the simulator's robot placement, so that a world that loads builds.
+    if let Some(bad) = [x, y, z].into_iter().find(|v| !POSITION.contains(*v)) {
         return Err(s.error(
             "translation",
-            WorldFileErrorKind::InvalidValue(format!("{bad}: every coordinate must be finite")),
+            WorldFileErrorKind::InvalidValue(format!(
+                "{}: every coordinate must be within {POSITION}",
+                Compact(bad)
+            )),
         ));
     }
     let placement = RobotPlacement {

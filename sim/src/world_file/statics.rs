@@ -24,7 +24,8 @@ pub(crate) fn read_world(root: &Section<'_, '_>) -> Result<WorldConfig, WorldFil
             root.error(
                 "basicTimeStep",
                 WorldFileErrorKind::InvalidValue(format!(
-                    "{ms} ms: must be a whole number of milliseconds from 1 to 1000"
+                    "{} ms: must be a whole number of milliseconds from 1 to 1000",
+                    Compact(ms)
                 )),
             )
         })?;
@@ -35,8 +36,9 @@ pub(crate) fn read_world(root: &Section<'_, '_>) -> Result<WorldConfig, WorldFil
             return Err(root.error(
                 "gravity",
                 WorldFileErrorKind::InvalidValue(format!(
-                    "{g} m/s²: must be from 0 to {MAX_GRAVITY} (the magnitude of a gravity \
-                     pointing down)"
+                    "{} m/s²: must be from 0 to {MAX_GRAVITY} (the magnitude of a gravity \
+                     pointing down)",
+                    Compact(g)
                 )),
             ));
         }
@@ -130,7 +132,10 @@ fn validate_last_obstacle(
         };
         let message = match key {
             // The simulator checks half sizes; the file gives full sizes.
-            "size" => format!("{} m: every size must be finite and > 0", 2.0 * e.value),
+            "size" => format!(
+                "{} m: every size must be finite and > 0",
+                Compact(2.0 * e.value)
+            ),
             _ => format!("{}: must be {}", Compact(e.value), e.rule),
         };
         section.error(key, WorldFileErrorKind::InvalidValue(message))
@@ -166,8 +171,12 @@ pub(crate) fn yaw_of(section: &Section<'_, '_>) -> Result<f64, WorldFileError> {
         return Err(section.error(
             "rotation",
             WorldFileErrorKind::InvalidValue(format!(
-                "[{x}, {y}, {z}, {angle}]: only finite rotations about the vertical axis \
-                 ([0, 0, 1, angle]) are supported here"
+                "[{}, {}, {}, {}]: only finite rotations about the vertical axis \
+                 ([0, 0, 1, angle]) are supported here",
+                Compact(x),
+                Compact(y),
+                Compact(z),
+                Compact(angle)
             )),
         ));
     }

@@ -2,6 +2,7 @@
 //! table `[vehicle.tyre]` with the slip-based tyre's class and coefficients
 //! (`[vehicle.tyre.longitudinal]`, `[vehicle.tyre.lateral]`) or Webots' contact slip.
 
+use proto_geom::plausible::Compact;
 use toml::de::DeValue;
 use vehicle_model::{Direction, Model, TyreClass, TyreField, TyreParams, WebotsContact};
 
@@ -227,7 +228,11 @@ impl Overrides {
         self.probe.validate().map_err(|e| {
             s.error(
                 key,
-                WorldFileErrorKind::InvalidValue(format!("{}: {}", e.value, e.field.rule())),
+                WorldFileErrorKind::InvalidValue(format!(
+                    "{}: {}",
+                    Compact(e.value),
+                    e.field.rule()
+                )),
             )
         })?;
         self.set.push((field, value));

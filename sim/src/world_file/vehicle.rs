@@ -4,6 +4,7 @@
 use core::ops::Range;
 
 use proto_geom::WheelField;
+use proto_geom::plausible::Compact;
 use toml::de::DeValue;
 use vehicle_model::{
     CarField, CarParams, FieldError, FieldKind, FieldValue, Model, ParamWarning, wheel_slot_name,
@@ -14,7 +15,7 @@ use super::programme::{PROGRAMME, read_car_programme};
 use super::read::{Section, as_f64, describe};
 use super::tyre;
 use crate::programme::Programme;
-use crate::vehicle::{Mounting, TyreChoice};
+use crate::vehicle::{Mounting, TyreChoice, VehicleSpec};
 
 /// The key of a vehicle's name in `[vehicle]` and `[differential_wheels]`.
 pub(crate) const NAME: &str = "name";
@@ -180,6 +181,15 @@ pub(crate) fn read_vehicle(
             ),
         ));
     }
+    // Fields that are each plausible may still make a car that cannot be built (a 33 m tyre
+    // of the default density weighs more than 1e6 kg): a world that loads must build.
+    if let Err(e) = VehicleSpec::from_car_with(&params, &tyre) {
+        return Err(s.src.error(
+            s.span(),
+            Some("vehicle".to_string()),
+            WorldFileErrorKind::InvalidValue(format!("this car cannot be built: {e}")),
+        ));
+    }
     let name = s.string(NAME)?.unwrap_or("").to_string();
     let gears = i32::try_from(params.gear_ratios.len().saturating_sub(1)).unwrap_or(i32::MAX);
     let programme = read_car_programme(s, gears)?;
@@ -284,7 +294,7 @@ fn set(
         FieldError::NotAnInteger { value, .. } => s.error_at(
             key,
             key_span.clone(),
-            WorldFileErrorKind::InvalidValue(format!("{value}: must be an integer")),
+            WorldFileErrorKind::InvalidValue(format!("{}: must be an integer", Compact(value))),
         ),
         _ => s.error_at(
             key,

@@ -75,6 +75,10 @@ impl TyreClass {
     /// The default coefficients of this class for a tyre of `radius` (m) carrying
     /// `nominal_load` (N). The relaxation lengths scale with the radius.
     ///
+    /// The relaxation lengths and the nominal load saturate at the bounds that
+    /// [`TyreParams::validate`] accepts (0.001–10 m, 1–1e6 N), so every plausible car (tyres of
+    /// up to 1000 m, up to 1e6 kg) gets a valid default set.
+    ///
     /// Where the numbers come from (textbook ranges; each set is one point inside them):
     /// * passenger car (Pacejka, *Tire and Vehicle Dynamics*; Gillespie, *Fundamentals of
     ///   Vehicle Dynamics*): cornering stiffness 15–25 `F_z` per rad (here 18), longitudinal
@@ -93,6 +97,11 @@ impl TyreClass {
     /// example MF data sets (`p_Dy2/p_Dy1 ≈ −0.1`, `p_Ky2 ≈ 2`).
     pub fn params<T: Real>(self, radius: T, nominal_load: T) -> TyreParams<T> {
         let f = T::from_f64;
+        let within = |field: TyreField, v: T| {
+            let (lo, hi) = field.range();
+            v.clamp(f(lo), f(hi))
+        };
+        let nominal_load = within(TyreField::NominalLoad, nominal_load);
         // (μ, stiffness, C, E, relaxation length / radius) per direction, then c_rr.
         let (long, lat, rolling) = match self {
             TyreClass::PassengerCar => (
@@ -112,7 +121,10 @@ impl TyreClass {
             stiffness: f(k),
             shape: f(c),
             curvature: f(e),
-            relaxation_length: f(sigma) * radius,
+            relaxation_length: within(
+                TyreField::RelaxationLength(Direction::Longitudinal),
+                f(sigma) * radius,
+            ),
         };
         TyreParams {
             longitudinal: curve(long),
