@@ -10,7 +10,8 @@
 //! * [`world_file`]: TOML worlds in Webots vocabulary (`basicTimeStep`, `[vehicle]` with any
 //!   `Car` field, `[differential_wheels]`, obstacles), loaded by path or model name;
 //! * [`scenario`], [`telemetry`], [`report`], [`cli`]: the `vehicle-sim` command's driving
-//!   programmes, metrics, CSV, SVG plots and JSON (see `README.md`).
+//!   programmes, metrics, CSV, SVG plots and JSON (see `README.md`);
+//! * [`replay`]: the run as an animated 3D scene, `replay.glb`.
 //!
 //! The public API is in f64 and SI units (m, m/s, rad, rad/s, N·m, s; the step in ms as
 //! Webots' `basicTimeStep`); rapier (pinned `=0.36.1`) runs in f32 inside and is never exposed.
@@ -63,6 +64,7 @@ mod body;
 pub mod cli;
 pub mod motor;
 pub mod placement;
+pub mod replay;
 pub mod report;
 pub mod rng;
 pub mod scenario;

@@ -402,8 +402,9 @@ fn friction_use(samples: &[Sample], title: String) -> Option<Figure> {
     })
 }
 
-/// Writes `telemetry.csv`, `metrics.json` and the plots of [`figures`] into `dir` (created
-/// if needed) and returns the paths written.
+/// Writes `telemetry.csv`, `metrics.json`, the plots of [`figures`] and the 3D replay
+/// `replay.glb` ([`crate::replay`]) into `dir` (created if needed) and returns the paths
+/// written.
 ///
 /// # Errors
 /// The first I/O error, with the path it concerns.
@@ -417,20 +418,24 @@ pub fn write_outputs(
     };
     std::fs::create_dir_all(dir).map_err(|e| annotate(dir, e))?;
     let mut written = Vec::new();
-    let mut write = |name: &str, text: String| -> Result<(), std::io::Error> {
+    let mut write = |name: &str, bytes: Vec<u8>| -> Result<(), std::io::Error> {
         let path = dir.join(name);
-        std::fs::write(&path, text).map_err(|e| annotate(&path, e))?;
+        std::fs::write(&path, bytes).map_err(|e| annotate(&path, e))?;
         written.push(path);
         Ok(())
     };
     write(
         "telemetry.csv",
-        write_csv(report.results.iter().map(|r| &r.telemetry)),
+        write_csv(report.results.iter().map(|r| &r.telemetry)).into(),
     )?;
-    write("metrics.json", to_json(report, world_warnings) + "\n")?;
+    write(
+        "metrics.json",
+        (to_json(report, world_warnings) + "\n").into(),
+    )?;
     for (name, figure) in figures(report) {
-        write(name, figure.to_svg())?;
+        write(name, figure.to_svg().into())?;
     }
+    write("replay.glb", crate::replay::to_glb(report)?)?;
     Ok(written)
 }
 
@@ -461,6 +466,7 @@ mod tests {
                 },
                 notes: vec!["a note".into()],
                 guides: Vec::new(),
+                replay: Default::default(),
             }],
             sim_seconds: 12.5,
             wall_seconds: 0.5,

@@ -5,6 +5,7 @@
 use vehicle_model::Driver;
 
 use crate::placement::car_placement;
+use crate::replay::Recorder;
 use crate::simulation::Simulation;
 use crate::telemetry::{Sample, Telemetry};
 use crate::vehicle::{VehicleId, VehicleSpec, VehicleState};
@@ -28,6 +29,7 @@ pub(crate) struct CarRig {
     samples: Vec<Sample>,
     notes: Vec<String>,
     guides: Vec<Vec<[f64; 2]>>,
+    recorder: Recorder,
     next_progress: f64,
     /// The world's time limit for this scenario (s).
     pub(crate) limit: f64,
@@ -62,6 +64,7 @@ impl CarRig {
         )?;
         let vehicle = sim.world().vehicle(id)?;
         let (state, spec) = (*vehicle.state(), *vehicle.spec());
+        let recorder = Recorder::for_simulation(&sim);
         Ok(CarRig {
             sim,
             id,
@@ -70,6 +73,7 @@ impl CarRig {
             samples: Vec::new(),
             notes,
             guides: Vec::new(),
+            recorder,
             next_progress: 0.0,
             limit,
             expected,
@@ -131,6 +135,7 @@ impl CarRig {
     /// the world advances one `basicTimeStep` with them, and the new state is recorded.
     pub(crate) fn step(&mut self, progress: &mut dyn FnMut(f64, f64)) -> Result<(), ScenarioError> {
         self.sim.step()?;
+        self.recorder.sample(self.sim.world());
         let t = self.sim.telemetry(self.id)?;
         self.state = t.state;
         let d = self.sim.driver(self.id)?;
@@ -186,6 +191,7 @@ impl CarRig {
             },
             notes: self.notes,
             guides: self.guides,
+            replay: self.recorder.finish(self.sim.world()),
         }
     }
 }

@@ -31,6 +31,7 @@ pub use fit::{Circle, fit_circle};
 pub use lane::{LaneSection, double_lane_change};
 
 use crate::error::SimError;
+use crate::replay::Recording;
 use crate::telemetry::Telemetry;
 use crate::world_file::{WorldDescription, WorldVehicle};
 
@@ -244,6 +245,8 @@ pub struct ScenarioResult {
     /// Lines of the course drawn under the trajectory (m, world frame), e.g. the cone lines of
     /// the lane change.
     pub guides: Vec<Vec<[f64; 2]>>,
+    /// The run sampled for its 3D replay.
+    pub replay: Recording,
 }
 
 impl ScenarioResult {

@@ -3,6 +3,7 @@
 use core::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use crate::diff_wheels::RobotId;
+use crate::replay::Recorder;
 use crate::telemetry::{Sample, Telemetry};
 use crate::world::World;
 use crate::world_file::{RobotDescription, WorldDescription};
@@ -19,6 +20,7 @@ struct RobotRig {
     world: World,
     id: RobotId,
     samples: Vec<Sample>,
+    recorder: Recorder,
     limit: f64,
     expected: f64,
     next_progress: f64,
@@ -33,6 +35,7 @@ impl RobotRig {
         let mut world = World::new(desc.config.clone())?;
         let id = world.add_differential_wheels(robot.params, robot.mode, robot.placement)?;
         Ok(RobotRig {
+            recorder: Recorder::for_world(&world),
             world,
             id,
             samples: Vec::new(),
@@ -66,6 +69,7 @@ impl RobotRig {
                 break;
             }
             self.world.step()?;
+            self.recorder.sample(&self.world);
             let robot = self.world.robot(self.id)?;
             let pose = robot.pose();
             let [l, r] = robot.wheel_speeds();
@@ -147,6 +151,7 @@ impl RobotRig {
             },
             notes: Vec::new(),
             guides: Vec::new(),
+            replay: self.recorder.finish(&self.world),
         })
     }
 }
