@@ -20,9 +20,9 @@ for tool in node npm; do
 done
 [ -x "$chromium" ] || { echo "replay check: no Chromium at $chromium (apt-get install chromium)" >&2; exit 1; }
 
+# Installed once, and again whenever package-lock.json changes.
 if [ ! -f "$here/node_modules/.package-lock.json" ] ||
-   ! cmp -s <(sed -n '/"packages"/,$p' "$here/package-lock.json" | sed 1d) \
-             <(sed -n '/"packages"/,$p' "$here/node_modules/.package-lock.json" | sed 1d) 2>/dev/null; then
+   [ "$here/package-lock.json" -nt "$here/node_modules/.package-lock.json" ]; then
   echo "replay check: installing the npm packages into $here/node_modules"
   (cd "$here" && npm ci --no-audit --no-fund)
 fi
