@@ -3,7 +3,13 @@
 // Test helpers outside #[test] functions unwrap too: a failed lookup is a failed test.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use proto_geom::export::{ChassisBox, Scene, vehicle_to_gltf};
+use std::f64::consts::FRAC_PI_4;
+
+use ackermann::Wheel;
+use proto_geom::export::{
+    Animation, AnimationError, ChassisBox, Geometry, Interpolation, Keyframes, Material, Property,
+    Scene, vehicle_to_gltf,
+};
 use proto_geom::nalgebra::{Isometry3, Vector3};
 use proto_geom::{RenderMesh, ShippedVehicle, TriMesh, WheelPreset};
 
@@ -182,4 +188,214 @@ fn f32_meshes_export_too() {
     let glb = Scene::wheel(&w).to_glb().unwrap();
     let (_, meshes) = parse_glb(&glb);
     assert_eq!(meshes[2].2, w.rim_centre().triangle_count());
+}
+
+/// A scene with one node carrying a polyline and one carrying segments, and an animation that
+/// moves, turns and hides them.
+fn animated_scene() -> (Scene, Animation) {
+    let mut scene = Scene::new();
+    let red = scene.add_material(
+        Material::new("red", [1.0, 0.0, 0.0], 1.0, 0.0).with_emissive([1.0, 0.0, 0.0]),
+    );
+    let path = scene.add_geometry(
+        "path",
+        Geometry::Polyline(vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 2.0, 0.0]]),
+        red,
+    );
+    let grid = scene.add_geometry(
+        "grid",
+        // The odd last point is ignored: two segments.
+        Geometry::Segments(vec![
+            [0.0; 3],
+            [1.0, 0.0, 0.0],
+            [0.0; 3],
+            [0.0, 1.0, 0.0],
+            [5.0; 3],
+        ]),
+        red,
+    );
+    let a = scene.add_node(None, "a", Isometry3::identity(), Some(path));
+    let b = scene.add_node(Some(a), "b", Isometry3::identity(), Some(grid));
+    let mut anim = Animation::new("drive");
+    let t = anim.add_timeline(vec![0.0, 0.5, 1.0]);
+    let lights = anim.add_timeline(vec![0.0, 0.75]);
+    anim.add_channel(
+        a,
+        t,
+        Interpolation::Linear,
+        Keyframes::Translation(vec![[0.0; 3], [1.0, 0.0, 0.0], [2.0, 0.0, 0.0]]),
+    );
+    // Half turns about z given with alternating signs: the writer makes them continuous.
+    let (s, c) = (FRAC_PI_4.sin() as f32, FRAC_PI_4.cos() as f32);
+    anim.add_channel(
+        a,
+        t,
+        Interpolation::Linear,
+        Keyframes::Rotation(vec![
+            [0.0, 0.0, 0.0, 2.0],
+            [0.0, 0.0, -s, -c],
+            [0.0, 0.0, -1.0, 0.0],
+        ]),
+    );
+    anim.add_channel(
+        b,
+        lights,
+        Interpolation::Step,
+        Keyframes::Scale(vec![[1.0; 3], [0.0; 3]]),
+    );
+    (scene, anim)
+}
+
+#[test]
+fn animations_and_lines_round_trip() {
+    let (mut scene, anim) = animated_scene();
+    assert_eq!(scene.add_animation(anim), Ok(0));
+    let glb = scene.to_glb().unwrap();
+    let doc = gltf::Gltf::from_slice(&glb).expect("valid glTF");
+    let blob = doc.blob.clone().unwrap();
+    let modes: Vec<_> = doc
+        .meshes()
+        .map(|m| {
+            let p = m.primitives().next().unwrap();
+            let n = p.reader(|_| Some(&blob)).read_positions().unwrap().count();
+            (p.mode(), n)
+        })
+        .collect();
+    assert_eq!(
+        modes,
+        [
+            (gltf::mesh::Mode::LineStrip, 3),
+            (gltf::mesh::Mode::Lines, 4)
+        ]
+    );
+    let red = doc.materials().next().unwrap();
+    assert_eq!(red.emissive_factor(), [1.0, 0.0, 0.0]);
+    let anims: Vec<_> = doc.animations().collect();
+    assert_eq!(anims.len(), 1);
+    assert_eq!(anims[0].name(), Some("drive"));
+    let mut seen = Vec::new();
+    for channel in anims[0].channels() {
+        let reader = channel.reader(|_| Some(&blob));
+        let times: Vec<f32> = reader.read_inputs().unwrap().collect();
+        let node = channel.target().node().name().unwrap().to_string();
+        let interpolation = channel.sampler().interpolation();
+        match reader.read_outputs().unwrap() {
+            gltf::animation::util::ReadOutputs::Translations(v) => {
+                assert_eq!(times, [0.0, 0.5, 1.0]);
+                assert_eq!(v.last(), Some([2.0, 0.0, 0.0]));
+                seen.push((node, "translation", interpolation));
+            }
+            gltf::animation::util::ReadOutputs::Rotations(r) => {
+                let q: Vec<[f32; 4]> = r.into_f32().collect();
+                // Normalised, and each within 90° of the previous one in 4-D.
+                assert_eq!(q[0], [0.0, 0.0, 0.0, 1.0]);
+                for w in q.windows(2) {
+                    let dot: f32 = w[0].iter().zip(&w[1]).map(|(a, b)| a * b).sum();
+                    assert!(dot > 0.0, "{q:?}");
+                }
+                assert_eq!(q[2], [0.0, 0.0, 1.0, 0.0]);
+                seen.push((node, "rotation", interpolation));
+            }
+            gltf::animation::util::ReadOutputs::Scales(v) => {
+                assert_eq!(times, [0.0, 0.75]);
+                assert_eq!(v.collect::<Vec<_>>(), [[1.0; 3], [0.0; 3]]);
+                seen.push((node, "scale", interpolation));
+            }
+            gltf::animation::util::ReadOutputs::MorphTargetWeights(_) => unreachable!(),
+        }
+    }
+    use gltf::animation::Interpolation as I;
+    assert_eq!(
+        seen,
+        [
+            ("a".to_string(), "translation", I::Linear),
+            ("a".to_string(), "rotation", I::Linear),
+            ("b".to_string(), "scale", I::Step),
+        ]
+    );
+    // Two timelines, stored once each although the first drives two channels.
+    let inputs: std::collections::BTreeSet<usize> =
+        anims[0].samplers().map(|s| s.input().index()).collect();
+    assert_eq!(inputs.len(), 2);
+}
+
+#[test]
+fn bad_animations_are_refused_with_their_reason() {
+    let (mut scene, anim) = animated_scene();
+    let mut late = anim.clone();
+    late.timelines[0][2] = 0.5;
+    assert_eq!(
+        scene.add_animation(late),
+        Err(AnimationError::BadTime {
+            timeline: 0,
+            index: 2,
+            time: 0.5
+        })
+    );
+    let mut short = anim.clone();
+    short.timelines[1].push(2.0);
+    assert_eq!(
+        scene.add_animation(short),
+        Err(AnimationError::CountMismatch {
+            channel: 2,
+            times: 3,
+            values: 2
+        })
+    );
+    let mut twice = anim.clone();
+    twice.channels.push(twice.channels[0].clone());
+    assert_eq!(
+        scene.add_animation(twice),
+        Err(AnimationError::DuplicateTarget {
+            channel: 3,
+            node: 0,
+            property: Property::Translation
+        })
+    );
+    let mut lost = anim.clone();
+    lost.channels[2].node = 7;
+    assert_eq!(
+        scene.add_animation(lost),
+        Err(AnimationError::UnknownNode {
+            channel: 2,
+            node: 7
+        })
+    );
+    let mut nan = anim.clone();
+    nan.channels[1].values = Keyframes::Rotation(vec![[0.0; 4]; 3]);
+    assert_eq!(
+        scene.add_animation(nan.clone()),
+        Err(AnimationError::BadValue { channel: 1 })
+    );
+    assert_eq!(
+        scene.add_animation(Animation::new("empty")),
+        Err(AnimationError::NoChannel)
+    );
+    assert!(scene.animations.is_empty());
+    // Pushed past the check, the writer refuses it too.
+    scene.animations.push(nan);
+    let e = scene.to_glb().unwrap_err();
+    assert_eq!(e.kind(), std::io::ErrorKind::InvalidInput);
+    assert!(e.to_string().contains("channel 1"), "{e}");
+}
+
+#[test]
+fn two_vehicles_share_wheel_meshes_and_name_their_nodes() {
+    let layout = ShippedVehicle::BmwX5.layout::<f64>();
+    let chassis = ChassisBox::from_extents(-1.0, 3.85, 1.75, 0.0, 1.45);
+    let mut scene = Scene::new();
+    let world = scene.add_node(None, "world", Isometry3::identity(), None);
+    let grey = Material::new("grey", [0.5; 3], 0.5, 0.0);
+    let blue = Material::new("blue", [0.1, 0.2, 0.8], 0.5, 0.0);
+    let a = scene.add_vehicle(Some(world), "car0", &layout, &chassis, grey);
+    let b = scene.add_vehicle(Some(world), "car1", &layout, &chassis, blue);
+    // Two chassis (two materials), one tyre, rim and hub for all eight wheels.
+    assert_eq!(scene.meshes.len(), 5);
+    assert_eq!(scene.nodes[world].children, [a.root, b.root]);
+    assert_eq!(
+        scene.nodes[b.wheels[Wheel::RearLeft]].name,
+        "rear_left_wheel"
+    );
+    assert_eq!(scene.nodes[a.chassis].name, "chassis");
+    assert_ne!(a.wheels[Wheel::FrontRight], b.wheels[Wheel::FrontRight]);
 }

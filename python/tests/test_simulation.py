@@ -136,7 +136,7 @@ def test_driver_commands_warn_and_clamp_as_the_driver_library_does():
 def test_unknown_scenarios_and_wrong_vehicles_are_errors():
     with pytest.raises(ValueError, match="unknown scenario 'drift'"):
         wv.Simulation().run("drift")
-    with pytest.raises(RuntimeError, match="needs a DifferentialWheels robot"):
+    with pytest.raises(RuntimeError, match="needs a world with one DifferentialWheels robot"):
         wv.Simulation().run("square")
     robot = wv.Simulation(ROOT / "sim" / "worlds" / "e-puck.toml")
     assert robot.vehicle == "DifferentialWheels" and robot.cars == []

@@ -14,6 +14,7 @@
 //! * [`scenario`], [`telemetry`], [`report`], [`cli`]: the `vehicle-sim` command's driving
 //!   programmes, metrics, CSV, SVG plots and JSON (see `README.md`); the report takes any
 //!   run, also one driven through this API (`examples/custom_route.rs`).
+//! * [`replay`]: the run as an animated 3D scene, `replay.glb`.
 //!
 //! The public API is in f64 and SI units (m, m/s, rad, rad/s, N·m, s; the step in ms as
 //! Webots' `basicTimeStep`); rapier (pinned `=0.36.1`) runs in f32 inside and is never exposed.
@@ -67,6 +68,7 @@ pub mod cli;
 pub mod motor;
 pub mod placement;
 pub mod programme;
+pub mod replay;
 pub mod report;
 pub mod rng;
 pub mod scenario;

@@ -10,7 +10,7 @@ use json::validation::{Checked, USize64};
 
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
-use super::Scene;
+use super::{Animation, Geometry, Interpolation, Keyframes, Scene};
 
 /// The rotation from the Webots/vehicle frame (x forward, y left, z up) to glTF's (y up,
 /// z forward, x left): glTF (x, y, z) = vehicle (y, z, x), a turn of −2π/3 rad about (1, 1, 1).
@@ -32,7 +32,7 @@ fn push_view(
     root: &mut json::Root,
     bin: &mut Vec<u8>,
     data: &[u8],
-    target: json::buffer::Target,
+    target: Option<json::buffer::Target>,
 ) -> json::Index<json::buffer::View> {
     while !bin.len().is_multiple_of(4) {
         bin.push(0);
@@ -45,7 +45,7 @@ fn push_view(
         byte_offset: Some(u64_len(offset)),
         byte_stride: None,
         name: None,
-        target: Some(Checked::Valid(target)),
+        target: target.map(Checked::Valid),
         extensions: None,
         extras: Default::default(),
     })
@@ -56,7 +56,7 @@ fn accessor(
     count: usize,
     component: json::accessor::ComponentType,
     type_: json::accessor::Type,
-    bounds: Option<([f32; 3], [f32; 3])>,
+    bounds: Option<(&[f32], &[f32])>,
 ) -> json::Accessor {
     let (min, max) = match bounds {
         Some((lo, hi)) => (
@@ -85,12 +85,213 @@ fn f32_bytes(values: impl Iterator<Item = f32>) -> Vec<u8> {
     values.flat_map(f32::to_le_bytes).collect()
 }
 
+/// A primitive without material: positions, normals, texture coordinates if any, indices.
+fn triangles(
+    root: &mut json::Root,
+    bin: &mut Vec<u8>,
+    mesh: &crate::render::RenderMesh,
+) -> json::mesh::Primitive {
+    use json::accessor::{ComponentType, Type};
+    use json::buffer::Target;
+
+    let n = mesh.vertices.len();
+    let positions = f32_bytes(mesh.vertices.iter().flat_map(|v| v.position));
+    let view = push_view(root, bin, &positions, Some(Target::ArrayBuffer));
+    let (lo, hi) = mesh.bounds();
+    let pos = root.push(accessor(
+        view,
+        n,
+        ComponentType::F32,
+        Type::Vec3,
+        Some((&lo, &hi)),
+    ));
+    let normals = f32_bytes(mesh.vertices.iter().flat_map(|v| v.normal));
+    let view = push_view(root, bin, &normals, Some(Target::ArrayBuffer));
+    let nor = root.push(accessor(view, n, ComponentType::F32, Type::Vec3, None));
+    let mut attributes = BTreeMap::new();
+    attributes.insert(Checked::Valid(json::mesh::Semantic::Positions), pos);
+    attributes.insert(Checked::Valid(json::mesh::Semantic::Normals), nor);
+    if mesh.has_tex_coords {
+        // glTF puts the texture origin at the top left, VRML at the bottom left.
+        let uv = f32_bytes(
+            mesh.vertices
+                .iter()
+                .flat_map(|v| [v.tex_coord[0], 1.0 - v.tex_coord[1]]),
+        );
+        let view = push_view(root, bin, &uv, Some(Target::ArrayBuffer));
+        let tex = root.push(accessor(view, n, ComponentType::F32, Type::Vec2, None));
+        attributes.insert(Checked::Valid(json::mesh::Semantic::TexCoords(0)), tex);
+    }
+    let indices: Vec<u8> = mesh.indices.iter().flat_map(|i| i.to_le_bytes()).collect();
+    let view = push_view(root, bin, &indices, Some(Target::ElementArrayBuffer));
+    let ind = root.push(accessor(
+        view,
+        mesh.indices.len(),
+        ComponentType::U32,
+        Type::Scalar,
+        None,
+    ));
+    json::mesh::Primitive {
+        attributes,
+        extensions: None,
+        extras: Default::default(),
+        indices: Some(ind),
+        material: None,
+        mode: Checked::Valid(json::mesh::Mode::Triangles),
+        targets: None,
+    }
+}
+
+/// A line primitive without material: positions only (no normals: lines are not lit by the
+/// glTF lighting model).
+fn lines(
+    root: &mut json::Root,
+    bin: &mut Vec<u8>,
+    points: &[[f32; 3]],
+    mode: json::mesh::Mode,
+) -> json::mesh::Primitive {
+    use json::accessor::{ComponentType, Type};
+
+    let bytes = f32_bytes(points.iter().flatten().copied());
+    let view = push_view(root, bin, &bytes, Some(json::buffer::Target::ArrayBuffer));
+    let (lo, hi) = bounds(points);
+    let pos = root.push(accessor(
+        view,
+        points.len(),
+        ComponentType::F32,
+        Type::Vec3,
+        Some((&lo, &hi)),
+    ));
+    let mut attributes = BTreeMap::new();
+    attributes.insert(Checked::Valid(json::mesh::Semantic::Positions), pos);
+    json::mesh::Primitive {
+        attributes,
+        extensions: None,
+        extras: Default::default(),
+        indices: None,
+        material: None,
+        mode: Checked::Valid(mode),
+        targets: None,
+    }
+}
+
+/// Component-wise minimum and maximum of `points`; zeros for none.
+fn bounds<const N: usize>(points: &[[f32; N]]) -> ([f32; N], [f32; N]) {
+    let Some(&first) = points.first() else {
+        return ([0.0; N], [0.0; N]);
+    };
+    points.iter().fold((first, first), |(mut lo, mut hi), p| {
+        for k in 0..N {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+        (lo, hi)
+    })
+}
+
+/// Unit quaternions `[x, y, z, w]`, each with the sign nearest the previous one: slerp between
+/// two keyframes then turns the short way, whatever sign the caller gave.
+fn continuous_rotations(values: &[[f32; 4]]) -> Vec<[f32; 4]> {
+    let mut out: Vec<[f32; 4]> = Vec::with_capacity(values.len());
+    for q in values {
+        let norm = q.iter().map(|c| c * c).sum::<f32>().sqrt();
+        let mut u = q.map(|c| c / norm);
+        if let Some(p) = out.last()
+            && p.iter().zip(&u).map(|(a, b)| a * b).sum::<f32>() < 0.0
+        {
+            u = u.map(|c| -c);
+        }
+        out.push(u);
+    }
+    out
+}
+
+/// Writes one animation: each timeline as an input accessor (with its min and max, as glTF
+/// requires), each channel as an output accessor, a sampler and a channel. Animation data has
+/// no buffer-view target (it is not vertex data).
+fn push_animation(root: &mut json::Root, bin: &mut Vec<u8>, animation: &Animation) {
+    use json::accessor::{ComponentType, Type};
+    use json::animation::{Channel, Property, Sampler, Target};
+
+    let inputs: Vec<_> = animation
+        .timelines
+        .iter()
+        .map(|times| {
+            let view = push_view(root, bin, &f32_bytes(times.iter().copied()), None);
+            let lo = times.first().copied().unwrap_or(0.0);
+            let hi = times.last().copied().unwrap_or(0.0);
+            root.push(accessor(
+                view,
+                times.len(),
+                ComponentType::F32,
+                Type::Scalar,
+                Some((&[lo], &[hi])),
+            ))
+        })
+        .collect();
+    let mut samplers = Vec::new();
+    let mut channels = Vec::new();
+    for c in &animation.channels {
+        let Some(&input) = inputs.get(c.timeline) else {
+            continue;
+        };
+        let (data, count, type_, path) = match &c.values {
+            Keyframes::Translation(v) => (
+                f32_bytes(v.iter().flatten().copied()),
+                v.len(),
+                Type::Vec3,
+                Property::Translation,
+            ),
+            Keyframes::Scale(v) => (
+                f32_bytes(v.iter().flatten().copied()),
+                v.len(),
+                Type::Vec3,
+                Property::Scale,
+            ),
+            Keyframes::Rotation(v) => (
+                f32_bytes(continuous_rotations(v).iter().flatten().copied()),
+                v.len(),
+                Type::Vec4,
+                Property::Rotation,
+            ),
+        };
+        let view = push_view(root, bin, &data, None);
+        let output = root.push(accessor(view, count, ComponentType::F32, type_, None));
+        let interpolation = match c.interpolation {
+            Interpolation::Linear => json::animation::Interpolation::Linear,
+            Interpolation::Step => json::animation::Interpolation::Step,
+        };
+        channels.push(Channel {
+            sampler: index_u32(samplers.len()),
+            target: Target {
+                extensions: None,
+                extras: Default::default(),
+                node: index_u32(c.node),
+                path: Checked::Valid(path),
+            },
+            extensions: None,
+            extras: Default::default(),
+        });
+        samplers.push(Sampler {
+            extensions: None,
+            extras: Default::default(),
+            input,
+            interpolation: Checked::Valid(interpolation),
+            output,
+        });
+    }
+    root.push(json::Animation {
+        extensions: None,
+        extras: Default::default(),
+        channels,
+        name: Some(animation.name.clone()),
+        samplers,
+    });
+}
+
 impl Scene {
     /// Builds the glTF document and its binary buffer.
     fn gltf(&self) -> (json::Root, Vec<u8>) {
-        use json::accessor::{ComponentType, Type};
-        use json::buffer::Target;
-
         let mut root = json::Root {
             asset: json::Asset {
                 generator: Some("proto-geom".to_string()),
@@ -110,56 +311,25 @@ impl Scene {
                     roughness_factor: json::material::StrengthFactor(m.roughness),
                     ..Default::default()
                 },
+                emissive_factor: json::material::EmissiveFactor(m.emissive),
                 ..Default::default()
             });
         }
 
         for sm in &self.meshes {
-            let mesh = &sm.mesh;
-            let n = mesh.vertices.len();
-            let positions = f32_bytes(mesh.vertices.iter().flat_map(|v| v.position));
-            let view = push_view(&mut root, &mut bin, &positions, Target::ArrayBuffer);
-            let pos = root.push(accessor(
-                view,
-                n,
-                ComponentType::F32,
-                Type::Vec3,
-                Some(mesh.bounds()),
-            ));
-            let normals = f32_bytes(mesh.vertices.iter().flat_map(|v| v.normal));
-            let view = push_view(&mut root, &mut bin, &normals, Target::ArrayBuffer);
-            let nor = root.push(accessor(view, n, ComponentType::F32, Type::Vec3, None));
-            let mut attributes = BTreeMap::new();
-            attributes.insert(Checked::Valid(json::mesh::Semantic::Positions), pos);
-            attributes.insert(Checked::Valid(json::mesh::Semantic::Normals), nor);
-            if mesh.has_tex_coords {
-                // glTF puts the texture origin at the top left, VRML at the bottom left.
-                let uv = f32_bytes(
-                    mesh.vertices
-                        .iter()
-                        .flat_map(|v| [v.tex_coord[0], 1.0 - v.tex_coord[1]]),
-                );
-                let view = push_view(&mut root, &mut bin, &uv, Target::ArrayBuffer);
-                let tex = root.push(accessor(view, n, ComponentType::F32, Type::Vec2, None));
-                attributes.insert(Checked::Valid(json::mesh::Semantic::TexCoords(0)), tex);
-            }
-            let indices: Vec<u8> = mesh.indices.iter().flat_map(|i| i.to_le_bytes()).collect();
-            let view = push_view(&mut root, &mut bin, &indices, Target::ElementArrayBuffer);
-            let ind = root.push(accessor(
-                view,
-                mesh.indices.len(),
-                ComponentType::U32,
-                Type::Scalar,
-                None,
-            ));
+            let primitive = match &sm.geometry {
+                Geometry::Triangles(mesh) => triangles(&mut root, &mut bin, mesh),
+                Geometry::Segments(points) => {
+                    let even = &points[..points.len() / 2 * 2];
+                    lines(&mut root, &mut bin, even, json::mesh::Mode::Lines)
+                }
+                Geometry::Polyline(points) => {
+                    lines(&mut root, &mut bin, points, json::mesh::Mode::LineStrip)
+                }
+            };
             let primitive = json::mesh::Primitive {
-                attributes,
-                extensions: None,
-                extras: Default::default(),
-                indices: Some(ind),
                 material: (sm.material < self.materials.len()).then(|| index_u32(sm.material)),
-                mode: Checked::Valid(json::mesh::Mode::Triangles),
-                targets: None,
+                ..primitive
             };
             root.push(json::Mesh {
                 extensions: None,
@@ -175,7 +345,8 @@ impl Scene {
                     translation: Vector3<f64>,
                     rotation: UnitQuaternion<f64>,
                     mesh: Option<usize>,
-                    children: &[usize]| json::Node {
+                    children: &[usize],
+                    visible: bool| json::Node {
             camera: None,
             children: (!children.is_empty())
                 .then(|| children.iter().map(|&c| index_u32(c)).collect()),
@@ -188,7 +359,7 @@ impl Scene {
                 // glTF's order is [x, y, z, w], nalgebra's `coords`.
                 rotation.coords.map(|c| c as f32).into(),
             )),
-            scale: None,
+            scale: (!visible).then_some([0.0; 3]),
             translation: Some(f(translation)),
             skin: None,
             weights: None,
@@ -200,6 +371,7 @@ impl Scene {
                 n.transform.rotation,
                 n.mesh,
                 &n.children,
+                n.visible,
             ));
         }
         // A last node turns the z-up vehicle frame into glTF's y-up frame.
@@ -209,7 +381,11 @@ impl Scene {
             vehicle_to_gltf(),
             None,
             &self.roots,
+            true,
         ));
+        for animation in &self.animations {
+            push_animation(&mut root, &mut bin, animation);
+        }
         let scene = root.push(json::Scene {
             extensions: None,
             extras: Default::default(),
@@ -233,13 +409,21 @@ impl Scene {
     }
 
     /// The scene as a binary glTF 2.0 file (.glb): one buffer, one mesh per [`super::SceneMesh`]
-    /// (positions, normals, texture coordinates for the tyre, `u32` indices), metallic-roughness
-    /// materials, the node tree under a root node that turns the z-up vehicle frame into glTF's
-    /// y-up frame.
+    /// (triangles with positions, normals, texture coordinates for the tyre and `u32` indices;
+    /// or lines, `LINES` or `LINE_STRIP`, with positions only), metallic-roughness materials
+    /// with their emission, the node tree under a root node that turns the z-up vehicle frame
+    /// into glTF's y-up frame, and the animations (time in s, one input accessor per timeline).
     ///
     /// # Errors
-    /// A JSON serialisation failure or a file larger than 4 GiB, as [`io::Error`].
+    /// An animation that fails [`Animation::validate`] (pushed to [`Scene::animations`]
+    /// directly), as [`io::ErrorKind::InvalidInput`]; a JSON serialisation failure or a file
+    /// larger than 4 GiB, as [`io::Error`].
     pub fn to_glb(&self) -> io::Result<Vec<u8>> {
+        for animation in &self.animations {
+            animation
+                .validate(self.nodes.len())
+                .map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e))?;
+        }
         let (root, bin) = self.gltf();
         let mut json_bytes = json::serialize::to_vec(&root).map_err(io::Error::other)?;
         while !json_bytes.len().is_multiple_of(4) {

@@ -1,8 +1,10 @@
 //! Export of wheels and vehicle layouts to Wavefront OBJ and binary glTF 2.0 (`std` feature).
 //!
-//! A [`Scene`] is a small node tree of named, placed [`RenderMesh`]es with PBR materials.
-//! Build one with [`Scene::wheel`] or [`Scene::vehicle`], then write it with
-//! [`Scene::write_obj`] (+ [`Scene::write_mtl`]) or [`Scene::to_glb`].
+//! A [`Scene`] is a small node tree of named, placed [`RenderMesh`]es and line sets with PBR
+//! materials, optionally animated ([`Animation`]). Build one with [`Scene::wheel`] or
+//! [`Scene::vehicle`], or node by node (a vehicle inside a larger scene with
+//! [`Scene::add_vehicle`]), then write it with [`Scene::write_obj`] (+ [`Scene::write_mtl`]) or
+//! [`Scene::to_glb`] (the only one of the two that carries the animations).
 //!
 //! ```
 //! use proto_geom::export::Scene;
@@ -18,22 +20,24 @@
 //! assert_eq!(&glb[0..4], b"glTF");
 //! ```
 
+mod animation;
 mod glb;
 mod obj;
 
+pub use animation::{Animation, AnimationError, Channel, Interpolation, Keyframes, Property};
 pub use glb::vehicle_to_gltf;
 
 use std::string::{String, ToString};
 use std::vec::Vec;
 
-use ackermann::{Real, Wheel};
+use ackermann::{PerWheel, Real, Wheel};
 use nalgebra::{Isometry3, Point3, Vector3};
 
 use crate::glue::{identity, isometry_f64};
 use crate::layout::VehicleLayout;
 use crate::mesh::BoxMesh;
 use crate::render::RenderMesh;
-use crate::wheel::{PbrAppearance, ValidWheel, WheelParams, WheelShape, WheelSide};
+use crate::wheel::{PbrAppearance, ValidWheel, WheelShape, WheelSide};
 
 /// The parts of one wheel in a scene: (node name, mesh index).
 type WheelParts = Vec<(&'static str, usize)>;
@@ -49,19 +53,40 @@ pub struct Material {
     pub roughness: f32,
     /// Metalness in [0, 1].
     pub metalness: f32,
+    /// Linear RGB light the surface emits, each in [0, 1] (glTF `emissiveFactor`; OBJ `Ke`):
+    /// lamps, and lines that keep their colour whatever the lighting.
+    pub emissive: [f32; 3],
 }
 
 impl Material {
-    /// A material named `name` from a Webots `PBRAppearance`.
-    pub fn from_appearance<T: Real>(name: &str, a: &PbrAppearance<T>) -> Self {
-        let c = |v: T| (v.to_f64() as f32).clamp(0.0, 1.0);
+    /// A material named `name` of base colour `base_color` (linear RGB), `roughness` and
+    /// `metalness`, each clamped to [0, 1] (NaN becomes 0), emitting nothing.
+    pub fn new(name: &str, base_color: [f32; 3], roughness: f32, metalness: f32) -> Self {
         Material {
             name: name.to_string(),
-            base_color: a.base_color.map(c),
-            roughness: c(a.roughness),
-            metalness: c(a.metalness),
+            base_color: base_color.map(unit_clamp),
+            roughness: unit_clamp(roughness),
+            metalness: unit_clamp(metalness),
+            emissive: [0.0; 3],
         }
     }
+
+    /// The material emitting `emissive` (linear RGB, each clamped to [0, 1]).
+    pub fn with_emissive(mut self, emissive: [f32; 3]) -> Self {
+        self.emissive = emissive.map(unit_clamp);
+        self
+    }
+
+    /// A material named `name` from a Webots `PBRAppearance`.
+    pub fn from_appearance<T: Real>(name: &str, a: &PbrAppearance<T>) -> Self {
+        let c = |v: T| v.to_f64() as f32;
+        Material::new(name, a.base_color.map(c), c(a.roughness), c(a.metalness))
+    }
+}
+
+/// `v` clamped to [0, 1], NaN to 0.
+fn unit_clamp(v: f32) -> f32 {
+    if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) }
 }
 
 /// A node of a [`Scene`]: a named frame, placed relative to its parent, with an optional mesh.
@@ -76,6 +101,30 @@ pub struct Node {
     pub mesh: Option<usize>,
     /// Indices into [`Scene::nodes`].
     pub children: Vec<usize>,
+    /// Whether the node and its children show at rest. glTF gets a hidden node with scale 0,
+    /// so that an animation's [`Keyframes::Scale`] can show it; OBJ leaves it out.
+    pub visible: bool,
+}
+
+/// What a [`SceneMesh`] draws, in its node's frame (m).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Geometry {
+    /// Shaded triangles.
+    Triangles(RenderMesh),
+    /// Separate line segments: points 0–1, 2–3, … (an odd last point is ignored).
+    Segments(Vec<[f32; 3]>),
+    /// One connected line through the points in order.
+    Polyline(Vec<[f32; 3]>),
+}
+
+impl Geometry {
+    /// Number of triangles (0 for lines).
+    pub fn triangle_count(&self) -> usize {
+        match self {
+            Geometry::Triangles(m) => m.triangle_count(),
+            Geometry::Segments(_) | Geometry::Polyline(_) => 0,
+        }
+    }
 }
 
 /// A mesh of a [`Scene`] with its material.
@@ -84,9 +133,22 @@ pub struct SceneMesh {
     /// Mesh name.
     pub name: String,
     /// The geometry, in the node's frame.
-    pub mesh: RenderMesh,
+    pub geometry: Geometry,
     /// Index into [`Scene::materials`].
     pub material: usize,
+}
+
+/// The nodes [`Scene::add_vehicle`] made, to animate them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct VehicleNodes {
+    /// The vehicle's root node, at the vehicle origin (rear-axle centre at wheel-centre height):
+    /// move it to move the car.
+    pub root: usize,
+    /// The body box.
+    pub chassis: usize,
+    /// Each wheel's node, at rest at [`WheelFrame::pose`](crate::WheelFrame): turn it by the
+    /// steering and spin angles (the tyre, rim and hub below it follow).
+    pub wheels: PerWheel<usize>,
 }
 
 /// An axis-aligned box standing in for the vehicle body, in the vehicle frame (m).
@@ -122,17 +184,8 @@ pub struct Scene {
     pub meshes: Vec<SceneMesh>,
     /// Materials.
     pub materials: Vec<Material>,
-}
-
-/// The wheel with the fields that do not change its meshes normalised, to share meshes.
-fn mesh_key<T: Real>(w: &ValidWheel<T>) -> WheelParams<T> {
-    WheelParams {
-        name: "",
-        side: WheelSide::Right,
-        contact_material: "",
-        physics: crate::wheel::WheelPhysics::None,
-        ..*w.params()
-    }
+    /// Animations, checked by [`Scene::add_animation`].
+    pub animations: Vec<Animation>,
 }
 
 impl Scene {
@@ -150,14 +203,29 @@ impl Scene {
         self.materials.len() - 1
     }
 
-    /// Adds a mesh with a material index and returns its index.
+    /// Adds a triangle mesh with a material index and returns its index.
     pub fn add_mesh(&mut self, name: &str, mesh: RenderMesh, material: usize) -> usize {
+        self.add_geometry(name, Geometry::Triangles(mesh), material)
+    }
+
+    /// Adds any geometry with a material index and returns its index.
+    pub fn add_geometry(&mut self, name: &str, geometry: Geometry, material: usize) -> usize {
         self.meshes.push(SceneMesh {
             name: name.to_string(),
-            mesh,
+            geometry,
             material,
         });
         self.meshes.len() - 1
+    }
+
+    /// Adds `animation` after checking it against the scene's nodes, and returns its index.
+    ///
+    /// # Errors
+    /// The [`AnimationError`] of [`Animation::validate`]; the scene is then unchanged.
+    pub fn add_animation(&mut self, animation: Animation) -> Result<usize, AnimationError> {
+        animation.validate(self.nodes.len())?;
+        self.animations.push(animation);
+        Ok(self.animations.len() - 1)
     }
 
     /// Adds a node under `parent` (or as a root) and returns its index.
@@ -174,6 +242,7 @@ impl Scene {
             transform,
             mesh,
             children: Vec::new(),
+            visible: true,
         });
         match parent.and_then(|p| self.nodes.get_mut(p)) {
             Some(p) => p.children.push(index),
@@ -233,56 +302,104 @@ impl Scene {
         chassis: &ChassisBox<T>,
     ) -> Self {
         let mut scene = Scene::new();
-        let root = scene.add_node(None, name, Isometry3::identity(), None);
-        let body = Material {
-            name: "chassis".to_string(),
-            base_color: [0.45, 0.5, 0.55],
-            roughness: 0.5,
-            metalness: 0.2,
-        };
-        let body = scene.add_material(body);
+        let body = Material::new("chassis", [0.45, 0.5, 0.55], 0.5, 0.2);
+        scene.add_vehicle(None, name, layout, chassis, body);
+        scene
+    }
+
+    /// Adds a vehicle as [`Scene::vehicle`] builds it, under `parent` (or as a root), its body
+    /// box in `body`, and returns its nodes. Wheels with identical geometry share meshes, with
+    /// those of the vehicles added before too.
+    pub fn add_vehicle<T: Real>(
+        &mut self,
+        parent: Option<usize>,
+        name: &str,
+        layout: &VehicleLayout<T>,
+        chassis: &ChassisBox<T>,
+        body: Material,
+    ) -> VehicleNodes {
+        let root = self.add_node(parent, name, Isometry3::identity(), None);
+        let body = self.add_material(body);
         let chassis_mesh = BoxMesh::new(chassis.centre, chassis.size);
         let chassis_mesh = RenderMesh::from_mesh(&chassis_mesh, &identity::<T>());
-        let chassis_mesh = scene.add_mesh("chassis", chassis_mesh, body);
-        scene.add_node(
+        let chassis_mesh = self.add_mesh("chassis", chassis_mesh, body);
+        let chassis = self.add_node(
             Some(root),
             "chassis",
             Isometry3::identity(),
             Some(chassis_mesh),
         );
 
-        let mut shared: Vec<(WheelParams<T>, WheelParts)> = Vec::new();
+        let mut wheels = PerWheel::splat(root);
         for wheel in Wheel::ALL {
-            let valid = layout.wheel(wheel);
-            let key = mesh_key(valid);
-            let parts = match shared.iter().find(|(k, _)| *k == key) {
-                Some((_, parts)) => parts.clone(),
-                None => {
-                    let parts = scene.add_wheel_meshes(valid);
-                    shared.push((key, parts.clone()));
-                    parts
-                }
-            };
-            let frame = layout.frame(wheel);
             let node_name = match wheel {
                 Wheel::FrontRight => "front_right_wheel",
                 Wheel::FrontLeft => "front_left_wheel",
                 Wheel::RearRight => "rear_right_wheel",
                 Wheel::RearLeft => "rear_left_wheel",
             };
-            let pose = isometry_f64(&frame.pose);
-            let node = scene.add_node(Some(root), node_name, pose, None);
-            let tyre_local = pose.inverse() * isometry_f64(&frame.tyre_pose);
-            for (part, mesh) in parts {
-                let t = if part == "tyre" {
-                    tyre_local
-                } else {
-                    Isometry3::identity()
-                };
-                scene.add_node(Some(node), part, t, Some(mesh));
-            }
+            let pose = isometry_f64(&layout.frame(wheel).pose);
+            wheels[wheel] = self.add_wheel(Some(root), node_name, layout.wheel(wheel), pose);
         }
-        scene
+        VehicleNodes {
+            root,
+            chassis,
+            wheels,
+        }
+    }
+
+    /// Adds one wheel as a node `name` at `pose` (the wheel frame, axle = local x, as
+    /// [`WheelFrame::pose`](crate::WheelFrame)) under `parent`, with the `tyre` (turned by π
+    /// about z for a left wheel, as `wheelSide` does), `rim` and `hub` below it, and returns the
+    /// node. Wheels of identical geometry share meshes.
+    pub fn add_wheel<T: Real>(
+        &mut self,
+        parent: Option<usize>,
+        name: &str,
+        wheel: &ValidWheel<T>,
+        pose: Isometry3<f64>,
+    ) -> usize {
+        let parts = self.wheel_parts(wheel);
+        let node = self.add_node(parent, name, pose, None);
+        let tyre = match wheel.params().side {
+            WheelSide::Right => Isometry3::identity(),
+            WheelSide::Left => Isometry3::rotation(Vector3::z() * core::f64::consts::PI),
+        };
+        for (part, mesh) in parts {
+            let t = if part == "tyre" {
+                tyre
+            } else {
+                Isometry3::identity()
+            };
+            self.add_node(Some(node), part, t, Some(mesh));
+        }
+        node
+    }
+
+    /// The meshes of `wheel`: those of an earlier wheel of identical geometry (and materials)
+    /// if the scene has one, else new ones.
+    fn wheel_parts<T: Real>(&mut self, wheel: &ValidWheel<T>) -> WheelParts {
+        let fresh = self.add_wheel_meshes(wheel);
+        // A wheel of the same geometry and materials gives meshes equal to earlier ones: reuse
+        // those and drop the copies (they are the last ones added).
+        let first_new = fresh.first().map_or(self.meshes.len(), |(_, m)| *m);
+        let earlier = (0..first_new).find(|&start| {
+            fresh.iter().enumerate().all(|(k, (_, m))| {
+                let (a, b) = (self.meshes.get(start + k), self.meshes.get(*m));
+                start + k < first_new && a.is_some() && a == b
+            })
+        });
+        match earlier {
+            Some(start) => {
+                self.meshes.truncate(first_new);
+                fresh
+                    .into_iter()
+                    .enumerate()
+                    .map(|(k, (part, _))| (part, start + k))
+                    .collect()
+            }
+            None => fresh,
+        }
     }
 
     /// Total triangle count over all mesh instances (a shared mesh counts once per node).
@@ -291,7 +408,7 @@ impl Scene {
             .iter()
             .filter_map(|n| n.mesh)
             .filter_map(|m| self.meshes.get(m))
-            .map(|m| m.mesh.triangle_count())
+            .map(|m| m.geometry.triangle_count())
             .sum()
     }
 
@@ -308,7 +425,7 @@ impl Scene {
             })
             .collect();
         while let Some((i, world, path)) = stack.pop() {
-            let Some(node) = self.nodes.get(i) else {
+            let Some(node) = self.nodes.get(i).filter(|n| n.visible) else {
                 continue;
             };
             // A root's own name is not part of the object names, so a single wheel gives `tyre`.

@@ -23,13 +23,16 @@ use crate::telemetry::write_csv;
 pub const TELEMETRY_CSV: &str = "telemetry.csv";
 /// The metrics file.
 pub const METRICS_JSON: &str = "metrics.json";
+/// The file name of the run's animated 3D scene ([`crate::replay`]).
+pub const REPLAY_GLB: &str = "replay.glb";
 
 /// Every file a run may write into its output directory. A run removes those of this list
 /// that it does not write itself, so that the directory never mixes two runs' outputs; other
 /// files are left alone.
-pub const KNOWN_OUTPUTS: [&str; 8] = [
+pub const KNOWN_OUTPUTS: [&str; 9] = [
     TELEMETRY_CSV,
     METRICS_JSON,
+    REPLAY_GLB,
     "speed.svg",
     "rpm_gear.svg",
     "steering.svg",
@@ -325,15 +328,16 @@ pub enum OutputError {
 }
 
 /// The names of the files [`write_outputs`] writes for `report`: `telemetry.csv`,
-/// `metrics.json` and the plots of [`figures`], in that order.
+/// `metrics.json`, the plots of [`figures`] and `replay.glb`, in that order.
 pub fn output_names(report: &RunReport) -> Vec<&'static str> {
     [TELEMETRY_CSV, METRICS_JSON]
         .into_iter()
         .chain(figures(report).into_iter().map(|(name, _)| name))
+        .chain([REPLAY_GLB])
         .collect()
 }
 
-/// Writes `telemetry.csv`, `metrics.json` and the plots of [`figures`] into `dir` (created
+/// Writes `telemetry.csv`, `metrics.json`, the plots of [`figures`] and `replay.glb` into `dir` (created
 /// if needed), removes the [`KNOWN_OUTPUTS`] of an earlier run that this one does not write,
 /// and returns the paths written.
 ///
@@ -373,20 +377,22 @@ pub fn write_outputs(
         source,
     })?;
     written.push(path);
-    let mut write = |name: &str, text: &str| -> Result<(), OutputError> {
+    let mut write = |name: &str, bytes: &[u8]| -> Result<(), OutputError> {
         let path = dir.join(name);
         let mut file = File::create(&path).map_err(io(&path))?;
-        file.write_all(text.as_bytes()).map_err(io(&path))?;
+        file.write_all(bytes).map_err(io(&path))?;
         written.push(path);
         Ok(())
     };
     write(
         METRICS_JSON,
-        &(to_json(report, world_warnings, &names) + "\n"),
+        (to_json(report, world_warnings, &names) + "\n").as_bytes(),
     )?;
     for (name, svg) in &plots {
-        write(name, svg)?;
+        write(name, svg.as_bytes())?;
     }
+    let glb = crate::replay::to_glb(report).map_err(io(&dir.join(REPLAY_GLB)))?;
+    write(REPLAY_GLB, &glb)?;
     Ok(written)
 }
 
@@ -496,6 +502,7 @@ mod tests {
             [
                 "metrics.json",
                 "notes.txt",
+                "replay.glb",
                 "speed.svg",
                 "telemetry.csv",
                 "trajectory.svg"

@@ -5,6 +5,7 @@
 use vehicle_model::Driver;
 
 use crate::placement::car_placement;
+use crate::replay::Recorder;
 use crate::simulation::Simulation;
 use crate::telemetry::{Sample, Telemetry, VehicleKind};
 use crate::vehicle::{VehicleId, VehicleSpec, VehicleState};
@@ -30,6 +31,7 @@ pub(crate) struct CarRig {
     notes: Vec<String>,
     guides: Vec<Vec<[f64; 2]>>,
     cones: Vec<[f64; 2]>,
+    recorder: Recorder,
     next_progress: f64,
     /// The world's time limit for this scenario (s).
     pub(crate) limit: f64,
@@ -57,6 +59,7 @@ impl CarRig {
         let vehicle = sim.world().vehicle(id)?;
         let (state, spec) = (*vehicle.state(), *vehicle.spec());
         let samples = vec![Sample::of_car(&sim, id)?];
+        let recorder = Recorder::for_simulation(&sim);
         Ok(CarRig {
             sim,
             id,
@@ -67,6 +70,7 @@ impl CarRig {
             notes: Vec::new(),
             guides: Vec::new(),
             cones: Vec::new(),
+            recorder,
             next_progress: 0.0,
             limit,
             expected,
@@ -129,6 +133,7 @@ impl CarRig {
     /// the state at time 0, recorded when the rig was built).
     pub(crate) fn step(&mut self, progress: &mut dyn FnMut(f64, f64)) -> Result<(), ScenarioError> {
         self.sim.step()?;
+        self.recorder.sample(self.sim.world());
         let sample = Sample::of_car(&self.sim, self.id)?;
         self.state = *self.sim.world().vehicle(self.id)?.state();
         let t = sample.time;
@@ -175,6 +180,7 @@ impl CarRig {
             notes: self.notes,
             guides: self.guides,
             cones: self.cones,
+            replay: self.recorder.finish(self.sim.world()),
         }
     }
 }

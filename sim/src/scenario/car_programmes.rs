@@ -1,11 +1,11 @@
 //! The car scenarios: each drives a fresh car through the driver library and measures it.
 
-use vehicle_model::{AutoShiftParams, TyreModel, Wheel};
+use vehicle_model::{AutoShiftParams, IndicatorState, TyreModel, Wheel};
 
 use crate::world_file::{CarDescription, WorldDescription};
 
 use super::car::{CarRig, KMH};
-use super::lane::{TRACK_LENGTH, double_lane_change, reference_y};
+use super::lane::{LaneSection, TRACK_LENGTH, double_lane_change, reference_y};
 use super::{Metric, Scenario, ScenarioError, ScenarioResult, fit_circle, limit};
 
 /// 100 km/h in m/s.
@@ -344,6 +344,28 @@ fn pure_pursuit(x: f64, y: f64, yaw: f64, lookahead: f64, entry: f64, wheelbase:
     -(2.0 * wheelbase * alpha.sin() / distance).atan()
 }
 
+/// How far before the end of a gate the lane-change driver starts signalling towards the next
+/// lane (m): about 0.6 s at 60 km/h.
+const SIGNAL_AHEAD: f64 = 10.0;
+
+/// The indicator a driver sets at `x` along the track (m from its entry): towards the next
+/// gate's lane from [`SIGNAL_AHEAD`] before the end of a gate until the next gate starts, off
+/// elsewhere. Lights act on nothing physical; the replay shows them.
+fn lane_signal(gates: &[LaneSection], x: f64) -> IndicatorState {
+    for pair in gates.windows(2) {
+        let [a, b] = [pair[0], pair[1]];
+        if x >= a.end - SIGNAL_AHEAD && x < b.start {
+            if b.center > a.center {
+                return IndicatorState::Left;
+            }
+            if b.center < a.center {
+                return IndicatorState::Right;
+            }
+        }
+    }
+    IndicatorState::Off
+}
+
 fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult, ScenarioError> {
     let p = rig.driver()?.params();
     let wheelbase = p.wheelbase;
@@ -371,6 +393,7 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
     let mut max_steering: f64 = 0.0;
     let window = (ACCEL_WINDOW / rig.time_step()).round().max(1.0) as usize;
     let mut recent: Vec<f64> = Vec::with_capacity(window);
+    let mut signalled = IndicatorState::Off;
     while rig.running() {
         let [x, y] = to_track(rig.state().position);
         let yaw = rig.yaw() + s.atan2(c);
@@ -383,6 +406,11 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
             wheelbase,
         );
         rig.driver_mut()?.set_steering_angle(steering);
+        let signal = entry.map_or(IndicatorState::Off, |e| lane_signal(&gates, x - e));
+        if signal != signalled {
+            rig.driver_mut()?.set_indicator(signal);
+            signalled = signal;
+        }
         rig.step(progress)?;
         let [x, y] = to_track(rig.state().position);
         let yaw = rig.yaw() + s.atan2(c);

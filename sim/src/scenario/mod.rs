@@ -39,6 +39,7 @@ pub use metrics::motion_metrics;
 pub use programme::PROGRAMME_TAIL;
 
 use crate::error::SimError;
+use crate::replay::Recording;
 use crate::report::Outline;
 use crate::telemetry::Telemetry;
 use crate::world_file::WorldDescription;
@@ -314,6 +315,8 @@ pub struct ScenarioResult {
     pub guides: Vec<Vec<[f64; 2]>>,
     /// Cones of the course (m, world frame), drawn as markers.
     pub cones: Vec<[f64; 2]>,
+    /// The run sampled for its 3D replay.
+    pub replay: Recording,
 }
 
 impl ScenarioResult {

@@ -3,6 +3,7 @@
 use core::f64::consts::{FRAC_PI_2, TAU};
 
 use crate::diff_wheels::RobotId;
+use crate::replay::Recorder;
 use crate::telemetry::{Sample, Telemetry, VehicleKind};
 use crate::world::World;
 use crate::world_file::{RobotDescription, WorldDescription};
@@ -19,6 +20,7 @@ struct RobotRig {
     id: RobotId,
     name: String,
     samples: Vec<Sample>,
+    recorder: Recorder,
     limit: f64,
     expected: f64,
     next_progress: f64,
@@ -34,6 +36,7 @@ impl RobotRig {
         let id = world.add_differential_wheels(robot.params, robot.mode, robot.placement)?;
         let samples = vec![Sample::of_robot(&world, id)?];
         Ok(RobotRig {
+            recorder: Recorder::for_world(&world),
             world,
             id,
             name: robot.name.clone(),
@@ -68,6 +71,7 @@ impl RobotRig {
                 break;
             }
             self.world.step()?;
+            self.recorder.sample(&self.world);
             self.samples.push(Sample::of_robot(&self.world, self.id)?);
             if self.time() >= self.next_progress {
                 progress(self.time(), self.expected);
@@ -123,6 +127,7 @@ impl RobotRig {
             metrics,
             sim_seconds: self.world.time(),
             telemetry: vec![telemetry],
+            replay: self.recorder.finish(&self.world),
             ..ScenarioResult::default()
         })
     }

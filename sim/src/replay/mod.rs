@@ -1,0 +1,87 @@
+//! `replay.glb`: a run as an animated 3D scene (binary glTF 2.0), which Blender, three.js and
+//! Babylon.js viewers, `<model-viewer>` and the Windows and macOS 3D viewers open.
+//!
+//! * [`Recorder`] samples a world after its steps, at most [`MAX_KEYFRAME_RATE`] frames per
+//!   simulated second whatever `basicTimeStep` (a whole number of steps apart, plus the last
+//!   step): each car's chassis pose, wheel spins, steering angles, suspension travel and lights,
+//!   each robot's pose and wheel angles, each dynamic box's pose. It also keeps what to draw:
+//!   each car's [`CarModel`] (its own `VehicleWheel`s on its `proto-geom` layout and a body
+//!   box), each robot's fields, the obstacles and boxes.
+//! * [`scene`] builds one `proto-geom` [`Scene`] of a run's [`Part`]s: a ground patch over
+//!   the driven area with grid lines (1, 2 or 5 × 10ⁿ m apart, at most 150 across), every box,
+//!   ramp and `[[body]]`, every car (body box, Webots wheel meshes, brake lights and
+//!   indicators) and robot (its physics-mode cylinder on two scaled `VehicleWheel`s), and per
+//!   part a group with one trajectory line per car and robot and the cones of its course; then
+//!   one animation per part, named after it (`test-track` gives five), in seconds of simulated
+//!   time from the part's start. Lights and the part groups show and hide through step-
+//!   interpolated scale keyframes: while a part plays, only its own trajectories and cones
+//!   show.
+//! * [`to_glb`] writes a [`RunReport`]'s replay; [`crate::report::write_outputs`] puts it in
+//!   `replay.glb` beside the CSV and plots.
+//!
+//! Frames: the scene is built in this crate's z-up world frame (m) and `proto-geom`'s writer
+//! turns it into glTF's y-up frame once, at its root node (`webots_to_gltf`).
+
+mod animate;
+mod recorder;
+mod scene;
+mod shapes;
+
+use std::io;
+
+use proto_geom::export::{AnimationError, Scene};
+
+pub use recorder::{
+    CarFrame, CarModel, Frame, MAX_KEYFRAME_RATE, Recorder, Recording, RobotFrame, RobotModel,
+};
+
+use crate::scenario::RunReport;
+
+/// One part of a run: a recording, its name and the lines of its course.
+#[derive(Debug, Clone, Copy)]
+pub struct Part<'a> {
+    /// The animation's name, e.g. the scenario's.
+    pub name: &'a str,
+    /// What was recorded.
+    pub recording: &'a Recording,
+    /// Lines of the course (m, world x and y), drawn as rows of traffic cones at most 3 m
+    /// apart, e.g. the lane change's cone lines.
+    pub guides: &'a [Vec<[f64; 2]>],
+}
+
+/// The replay scene of `parts`: the world and the vehicles of the first part's recording (every
+/// part of a run has the same world), the parts' trajectories and cones, and one animation per
+/// part that has frames.
+///
+/// # Errors
+/// An [`AnimationError`] if a recording's frames are not in strictly increasing time (a
+/// recording from [`Recorder`] always is).
+pub fn scene(parts: &[Part<'_>]) -> Result<Scene, AnimationError> {
+    let (mut scene, nodes) = scene::build(parts);
+    for index in 0..parts.len() {
+        if let Some(a) = animate::animation(parts, index, &nodes) {
+            scene.add_animation(a)?;
+        }
+    }
+    Ok(scene)
+}
+
+/// The replay of `report` as a binary glTF file: one part per scenario run.
+///
+/// # Errors
+/// [`io::ErrorKind::InvalidData`] for the [`AnimationError`] of [`scene`], or an [`io::Error`]
+/// if the file cannot be serialised (a buffer beyond 4 GiB).
+pub fn to_glb(report: &RunReport) -> io::Result<Vec<u8>> {
+    let parts: Vec<Part<'_>> = report
+        .results
+        .iter()
+        .map(|r| Part {
+            name: &r.name,
+            recording: &r.replay,
+            guides: &r.guides,
+        })
+        .collect();
+    scene(&parts)
+        .map_err(|e| io::Error::new(io::ErrorKind::InvalidData, e))?
+        .to_glb()
+}

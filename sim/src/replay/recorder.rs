@@ -1,0 +1,302 @@
+//! Sampling a run for its replay: what every car, robot and dynamic box looks like and where it
+//! is, at most [`MAX_KEYFRAME_RATE`] times per simulated second.
+
+use ackermann::{PerWheel, Wheel, WheelAngles};
+use proto_geom::export::ChassisBox;
+use proto_geom::{VehicleDimensions, VehicleLayout, WheelParams};
+use vehicle_model::{CarParams, Lights};
+
+use crate::body::{BodyPose, BodySpec};
+use crate::config::Obstacle;
+use crate::diff_wheels::DifferentialWheelsParams;
+use crate::simulation::Simulation;
+use crate::vehicle::{Vehicle, VehicleSpec};
+use crate::world::World;
+
+/// Most keyframes a replay holds per simulated second (Hz): a display's frame rate; more would
+/// only grow the file.
+pub const MAX_KEYFRAME_RATE: f64 = 60.0;
+
+/// How a car is drawn: its `proto-geom` wheel layout (the Webots `VehicleWheel` meshes of its
+/// own wheels at its own wheelbase and tracks) and its body box.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CarModel {
+    /// Wheels and their frames (m, car frame).
+    pub layout: VehicleLayout<f64>,
+    /// The body (m, car frame).
+    pub body: ChassisBox<f64>,
+}
+
+impl CarModel {
+    /// The look of `vehicle`: from its parameters `params` when known (the car's own wheels, and
+    /// a body from its rear, front and roof sensor slots when the model has them), else from its
+    /// spec (default `VehicleWheel`s of its tyre radius and width). A body without sensor slots
+    /// spans the chassis collision box lengthwise and up to its top.
+    pub fn new(spec: &VehicleSpec, params: Option<&CarParams<f64>>) -> Self {
+        let fr = spec.wheels[Wheel::FrontRight].position;
+        let rr = spec.wheels[Wheel::RearRight].position;
+        let fl = spec.wheels[Wheel::FrontLeft].position;
+        let rl = spec.wheels[Wheel::RearLeft].position;
+        let (dimensions, wheels) = match params {
+            Some(p) => (
+                VehicleDimensions {
+                    wheelbase: p.wheelbase,
+                    track_front: p.track_front,
+                    track_rear: p.track_rear,
+                },
+                p.wheels,
+            ),
+            None => (
+                VehicleDimensions {
+                    wheelbase: fr[0] - rr[0],
+                    track_front: fl[1] - fr[1],
+                    track_rear: rl[1] - rr[1],
+                },
+                PerWheel::from_fn(|w| {
+                    WheelParams {
+                        tire_radius: spec.wheels[w].radius,
+                        thickness: spec.wheels[w].width,
+                        ..WheelParams::default()
+                    }
+                    .in_slot(w)
+                }),
+            ),
+        };
+        // Invalid fields take their Webots defaults, as the car itself did.
+        let (layout, _) = VehicleLayout::new(dimensions, wheels);
+        let d = layout.dimensions();
+        let radius = spec.wheels[Wheel::FrontRight].radius;
+        let thickness = Wheel::ALL
+            .iter()
+            .map(|&w| spec.wheels[w].width)
+            .fold(0.0, f64::max);
+        // The tyres stick out of the body by a quarter of their width.
+        let width = d.track_front.max(d.track_rear) + 0.5 * thickness;
+        let [cx, _, cz] = spec.chassis.box_center;
+        let [hx, _, hz] = spec.chassis.box_half_extents;
+        let (rear, front, top) = match params.and_then(|p| p.sensor_slots) {
+            Some(s) => (
+                s.rear.translation.x,
+                s.front.translation.x,
+                s.top.translation.z,
+            ),
+            None => (cx - hx, cx + hx, cz + hz),
+        };
+        // A ground clearance of 60 % of the tyre radius.
+        let body = ChassisBox::from_extents(rear, front, width, -0.4 * radius, top);
+        CarModel { layout, body }
+    }
+}
+
+/// How a DifferentialWheels robot is drawn: the cylinder of its physics mode (radius
+/// `axleLength/2`, height `wheelRadius`, centred at axle height) on two wheels.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RobotModel {
+    /// The robot's fields (m, rad/s).
+    pub params: DifferentialWheelsParams,
+}
+
+/// Where a car is and what it shows at one instant.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct CarFrame {
+    /// Car origin (m, world frame).
+    pub position: [f64; 3],
+    /// Roll, pitch, yaw of the chassis (rad, z-y-x convention).
+    pub roll_pitch_yaw: [f64; 3],
+    /// Continuous wheel rotation angles (rad, positive = rolling forward).
+    pub wheel_angles: PerWheel<f64>,
+    /// Front steering angles (rad, positive = right).
+    pub steering: WheelAngles<f64>,
+    /// Suspension compression (m, positive = wheel pushed up).
+    pub suspension: PerWheel<f64>,
+    /// The lights commanded (all off before the first command).
+    pub lights: Lights,
+}
+
+impl CarFrame {
+    fn of(vehicle: &Vehicle) -> Self {
+        let s = vehicle.state();
+        CarFrame {
+            position: s.position,
+            roll_pitch_yaw: s.roll_pitch_yaw,
+            wheel_angles: s.wheel_angles,
+            steering: s.steering,
+            suspension: s.suspension,
+            lights: vehicle.commands().map_or(Lights::OFF, |c| c.lights),
+        }
+    }
+}
+
+/// Where a robot is at one instant.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct RobotFrame {
+    /// Ground projection of the axle midpoint (m, world frame).
+    pub position: [f64; 3],
+    /// Heading (rad, counter-clockwise about +z).
+    pub heading: f64,
+    /// Wheel rotation angles `[left, right]` (rad, positive = rolling forward).
+    pub wheel_angles: [f64; 2],
+}
+
+/// Everything moving in a world at one instant.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Frame {
+    /// Simulated time since the world was built (s).
+    pub time: f64,
+    /// One per car, in [`World::vehicles`] order.
+    pub cars: Vec<CarFrame>,
+    /// One per robot, in [`World::robots`] order.
+    pub robots: Vec<RobotFrame>,
+    /// One per dynamic box, in [`World::bodies`] order.
+    pub bodies: Vec<BodyPose>,
+}
+
+impl Frame {
+    fn of(world: &World) -> Self {
+        Frame {
+            time: world.time(),
+            cars: world.vehicles().iter().map(CarFrame::of).collect(),
+            robots: world
+                .robots()
+                .iter()
+                .map(|r| {
+                    let pose = r.pose();
+                    RobotFrame {
+                        position: pose.position,
+                        heading: pose.heading,
+                        wheel_angles: r.wheel_angles(),
+                    }
+                })
+                .collect(),
+            bodies: world.bodies(),
+        }
+    }
+}
+
+/// A world's run, sampled for its replay: what to draw and the frames.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Recording {
+    /// The static obstacles.
+    pub obstacles: Vec<Obstacle>,
+    /// The dynamic boxes as built.
+    pub bodies: Vec<BodySpec>,
+    /// One per car, in [`World::vehicles`] order.
+    pub cars: Vec<CarModel>,
+    /// One per robot, in [`World::robots`] order.
+    pub robots: Vec<RobotModel>,
+    /// The frames, in increasing time, the first at the start of the recording and the last at
+    /// its end.
+    pub frames: Vec<Frame>,
+}
+
+impl Recording {
+    /// Simulated time from the first frame to the last (s).
+    pub fn duration(&self) -> f64 {
+        match (self.frames.first(), self.frames.last()) {
+            (Some(a), Some(b)) => b.time - a.time,
+            _ => 0.0,
+        }
+    }
+}
+
+/// Samples a world after each step, keeping one frame every whole number of steps so that at
+/// most [`MAX_KEYFRAME_RATE`] frames fall in a simulated second, whatever `basicTimeStep`.
+///
+/// ```
+/// use sim::replay::Recorder;
+/// use sim::{Simulation, VehiclePlacement, World, WorldConfig};
+/// use vehicle_model::Model;
+///
+/// let mut sim = Simulation::new(World::new(WorldConfig::default())?); // 10 ms steps
+/// sim.add_car(Model::BmwX5.params(), VehiclePlacement::default())?;
+/// let mut recorder = Recorder::for_simulation(&sim);
+/// for _ in 0..101 {
+///     sim.step()?;
+///     recorder.sample(sim.world());
+/// }
+/// let recording = recorder.finish(sim.world());
+/// // Every second step (50 Hz) from 0 to 1 s, then the last step: 52 frames.
+/// assert_eq!(recording.frames.len(), 52);
+/// assert_eq!(recording.frames.last().map(|f| f.time), Some(1.01));
+/// # Ok::<(), sim::SimError>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct Recorder {
+    recording: Recording,
+    /// Simulated time between two frames (ms): a whole number of steps.
+    period_ms: u64,
+    /// When the next frame is due (ms).
+    next_ms: u64,
+    /// The time of the last frame kept (ms).
+    last_ms: u64,
+}
+
+impl Recorder {
+    /// Starts recording `world`, its cars drawn with default wheels of their tyre sizes
+    /// ([`CarModel::new`] without parameters); the first frame is its present state.
+    pub fn for_world(world: &World) -> Self {
+        Self::with_params(world, |_| None)
+    }
+
+    /// Starts recording the world of `sim`, each car with a driver drawn from its parameters.
+    pub fn for_simulation(sim: &Simulation) -> Self {
+        Self::with_params(sim.world(), |v| sim.driver(v.id()).ok().map(|d| d.params()))
+    }
+
+    fn with_params<'a>(
+        world: &World,
+        params: impl Fn(&Vehicle) -> Option<&'a CarParams<f64>>,
+    ) -> Self {
+        let step_ms = u64::from(world.config().basic_time_step_ms.max(1));
+        let steps = (1000.0 / MAX_KEYFRAME_RATE / step_ms as f64)
+            .ceil()
+            .max(1.0) as u64;
+        let first = Frame::of(world);
+        let now = world.time_ms();
+        Recorder {
+            recording: Recording {
+                obstacles: world.config().obstacles.clone(),
+                bodies: world.config().bodies.clone(),
+                cars: world
+                    .vehicles()
+                    .iter()
+                    .map(|v| CarModel::new(v.spec(), params(v)))
+                    .collect(),
+                robots: world
+                    .robots()
+                    .iter()
+                    .map(|r| RobotModel {
+                        params: *r.params(),
+                    })
+                    .collect(),
+                frames: vec![first],
+            },
+            period_ms: steps * step_ms,
+            next_ms: now + steps * step_ms,
+            last_ms: now,
+        }
+    }
+
+    /// Keeps a frame of `world` if one is due; call it after every step.
+    pub fn sample(&mut self, world: &World) {
+        let now = world.time_ms();
+        if now >= self.next_ms {
+            self.push(world);
+            self.next_ms = now + self.period_ms;
+        }
+    }
+
+    fn push(&mut self, world: &World) {
+        self.recording.frames.push(Frame::of(world));
+        self.last_ms = world.time_ms();
+    }
+
+    /// Ends the recording with the present state of `world` (unless the last frame is already
+    /// of this instant), so that it ends at the run's simulated duration.
+    pub fn finish(mut self, world: &World) -> Recording {
+        if world.time_ms() > self.last_ms {
+            self.push(world);
+        }
+        self.recording
+    }
+}

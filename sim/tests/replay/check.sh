@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# The replay checks that need Node.js and a browser: runs vehicle-sim on the default world
+# (test-track), the obstacles world (test-track) and the e-puck world (square), validates each
+# replay.glb with the Khronos glTF validator (0 errors and 0 warnings), then renders two of them
+# with <model-viewer> in headless Chromium at two animation times each (the screenshots must
+# differ and the console stay free of errors).
+#
+# Usage: sim/tests/replay/check.sh [OUT_DIR]   (default: target/replay-checks)
+# Needs node, npm and /usr/bin/chromium (or $CHROMIUM); installs the npm packages of
+# package-lock.json into sim/tests/replay/node_modules when missing. Outputs, screenshots
+# included, stay in OUT_DIR.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../../.." && pwd)"
+out="${1:-$root/target/replay-checks}"
+chromium="${CHROMIUM:-/usr/bin/chromium}"
+
+for tool in node npm; do
+  command -v "$tool" >/dev/null || { echo "replay check: '$tool' not found (install Node.js)" >&2; exit 1; }
+done
+[ -x "$chromium" ] || { echo "replay check: no Chromium at $chromium (apt-get install chromium)" >&2; exit 1; }
+
+# Installed once, and again whenever package-lock.json changes.
+if [ ! -f "$here/node_modules/.package-lock.json" ] ||
+   [ "$here/package-lock.json" -nt "$here/node_modules/.package-lock.json" ]; then
+  echo "replay check: installing the npm packages into $here/node_modules"
+  (cd "$here" && npm ci --no-audit --no-fund)
+fi
+
+rm -rf "$out"
+mkdir -p "$out"
+cd "$root"
+cargo build -p sim --bin vehicle-sim
+sim="$root/target/debug/vehicle-sim"
+"$sim" --out "$out/test-track" >/dev/null
+"$sim" --world sim/worlds/obstacles.toml --out "$out/obstacles" >/dev/null
+"$sim" --world sim/worlds/e-puck.toml --out "$out/e-puck" >/dev/null
+
+node "$here/validate.mjs" "$out/test-track/replay.glb" "$out/obstacles/replay.glb" \
+  "$out/e-puck/replay.glb"
+
+# The point between the positions of a scenario's vehicle at two times (s), from the
+# telemetry CSV: "x,y" in m.
+midpoint() {
+  awk -F, -v s="$2" -v t1="$3" -v t2="$4" '
+    $1 == s && !a && $2 + 0 >= t1 { ax = $3; ay = $4; a = 1 }
+    $1 == s && !b && $2 + 0 >= t2 { bx = $3; by = $4; b = 1 }
+    END { if (!(a && b)) exit 1; printf "%.3f,%.3f", (ax + bx) / 2, (ay + by) / 2 }' "$1"
+}
+
+target="$(midpoint "$out/test-track/telemetry.csv" lane-change 9 11)"
+node "$here/render.mjs" --glb "$out/test-track/replay.glb" --animation lane-change \
+  --times 9,11 --target "$target" --radius 45 --out "$out" --name test-track_lane-change
+target="$(midpoint "$out/e-puck/telemetry.csv" square 8 20)"
+node "$here/render.mjs" --glb "$out/e-puck/replay.glb" --animation square \
+  --times 8,20 --target "$target" --radius 0.6 --out "$out" --name e-puck_square
+echo "replay check passed: outputs and screenshots in $out"
