@@ -43,8 +43,8 @@ node "$here/validate.mjs" "$out/test-track/replay.glb" "$out/obstacles/replay.gl
 # telemetry CSV: "x,y" in m.
 midpoint() {
   awk -F, -v s="$2" -v t1="$3" -v t2="$4" '
-    $1 == s && !a && $2 + 0 >= t1 { ax = $3; ay = $4; a = 1 }
-    $1 == s && !b && $2 + 0 >= t2 { bx = $3; by = $4; b = 1 }
+    $1 == s && !a && $3 + 0 >= t1 { ax = $4; ay = $5; a = 1 }
+    $1 == s && !b && $3 + 0 >= t2 { bx = $4; by = $5; b = 1 }
     END { if (!(a && b)) exit 1; printf "%.3f,%.3f", (ax + bx) / 2, (ay + by) / 2 }' "$1"
 }
 
