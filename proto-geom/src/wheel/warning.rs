@@ -71,7 +71,13 @@ impl WheelField {
                 unit: "",
             }),
             WheelField::RimBeamOffset => Some(plausible::OFFSET),
-            _ => Some(plausible::LENGTH),
+            WheelField::TireRadius | WheelField::Thickness => Some(plausible::LENGTH),
+            // The rim's sizes fall back to fractions of the tyre's (rimRadius = tireRadius/2),
+            // which a 1 mm tyre puts below 1 mm: only the upper bound applies to them.
+            _ => Some(Plausible {
+                min: 0.0,
+                ..plausible::LENGTH
+            }),
         }
     }
 }
