@@ -3,28 +3,10 @@
 
 use libfuzzer_sys::arbitrary::{Result, Unstructured};
 
-/// NaN, ±∞, the extremes, zeros of both signs, subnormals and a few ordinary values.
-const SPECIAL: [f64; 19] = [
-    f64::NAN,
-    f64::INFINITY,
-    f64::NEG_INFINITY,
-    1e300,
-    -1e300,
-    f64::MAX,
-    f64::MIN,
-    -1e308,
-    3.5e38,
-    -0.0,
-    0.0,
-    f64::MIN_POSITIVE,
-    1e-300,
-    5e-324,
-    0.5,
-    1.0,
-    -1.0,
-    30.0,
-    -7.0,
-];
+#[path = "../../vehicle-model/tests/fuzz/special.rs"]
+mod special;
+
+use special::SPECIAL;
 
 /// A special value (half of the time), a small integer in −100…100, or any bit pattern.
 pub fn hostile(u: &mut Unstructured<'_>) -> Result<f64> {

@@ -15,6 +15,8 @@
 #[path = "../../../vehicle-model/tests/fuzz/control_loop.rs"]
 #[allow(dead_code)] // the simulation uses the calls and checks, not `run`
 mod control_loop;
+#[path = "../../../vehicle-model/tests/fuzz/special.rs"]
+mod special;
 #[path = "../../../vehicle-model/tests/fuzz/strategies.rs"]
 #[allow(dead_code)] // no parameter edits or time steps here
 mod strategies;

@@ -11,6 +11,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 mod control_loop;
+mod special;
 mod strategies;
 
 use control_loop::{field_names, run};
