@@ -50,6 +50,22 @@ pub enum Obstacle {
     },
 }
 
+/// The six corners of a ramp's wedge in its own frame (m): x along the climb from the low
+/// edge at x = 0 to the vertical back face at x = `length`, y across, z up. In order: the low
+/// edge (right, left), the back face's foot (right, left), its top (right, left). The rapier
+/// collider and the replay's mesh are both built from them.
+pub(crate) fn ramp_corners(length: f64, width: f64, height: f64) -> [[f64; 3]; 6] {
+    let (l, w, h) = (length, width / 2.0, height);
+    [
+        [0.0, -w, 0.0],
+        [0.0, w, 0.0],
+        [l, -w, 0.0],
+        [l, w, 0.0],
+        [l, -w, h],
+        [l, w, h],
+    ]
+}
+
 impl Obstacle {
     fn validate(&self) -> Result<(), ParamError> {
         match self {

@@ -9,7 +9,7 @@ use rapier3d::prelude::{
 };
 
 use crate::body::{self, BodyPose};
-use crate::config::{Obstacle, WorldConfig};
+use crate::config::{Obstacle, WorldConfig, ramp_corners};
 use crate::diff_wheels::{
     DifferentialWheels, DifferentialWheelsParams, RobotId, RobotMode, RobotPlacement,
 };
@@ -108,15 +108,8 @@ impl World {
                     height,
                     friction,
                 } => {
-                    let (l, w, h) = (*length as f32, (*width / 2.0) as f32, *height as f32);
-                    let points = [
-                        Vector::new(0.0, -w, 0.0),
-                        Vector::new(0.0, w, 0.0),
-                        Vector::new(l, -w, 0.0),
-                        Vector::new(l, w, 0.0),
-                        Vector::new(l, -w, h),
-                        Vector::new(l, w, h),
-                    ];
+                    let points = ramp_corners(*length, *width, *height)
+                        .map(|[x, y, z]| Vector::new(x as f32, y as f32, z as f32));
                     match ColliderBuilder::convex_hull(&points) {
                         Some(b) => statics(b, friction.unwrap_or(mu))
                             .position(geom::pose_xyz_yaw([start[0], start[1], 0.0], *yaw)),

@@ -4,6 +4,8 @@
 use proto_geom::RenderMesh;
 use proto_geom::RenderVertex;
 
+use crate::config::ramp_corners;
+
 /// Base radius of a traffic cone (m).
 pub(crate) const CONE_RADIUS: f64 = 0.15;
 /// Height of a traffic cone (m): the ISO 3888 course's cones are 0.5 to 0.75 m tall.
@@ -107,26 +109,18 @@ pub(crate) fn grid_step(span: f64, max_lines: f64) -> f64 {
         .unwrap_or(10.0 * decade)
 }
 
-/// A ramp (the wedge of [`Obstacle::Ramp`](crate::Obstacle)) in its own frame: x along the
-/// climb from its low edge at x = 0 to its vertical back face at x = `length`, y across, z up.
+/// A ramp (the wedge of [`Obstacle::Ramp`](crate::Obstacle)) in its own frame, on the corners
+/// of [`ramp_corners`]: x along the climb from its low edge at x = 0 to its vertical back face
+/// at x = `length`, y across, z up.
 pub(crate) fn ramp(length: f64, width: f64, height: f64) -> RenderMesh {
-    let (l, w, h) = (length, width / 2.0, height);
+    let [low_r, low_l, foot_r, foot_l, top_r, top_l] = ramp_corners(length, width, height);
     let mut mesh = RenderMesh::default();
     // Slope, back, two sides and the bottom.
-    push_face(
-        &mut mesh,
-        &[[0.0, -w, 0.0], [l, -w, h], [l, w, h], [0.0, w, 0.0]],
-    );
-    push_face(
-        &mut mesh,
-        &[[l, -w, 0.0], [l, w, 0.0], [l, w, h], [l, -w, h]],
-    );
-    push_face(&mut mesh, &[[0.0, -w, 0.0], [l, -w, 0.0], [l, -w, h]]);
-    push_face(&mut mesh, &[[0.0, w, 0.0], [l, w, h], [l, w, 0.0]]);
-    push_face(
-        &mut mesh,
-        &[[0.0, -w, 0.0], [0.0, w, 0.0], [l, w, 0.0], [l, -w, 0.0]],
-    );
+    push_face(&mut mesh, &[low_r, top_r, top_l, low_l]);
+    push_face(&mut mesh, &[foot_r, foot_l, top_l, top_r]);
+    push_face(&mut mesh, &[low_r, foot_r, top_r]);
+    push_face(&mut mesh, &[low_l, top_l, foot_l]);
+    push_face(&mut mesh, &[low_r, low_l, foot_l, foot_r]);
     mesh
 }
 
