@@ -6,7 +6,8 @@
 //! wheel) on a road of friction 1.
 
 use ackermann::Geometry;
-use vehicle_model::{Driver, Model};
+use ackermann::Wheel;
+use vehicle_model::{Driver, Model, WheelDrive};
 
 use super::*;
 

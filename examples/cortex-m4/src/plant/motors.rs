@@ -1,0 +1,139 @@
+//! The Webots motors of the plant (steering servos, wheel velocity motors, drive torques and
+//! brakes) and each wheel's set-up for the solve of a step: its spin, its load and its tyre's
+//! linearised force law.
+
+use ackermann::{Real, Wheel, WheelAngles};
+use vehicle_model::actuator::{SteeringState, VelocityRamp};
+use vehicle_model::{Commands, ContactVelocity, WheelDrive};
+
+use super::Plant;
+use super::solve::{Row, Spin, point_velocity, to_wheel};
+
+impl Plant {
+    /// The Webots steering motors: a P controller capped in speed, targets clamped to the
+    /// steering limits, the rate reached within the motor's torque.
+    pub(super) fn steer(&mut self, target: WheelAngles<f32>, dt: f32) {
+        // The motors hold their angle on a non-finite target; the plant counts it.
+        for t in [target.right, target.left] {
+            if !t.is_finite() {
+                self.fault();
+            }
+        }
+        let [right, left] = self.steering_motors;
+        let right = right.step(
+            SteeringState {
+                angle: self.steering.right,
+                rate: self.steering_rate.right,
+            },
+            target.right,
+            dt,
+        );
+        let left = left.step(
+            SteeringState {
+                angle: self.steering.left,
+                rate: self.steering_rate.left,
+            },
+            target.left,
+            dt,
+        );
+        self.steering = WheelAngles::new(right.angle, left.angle);
+        self.steering_rate = WheelAngles::new(right.rate, left.rate);
+    }
+
+    /// Wheel `w` set up for the solve of a step of `dt` (s): its spin before the tyre acts,
+    /// its load, and its tyre's force law linearised at the start-of-step velocities.
+    pub(super) fn row(&mut self, w: Wheel, commands: &Commands<f32>, dt: f32) -> Row {
+        let corner = self.corners[w];
+        let (mut spin, spin_rate) = self.spin(w, commands, dt);
+        let [ax, ay] = self.acceleration;
+        let [forward_transfer, lateral_transfer] = corner.transfer;
+        // A wheel cannot pull the road: it lifts off instead.
+        let load = (corner.static_load + forward_transfer * ax + lateral_transfer * ay).max(0.0);
+        let steer = match w {
+            Wheel::FrontRight => self.steering.right,
+            Wheel::FrontLeft => self.steering.left,
+            Wheel::RearRight | Wheel::RearLeft => 0.0,
+        };
+        // Positive steering turns the wheel's heading clockwise.
+        let heading = [Real::cos(steer), -Real::sin(steer)];
+        // A free wheel's law is taken at the spin it starts the step with: its drive torque's
+        // spin-up is part of the solve, as in the sim crate.
+        let omega = match spin {
+            Spin::Imposed => spin_rate,
+            Spin::Free { .. } => self.wheel_speed[w],
+        };
+        let [forward, lateral] = to_wheel(heading, point_velocity(self.velocity, corner.arm));
+        let contact = ContactVelocity {
+            forward,
+            slip: [forward - omega * corner.radius, lateral],
+        };
+        let road = self.environment.road_friction;
+        let law = corner
+            .tyre
+            .linearise(&self.slips[w], &contact, load, road, dt);
+        if let Spin::Free { capacity, .. } = &mut spin {
+            *capacity += corner.tyre.rolling_resistance_torque(load, corner.radius) * dt;
+        }
+        Row {
+            heading,
+            arm: corner.arm,
+            radius: corner.radius,
+            spin,
+            omega: spin_rate,
+            brake: 0.0,
+            load,
+            normal: load * dt,
+            law,
+            impulse: self.forces[w].map(|f| f * dt),
+        }
+    }
+
+    /// How wheel `w` spins over a step of `dt` (s) before the tyre acts, and its spin rate
+    /// (rad/s): imposed by its velocity motor, or free after its drive torque and damping.
+    fn spin(&mut self, w: Wheel, commands: &Commands<f32>, dt: f32) -> (Spin, f32) {
+        let omega = self.wheel_speed[w];
+        let brake = commands.brake_torque[w];
+        let brake = if brake.is_finite() {
+            brake.max(0.0)
+        } else {
+            self.fault();
+            0.0
+        };
+        let drive = commands.drive[w];
+        if let WheelDrive::Velocity {
+            target,
+            acceleration,
+            max_velocity,
+        } = drive
+        {
+            if target.is_finite() && acceleration.is_finite() && max_velocity.is_finite() {
+                // The motor's command starts from the wheel's speed when speed mode begins.
+                let ramp = self.wheel_motors[w].get_or_insert(VelocityRamp::starting_at(omega));
+                return (
+                    Spin::Imposed,
+                    ramp.step(target, acceleration, max_velocity, dt),
+                );
+            }
+            self.fault();
+            // A running motor keeps its command; a wheel whose motor never ran rolls freely.
+            if let Some(ramp) = self.wheel_motors[w] {
+                return (Spin::Imposed, ramp.command());
+            }
+        } else {
+            self.wheel_motors[w] = None;
+        }
+        let torque = match drive.torque() {
+            Some(t) if !t.is_finite() => {
+                self.fault();
+                0.0
+            }
+            t => t.unwrap_or(0.0),
+        };
+        let wheel = self.corners[w].spin;
+        let spin = Spin::Free {
+            inertia: wheel.inertia,
+            capacity: brake * dt,
+        };
+        (spin, wheel.step(omega, torque, dt))
+    }
+}
