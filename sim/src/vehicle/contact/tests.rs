@@ -1,3 +1,7 @@
+use rapier3d::prelude::{Mat3, Vector};
+use vehicle_model::Linearised;
+
+use super::linear::{solve2, solve4};
 use super::*;
 
 /// A 1000 kg point-like body (inertia 1000 kg·m² about every axis) at rest.

@@ -1,0 +1,191 @@
+//! One axle's rows in a sweep of the contact solve: the brakes, then the two suspension rows
+//! as one 2×2 block and the tyre rows as one 4×4 block (or wheel by wheel on Webots' contact),
+//! so that neither wheel of an axle is favoured by the order of the solve.
+
+use vehicle_model::actuator::coulomb_torque;
+
+use super::body::Body;
+use super::linear::{solve_mirrored, solve2};
+use super::rows::{Grip, Spin, WheelRow};
+
+/// The per-step constants of one axle (wheels `2·a` and `2·a + 1`).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Axle {
+    /// Suspension rows' inverse effective masses (1/kg), 2×2.
+    k_normal: [[f32; 2]; 2],
+    /// `dt·k·x` (N·s) per wheel: the spring's impulse at the current compression.
+    spring_impulse: [f32; 2],
+    /// `dt·(k·dt + c)` (kg) per wheel: the implicit spring-damper's impulse per m/s of
+    /// compression rate.
+    softness: [f32; 2],
+    /// Tyre rows' inverse effective masses (1/kg), 4×4 in the order forward 0, lateral 0,
+    /// forward 1, lateral 1, with each free wheel's spin on its forward diagonal.
+    k_tyre: [[f32; 4]; 4],
+}
+
+impl Axle {
+    pub(super) fn new(body: &Body, wheels: &[WheelRow], dt: f32) -> Axle {
+        let contacts = [wheels[0].contact, wheels[1].contact];
+        let mut axle = Axle {
+            k_normal: [[0.0; 2]; 2],
+            spring_impulse: [0.0; 2],
+            softness: [0.0; 2],
+            k_tyre: [[0.0; 4]; 4],
+        };
+        for (i, ci) in contacts.iter().enumerate() {
+            let Some(ci) = ci else { continue };
+            if let Some(si) = ci.spring() {
+                axle.spring_impulse[i] = dt * si.stiffness * si.compression;
+                axle.softness[i] = dt * (si.stiffness * dt + si.damping);
+            }
+            for (j, cj) in contacts.iter().enumerate() {
+                let Some(cj) = cj else { continue };
+                if let (Some(si), Some(sj)) = (ci.spring(), cj.spring()) {
+                    axle.k_normal[i][j] =
+                        body.coupling(si.hardpoint_arm, si.up, sj.hardpoint_arm, sj.up);
+                }
+                for (m, dm) in [ci.forward, ci.lateral].into_iter().enumerate() {
+                    for (n, dn) in [cj.forward, cj.lateral].into_iter().enumerate() {
+                        axle.k_tyre[2 * i + m][2 * j + n] =
+                            body.coupling(ci.contact_arm, dm, cj.contact_arm, dn);
+                    }
+                }
+            }
+            axle.k_tyre[2 * i][2 * i] += ci.radius * ci.radius * wheels[i].spin.inv_inertia();
+        }
+        axle
+    }
+}
+
+/// The brake: drives the spin toward 0 with an impulse within `±brake_impulse`.
+pub(super) fn brake_row(w: &mut WheelRow) {
+    let Spin::Free {
+        inv_inertia,
+        brake_impulse,
+    } = w.spin
+    else {
+        return;
+    };
+    if brake_impulse <= 0.0 || inv_inertia <= 0.0 {
+        return;
+    }
+    let old = w.impulses.brake;
+    // The Coulomb rule on impulses: the impulse that stops the wheel, within the capacity.
+    let new = coulomb_torque(old - w.omega / inv_inertia, brake_impulse);
+    w.impulses.brake = new;
+    w.omega += (new - old) * inv_inertia;
+}
+
+/// The implicit spring-dampers of an axle: `P = dt·k·x + dt·(k·dt + c)·ẋ` for each wheel with
+/// `ẋ` the compression rate after both impulses, `P ≥ 0`.
+pub(super) fn suspension_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle) {
+    let springs = [0, 1].map(|i| pair[i].contact.and_then(|c| c.spring().copied()));
+    let mut m = [[1.0, 0.0], [0.0, 1.0]];
+    let mut rhs = [0.0; 2];
+    for i in 0..2 {
+        let Some(c) = springs[i] else { continue };
+        let rate = -c.up.dot(body.velocity_at(c.hardpoint_arm));
+        let s = axle.softness[i];
+        for (j, (out, k)) in m[i].iter_mut().zip(axle.k_normal[i]).enumerate() {
+            *out = f32::from(u8::from(i == j)) + s * k;
+        }
+        rhs[i] = axle.spring_impulse[i] + s * rate - pair[i].impulses.normal;
+    }
+    let Some(delta) = solve2(m, rhs) else { return };
+    for (i, c) in springs.iter().enumerate() {
+        let Some(c) = c else { continue };
+        let old = pair[i].impulses.normal;
+        let new = (old + delta[i]).max(0.0);
+        pair[i].impulses.normal = new;
+        body.apply(c.hardpoint_arm, c.up * (new - old));
+    }
+}
+
+/// The tyres of an axle in sweep number `sweep`.
+///
+/// Slip-based tyres: each direction's force law at the end-of-step slip velocities of both
+/// wheels, solved together, then each wheel's force kept within its friction ellipse. The
+/// tyres' compliance determines how the two wheels share a lateral load; Webots' rigid contact
+/// leaves that undetermined (two lateral rows on one line of a rigid chassis), so its wheels
+/// are solved one at a time, as ODE's solver does, alternating which goes first.
+pub(super) fn tyre_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle, sweep: usize) {
+    if pair.iter().any(|w| matches!(w.grip, Grip::Coulomb { .. })) {
+        let order = if sweep.is_multiple_of(2) {
+            [0, 1]
+        } else {
+            [1, 0]
+        };
+        for i in order {
+            wheel_tyre(body, &mut pair[i], axle, i);
+        }
+        return;
+    }
+    let mut m = [[0.0_f32; 4]; 4];
+    let mut rhs = [0.0_f32; 4];
+    for (i, w) in pair.iter().enumerate() {
+        let Some(rows) = tyre_rows(body, w) else {
+            m[2 * i][2 * i] = 1.0;
+            m[2 * i + 1][2 * i + 1] = 1.0;
+            continue;
+        };
+        for (d, (alpha, beta, b)) in rows.into_iter().enumerate() {
+            let r = 2 * i + d;
+            for (col, k) in axle.k_tyre[r].iter().enumerate() {
+                m[r][col] = beta * k;
+            }
+            m[r][r] += alpha;
+            rhs[r] = b;
+        }
+    }
+    let Some(delta) = solve_mirrored(&m, &rhs) else {
+        return;
+    };
+    for (i, w) in pair.iter_mut().enumerate() {
+        apply_tyre(body, w, [delta[2 * i], delta[2 * i + 1]]);
+    }
+}
+
+/// Wheel `i` of an axle's tyre rows alone, the other wheel's impulses held.
+fn wheel_tyre(body: &mut Body, w: &mut WheelRow, axle: &Axle, i: usize) {
+    let Some(rows) = tyre_rows(body, w) else {
+        return;
+    };
+    let mut m = [[0.0_f32; 2]; 2];
+    let mut rhs = [0.0_f32; 2];
+    for (d, (alpha, beta, b)) in rows.into_iter().enumerate() {
+        for (e, out) in m[d].iter_mut().enumerate() {
+            *out = beta * axle.k_tyre[2 * i + d][2 * i + e];
+        }
+        m[d][d] += alpha;
+        rhs[d] = b;
+    }
+    if let Some(delta) = solve2(m, rhs) {
+        apply_tyre(body, w, delta);
+    }
+}
+
+/// The forward and lateral tyre rows of a wheel on the ground, `α·ΔP + β·(K·ΔP) = b` as
+/// `(α, β, b)` with the current slip velocities; `None` in the air.
+fn tyre_rows(body: &Body, w: &WheelRow) -> Option<[(f32, f32, f32); 2]> {
+    let c = w.contact?;
+    let v = c.slip_velocity(body, w.omega);
+    let current = [w.impulses.forward, w.impulses.lateral];
+    Some([0, 1].map(|d| {
+        let (alpha, beta, c0) = w.grip.row(d, w.impulses.normal, current[d]);
+        (alpha, beta, c0 - beta * v[d])
+    }))
+}
+
+/// Adds `delta` (N·s, forward and lateral) to the wheel's tyre impulses within its friction
+/// limits, and applies what was added to the chassis and the spin.
+fn apply_tyre(body: &mut Body, w: &mut WheelRow, delta: [f32; 2]) {
+    let Some(c) = w.contact else { return };
+    let (f0, l0) = (w.impulses.forward, w.impulses.lateral);
+    let [f, l] = w
+        .grip
+        .clamp(f0 + delta[0], l0 + delta[1], w.impulses.normal);
+    w.impulses.forward = f;
+    w.impulses.lateral = l;
+    body.apply(c.contact_arm, c.forward * (f - f0) + c.lateral * (l - l0));
+    w.omega -= c.radius * (f - f0) * w.spin.inv_inertia();
+}
