@@ -7,9 +7,9 @@
 )]
 
 use std::hint::black_box;
-use std::time::{Duration, SystemTime};
+use std::time::Duration;
 
-use benches::report::{self, format_ns};
+use benches::report::{self, Medians, format_ns};
 use criterion::{BatchSize, BenchmarkId, Criterion, criterion_group};
 use sim::replay::{self, Recorder};
 use sim::scenario::{self, RunReport, Scenario};
@@ -78,11 +78,13 @@ criterion_group! {
 
 /// The replay's share of a run: recording (frames × the cost of one) plus writing the file,
 /// over the run without them.
-fn summary(since: SystemTime) {
-    let dir = report::criterion_dir();
-    let median = |id: &str| report::median_ns(&dir, id, since);
+fn summary(medians: &Medians) {
+    let median = |id: &str| medians.get(id);
     let (Some(run), Some(frame), Some(write)) = (median(RUN), median(FRAME), median(WRITE)) else {
-        println!("\nreplay summary: missing results in {}", dir.display());
+        println!(
+            "\nreplay summary: missing results in {}",
+            medians.dir().display()
+        );
         return;
     };
     let report = default_run();
@@ -106,10 +108,5 @@ fn summary(since: SystemTime) {
 }
 
 fn main() {
-    let since = SystemTime::now();
-    benches();
-    Criterion::default().configure_from_args().final_summary();
-    if report::is_bench_run() {
-        summary(since);
-    }
+    report::main_with_summary(benches, summary);
 }

@@ -6,11 +6,10 @@
 )]
 
 use std::hint::black_box;
-use std::time::SystemTime;
 
 use benches::control::LoopMode;
 use benches::peer::{PeerParams, RayCastCar};
-use benches::report::{self, format_ns};
+use benches::report::{self, Medians, format_ns};
 use benches::scenes::{BASIC_TIME_STEP_MS, CarScene, RobotScene};
 use criterion::measurement::WallTime;
 use criterion::{BenchmarkGroup, BenchmarkId, Criterion, criterion_group};
@@ -124,12 +123,11 @@ criterion_group! {
 }
 
 /// Prints the ratios the README tracks, from the medians criterion just wrote.
-fn summary(since: SystemTime) {
-    let dir = report::criterion_dir();
-    let median = |id: &str| report::median_ns(&dir, id, since);
+fn summary(medians: &Medians) {
+    let median = |id: &str| medians.get(id);
     println!("\nsimulation summary (criterion medians, basicTimeStep {BASIC_TIME_STEP_MS} ms):");
     let Some(peer) = median(PEER) else {
-        println!("  no result for {PEER} in {}", dir.display());
+        println!("  no result for {PEER} in {}", medians.dir().display());
         return;
     };
     println!("  peer ray-cast car step: {}", format_ns(peer));
@@ -187,10 +185,5 @@ fn summary(since: SystemTime) {
 }
 
 fn main() {
-    let since = SystemTime::now();
-    benches();
-    Criterion::default().configure_from_args().final_summary();
-    if report::is_bench_run() {
-        summary(since);
-    }
+    report::main_with_summary(benches, summary);
 }

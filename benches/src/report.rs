@@ -55,6 +55,43 @@ pub fn median_ns(dir: &Path, id: &str, since: SystemTime) -> Option<f64> {
     json.get("median")?.get("point_estimate")?.as_f64()
 }
 
+/// The medians (ns) that this run of a bench binary wrote, by benchmark id.
+#[derive(Debug, Clone)]
+pub struct Medians {
+    dir: PathBuf,
+    since: SystemTime,
+}
+
+impl Medians {
+    /// The results written in `dir` at or after `since`.
+    pub fn new(dir: PathBuf, since: SystemTime) -> Self {
+        Medians { dir, since }
+    }
+
+    /// The median time (ns) of benchmark `id` ([`median_ns`]), `None` if this run did not
+    /// measure it.
+    pub fn get(&self, id: &str) -> Option<f64> {
+        median_ns(&self.dir, id, self.since)
+    }
+
+    /// Where the results are read from.
+    pub fn dir(&self) -> &Path {
+        &self.dir
+    }
+}
+
+/// The `main` of a criterion bench binary that prints a summary: runs `benches` (the function
+/// of a `criterion_group!`) and criterion's final summary, then, under `cargo bench` (not in
+/// `cargo test --benches`, which writes no results), `summary` with the medians of this run.
+pub fn main_with_summary(benches: fn(), summary: fn(&Medians)) {
+    let since = SystemTime::now();
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+    if is_bench_run() {
+        summary(&Medians::new(criterion_dir(), since));
+    }
+}
+
 /// A duration (ns) in the unit that reads best: ns, µs or ms, three significant figures.
 pub fn format_ns(ns: f64) -> String {
     if ns < 1e3 {
