@@ -301,7 +301,7 @@ mod tests {
             let robot = scene.world().robot(scene.robot()).unwrap();
             // Mean wheel speed 5.5 rad/s · r 0.01 m = 0.055 m/s: about 0.11 m in 2 s (less the
             // acceleration phase and, in physics mode, the wheel slip).
-            let x = robot.pose().position[0];
+            let x = robot.pose().position.x;
             assert!(x > 0.05 && x < 0.115, "x = {x}");
         }
     }

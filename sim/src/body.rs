@@ -1,32 +1,41 @@
 //! Dynamic rigid boxes of a world (`[[body]]` in a world file): free bodies under gravity that
 //! cars' chassis, robots and other boxes push around.
 
+use proto_geom::nalgebra::{Point2, Point3, UnitQuaternion, Vector3};
 use proto_geom::plausible;
 use rapier3d::prelude::{
     CoefficientCombineRule, ColliderBuilder, PhysicsWorld, RigidBodyBuilder, RigidBodyHandle,
 };
 
-use crate::config::DEFAULT_FRICTION;
+use crate::attitude::RollPitchYaw;
+use crate::config::{DEFAULT_FRICTION, ground_rectangle};
 use crate::error::ParamError;
 use crate::geom::{self, G_DYNAMIC};
 
 /// A dynamic box: a cuboid of uniform density free under gravity.
 ///
 /// ```
+/// use sim::nalgebra::{Point3, Vector3};
 /// use sim::{BodySpec, World, WorldConfig};
-/// let cube = BodySpec { center: [0.0, 0.0, 0.5], size: [1.0; 3], yaw: 0.0, mass: 200.0, friction: None };
+/// let cube = BodySpec {
+///     center: Point3::new(0.0, 0.0, 0.5),
+///     size: Vector3::repeat(1.0),
+///     yaw: 0.0,
+///     mass: 200.0,
+///     friction: None,
+/// };
 /// let mut world = World::new(WorldConfig { bodies: vec![cube], ..WorldConfig::default() })?;
 /// world.step()?;
-/// assert!((world.bodies()[0].position[2] - 0.5).abs() < 2e-3); // resting on the ground
+/// assert!((world.bodies()[0].position.z - 0.5).abs() < 2e-3); // resting on the ground
 /// # Ok::<(), sim::SimError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct BodySpec {
     /// Centre at the start (m, world frame).
-    pub center: [f64; 3],
-    /// Full lengths along the box's own x, y, z (m, each in [`plausible::LENGTH`]: below a millimetre rapier's contact
-    /// margins dominate the shape).
-    pub size: [f64; 3],
+    pub center: Point3<f64>,
+    /// Full lengths along the box's own x, y, z (m, each in [`plausible::LENGTH`]: below a
+    /// millimetre rapier's contact margins dominate the shape).
+    pub size: Vector3<f64>,
     /// Heading at the start (rad, counter-clockwise about +z).
     pub yaw: f64,
     /// Mass (kg, in [`plausible::MASS`]), spread uniformly over the box.
@@ -42,10 +51,10 @@ impl BodySpec {
     /// a finite friction ≥ 0. Fields are named `body.center`, `body.size`, `body.yaw`,
     /// `body.mass` and `body.friction`.
     pub fn validate(&self) -> Result<(), ParamError> {
-        for c in self.center {
+        for &c in self.center.iter() {
             ParamError::within("body.center", c, plausible::POSITION)?;
         }
-        for s in self.size {
+        for &s in self.size.iter() {
             ParamError::within("body.size", s, plausible::LENGTH)?;
         }
         ParamError::finite("body.yaw", self.yaw)?;
@@ -55,20 +64,27 @@ impl BodySpec {
         }
         Ok(())
     }
+
+    /// The corners of its footprint on the ground at the start (m, world x and y),
+    /// counter-clockwise.
+    pub fn footprint(&self) -> [Point2<f64>; 4] {
+        let half = self.size / 2.0;
+        ground_rectangle(self.center.xy(), self.yaw, [-half.x, half.x], half.y)
+    }
 }
 
 /// Where a dynamic box is after a step.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct BodyPose {
     /// Centre (m, world frame).
-    pub position: [f64; 3],
-    /// Orientation as Webots' `rotation` field: unit axis x, y, z and angle (rad, in [0, π]);
-    /// `[0, 0, 1, 0]` for no rotation.
-    pub rotation: [f64; 4],
+    pub position: Point3<f64>,
+    /// Orientation (world frame); `rotation.axis_angle()` gives Webots' `rotation` field (unit
+    /// axis and angle in [0, π] rad, `None` for no rotation).
+    pub rotation: UnitQuaternion<f64>,
     /// Roll, pitch and yaw (rad, z-y-x convention, as [`VehicleState`](crate::VehicleState)).
-    pub roll_pitch_yaw: [f64; 3],
+    pub roll_pitch_yaw: RollPitchYaw,
     /// Velocity of the centre (m/s, world frame).
-    pub velocity: [f64; 3],
+    pub velocity: Vector3<f64>,
 }
 
 /// Inserts the boxes of `specs` (validated) into `world`, in order; they never sleep, like
@@ -79,11 +95,11 @@ pub(crate) fn build(world: &mut PhysicsWorld, specs: &[BodySpec]) -> Vec<RigidBo
         .map(|b| {
             let handle = world.insert_body(
                 RigidBodyBuilder::dynamic()
-                    .pose(geom::pose_xyz_yaw(b.center, b.yaw))
+                    .pose(geom::pose_xyz_yaw(&b.center, b.yaw))
                     .can_sleep(false),
             );
-            let [hx, hy, hz] = b.size.map(|s| (s / 2.0) as f32);
-            let collider = ColliderBuilder::cuboid(hx, hy, hz)
+            let half = geom::vector(&(b.size / 2.0));
+            let collider = ColliderBuilder::cuboid(half.x, half.y, half.z)
                 .mass(b.mass as f32)
                 .friction(b.friction.unwrap_or(DEFAULT_FRICTION) as f32)
                 .friction_combine_rule(CoefficientCombineRule::Multiply)
@@ -98,26 +114,11 @@ pub(crate) fn build(world: &mut PhysicsWorld, specs: &[BodySpec]) -> Vec<RigidBo
 pub(crate) fn pose(world: &PhysicsWorld, handle: RigidBodyHandle) -> Option<BodyPose> {
     let b = geom::finite_body(world, handle)?;
     let q = *b.rotation();
-    let (w, x, y, z) = (
-        f64::from(q.w),
-        f64::from(q.x),
-        f64::from(q.y),
-        f64::from(q.z),
-    );
-    // q and −q are the same rotation: take w ≥ 0 for an angle in [0, π].
-    let s = if w < 0.0 { -1.0 } else { 1.0 };
-    let sin_half = (x * x + y * y + z * z).sqrt();
-    let angle = 2.0 * sin_half.atan2(w * s);
-    let rotation = if sin_half > 1e-12 {
-        [s * x / sin_half, s * y / sin_half, s * z / sin_half, angle]
-    } else {
-        [0.0, 0.0, 1.0, 0.0]
-    };
     Some(BodyPose {
-        position: geom::arr3(b.translation()),
-        rotation,
+        position: geom::to_point(b.translation()),
+        rotation: geom::to_rotation(q),
         roll_pitch_yaw: geom::roll_pitch_yaw(q),
-        velocity: geom::arr3(b.linvel()),
+        velocity: geom::to_vector(b.linvel()),
     })
 }
 
@@ -127,8 +128,8 @@ mod tests {
 
     fn cube() -> BodySpec {
         BodySpec {
-            center: [0.0, 0.0, 0.5],
-            size: [1.0; 3],
+            center: Point3::new(0.0, 0.0, 0.5),
+            size: Vector3::repeat(1.0),
             yaw: 0.0,
             mass: 200.0,
             friction: None,
@@ -139,7 +140,7 @@ mod tests {
     fn rejects_bad_fields() {
         assert!(cube().validate().is_ok());
         let e = BodySpec {
-            size: [1.0, 2e3, 1.0],
+            size: Vector3::new(1.0, 2e3, 1.0),
             ..cube()
         }
         .validate()
@@ -153,7 +154,7 @@ mod tests {
         .unwrap_err();
         assert_eq!(e.field, "body.mass");
         let e = BodySpec {
-            center: [0.0, f64::INFINITY, 0.0],
+            center: Point3::new(0.0, f64::INFINITY, 0.0),
             ..cube()
         }
         .validate()
@@ -179,13 +180,13 @@ mod tests {
             }],
         );
         let p = pose(&world, handles[0]).unwrap();
-        // −0.3 rad about +z is 0.3 rad about −z.
-        let [x, y, z, a] = p.rotation;
+        // −0.3 rad about +z is 0.3 rad about −z, as Webots writes a rotation.
+        let (axis, a) = p.rotation.axis_angle().unwrap();
         assert!(
-            x.abs() < 1e-6 && y.abs() < 1e-6 && (z + 1.0).abs() < 1e-6,
+            axis.x.abs() < 1e-6 && axis.y.abs() < 1e-6 && (axis.z + 1.0).abs() < 1e-6,
             "{p:?}"
         );
         assert!((a - 0.3).abs() < 1e-6);
-        assert!((p.roll_pitch_yaw[2] + 0.3).abs() < 1e-6);
+        assert!((p.roll_pitch_yaw.yaw + 0.3).abs() < 1e-6);
     }
 }

@@ -3,6 +3,7 @@
 
 use crate::body::BodySpec;
 use crate::error::ParamError;
+use proto_geom::nalgebra::{Point2, Point3, Vector3};
 use proto_geom::plausible;
 
 /// Webots default `WorldInfo.basicTimeStep` used by the car worlds (ms).
@@ -24,9 +25,9 @@ pub enum Obstacle {
     /// An axis-aligned box turned by `yaw` about +z.
     Box {
         /// Centre (m, world frame).
-        center: [f64; 3],
+        center: Point3<f64>,
         /// Half lengths along the box's own x, y, z (m).
-        half_extents: [f64; 3],
+        half_extents: Vector3<f64>,
         /// Heading (rad, counter-clockwise about +z).
         yaw: f64,
         /// Coulomb friction; `None` = the ground's.
@@ -36,7 +37,7 @@ pub enum Obstacle {
     /// `height` above its near edge, with a vertical back face.
     Ramp {
         /// Centre of the near (low) edge on the ground (m, world x and y).
-        start: [f64; 2],
+        start: Point2<f64>,
         /// Direction of climb (rad, counter-clockwise about +z from +x).
         yaw: f64,
         /// Horizontal length along the climb direction (m).
@@ -66,7 +67,60 @@ pub(crate) fn ramp_corners(length: f64, width: f64, height: f64) -> [[f64; 3]; 6
     ]
 }
 
+/// The corners of a rectangle on the ground (m, world x and y), counter-clockwise: from `x0`
+/// to `x1` along the heading `yaw` (rad) and `±half_width` across it, in a frame at `origin`.
+/// The footprint of the boxes and ramps, for the plots and the replay's ground.
+pub(crate) fn ground_rectangle(
+    origin: Point2<f64>,
+    yaw: f64,
+    [x0, x1]: [f64; 2],
+    half_width: f64,
+) -> [Point2<f64>; 4] {
+    let (s, c) = yaw.sin_cos();
+    [
+        [x0, -half_width],
+        [x1, -half_width],
+        [x1, half_width],
+        [x0, half_width],
+    ]
+    .map(|[x, y]| Point2::new(origin.x + c * x - s * y, origin.y + s * x + c * y))
+}
+
 impl Obstacle {
+    /// Where the obstacle's own frame stands: its origin (m, world frame; a box's centre, the
+    /// middle of a ramp's low edge on the ground) and its heading (rad, counter-clockwise
+    /// about +z). The rapier collider and the replay's node are both placed by it.
+    pub fn placement(&self) -> (Point3<f64>, f64) {
+        match *self {
+            Obstacle::Box { center, yaw, .. } => (center, yaw),
+            Obstacle::Ramp { start, yaw, .. } => (Point3::new(start.x, start.y, 0.0), yaw),
+        }
+    }
+
+    /// Its Coulomb friction; `None` = the ground's.
+    pub fn friction(&self) -> Option<f64> {
+        match *self {
+            Obstacle::Box { friction, .. } | Obstacle::Ramp { friction, .. } => friction,
+        }
+    }
+
+    /// The corners of its footprint on the ground (m, world x and y), counter-clockwise.
+    pub fn footprint(&self) -> [Point2<f64>; 4] {
+        let (origin, yaw) = self.placement();
+        let origin = origin.xy();
+        match *self {
+            Obstacle::Box { half_extents, .. } => ground_rectangle(
+                origin,
+                yaw,
+                [-half_extents.x, half_extents.x],
+                half_extents.y,
+            ),
+            Obstacle::Ramp { length, width, .. } => {
+                ground_rectangle(origin, yaw, [0.0, length], width / 2.0)
+            }
+        }
+    }
+
     fn validate(&self) -> Result<(), ParamError> {
         match self {
             Obstacle::Box {
@@ -75,10 +129,10 @@ impl Obstacle {
                 yaw,
                 friction,
             } => {
-                for c in center {
+                for c in center.iter() {
                     ParamError::within("obstacle.box.center", *c, plausible::POSITION)?;
                 }
-                for h in half_extents {
+                for h in half_extents.iter() {
                     ParamError::within("obstacle.box.half_extents", *h, plausible::LENGTH)?;
                 }
                 ParamError::finite("obstacle.box.yaw", *yaw)?;
@@ -94,7 +148,7 @@ impl Obstacle {
                 height,
                 friction,
             } => {
-                for c in start {
+                for c in start.iter() {
                     ParamError::within("obstacle.ramp.start", *c, plausible::POSITION)?;
                 }
                 ParamError::finite("obstacle.ramp.yaw", *yaw)?;
@@ -163,15 +217,16 @@ pub const DEFAULT_FRICTION_ITERATIONS: usize = 16;
 ///
 /// ```
 /// use sim::WorldConfig;
+/// use sim::nalgebra::Vector3;
 /// let cfg = WorldConfig::default();
 /// assert_eq!(cfg.basic_time_step_ms, 10);
-/// assert_eq!(cfg.gravity, [0.0, 0.0, -9.81]);
+/// assert_eq!(cfg.gravity, Vector3::new(0.0, 0.0, -9.81));
 /// assert!(cfg.validate().is_ok());
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct WorldConfig {
     /// Gravity (m/s², world frame, z up). Webots: `WorldInfo.gravity` (9.81 downward).
-    pub gravity: [f64; 3],
+    pub gravity: Vector3<f64>,
     /// The fixed physics step (ms, ≥ 1). Webots: `WorldInfo.basicTimeStep`.
     pub basic_time_step_ms: u32,
     /// Coulomb friction between the ground (and obstacles without their own) and anything on it.
@@ -188,7 +243,7 @@ pub struct WorldConfig {
 impl Default for WorldConfig {
     fn default() -> Self {
         WorldConfig {
-            gravity: [0.0, 0.0, -9.81],
+            gravity: Vector3::new(0.0, 0.0, -9.81),
             basic_time_step_ms: DEFAULT_BASIC_TIME_STEP_MS,
             ground_friction: DEFAULT_FRICTION,
             obstacles: Vec::new(),
@@ -207,13 +262,13 @@ impl WorldConfig {
     /// Checks every field: finite gravity, a step of 1 ms to 1 s, a friction ≥ 0, valid
     /// obstacles and dynamic boxes and 1 to 64 iterations of each solver kind.
     pub fn validate(&self) -> Result<(), ParamError> {
-        for g in self.gravity {
+        for &g in self.gravity.iter() {
             ParamError::finite("gravity", g)?;
         }
-        let [gx, gy, gz] = self.gravity;
+        let gz = self.gravity.z;
         ParamError::check(
             "gravity",
-            (gx * gx + gy * gy + gz * gz).sqrt(),
+            self.gravity.norm(),
             "at most 100 m/s² and pointing down (z ≤ 0)",
             |g| g <= MAX_GRAVITY && gz <= 0.0,
         )?;
@@ -268,7 +323,7 @@ mod tests {
         assert_eq!(c.validate().unwrap_err().field, "ground.friction");
         c.ground_friction = 0.8;
         c.obstacles.push(Obstacle::Ramp {
-            start: [0.0, 0.0],
+            start: Point2::origin(),
             yaw: 0.0,
             length: 5.0,
             width: 3.0,

@@ -1,31 +1,54 @@
-//! Conversions between the f64 public API and rapier's f32 glam types, angle helpers and the
-//! collision groups shared by everything in a world.
+//! The rapier boundary: conversions between the public API's f64 nalgebra geometry and
+//! rapier's f32 glam types, angle helpers and the collision groups shared by everything in a
+//! world.
 //!
-//! The public API is f64 (as Webots); rapier runs in f32 inside. Positions keep about 0.1 mm
-//! resolution up to 1 km from the origin, which is enough for the scenarios this crate serves.
+//! The public API is f64 nalgebra (`Point3`, `Vector3`, `UnitQuaternion`), as `proto-geom`'s;
+//! rapier runs in f32 glam inside, and its types never leave the crate. Every conversion goes
+//! through this module, component by component, so that each value is rounded to f32 exactly
+//! once. Positions keep about 0.1 mm resolution up to 1 km from the origin, which is enough
+//! for the scenarios this crate serves.
 
 use core::f64::consts::{PI, TAU};
 
+use proto_geom::nalgebra::{Point3, Quaternion, UnitQuaternion, Vector3};
 use rapier3d::prelude::{Group, InteractionGroups, InteractionTestMode, Pose, Rotation, Vector};
 
-/// An f64 triple as a rapier vector.
-pub(crate) fn vec3(v: [f64; 3]) -> Vector {
-    Vector::new(v[0] as f32, v[1] as f32, v[2] as f32)
+use crate::attitude::RollPitchYaw;
+
+/// A vector (m, m/s, m/s², …) as a rapier vector.
+pub(crate) fn vector(v: &Vector3<f64>) -> Vector {
+    Vector::new(v.x as f32, v.y as f32, v.z as f32)
 }
 
-/// A rapier vector as an f64 triple.
-pub(crate) fn arr3(v: Vector) -> [f64; 3] {
-    [f64::from(v.x), f64::from(v.y), f64::from(v.z)]
+/// A position (m) as a rapier vector (rapier holds positions as vectors).
+pub(crate) fn point(p: &Point3<f64>) -> Vector {
+    vector(&p.coords)
 }
 
-/// A pose from a translation (m) and a heading (rad, about +z).
-pub(crate) fn pose_xyz_yaw(t: [f64; 3], yaw: f64) -> Pose {
-    Pose::from_parts(vec3(t), Rotation::from_rotation_z(yaw as f32))
+/// A rapier vector as a vector.
+pub(crate) fn to_vector(v: Vector) -> Vector3<f64> {
+    Vector3::new(f64::from(v.x), f64::from(v.y), f64::from(v.z))
 }
 
-/// Roll, pitch and yaw (rad) of a rotation, in the z-y-x (yaw, then pitch, then roll)
-/// convention of vehicle dynamics (ISO 8855).
-pub(crate) fn roll_pitch_yaw(q: Rotation) -> [f64; 3] {
+/// A rapier vector that holds a position (m) as a point.
+pub(crate) fn to_point(v: Vector) -> Point3<f64> {
+    Point3::from(to_vector(v))
+}
+
+/// A rapier rotation as a unit quaternion (exact: every f32 is an f64).
+pub(crate) fn to_rotation(q: Rotation) -> UnitQuaternion<f64> {
+    let [w, x, y, z] = [q.w, q.x, q.y, q.z].map(f64::from);
+    UnitQuaternion::new_unchecked(Quaternion::new(w, x, y, z))
+}
+
+/// A pose from a position (m) and a heading (rad, about +z). The heading is turned into a
+/// rotation in f32, as rapier builds its own.
+pub(crate) fn pose_xyz_yaw(at: &Point3<f64>, yaw: f64) -> Pose {
+    Pose::from_parts(point(at), Rotation::from_rotation_z(yaw as f32))
+}
+
+/// Roll, pitch and yaw (rad) of a rotation (see [`RollPitchYaw`]).
+pub(crate) fn roll_pitch_yaw(q: Rotation) -> RollPitchYaw {
     let (w, x, y, z) = (
         f64::from(q.w),
         f64::from(q.x),
@@ -35,7 +58,7 @@ pub(crate) fn roll_pitch_yaw(q: Rotation) -> [f64; 3] {
     let roll = (2.0 * (w * x + y * z)).atan2(1.0 - 2.0 * (x * x + y * y));
     let pitch = (2.0 * (w * y - z * x)).clamp(-1.0, 1.0).asin();
     let yaw = (2.0 * (w * z + x * y)).atan2(1.0 - 2.0 * (y * y + z * z));
-    [roll, pitch, yaw]
+    RollPitchYaw { roll, pitch, yaw }
 }
 
 /// The angle (rad, in (−π, π]) of a rotation known to be about the local y axis.
@@ -134,8 +157,20 @@ mod tests {
     #[test]
     fn euler_of_yaw() {
         let q = Rotation::from_rotation_z(0.7);
-        let [r, p, y] = roll_pitch_yaw(q);
-        assert!(r.abs() < 1e-6 && p.abs() < 1e-6 && (y - 0.7).abs() < 1e-6);
+        let RollPitchYaw { roll, pitch, yaw } = roll_pitch_yaw(q);
+        assert!(roll.abs() < 1e-6 && pitch.abs() < 1e-6 && (yaw - 0.7).abs() < 1e-6);
+        // z-y-x: yaw about the world's z, then pitch and roll about the body's own axes; the
+        // angles read back build the same rotation.
+        let q = Rotation::from_rotation_z(0.3)
+            * Rotation::from_rotation_y(-0.1)
+            * Rotation::from_rotation_x(0.2);
+        let a = roll_pitch_yaw(q);
+        assert!(
+            (a.roll - 0.2).abs() < 1e-6 && (a.pitch + 0.1).abs() < 1e-6,
+            "{a:?}"
+        );
+        assert!((a.yaw - 0.3).abs() < 1e-6, "{a:?}");
+        assert!(a.rotation().angle_to(&to_rotation(q)) < 1e-6);
         assert!((angle_about_y(Rotation::from_rotation_y(-2.0)) + 2.0).abs() < 1e-6);
     }
 }

@@ -17,7 +17,10 @@
 //! * [`replay`]: the run as an animated 3D scene, `replay.glb`.
 //!
 //! The public API is in f64 and SI units (m, m/s, rad, rad/s, N·m, s; the step in ms as
-//! Webots' `basicTimeStep`); rapier (pinned `=0.36.1`) runs in f32 inside and is never exposed.
+//! Webots' `basicTimeStep`), its geometry [`nalgebra`]'s (`Point3` for positions, `Vector3`
+//! for velocities, offsets and sizes, `UnitQuaternion` for orientations; re-exported as
+//! [`sim::nalgebra`](nalgebra), the version `proto-geom` uses), with roll, pitch and yaw as a
+//! [`RollPitchYaw`]; rapier (pinned `=0.36.1`) runs in f32 inside and is never exposed.
 //!
 //! # Physics choices
 //!
@@ -63,6 +66,7 @@
 #[doc = include_str!("../README.md")]
 struct ReadmeDoctests;
 
+mod attitude;
 mod body;
 pub mod cli;
 pub mod motor;
@@ -83,6 +87,10 @@ mod simulation;
 mod vehicle;
 mod world;
 
+/// The linear algebra of the public API (the version `proto-geom` re-exports).
+pub use proto_geom::nalgebra;
+
+pub use attitude::RollPitchYaw;
 pub use body::{BodyPose, BodySpec};
 pub use config::{
     DEFAULT_BASIC_TIME_STEP_MS, DEFAULT_FRICTION, DEFAULT_FRICTION_ITERATIONS, Obstacle,

@@ -60,9 +60,9 @@ impl Sample {
         let s = &t.state;
         Ok(Sample {
             time: t.time,
-            x: s.position[0],
-            y: s.position[1],
-            yaw: s.roll_pitch_yaw[2],
+            x: s.position.x,
+            y: s.position.y,
+            yaw: s.roll_pitch_yaw.yaw,
             speed_kmh: t.speed * KMH_PER_MS,
             driver_speed_kmh: Some(t.estimated_speed_kmh).filter(|v| v.is_finite()),
             rpm: t.rpm,
@@ -88,8 +88,8 @@ impl Sample {
         let [l, r] = robot.wheel_speeds();
         Ok(Sample {
             time: world.time(),
-            x: pose.position[0],
-            y: pose.position[1],
+            x: pose.position.x,
+            y: pose.position.y,
             yaw: pose.heading,
             speed_kmh: 0.5 * (l + r) * robot.params().wheel_radius * KMH_PER_MS,
             ..Sample::default()

@@ -33,7 +33,7 @@ use crate::vehicle::{Vehicle, VehicleId, VehiclePlacement, VehicleSpec};
 ///     world.step()?;
 /// }
 /// assert_eq!(world.time_ms(), 1000);
-/// assert!(world.robot(id)?.pose().position[0] > 0.0);
+/// assert!(world.robot(id)?.pose().position.x > 0.0);
 /// # Ok::<(), sim::SimError>(())
 /// ```
 pub struct World {
@@ -53,7 +53,7 @@ impl World {
     pub fn new(config: WorldConfig) -> Result<World, SimError> {
         config.validate()?;
         let mut physics = PhysicsWorld::new();
-        physics.gravity = geom::vec3(config.gravity);
+        physics.gravity = geom::vector(&config.gravity);
         physics.integration_parameters = integration_parameters(&config);
         let mut world = World {
             physics,
@@ -89,35 +89,29 @@ impl World {
             None,
         );
         for o in &self.config.obstacles {
-            let collider = match o {
-                Obstacle::Box {
-                    center,
-                    half_extents,
-                    yaw,
-                    friction,
-                } => {
-                    let [hx, hy, hz] = half_extents.map(|h| h as f32);
-                    statics(ColliderBuilder::cuboid(hx, hy, hz), friction.unwrap_or(mu))
-                        .position(geom::pose_xyz_yaw(*center, *yaw))
+            let shape = match *o {
+                Obstacle::Box { half_extents, .. } => {
+                    let half = geom::vector(&half_extents);
+                    ColliderBuilder::cuboid(half.x, half.y, half.z)
                 }
                 Obstacle::Ramp {
-                    start,
-                    yaw,
                     length,
                     width,
                     height,
-                    friction,
+                    ..
                 } => {
-                    let points = ramp_corners(*length, *width, *height)
+                    let points = ramp_corners(length, width, height)
                         .map(|[x, y, z]| Vector::new(x as f32, y as f32, z as f32));
                     match ColliderBuilder::convex_hull(&points) {
-                        Some(b) => statics(b, friction.unwrap_or(mu))
-                            .position(geom::pose_xyz_yaw([start[0], start[1], 0.0], *yaw)),
+                        Some(b) => b,
                         // Validated dimensions always give a hull; skip rather than panic.
                         None => continue,
                     }
                 }
             };
+            let (at, yaw) = o.placement();
+            let collider =
+                statics(shape, o.friction().unwrap_or(mu)).position(geom::pose_xyz_yaw(&at, yaw));
             self.physics.insert_collider(collider, None);
         }
     }
@@ -372,11 +366,7 @@ impl World {
                 (!quarantined.is_empty()).then(|| self.owner_of(handle))
             });
         if let Some((owner, part)) = diverged {
-            return Err(SimError::NonFinite {
-                owner,
-                part,
-                time_ms: self.time_ms,
-            });
+            return Err(SimError::diverged(owner, self.time_ms)(part));
         }
         for v in &mut self.vehicles {
             v.post_step(&self.physics, dt, self.time_ms)?;

@@ -4,6 +4,7 @@
 // Helpers outside #[test] functions unwrap too: a failure is a test failure.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+use sim::nalgebra::{Point3, Vector3};
 use sim::world_file::{WorldFileErrorKind, parse_str};
 use sim::{BodySpec, Simulation, VehiclePlacement, World, WorldConfig};
 use vehicle_model::Model;
@@ -29,15 +30,15 @@ fn world_file_reads_bodies() {
         w.config.bodies,
         [
             BodySpec {
-                center: [5.0, 0.0, 0.25],
-                size: [1.0, 2.0, 0.5],
+                center: Point3::new(5.0, 0.0, 0.25),
+                size: Vector3::new(1.0, 2.0, 0.5),
                 yaw: 0.3,
                 mass: 200.0,
                 friction: Some(0.8),
             },
             BodySpec {
-                center: [0.0, 9.0, 0.5],
-                size: [1.0; 3],
+                center: Point3::new(0.0, 9.0, 0.5),
+                size: Vector3::repeat(1.0),
                 yaw: 0.0,
                 mass: 1.0,
                 friction: None,
@@ -90,8 +91,8 @@ fn world_file_errors_name_file_line_and_key() {
 #[test]
 fn world_rejects_bad_bodies_without_panicking() {
     let bad = BodySpec {
-        center: [0.0, 0.0, 1.0],
-        size: [1.0; 3],
+        center: Point3::new(0.0, 0.0, 1.0),
+        size: Vector3::repeat(1.0),
         yaw: 0.0,
         mass: f64::INFINITY,
         friction: None,
@@ -109,8 +110,8 @@ fn world_rejects_bad_bodies_without_panicking() {
 fn dropped_box_falls_freely_then_rests_on_the_ground() {
     // A 1 m, 200 kg cube whose bottom starts 0.5 m above the ground.
     let cube = BodySpec {
-        center: [0.0, 0.0, 1.0],
-        size: [1.0; 3],
+        center: Point3::new(0.0, 0.0, 1.0),
+        size: Vector3::repeat(1.0),
         yaw: 0.0,
         mass: 200.0,
         friction: None,
@@ -126,7 +127,7 @@ fn dropped_box_falls_freely_then_rests_on_the_ground() {
     for _ in 0..25 {
         world.step().unwrap();
     }
-    let z = world.bodies()[0].position[2];
+    let z = world.bodies()[0].position.z;
     assert!((z - 0.681_175).abs() < 1e-5, "{z}");
     for _ in 0..175 {
         world.step().unwrap();
@@ -135,15 +136,19 @@ fn dropped_box_falls_freely_then_rests_on_the_ground() {
     // At rest on its face: centre at half its height. rapier lets a resting contact sink by its
     // allowed linear error (1 mm at length unit 1) plus the soft contact's static deflection
     // (g/ω², 0.07 mm at 60 Hz), so 2 mm.
-    assert!((p.position[2] - 0.5).abs() < 2e-3, "{p:?}");
+    assert!((p.position.z - 0.5).abs() < 2e-3, "{p:?}");
     // A flat landing has no reason to move sideways, but rapier solves the four corner
     // contacts of the 3.1 m/s impact one after the other, and the box skids a few mm (7 mm
     // measured): 1 cm.
-    assert!(p.position[0].hypot(p.position[1]) < 1e-2, "{p:?}");
-    let speed = p.velocity.iter().map(|v| v * v).sum::<f64>().sqrt();
+    assert!(p.position.x.hypot(p.position.y) < 1e-2, "{p:?}");
+    let speed = p.velocity.norm();
     assert!(speed < 1e-2, "{p:?}");
     // It landed flat and stayed so.
-    assert!(p.roll_pitch_yaw.iter().all(|a| a.abs() < 1e-3), "{p:?}");
+    let a = p.roll_pitch_yaw;
+    assert!(
+        [a.roll, a.pitch, a.yaw].iter().all(|a| a.abs() < 1e-3),
+        "{p:?}"
+    );
 }
 
 #[test]
@@ -151,8 +156,8 @@ fn car_pushes_a_box_ahead_of_it() {
     // A 1 m, 200 kg cube 10 m ahead of a BmwX5 (2.3 t) holding 10 km/h in a straight line. The
     // car's wheels only see static geometry: it is the chassis collision box that pushes.
     let cube = BodySpec {
-        center: [10.0, 0.0, 0.5],
-        size: [1.0; 3],
+        center: Point3::new(10.0, 0.0, 0.5),
+        size: Vector3::repeat(1.0),
         yaw: 0.0,
         mass: 200.0,
         friction: Some(0.8),
@@ -177,9 +182,9 @@ fn car_pushes_a_box_ahead_of_it() {
     let mut touched_at = None;
     for step in 0..1500 {
         sim.step().unwrap();
-        let car_x = sim.telemetry(id).unwrap().state.position[0];
+        let car_x = sim.telemetry(id).unwrap().state.position.x;
         let b = sim.world().bodies()[0];
-        if touched_at.is_none() && b.position[0] > 10.0 + 1e-3 {
+        if touched_at.is_none() && b.position.x > 10.0 + 1e-3 {
             touched_at = Some((step, car_x));
         }
     }
@@ -194,10 +199,10 @@ fn car_pushes_a_box_ahead_of_it() {
     // 5 cm), still upright on its face and near the line of travel.
     let t = sim.telemetry(id).unwrap();
     let b = sim.world().bodies()[0];
-    assert!(b.position[0] > 30.0, "{b:?}");
-    let gap = b.position[0] - 0.5 - (t.state.position[0] + front);
+    assert!(b.position.x > 30.0, "{b:?}");
+    let gap = b.position.x - 0.5 - (t.state.position.x + front);
     assert!(gap.abs() < 0.05, "gap {gap}, {b:?}");
-    assert!(b.position[1].abs() < 0.5, "{b:?}");
-    assert!((b.position[2] - 0.5).abs() < 2e-3, "{b:?}");
+    assert!(b.position.y.abs() < 0.5, "{b:?}");
+    assert!((b.position.z - 0.5).abs() < 2e-3, "{b:?}");
     assert!((t.speed - 10.0 / 3.6).abs() < 0.3, "{}", t.speed);
 }

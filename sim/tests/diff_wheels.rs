@@ -52,8 +52,8 @@ fn kinematics_straight_line_is_exact() {
     let r = w.robot(id).unwrap();
     let pose = r.pose();
     // Distance = rotation × wheelRadius 0.01 = 0.08775 m, straight along +x.
-    assert!((pose.position[0] - 0.08775).abs() < 1e-12, "{pose:?}");
-    assert_eq!(pose.position[1], 0.0);
+    assert!((pose.position.x - 0.08775).abs() < 1e-12, "{pose:?}");
+    assert_eq!(pose.position.y, 0.0);
     assert_eq!(pose.heading, 0.0);
     // encoderResolution 100 per rad: 877.5 increments on each wheel.
     for e in r.raw_encoders() {
@@ -73,7 +73,7 @@ fn kinematics_spin_in_place_is_exact() {
     let turned = ramp_rotation(3.0, 10.0, 0.01, 300);
     let pose = w.robot(id).unwrap().pose();
     assert!((pose.heading - 2.0 * turned * 0.01 / 0.1).abs() < 1e-12);
-    assert_eq!(&pose.position[..2], &[0.0, 0.0]);
+    assert_eq!((pose.position.x, pose.position.y), (0.0, 0.0));
     let [l, r] = w.robot(id).unwrap().raw_encoders();
     assert!((l + 100.0 * turned).abs() < 1e-9 && (r - 100.0 * turned).abs() < 1e-9);
 }
@@ -99,10 +99,10 @@ fn kinematics_arc_ends_on_the_analytic_circle() {
     assert!((pose.heading - theta).abs() < 1e-12);
     // Centre at (0, R): position = (R sin θ, R (1 − cos θ)).
     assert!(
-        (pose.position[0] - 0.15 * theta.sin()).abs() < 1e-7,
+        (pose.position.x - 0.15 * theta.sin()).abs() < 1e-7,
         "{pose:?}"
     );
-    assert!((pose.position[1] - 0.15 * (1.0 - theta.cos())).abs() < 1e-7);
+    assert!((pose.position.y - 0.15 * (1.0 - theta.cos())).abs() < 1e-7);
 }
 
 #[test]
@@ -225,7 +225,7 @@ fn slip_noise_is_bounded_and_seeded() {
     assert_eq!((a, ea), (b, eb));
     assert_ne!(a, c);
     // Noiseless distance 5 rad/s·1 s·0.01 m = 0.05 m; each step's speed is within ±10 %.
-    let d = a.position[0].hypot(a.position[1]);
+    let d = a.position.x.hypot(a.position.y);
     assert!((0.045..0.055).contains(&d), "{d}");
     assert!(a.heading != 0.0);
     // Encoders: rotation 5 rad·100 within ±(10 % slip)·(5 % encoder noise).
@@ -264,9 +264,9 @@ fn physics_straight_line_within_5_percent() {
     let r = w.robot(id).unwrap();
     let pose = r.pose();
     // v = ω·r = 4·0.05 = 0.2 m/s for 3 s: 0.6 m along +x.
-    let dx = pose.position[0] - start.position[0];
+    let dx = pose.position.x - start.position.x;
     assert!((dx - 0.6).abs() < 0.03, "{dx}");
-    assert!((pose.position[1] - start.position[1]).abs() < 0.03);
+    assert!((pose.position.y - start.position.y).abs() < 0.03);
     assert!((pose.heading - start.heading).abs() < 0.05);
     // Encoders count 100 per radian of hinge rotation: 4 rad/s·3 s = 12 rad → 1200.
     for (e, a) in r.raw_encoders().into_iter().zip(r.wheel_angles()) {
@@ -292,7 +292,7 @@ fn physics_spin_in_place_within_5_percent() {
     // Yaw rate (n_R − n_L)·r/axle = 4·0.05/0.3 = 0.6667 rad/s for 3 s: 2 rad.
     let turned = pose.heading - start.heading;
     assert!((turned - 2.0).abs() < 0.1, "{turned}");
-    let moved = (pose.position[0] - start.position[0]).hypot(pose.position[1] - start.position[1]);
+    let moved = (pose.position.x - start.position.x).hypot(pose.position.y - start.position.y);
     assert!(moved < 0.01, "{moved}");
 }
 
@@ -303,12 +303,12 @@ fn physics_with_webots_default_fields_moves_forward() {
     for _ in 0..20 {
         w.step().unwrap();
     }
-    let x0 = w.robot(id).unwrap().pose().position[0];
+    let x0 = w.robot(id).unwrap().pose().position.x;
     w.robot_mut(id).unwrap().set_speed(10.0, 10.0);
     for _ in 0..100 {
         w.step().unwrap();
     }
     // 10 rad/s·0.01 m·1 s = 0.1 m.
-    let dx = w.robot(id).unwrap().pose().position[0] - x0;
+    let dx = w.robot(id).unwrap().pose().position.x - x0;
     assert!((dx - 0.1).abs() < 0.005, "{dx}");
 }

@@ -5,6 +5,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use ackermann::Wheel;
+use sim::nalgebra::{Point3, Vector3};
 use sim::scenario::{self, Scenario, Value};
 use sim::world_file;
 use sim::{
@@ -58,8 +59,8 @@ fn a_car_drives_up_a_ten_centimetre_step_on_its_wheels() {
     // at once: 2.995 + 0.374 m ahead of the rear axle); the tyres (0.374 m radius) meet the
     // edge below their centres and climb it.
     let step = Obstacle::Box {
-        center: [55.0, 0.0, 0.05],
-        half_extents: [50.0, 5.0, 0.05],
+        center: Point3::new(55.0, 0.0, 0.05),
+        half_extents: Vector3::new(50.0, 5.0, 0.05),
         yaw: 0.0,
         friction: None,
     };
@@ -72,30 +73,30 @@ fn a_car_drives_up_a_ten_centimetre_step_on_its_wheels() {
     );
     let id = add_x5(&mut sim, VehiclePlacement::default());
     common::run(&mut sim, 1.0);
-    let z0 = sim.telemetry(id).unwrap().state.position[2];
+    let z0 = sim.telemetry(id).unwrap().state.position.z;
     sim.driver_mut(id).unwrap().set_cruising_speed(10.0);
     let mut lost = 0;
     for _ in 0..1500 {
         sim.step().unwrap();
         let s = sim.telemetry(id).unwrap().state;
-        if s.position[0] > 1.0 && s.tyres.iter().any(|t| t.fz <= 0.0) {
+        if s.position.x > 1.0 && s.tyres.iter().any(|t| t.fz <= 0.0) {
             lost += 1;
         }
     }
     let s = sim.telemetry(id).unwrap().state;
     // All four wheels on the step: the car 10 cm higher, still rolling straight.
-    assert!(s.position[0] > 8.0, "stuck at x = {} m", s.position[0]);
+    assert!(s.position.x > 8.0, "stuck at x = {} m", s.position.x);
     assert!(
-        (s.position[2] - z0 - 0.1).abs() < 0.01,
+        (s.position.z - z0 - 0.1).abs() < 0.01,
         "ride height {} m, {} m before the step",
-        s.position[2],
+        s.position.z,
         z0
     );
     // Straight on: the kerb's square edge meets both front tyres in the same step, but
     // rapier solves the two contacts one after the other, so the car may leave the edge
     // turned by up to 0.02 rad; the lateral offset follows from that heading.
-    assert!(s.roll_pitch_yaw[2].abs() < 0.02, "{s:?}");
-    assert!(s.position[1].abs() < 0.02 * s.position[0], "{s:?}");
+    assert!(s.roll_pitch_yaw.yaw.abs() < 0.02, "{s:?}");
+    assert!(s.position.y.abs() < 0.02 * s.position.x, "{s:?}");
     // A wheel may leave the ground for a step or two as it hops onto the edge (the
     // suspension is soft, the edge square): at most 0.1 s in all.
     assert!(lost <= 10, "wheels off the ground for {lost} steps");
@@ -123,8 +124,8 @@ fn two_cars_meeting_head_on_do_not_interpenetrate() {
     let mut closest = f64::INFINITY;
     for _ in 0..600 {
         sim.step().unwrap();
-        let xa = sim.telemetry(a).unwrap().state.position[0];
-        let xb = sim.telemetry(b).unwrap().state.position[0];
+        let xa = sim.telemetry(a).unwrap().state.position.x;
+        let xb = sim.telemetry(b).unwrap().state.position.x;
         closest = closest.min((xb - reach) - (xa + reach));
     }
     // rapier lets contacts overlap by its allowed linear error (1 mm) plus what a step of
@@ -141,10 +142,10 @@ fn a_car_pushes_a_200_kg_box_with_its_front_wheels() {
     // edge (0.3 m) that is a moment of 589 N·m about its front bottom edge, above its weight's
     // 200 × 9.81 × 0.25 = 491 N·m: the box tilts forward onto that edge as it slides.
     let front = 2.995 + 0.374;
-    let size = [0.5, 3.0, 0.3];
+    let size = Vector3::new(0.5, 3.0, 0.3);
     let near = front + 1.0;
     let body = BodySpec {
-        center: [near + size[0] / 2.0, 0.0, size[2] / 2.0],
+        center: Point3::new(near + size.x / 2.0, 0.0, size.z / 2.0),
         size,
         yaw: 0.0,
         mass: 200.0,
@@ -165,15 +166,15 @@ fn a_car_pushes_a_200_kg_box_with_its_front_wheels() {
     let b = sim.world().bodies()[0];
     // 1.96 kN is well within the X5's drive: the car keeps pushing, its front tyres against
     // the box's near face (measured along the ground: the tilt moves the face by under 3 cm).
-    let gap = (b.position[0] - size[0] / 2.0) - (car.position[0] + front);
-    assert!(b.position[0] > near + 5.0, "box at {:?}", b.position);
+    let gap = (b.position.x - size.x / 2.0) - (car.position.x + front);
+    assert!(b.position.x > near + 5.0, "box at {:?}", b.position);
     assert!(gap.abs() < 0.05, "tyres {gap} m from the box");
     // The tyres, not the chassis, push: the box stays on the ground, tilted forward (pitch
     // about +y, nose down) but not turned over, and on the car's line.
-    let [roll, pitch, _] = b.roll_pitch_yaw;
-    assert!(b.position[2] < size[2], "{b:?}");
+    let (roll, pitch) = (b.roll_pitch_yaw.roll, b.roll_pitch_yaw.pitch);
+    assert!(b.position.z < size.z, "{b:?}");
     assert!(pitch > 0.0 && pitch < 0.3 && roll.abs() < 0.02, "{b:?}");
-    assert!(b.position[1].abs() < 0.2, "{b:?}");
+    assert!(b.position.y.abs() < 0.2, "{b:?}");
 }
 
 /// Every numeric metric of `test-track` on one mounting, by scenario and name.

@@ -250,7 +250,7 @@ fn two_cars_and_their_indicators_in_one_replay() {
         .map(|car| track(tracks, car, "translation").values.last().unwrap()[0])
         .collect();
     for (id, end) in [a, b].into_iter().zip(&ends) {
-        let x = sim.world().vehicle(id).unwrap().state().position[0];
+        let x = sim.world().vehicle(id).unwrap().state().position.x;
         assert!((f64::from(*end) - x).abs() < 1e-4, "{end} vs {x}");
     }
     assert!(ends[0] > ends[1]);

@@ -4,6 +4,7 @@
 // Helpers outside #[test] functions unwrap too: a failure is a test failure.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+use sim::nalgebra::{Point2, Point3, Vector3};
 use sim::world_file::{
     self, DEFAULT_WORLD, Location, WorldFileError, WorldFileErrorKind, parse_str,
 };
@@ -49,7 +50,7 @@ fn gravity_must_point_down_and_stay_below_100() {
     }
     // Built in Rust: the vector's size and direction.
     let up = sim::WorldConfig {
-        gravity: [0.0, 0.0, 9.81],
+        gravity: Vector3::new(0.0, 0.0, 9.81),
         ..sim::WorldConfig::default()
     };
     assert_eq!(up.validate().unwrap_err().field, "gravity");
@@ -108,7 +109,7 @@ friction = 0.8
     .unwrap();
     assert_eq!(w.config.basic_time_step_ms, 16);
     assert_eq!(w.duration, Some(12.5));
-    assert_eq!(w.config.gravity, [0.0, 0.0, -9.8]);
+    assert_eq!(w.config.gravity, Vector3::new(0.0, 0.0, -9.8));
     assert_eq!(w.config.ground_friction, 0.8);
     let p = &w.car().unwrap().params;
     assert_eq!(p.time_0_to_100, 7.5);
@@ -202,13 +203,13 @@ friction = 0.6
         w.config.obstacles,
         vec![
             Obstacle::Box {
-                center: [20.0, 5.0, 0.5],
-                half_extents: [1.0, 2.0, 0.5],
+                center: Point3::new(20.0, 5.0, 0.5),
+                half_extents: Vector3::new(1.0, 2.0, 0.5),
                 yaw: 0.3,
                 friction: None,
             },
             Obstacle::Ramp {
-                start: [30.0, 0.0],
+                start: Point2::new(30.0, 0.0),
                 yaw: 0.0,
                 length: 10.0,
                 width: 4.0,

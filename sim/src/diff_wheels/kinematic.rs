@@ -55,8 +55,8 @@ pub(crate) fn step(
     let half_turn = (n_r - n_l) * dt * wheel_radius / (2.0 * axle_length);
     let a = pose.heading + half_turn;
     let v = 0.5 * (n_l + n_r) * wheel_radius * dt;
-    pose.position[0] += v * a.cos();
-    pose.position[1] += v * a.sin();
+    pose.position.x += v * a.cos();
+    pose.position.y += v * a.sin();
     pose.heading += 2.0 * half_turn;
     n
 }
@@ -92,7 +92,7 @@ mod tests {
         assert_eq!(n, [1.0, 3.0]);
         // Δ = (3 − 1)·1·0.5/(2·1) = 0.5; v = 0.5·4·0.5 = 1.
         assert!((pose.heading - 1.0).abs() < 1e-15);
-        assert!((pose.position[0] - 0.5_f64.cos()).abs() < 1e-15);
-        assert!((pose.position[1] - 0.5_f64.sin()).abs() < 1e-15);
+        assert!((pose.position.x - 0.5_f64.cos()).abs() < 1e-15);
+        assert!((pose.position.y - 0.5_f64.sin()).abs() < 1e-15);
     }
 }

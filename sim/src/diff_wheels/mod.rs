@@ -21,6 +21,7 @@ mod physics;
 
 use core::fmt;
 
+use proto_geom::nalgebra::Point3;
 use rapier3d::prelude::{PhysicsWorld, RigidBodyHandle};
 
 pub use params::{DifferentialWheelsParams, RobotBody, RobotMode, RobotPlacement};
@@ -43,8 +44,9 @@ impl RobotId {
 /// The planar pose of a robot.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct RobotPose {
-    /// Position of the robot origin (the ground projection of the axle midpoint), m.
-    pub position: [f64; 3],
+    /// Position of the robot origin (the ground projection of the axle midpoint), m, world
+    /// frame.
+    pub position: Point3<f64>,
     /// Continuous heading (rad, counter-clockwise about +z, not wrapped): the direction of
     /// forward motion.
     pub heading: f64,
@@ -203,7 +205,7 @@ impl DifferentialWheels {
             wheel_speeds: [0.0; 2],
             wheel_angles: [0.0; 2],
             pose: RobotPose {
-                position: [placement.x, placement.y, placement.z],
+                position: Point3::new(placement.x, placement.y, placement.z),
                 heading: placement.heading,
             },
             time_ms,

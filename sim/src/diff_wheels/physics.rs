@@ -2,6 +2,7 @@
 
 use core::f32::consts::FRAC_PI_2;
 
+use proto_geom::nalgebra::Point3;
 use rapier3d::prelude::{
     CoefficientCombineRule, ColliderBuilder, GenericJointBuilder, ImpulseJointHandle,
     JointAxesMask, JointAxis, MassProperties, PhysicsWorld, Pose, RigidBodyBuilder,
@@ -66,7 +67,8 @@ pub(crate) fn build(
 ) -> PhysicsParts {
     let r = p.wheel_radius as f32;
     let half_axle = (p.axle_length / 2.0) as f32;
-    let origin = geom::pose_xyz_yaw([placement.x, placement.y, placement.z], placement.heading);
+    let start = Point3::new(placement.x, placement.y, placement.z);
+    let origin = geom::pose_xyz_yaw(&start, placement.heading);
     let multiply = CoefficientCombineRule::Multiply;
 
     let body = world.insert_body(RigidBodyBuilder::dynamic().pose(origin).can_sleep(false));
@@ -180,7 +182,7 @@ pub(crate) fn measure(
         speeds[i] = omega;
         parts.wrapped[i] = wrapped;
     }
-    let [_, _, yaw] = geom::roll_pitch_yaw(q_body);
+    let yaw = geom::roll_pitch_yaw(q_body).yaw;
     let yaw_rate = f64::from(body.angvel().z);
     let heading = heading + geom::unwrap_delta(parts.wrapped_yaw, yaw, yaw_rate * dt);
     parts.wrapped_yaw = yaw;
@@ -188,7 +190,7 @@ pub(crate) fn measure(
         deltas,
         speeds,
         pose: RobotPose {
-            position: geom::arr3(body.translation()),
+            position: geom::to_point(body.translation()),
             heading,
         },
     })

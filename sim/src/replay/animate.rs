@@ -2,11 +2,11 @@
 
 use ackermann::Wheel;
 use proto_geom::export::{Animation, Interpolation, Keyframes};
-use proto_geom::nalgebra::{UnitQuaternion, Vector3};
+use proto_geom::nalgebra::{Isometry3, UnitQuaternion, Vector3};
 
 use super::Part;
 use super::recorder::{CarFrame, Frame};
-use super::scene::{Nodes, car_pose, steering_of, wheel_rotation};
+use super::scene::{Nodes, steering_of, wheel_rotation, world_pose};
 
 /// Whether a light is on in a car's frame.
 type LightOf = fn(&CarFrame) -> bool;
@@ -17,6 +17,24 @@ fn quat(q: &UnitQuaternion<f64>) -> [f32; 4] {
 
 fn vec3(v: &Vector3<f64>) -> [f32; 3] {
     [v.x as f32, v.y as f32, v.z as f32]
+}
+
+/// Moves `node` through `poses` on timeline `t`, linearly.
+fn add_poses(a: &mut Animation, node: usize, t: usize, poses: &[Isometry3<f64>]) {
+    let translations = poses.iter().map(|p| vec3(&p.translation.vector)).collect();
+    let rotations = poses.iter().map(|p| quat(&p.rotation)).collect();
+    a.add_channel(
+        node,
+        t,
+        Interpolation::Linear,
+        Keyframes::Translation(translations),
+    );
+    a.add_channel(
+        node,
+        t,
+        Interpolation::Linear,
+        Keyframes::Rotation(rotations),
+    );
 }
 
 /// Shown (scale 1) or hidden (scale 0).
@@ -62,21 +80,9 @@ pub(crate) fn animation(parts: &[Part<'_>], index: usize, nodes: &Nodes) -> Opti
         }
         let poses: Vec<_> = car_frames
             .iter()
-            .map(|c| car_pose(c.position, c.roll_pitch_yaw))
+            .map(|c| world_pose(&c.position, &c.roll_pitch_yaw))
             .collect();
-        let root = car.vehicle.root;
-        a.add_channel(
-            root,
-            t,
-            linear,
-            Keyframes::Translation(poses.iter().map(|p| vec3(&p.translation.vector)).collect()),
-        );
-        a.add_channel(
-            root,
-            t,
-            linear,
-            Keyframes::Rotation(poses.iter().map(|p| quat(&p.rotation)).collect()),
-        );
+        add_poses(&mut a, car.vehicle.root, t, &poses);
         for w in Wheel::ALL {
             let node = car.vehicle.wheels[w];
             let centre = car.wheel_centres[w];
@@ -117,7 +123,7 @@ pub(crate) fn animation(parts: &[Part<'_>], index: usize, nodes: &Nodes) -> Opti
         }
         let translations = robot_frames
             .iter()
-            .map(|r| r.position.map(|c| c as f32))
+            .map(|r| vec3(&r.position.coords))
             .collect();
         let rotations = robot_frames
             .iter()
@@ -135,20 +141,15 @@ pub(crate) fn animation(parts: &[Part<'_>], index: usize, nodes: &Nodes) -> Opti
     }
 
     for (i, &node) in nodes.bodies.iter().enumerate() {
-        let poses: Vec<_> = frames.iter().filter_map(|f| f.bodies.get(i)).collect();
+        let poses: Vec<_> = frames
+            .iter()
+            .filter_map(|f| f.bodies.get(i))
+            .map(|p| world_pose(&p.position, &p.roll_pitch_yaw))
+            .collect();
         if poses.len() != frames.len() {
             continue;
         }
-        let translations = poses.iter().map(|p| p.position.map(|c| c as f32)).collect();
-        let rotations = poses
-            .iter()
-            .map(|p| {
-                let [roll, pitch, yaw] = p.roll_pitch_yaw;
-                quat(&UnitQuaternion::from_euler_angles(roll, pitch, yaw))
-            })
-            .collect();
-        a.add_channel(node, t, linear, Keyframes::Translation(translations));
-        a.add_channel(node, t, linear, Keyframes::Rotation(rotations));
+        add_poses(&mut a, node, t, &poses);
     }
 
     // Only this part's trajectories and cones show while it plays.

@@ -3,9 +3,11 @@
 
 use ackermann::{PerWheel, Wheel, WheelAngles};
 use proto_geom::export::ChassisBox;
+use proto_geom::nalgebra::Point3;
 use proto_geom::{VehicleDimensions, VehicleLayout, WheelParams};
 use vehicle_model::{CarParams, Lights};
 
+use crate::attitude::RollPitchYaw;
 use crate::body::{BodyPose, BodySpec};
 use crate::config::Obstacle;
 use crate::diff_wheels::DifferentialWheelsParams;
@@ -48,9 +50,9 @@ impl CarModel {
             ),
             None => (
                 VehicleDimensions {
-                    wheelbase: fr[0] - rr[0],
-                    track_front: fl[1] - fr[1],
-                    track_rear: rl[1] - rr[1],
+                    wheelbase: fr.x - rr.x,
+                    track_front: fl.y - fr.y,
+                    track_rear: rl.y - rr.y,
                 },
                 PerWheel::from_fn(|w| {
                     WheelParams {
@@ -72,15 +74,14 @@ impl CarModel {
             .fold(0.0, f64::max);
         // The tyres stick out of the body by a quarter of their width.
         let width = d.track_front.max(d.track_rear) + 0.5 * thickness;
-        let [cx, _, cz] = spec.chassis.box_center;
-        let [hx, _, hz] = spec.chassis.box_half_extents;
+        let (c, h) = (spec.chassis.box_center, spec.chassis.box_half_extents);
         let (rear, front, top) = match params.and_then(|p| p.sensor_slots) {
             Some(s) => (
                 s.rear.translation.x,
                 s.front.translation.x,
                 s.top.translation.z,
             ),
-            None => (cx - hx, cx + hx, cz + hz),
+            None => (c.x - h.x, c.x + h.x, c.z + h.z),
         };
         // A ground clearance of 60 % of the tyre radius.
         let body = ChassisBox::from_extents(rear, front, width, -0.4 * radius, top);
@@ -100,9 +101,9 @@ pub struct RobotModel {
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct CarFrame {
     /// Car origin (m, world frame).
-    pub position: [f64; 3],
+    pub position: Point3<f64>,
     /// Roll, pitch, yaw of the chassis (rad, z-y-x convention).
-    pub roll_pitch_yaw: [f64; 3],
+    pub roll_pitch_yaw: RollPitchYaw,
     /// Continuous wheel rotation angles (rad, positive = rolling forward).
     pub wheel_angles: PerWheel<f64>,
     /// Front steering angles (rad, positive = right).
@@ -131,7 +132,7 @@ impl CarFrame {
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct RobotFrame {
     /// Ground projection of the axle midpoint (m, world frame).
-    pub position: [f64; 3],
+    pub position: Point3<f64>,
     /// Heading (rad, counter-clockwise about +z).
     pub heading: f64,
     /// Wheel rotation angles `[left, right]` (rad, positive = rolling forward).

@@ -9,6 +9,8 @@ use proto_geom::{BoxMesh, CylinderMesh, RenderMesh, WheelParams, WheelSide};
 use super::Part;
 use super::recorder::{CarModel, Recording, RobotModel};
 use super::shapes::{self, Rect};
+use crate::attitude::RollPitchYaw;
+use crate::body::BodySpec;
 use crate::config::Obstacle;
 
 /// Body colours of the cars and robots, in order (linear RGB), reused past the last.
@@ -56,9 +58,10 @@ pub(crate) struct Nodes {
     pub(crate) parts: Vec<usize>,
 }
 
-fn pose(x: f64, y: f64, z: f64, yaw: f64) -> Isometry3<f64> {
+/// A frame at `at` (m) turned by `yaw` (rad) about +z.
+fn pose(at: Point3<f64>, yaw: f64) -> Isometry3<f64> {
     Isometry3::from_parts(
-        Translation3::new(x, y, z),
+        Translation3::from(at.coords),
         UnitQuaternion::from_euler_angles(0.0, 0.0, yaw),
     )
 }
@@ -71,8 +74,8 @@ fn merge(mut a: RenderMesh, b: RenderMesh) -> RenderMesh {
     a
 }
 
-fn box_mesh(centre: [f64; 3], size: [f64; 3]) -> RenderMesh {
-    let mesh = BoxMesh::new(Point3::from(centre), Vector3::from(size));
+fn box_mesh(centre: Point3<f64>, size: Vector3<f64>) -> RenderMesh {
+    let mesh = BoxMesh::new(centre, size);
     RenderMesh::from_mesh(&mesh, &Isometry3::identity())
 }
 
@@ -95,41 +98,25 @@ fn extent(parts: &[Part<'_>], first: &Recording) -> Rect {
     for part in parts {
         for frame in &part.recording.frames {
             for (c, reach) in frame.cars.iter().zip(&car_reach) {
-                add(c.position[0], c.position[1], *reach);
+                add(c.position.x, c.position.y, *reach);
             }
             for (r, reach) in frame.robots.iter().zip(&robot_reach) {
-                add(r.position[0], r.position[1], *reach);
+                add(r.position.x, r.position.y, *reach);
             }
             for b in &frame.bodies {
-                add(b.position[0], b.position[1], 0.0);
+                add(b.position.x, b.position.y, 0.0);
             }
         }
         for p in part.guides.iter().flatten() {
             add(p[0], p[1], shapes::CONE_RADIUS);
         }
     }
-    for o in &first.obstacles {
-        match o {
-            Obstacle::Box {
-                center,
-                half_extents,
-                ..
-            } => add(center[0], center[1], half_extents[0].hypot(half_extents[1])),
-            Obstacle::Ramp {
-                start,
-                yaw,
-                length,
-                width,
-                ..
-            } => {
-                add(start[0], start[1], width / 2.0);
-                let (s, c) = yaw.sin_cos();
-                add(start[0] + length * c, start[1] + length * s, width / 2.0);
-            }
-        }
-    }
-    for b in &first.bodies {
-        add(b.center[0], b.center[1], b.size[0].hypot(b.size[1]) / 2.0);
+    let footprints = first.obstacles.iter().map(Obstacle::footprint);
+    for corner in footprints
+        .chain(first.bodies.iter().map(BodySpec::footprint))
+        .flatten()
+    {
+        add(corner.x, corner.y, 0.0);
     }
     if !(rect[0] <= rect[2] && rect[1] <= rect[3]) {
         rect = [-1.0, -1.0, 1.0, 1.0];
@@ -214,34 +201,21 @@ fn add_obstacles(scene: &mut Scene, world: usize, first: &Recording) {
     let concrete = Material::new("obstacle", [0.55, 0.55, 0.52], 0.9, 0.0);
     let concrete = scene.add_material(concrete);
     for (i, o) in first.obstacles.iter().enumerate() {
-        let (mesh, at) = match *o {
-            Obstacle::Box {
-                center,
-                half_extents,
-                yaw,
-                ..
-            } => (
-                box_mesh([0.0; 3], half_extents.map(|h| 2.0 * h)),
-                pose(center[0], center[1], center[2], yaw),
+        let (mesh, name) = match *o {
+            Obstacle::Box { half_extents, .. } => (
+                box_mesh(Point3::origin(), 2.0 * half_extents),
+                format!("box_{i}"),
             ),
             Obstacle::Ramp {
-                start,
-                yaw,
                 length,
                 width,
                 height,
                 ..
-            } => (
-                shapes::ramp(length, width, height),
-                pose(start[0], start[1], 0.0, yaw),
-            ),
+            } => (shapes::ramp(length, width, height), format!("ramp_{i}")),
         };
-        let name = match o {
-            Obstacle::Box { .. } => format!("box_{i}"),
-            Obstacle::Ramp { .. } => format!("ramp_{i}"),
-        };
+        let (at, yaw) = o.placement();
         let mesh = scene.add_mesh(&name, mesh, concrete);
-        scene.add_node(Some(world), &name, at, Some(mesh));
+        scene.add_node(Some(world), &name, pose(at, yaw), Some(mesh));
     }
 }
 
@@ -258,16 +232,10 @@ fn add_bodies(scene: &mut Scene, world: usize, first: &Recording) -> Vec<usize> 
         .enumerate()
         .map(|(i, b)| {
             let name = format!("body_{i}");
-            let mesh = scene.add_mesh(&name, box_mesh([0.0; 3], b.size), wood);
-            let [roll, pitch, yaw] = start
-                .and_then(|s| s.get(i))
-                .map_or([0.0, 0.0, b.yaw], |p| p.roll_pitch_yaw);
-            let c = start
-                .and_then(|s| s.get(i))
-                .map_or(b.center, |p| p.position);
-            let at = Isometry3::from_parts(
-                Translation3::new(c[0], c[1], c[2]),
-                UnitQuaternion::from_euler_angles(roll, pitch, yaw),
+            let mesh = scene.add_mesh(&name, box_mesh(Point3::origin(), b.size), wood);
+            let at = start.and_then(|s| s.get(i)).map_or_else(
+                || pose(b.center, b.yaw),
+                |p| world_pose(&p.position, &p.roll_pitch_yaw),
             );
             scene.add_node(Some(world), &name, at, Some(mesh))
         })
@@ -293,7 +261,7 @@ fn add_car(
     if let Some(f) = first.frames.first().and_then(|f| f.cars.get(i))
         && let Some(n) = scene.nodes.get_mut(vehicle.root)
     {
-        n.transform = car_pose(f.position, f.roll_pitch_yaw);
+        n.transform = world_pose(&f.position, &f.roll_pitch_yaw);
     }
     // Lamps on the body's faces, sized by it.
     let b = &car.body;
@@ -303,8 +271,8 @@ fn add_car(
         b.centre.x + l / 2.0,
         b.centre.z - h / 2.0,
     );
-    let lamp = [0.03 * l, 0.15 * w, 0.08 * h];
-    let lamp_at = |x: f64, y: f64, z: f64| box_mesh([x, y, bottom + z * h], lamp);
+    let lamp = Vector3::new(0.03 * l, 0.15 * w, 0.08 * h);
+    let lamp_at = |x: f64, y: f64, z: f64| box_mesh(Point3::new(x, y, bottom + z * h), lamp);
     let red =
         Material::new("brake_light", [0.6, 0.0, 0.0], 0.3, 0.0).with_emissive([1.0, 0.0, 0.0]);
     let amber =
@@ -337,13 +305,9 @@ fn add_car(
     }
 }
 
-/// The car frame in the world (m, rad).
-pub(crate) fn car_pose(position: [f64; 3], roll_pitch_yaw: [f64; 3]) -> Isometry3<f64> {
-    let [roll, pitch, yaw] = roll_pitch_yaw;
-    Isometry3::from_parts(
-        Translation3::new(position[0], position[1], position[2]),
-        UnitQuaternion::from_euler_angles(roll, pitch, yaw),
-    )
+/// The frame of a body (a car, a box) at `position` (m) turned by `attitude`, in the world.
+pub(crate) fn world_pose(position: &Point3<f64>, attitude: &RollPitchYaw) -> Isometry3<f64> {
+    Isometry3::from_parts(Translation3::from(position.coords), attitude.rotation())
 }
 
 /// A `VehicleWheel` of radius `radius` and width `width` (m): the PROTO's default wheel with
@@ -376,9 +340,7 @@ fn add_robot(
     let p = &robot.params;
     let (r, half_axle) = (p.wheel_radius, p.axle_length / 2.0);
     let start = first.frames.first().and_then(|f| f.robots.get(i));
-    let at = start.map_or(Isometry3::identity(), |f| {
-        pose(f.position[0], f.position[1], f.position[2], f.heading)
-    });
+    let at = start.map_or(Isometry3::identity(), |f| pose(f.position, f.heading));
     let root = scene.add_node(Some(world), &format!("robot_{i}"), at, None);
     let colour = PALETTE[i % PALETTE.len()];
     let shell = Material::new(&format!("robot_{i}_body"), colour, 0.4, 0.1);
@@ -395,7 +357,7 @@ fn add_robot(
     scene.add_node(Some(root), "body", upright, Some(mesh));
     // Wheels one fifth of the axle wide (the e-puck's 1 cm on its 5.2 cm axle).
     let width = p.axle_length / 5.0;
-    let wheel = |y: f64, yaw: f64| pose(0.0, y, r, yaw);
+    let wheel = |y: f64, yaw: f64| pose(Point3::new(0.0, y, r), yaw);
     let left = wheel(half_axle, -core::f64::consts::FRAC_PI_2);
     let right = wheel(-half_axle, core::f64::consts::FRAC_PI_2);
     let l = scene.add_wheel(
@@ -450,7 +412,7 @@ fn add_part(scene: &mut Scene, world: usize, part: &Part<'_>, lift: f64) -> usiz
         let points = rec
             .frames
             .iter()
-            .filter_map(|f| f.cars.get(i).map(|c| [c.position[0], c.position[1]]))
+            .filter_map(|f| f.cars.get(i).map(|c| [c.position.x, c.position.y]))
             .collect();
         line(
             format!("trajectory_car_{i}"),
@@ -462,7 +424,7 @@ fn add_part(scene: &mut Scene, world: usize, part: &Part<'_>, lift: f64) -> usiz
         let points = rec
             .frames
             .iter()
-            .filter_map(|f| f.robots.get(i).map(|r| [r.position[0], r.position[1]]))
+            .filter_map(|f| f.robots.get(i).map(|r| [r.position.x, r.position.y]))
             .collect();
         line(
             format!("trajectory_robot_{i}"),
@@ -481,7 +443,10 @@ fn add_part(scene: &mut Scene, world: usize, part: &Part<'_>, lift: f64) -> usiz
                 let count = ((x1 - x0).hypot(y1 - y0) / CONE_SPACING).ceil().max(1.0) as usize;
                 for k in 0..=count {
                     let f = k as f64 / count as f64;
-                    let at = pose(x0 + f * (x1 - x0), y0 + f * (y1 - y0), 0.0, 0.0);
+                    let at = pose(
+                        Point3::new(x0 + f * (x1 - x0), y0 + f * (y1 - y0), 0.0),
+                        0.0,
+                    );
                     scene.add_node(Some(group), &format!("cone_{n}"), at, Some(cone));
                     n += 1;
                 }

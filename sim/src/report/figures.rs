@@ -1,5 +1,6 @@
 //! The plots of a run: which figures, with which series, from any [`RunReport`].
 
+use proto_geom::nalgebra::Point2;
 use vehicle_model::Wheel;
 
 use crate::config::{Obstacle, WorldConfig};
@@ -39,49 +40,24 @@ pub struct Outline {
     pub points: Vec<[f64; 2]>,
 }
 
-/// The corners of a rectangle from `x0` to `x1` along its heading `yaw` (rad) and `±half_w`
-/// across it, in a frame at `origin`.
-fn rectangle(origin: [f64; 2], yaw: f64, [x0, x1]: [f64; 2], half_w: f64) -> Vec<[f64; 2]> {
-    let (s, c) = yaw.sin_cos();
-    [[x0, -half_w], [x1, -half_w], [x1, half_w], [x0, half_w]]
-        .into_iter()
-        .map(|[x, y]| [origin[0] + c * x - s * y, origin[1] + s * x + c * y])
-        .collect()
-}
-
 impl Outline {
     /// The footprints of the boxes, ramps and dynamic boxes (at their start) of `config`.
     pub fn of_world(config: &WorldConfig) -> Vec<Outline> {
-        let obstacles = config.obstacles.iter().map(|o| match o {
-            Obstacle::Box {
-                center,
-                half_extents: [hx, hy, _],
-                yaw,
-                ..
-            } => Outline {
-                kind: OutlineKind::Box,
-                points: rectangle([center[0], center[1]], *yaw, [-hx, *hx], *hy),
-            },
-            Obstacle::Ramp {
-                start,
-                yaw,
-                length,
-                width,
-                ..
-            } => Outline {
-                kind: OutlineKind::Ramp,
-                points: rectangle(*start, *yaw, [0.0, *length], width / 2.0),
-            },
+        let outline = |kind, corners: [Point2<f64>; 4]| Outline {
+            kind,
+            points: corners.iter().map(|p| [p.x, p.y]).collect(),
+        };
+        let obstacles = config.obstacles.iter().map(|o| {
+            let kind = match o {
+                Obstacle::Box { .. } => OutlineKind::Box,
+                Obstacle::Ramp { .. } => OutlineKind::Ramp,
+            };
+            outline(kind, o.footprint())
         });
-        let bodies = config.bodies.iter().map(|b| Outline {
-            kind: OutlineKind::Body,
-            points: rectangle(
-                [b.center[0], b.center[1]],
-                b.yaw,
-                [-b.size[0] / 2.0, b.size[0] / 2.0],
-                b.size[1] / 2.0,
-            ),
-        });
+        let bodies = config
+            .bodies
+            .iter()
+            .map(|b| outline(OutlineKind::Body, b.footprint()));
         obstacles.chain(bodies).collect()
     }
 }
@@ -371,6 +347,7 @@ mod tests {
     use super::*;
     use crate::BodySpec;
     use crate::TyreTelemetry;
+    use proto_geom::nalgebra::{Point3, Vector3};
     use vehicle_model::PerWheel;
 
     #[test]
@@ -414,13 +391,13 @@ mod tests {
         let config = WorldConfig {
             obstacles: vec![
                 Obstacle::Box {
-                    center: [10.0, 5.0, 0.5],
-                    half_extents: [1.0, 2.0, 0.5],
+                    center: Point3::new(10.0, 5.0, 0.5),
+                    half_extents: Vector3::new(1.0, 2.0, 0.5),
                     yaw: core::f64::consts::FRAC_PI_2,
                     friction: None,
                 },
                 Obstacle::Ramp {
-                    start: [0.0, 0.0],
+                    start: Point2::origin(),
                     yaw: 0.0,
                     length: 10.0,
                     width: 4.0,
@@ -429,8 +406,8 @@ mod tests {
                 },
             ],
             bodies: vec![BodySpec {
-                center: [3.0, 0.0, 0.5],
-                size: [1.0, 1.0, 1.0],
+                center: Point3::new(3.0, 0.0, 0.5),
+                size: Vector3::repeat(1.0),
                 yaw: 0.0,
                 mass: 10.0,
                 friction: None,

@@ -110,12 +110,12 @@ impl CarRig {
     /// The ground's Coulomb friction and the magnitude of gravity (m/s²).
     pub(crate) fn ground(&self) -> (f64, f64) {
         let c = self.sim.world().config();
-        (c.ground_friction, -c.gravity[2])
+        (c.ground_friction, -c.gravity.z)
     }
 
     /// The car's heading (rad).
     pub(crate) fn yaw(&self) -> f64 {
-        self.state.roll_pitch_yaw[2]
+        self.state.roll_pitch_yaw.yaw
     }
 
     /// The car's speed along its heading (m/s).

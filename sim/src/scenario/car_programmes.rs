@@ -1,5 +1,6 @@
 //! The car scenarios: each drives a fresh car through the driver library and measures it.
 
+use proto_geom::nalgebra::Point3;
 use vehicle_model::{AutoShiftParams, IndicatorState, TyreModel, Wheel};
 
 use crate::world_file::{CarDescription, WorldDescription};
@@ -220,24 +221,24 @@ fn brake(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult, Scen
     let mut stopped: Option<(f64, f64)> = None;
     // Where the car was half a second after stopping: the body still rocks on its springs
     // before that, which moves the reference point back and forth by millimetres.
-    let mut settled_at: Option<[f64; 3]> = None;
+    let mut settled_at: Option<Point3<f64>> = None;
     let mut at_rest = false;
     while rig.running() {
         rig.step(progress)?;
         let p = rig.state().position;
-        travelled += (p[0] - last[0]).hypot(p[1] - last[1]);
+        travelled += (p.x - last.x).hypot(p.y - last.y);
         last = p;
         match stopped {
             // The ground speed, not the forward speed: a car that spins while it brakes
             // (locked rear wheels) passes through zero forward speed while sliding sideways.
-            None if rig.state().velocity[0].hypot(rig.state().velocity[1]) < STOPPED => {
+            None if rig.state().velocity.x.hypot(rig.state().velocity.y) < STOPPED => {
                 stopped = Some((rig.time(), travelled))
             }
             None => {}
             Some((ts, _)) => {
                 if rig.time() >= ts + 0.5 {
                     let q = *settled_at.get_or_insert(p);
-                    at_rest = (p[0] - q[0]).hypot(p[1] - q[1]) < REST_DRIFT;
+                    at_rest = (p.x - q.x).hypot(p.y - q.y) < REST_DRIFT;
                 }
                 if rig.time() >= ts + 1.0 {
                     break;
@@ -299,7 +300,7 @@ fn circle(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult, Sce
         rig.step(progress)?;
         if rig.time() >= settle {
             let p = rig.state().position;
-            points.push([p[0], p[1]]);
+            points.push([p.x, p.y]);
         }
     }
     let fit = fit_circle(&points);
@@ -379,8 +380,8 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
     let origin = rig.state().position;
     let rig_yaw0 = rig.yaw();
     let (s, c) = (-rig_yaw0).sin_cos();
-    let to_track = |p: [f64; 3]| {
-        let (dx, dy) = (p[0] - origin[0], p[1] - origin[1]);
+    let to_track = |p: Point3<f64>| {
+        let (dx, dy) = (p.x - origin.x, p.y - origin.y);
         [c * dx - s * dy, s * dx + c * dy]
     };
     let v = LANE_CHANGE_SPEED_KMH / KMH;

@@ -156,7 +156,7 @@ pub(crate) fn run(
             let yaw_rate = 2.0 * omega * p.wheel_radius / p.axle_length;
             let drift = {
                 let q = rig.world.robot(rig.id)?.pose().position;
-                (q[0] - start.x).hypot(q[1] - start.y)
+                (q.x - start.x).hypot(q.y - start.y)
             };
             // The wheels ramp up from rest: half a ramp's worth of turning is lost.
             let expected_turns = yaw_rate * (rig.time() - ramp / 2.0) / TAU;
@@ -187,7 +187,7 @@ pub(crate) fn run(
                 rig.turn_wheels([-turn, turn], omega, progress)?;
             }
             let pose = rig.world.robot(rig.id)?.pose();
-            let closure = (pose.position[0] - start.x).hypot(pose.position[1] - start.y);
+            let closure = (pose.position.x - start.x).hypot(pose.position.y - start.y);
             let metrics = vec![
                 Metric::number("side_m", "side of the square", "m", side),
                 Metric::number(

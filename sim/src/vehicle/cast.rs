@@ -32,12 +32,12 @@ pub(crate) fn mass_properties(spec: &VehicleSpec) -> MassProperties {
     let c = &spec.chassis;
     let inertia = body_inertia(c);
     let mut total =
-        MassProperties::with_inertia_matrix(geom::vec3(c.center_of_mass), c.mass as f32, inertia);
+        MassProperties::with_inertia_matrix(geom::point(&c.center_of_mass), c.mass as f32, inertia);
     for s in spec.wheels.iter() {
         let transverse = s.transverse_inertia();
         let spin = s.spin_inertia();
         total += MassProperties::new(
-            geom::vec3(s.position),
+            geom::point(&s.position),
             s.mass as f32,
             Vector::new(transverse as f32, spin as f32, transverse as f32),
         );
@@ -68,10 +68,10 @@ pub(crate) fn build(world: &mut PhysicsWorld, spec: &VehicleSpec, origin: Pose) 
             .gravity_scale(0.0)
             .can_sleep(false),
     );
-    let [hx, hy, hz] = spec.chassis.box_half_extents.map(|v| v as f32);
+    let half = geom::vector(&spec.chassis.box_half_extents);
     world.insert_collider(
-        ColliderBuilder::cuboid(hx, hy, hz)
-            .translation(geom::vec3(spec.chassis.box_center))
+        ColliderBuilder::cuboid(half.x, half.y, half.z)
+            .translation(geom::point(&spec.chassis.box_center))
             .density(0.0)
             .friction(1.0)
             .friction_combine_rule(CoefficientCombineRule::Multiply)
@@ -105,7 +105,7 @@ pub(crate) fn find_contact(
     };
     let (up, q) = (frame.up, frame.pose.rotation);
     let radius = s.radius as f32;
-    let hard_point = frame.pose.transform_point(geom::vec3(s.position));
+    let hard_point = frame.pose.transform_point(geom::point(&s.position));
     let start = Pose::from_parts(hard_point + up * radius, q * steer);
     let tyre = Cylinder::new((0.5 * s.width) as f32, radius);
     let options = ShapeCastOptions {
@@ -147,7 +147,7 @@ mod tests {
         // 2000 kg body + 4 × 30 kg wheels.
         assert!((mp.mass() - 2120.0).abs() < 1e-3);
         // x: (2000·x_body + 60·L + 60·0)/2120.
-        let x = (2000.0 * spec.chassis.center_of_mass[0] + 60.0 * 2.995) / 2120.0;
+        let x = (2000.0 * spec.chassis.center_of_mass.x + 60.0 * 2.995) / 2120.0;
         assert!(
             (f64::from(mp.local_com.x) - x).abs() < 1e-4,
             "{}",

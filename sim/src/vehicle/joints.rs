@@ -38,6 +38,7 @@
 //! between wheel and carrier, is the drive, brake and damping torque the solve found.
 
 use ackermann::{PerWheel, Wheel};
+use proto_geom::nalgebra::Point3;
 use rapier3d::prelude::{
     CoefficientCombineRule, ColliderBuilder, ColliderHandle, GenericJoint, GenericJointBuilder,
     JointAxesMask, JointAxis, MassProperties, Mat3, Multibody, MultibodyJointHandle, PhysicsWorld,
@@ -127,18 +128,18 @@ fn knuckle_mass(spec: &VehicleSpec, w: Wheel) -> f64 {
 /// The chassis body's mass properties about its own centre of mass (the model's body less the
 /// knuckles, whose small share of the inertia is neglected) and that centre of mass in the
 /// car frame (m).
-fn chassis_mass_properties(spec: &VehicleSpec) -> (MassProperties, [f64; 3]) {
+fn chassis_mass_properties(spec: &VehicleSpec) -> (MassProperties, Point3<f64>) {
     let c = &spec.chassis;
     let mut mass = c.mass;
-    let mut moment = c.center_of_mass.map(|x| x * c.mass);
+    let mut moment = c.center_of_mass.coords.map(|x| x * c.mass);
     for w in [Wheel::FrontRight, Wheel::FrontLeft] {
         let mk = knuckle_mass(spec, w);
         mass -= mk;
-        for (m, p) in moment.iter_mut().zip(spec.wheels[w].position) {
+        for (m, p) in moment.iter_mut().zip(spec.wheels[w].position.iter()) {
             *m -= mk * p;
         }
     }
-    let com = moment.map(|m| m / mass);
+    let com = Point3::from(moment.map(|m| m / mass));
     let inertia = body_inertia(c);
     (
         MassProperties::with_inertia_matrix(Vector::ZERO, mass as f32, inertia),
@@ -193,17 +194,17 @@ fn joint_state(
 pub(crate) fn build(world: &mut PhysicsWorld, spec: &VehicleSpec, origin: Pose) -> Option<Parts> {
     let multiply = CoefficientCombineRule::Multiply;
     let (mass_properties_chassis, offset) = chassis_mass_properties(spec);
-    let offset = geom::vec3(offset);
+    let offset = geom::point(&offset);
     let chassis = world.insert_body(
         RigidBodyBuilder::dynamic()
             .pose(origin * Pose::from_translation(offset))
             .additional_mass_properties(mass_properties_chassis)
             .can_sleep(false),
     );
-    let [hx, hy, hz] = spec.chassis.box_half_extents.map(|v| v as f32);
+    let half = geom::vector(&spec.chassis.box_half_extents);
     world.insert_collider(
-        ColliderBuilder::cuboid(hx, hy, hz)
-            .translation(geom::vec3(spec.chassis.box_center) - offset)
+        ColliderBuilder::cuboid(half.x, half.y, half.z)
+            .translation(geom::point(&spec.chassis.box_center) - offset)
             .density(0.0)
             .friction(1.0)
             .friction_combine_rule(multiply)
@@ -211,7 +212,7 @@ pub(crate) fn build(world: &mut PhysicsWorld, spec: &VehicleSpec, origin: Pose) 
         Some(chassis),
     );
 
-    let at = |p: [f64; 3]| origin * Pose::from_translation(geom::vec3(p));
+    let at = |p: &Point3<f64>| origin * Pose::from_translation(geom::point(p));
     let mut knuckles = [chassis; 2];
     let mut steer_joints = [None; 2];
     for w in [Wheel::FrontRight, Wheel::FrontLeft] {
@@ -221,7 +222,7 @@ pub(crate) fn build(world: &mut PhysicsWorld, spec: &VehicleSpec, origin: Pose) 
         let ik = s.transverse_inertia() as f32;
         let knuckle = world.insert_body(
             RigidBodyBuilder::dynamic()
-                .pose(at(s.position))
+                .pose(at(&s.position))
                 .additional_mass_properties(MassProperties::new(
                     Vector::ZERO,
                     knuckle_mass(spec, w) as f32,
@@ -234,7 +235,7 @@ pub(crate) fn build(world: &mut PhysicsWorld, spec: &VehicleSpec, origin: Pose) 
                 | JointAxesMask::LIN_Y
                 | JointAxesMask::ANG_X
                 | JointAxesMask::ANG_Y,
-            geom::vec3(s.position) - offset,
+            geom::point(&s.position) - offset,
         );
         // No joint limits: rapier's multibody emits every limit row every step, active or
         // not; the servo keeps the steering within its range and Webots' suspension has no
@@ -252,7 +253,7 @@ pub(crate) fn build(world: &mut PhysicsWorld, spec: &VehicleSpec, origin: Pose) 
         let s = &spec.wheels[w];
         let wheel = world.insert_body(
             RigidBodyBuilder::dynamic()
-                .pose(at(s.position))
+                .pose(at(&s.position))
                 .can_sleep(false)
                 .allow_fast_rotation(true),
         );
@@ -271,7 +272,7 @@ pub(crate) fn build(world: &mut PhysicsWorld, spec: &VehicleSpec, origin: Pose) 
             | JointAxesMask::ANG_Z;
         let j = match front_index(w) {
             Some(_) => joint(spin_locked | JointAxesMask::LIN_Z, Vector::ZERO),
-            None => joint(spin_locked, geom::vec3(s.position) - offset),
+            None => joint(spin_locked, geom::point(&s.position) - offset),
         };
         let carrier = front_index(w).map_or(chassis, |i| knuckles[i]);
         spin_joints[n] = Some(world.insert_multibody_joint(carrier, wheel, j)?);

@@ -55,6 +55,7 @@ mod spec;
 mod state;
 
 use ackermann::{PerWheel, Wheel, WheelAngles};
+use proto_geom::nalgebra::Point3;
 use proto_geom::plausible;
 use rapier3d::prelude::{PhysicsWorld, Pose, RigidBody, RigidBodyHandle, Rotation, Vector};
 
@@ -68,6 +69,7 @@ pub use spec::{
 };
 pub use state::{TyreTelemetry, VehicleId, VehiclePlacement, VehicleState};
 
+use crate::attitude::RollPitchYaw;
 use crate::error::{BodyOwner, BodyPart, ParamError, SimError};
 use crate::geom;
 use crate::motor::{self, PositionServo, VelocityRamp};
@@ -119,11 +121,12 @@ impl Vehicle {
             Some(z) => ParamError::within("placement.z", z, plausible::POSITION)?,
             None => {
                 let [rr, rl] = [Wheel::RearRight, Wheel::RearLeft]
-                    .map(|w| spec.wheels[w].radius - spec.wheels[w].position[2]);
+                    .map(|w| spec.wheels[w].radius - spec.wheels[w].position.z);
                 0.5 * (rr + rl)
             }
         };
-        let origin = geom::pose_xyz_yaw([placement.x, placement.y, z], placement.yaw);
+        let start = Point3::new(placement.x, placement.y, z);
+        let origin = geom::pose_xyz_yaw(&start, placement.yaw);
         let parts = match spec.mounting {
             Mounting::Cast => Parts::Cast(cast::build(world, &spec, origin)),
             Mounting::Joints => Parts::Joints(
@@ -142,8 +145,11 @@ impl Vehicle {
             slips: PerWheel::splat(TransientSlip::default()),
             previous_com_velocity: None,
             state: VehicleState {
-                position: [placement.x, placement.y, z],
-                roll_pitch_yaw: [0.0, 0.0, geom::wrap(placement.yaw)],
+                position: start,
+                roll_pitch_yaw: RollPitchYaw {
+                    yaw: geom::wrap(placement.yaw),
+                    ..RollPitchYaw::default()
+                },
                 wiper: spec.wiper_range.map(|[lo, _]| lo),
                 ..VehicleState::default()
             },
@@ -616,10 +622,10 @@ impl Vehicle {
         }
         let q = pose.rotation;
         let origin = pose.translation;
-        s.position = geom::arr3(origin);
+        s.position = geom::to_point(origin);
         s.roll_pitch_yaw = geom::roll_pitch_yaw(q);
         let v = chassis.velocity_at_point(origin);
-        s.velocity = geom::arr3(v);
+        s.velocity = geom::to_vector(v);
         s.forward_speed = f64::from(v.dot(q * Vector::X));
         s.yaw_rate = f64::from(chassis.angvel().z);
         // The whole car's centre of mass: the chassis body's, unless the wheels are bodies.

@@ -2,6 +2,7 @@
 //! joint constants in f64 SI units.
 
 use ackermann::{PerWheel, Wheel};
+use proto_geom::nalgebra::{Point3, Vector3};
 use proto_geom::plausible;
 use proto_geom::{VehicleDimensions, VehicleLayout};
 use vehicle_model::{CarParams, TyreClass, TyreField, TyreModel, WebotsContact};
@@ -15,14 +16,14 @@ pub struct ChassisSpec {
     /// Body mass (kg, > 0). Webots: `Physics.mass` of the Car.
     pub mass: f64,
     /// Centre of mass (m). Webots: `Physics.centerOfMass`.
-    pub center_of_mass: [f64; 3],
+    pub center_of_mass: Point3<f64>,
     /// Inertia about the centre of mass, `[Ixx, Iyy, Izz, Ixy, Ixz, Iyz]` (kg·m²), the entries
     /// of the symmetric tensor. Webots: `Physics.inertiaMatrix`.
     pub inertia: [f64; 6],
     /// Centre of the chassis collision box (m).
-    pub box_center: [f64; 3],
-    /// Half lengths of the chassis collision box (m, > 0).
-    pub box_half_extents: [f64; 3],
+    pub box_center: Point3<f64>,
+    /// Half lengths of the chassis collision box along the car's x, y, z (m, > 0).
+    pub box_half_extents: Vector3<f64>,
 }
 
 /// One wheel: where its centre is and what it is made of.
@@ -30,7 +31,7 @@ pub struct ChassisSpec {
 pub struct WheelSpec {
     /// Wheel centre in the car frame at rest with unloaded springs (m): `(L, ∓Tf/2, 0)` for
     /// the front wheels, `(0, ∓Tr/2, 0)` for the rear ones.
-    pub position: [f64; 3],
+    pub position: Point3<f64>,
     /// Tyre radius (m, > 0). Webots: `VehicleWheel.tireRadius`.
     pub radius: f64,
     /// Tyre width (m, > 0): the cylinder's length along the spin axis. Webots:
@@ -212,11 +213,11 @@ impl VehicleSpec {
     /// The load on each wheel of the car at rest on level ground (N): the body's weight shared
     /// between the axles by its centre of mass, plus the wheel's own weight.
     pub fn static_wheel_loads(&self) -> PerWheel<f64> {
-        let front_x = self.wheels[Wheel::FrontRight].position[0];
-        let rear_x = self.wheels[Wheel::RearRight].position[0];
+        let front_x = self.wheels[Wheel::FrontRight].position.x;
+        let rear_x = self.wheels[Wheel::RearRight].position.x;
         let wheelbase = front_x - rear_x;
         let front_share = if wheelbase > 0.0 {
-            ((self.chassis.center_of_mass[0] - rear_x) / wheelbase).clamp(0.0, 1.0)
+            ((self.chassis.center_of_mass.x - rear_x) / wheelbase).clamp(0.0, 1.0)
         } else {
             0.5
         };
@@ -235,13 +236,13 @@ impl VehicleSpec {
     pub fn validate(&self) -> Result<(), ParamError> {
         let c = &self.chassis;
         ParamError::within("physics.mass", c.mass, plausible::MASS)?;
-        for v in c.center_of_mass {
+        for &v in c.center_of_mass.iter() {
             ParamError::within("physics.centerOfMass", v, plausible::OFFSET)?;
         }
-        for v in c.box_center {
+        for &v in c.box_center.iter() {
             ParamError::within("chassis.box_center", v, plausible::OFFSET)?;
         }
-        for v in c.box_half_extents {
+        for &v in c.box_half_extents.iter() {
             ParamError::within("chassis.box_half_extents", v, plausible::LENGTH)?;
         }
         for v in c.inertia {
@@ -262,7 +263,7 @@ impl VehicleSpec {
         )?;
         for w in Wheel::ALL {
             let s = &self.wheels[w];
-            for v in s.position {
+            for &v in s.position.iter() {
                 ParamError::within("wheel.position", v, plausible::OFFSET)?;
             }
             ParamError::within("tireRadius", s.radius, plausible::LENGTH)?;
@@ -367,7 +368,7 @@ impl VehicleSpec {
                     * p.thickness,
             );
             WheelSpec {
-                position: [c.x, c.y, c.z],
+                position: c,
                 radius: p.tire_radius,
                 width: p.thickness,
                 mass,
@@ -383,10 +384,10 @@ impl VehicleSpec {
         let mut spec = VehicleSpec {
             chassis: ChassisSpec {
                 mass: params.body.mass,
-                center_of_mass: params.body.center_of_mass,
+                center_of_mass: Point3::from(params.body.center_of_mass),
                 inertia: params.body_inertia(),
-                box_center: [(l + rf - rr) / 2.0, 0.0, height / 2.0],
-                box_half_extents: [(l + rf + rr) / 2.0, track / 2.0, height / 2.0],
+                box_center: Point3::new((l + rf - rr) / 2.0, 0.0, height / 2.0),
+                box_half_extents: Vector3::new((l + rf + rr) / 2.0, track / 2.0, height / 2.0),
             },
             wheels,
             front_suspension: SpringDamper {

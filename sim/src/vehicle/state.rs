@@ -1,6 +1,9 @@
 //! What identifies a car, where it starts, and what it measures after a step.
 
 use ackermann::{PerWheel, WheelAngles};
+use proto_geom::nalgebra::{Point3, Vector3};
+
+use crate::attitude::RollPitchYaw;
 
 /// Handle of a car in a [`World`](crate::World).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -32,11 +35,11 @@ pub struct VehiclePlacement {
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct VehicleState {
     /// Position of the car origin (rear-axle centre at wheel-centre height), m, world frame.
-    pub position: [f64; 3],
+    pub position: Point3<f64>,
     /// Roll, pitch and yaw of the chassis (rad, z-y-x convention; yaw in (−π, π]).
-    pub roll_pitch_yaw: [f64; 3],
+    pub roll_pitch_yaw: RollPitchYaw,
     /// Velocity of the car origin (m/s, world frame), from the chassis rigid body.
-    pub velocity: [f64; 3],
+    pub velocity: Vector3<f64>,
     /// Signed speed along the chassis x axis (m/s, positive forward).
     pub forward_speed: f64,
     /// Yaw rate (rad/s, counter-clockwise about world +z).

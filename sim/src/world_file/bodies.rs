@@ -3,6 +3,7 @@
 use crate::body::BodySpec;
 use crate::config::WorldConfig;
 
+use proto_geom::nalgebra::{Point3, Vector3};
 use proto_geom::plausible::Compact;
 
 use super::error::{WorldFileError, WorldFileErrorKind};
@@ -26,8 +27,8 @@ pub(crate) fn read_bodies(
         let size = b.array::<3>("size")?.ok_or_else(|| missing(&b, "size"))?;
         let mass = b.number("mass")?.ok_or_else(|| missing(&b, "mass"))?;
         let spec = BodySpec {
-            center,
-            size,
+            center: Point3::from(center),
+            size: Vector3::from(size),
             yaw: yaw_of(&b)?,
             mass,
             friction: b.number("friction")?,

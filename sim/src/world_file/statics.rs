@@ -2,6 +2,7 @@
 //! (and, through [`super::bodies`], `[[body]]`).
 
 use crate::config::{MAX_GRAVITY, Obstacle, WorldConfig};
+use proto_geom::nalgebra::{Point2, Point3, Vector3};
 use proto_geom::plausible::Compact;
 
 use super::error::{WorldFileError, WorldFileErrorKind};
@@ -42,7 +43,7 @@ pub(crate) fn read_world(root: &Section<'_, '_>) -> Result<WorldConfig, WorldFil
                 )),
             ));
         }
-        config.gravity = [0.0, 0.0, -g];
+        config.gravity = Vector3::new(0.0, 0.0, -g);
     }
     if let Some(ground) = root.table("ground")? {
         ground.check_keys(&GROUND_KEYS)?;
@@ -57,8 +58,8 @@ pub(crate) fn read_world(root: &Section<'_, '_>) -> Result<WorldConfig, WorldFil
         let size = required_array::<3>(&b, "size")?;
         let yaw = yaw_of(&b)?;
         config.obstacles.push(Obstacle::Box {
-            center,
-            half_extents: size.map(|s| s / 2.0),
+            center: Point3::from(center),
+            half_extents: Vector3::from(size.map(|s| s / 2.0)),
             yaw,
             friction: b.number("friction")?,
         });
@@ -74,7 +75,7 @@ pub(crate) fn read_world(root: &Section<'_, '_>) -> Result<WorldConfig, WorldFil
         }
         let [length, width, height] = dims;
         config.obstacles.push(Obstacle::Ramp {
-            start,
+            start: Point2::from(start),
             yaw,
             length,
             width,

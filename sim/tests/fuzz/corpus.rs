@@ -217,7 +217,7 @@ fn ride_height(name: &str, basic_time_step_ms: Option<u32>) -> f64 {
     for _ in 0..steps {
         step(&mut b.sim).unwrap();
     }
-    b.sim.telemetry(car).unwrap().state.position[2]
+    b.sim.telemetry(car).unwrap().state.position.z
 }
 
 #[test]

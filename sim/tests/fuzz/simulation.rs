@@ -112,8 +112,12 @@ fn car_call(sim: &mut Simulation, car: VehicleId, op: &Op) -> Result<(), String>
 
 /// Every number of a car's state is finite.
 fn finite_state(s: &VehicleState) -> Result<(), String> {
-    let mut numbers: Vec<f64> = [s.position, s.roll_pitch_yaw, s.velocity].concat();
+    let a = s.roll_pitch_yaw;
+    let mut numbers: Vec<f64> = s.position.iter().chain(&s.velocity).copied().collect();
     numbers.extend([
+        a.roll,
+        a.pitch,
+        a.yaw,
         s.forward_speed,
         s.yaw_rate,
         s.longitudinal_acceleration,
@@ -179,7 +183,7 @@ fn robot_call(sim: &mut Simulation, id: RobotId, op: RobotOp) -> Result<(), Stri
     let robot = sim.world().robot(id).map_err(err)?;
     let pose = robot.pose();
     let mut numbers = vec![pose.heading];
-    numbers.extend(pose.position);
+    numbers.extend(pose.position.iter());
     numbers.extend(robot.wheel_speeds());
     numbers.extend(robot.wheel_angles());
     numbers.extend(robot.raw_encoders());

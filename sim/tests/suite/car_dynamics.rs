@@ -121,7 +121,7 @@ known_joints_gap! {
             assert!(t > 0.95 * 3.06 && t < 5.0, "{t}");
             common::run(&mut sim, 3.0);
             let rest = sim.telemetry(id).unwrap();
-            let drift = (rest.state.position[0] - stop[0]).hypot(rest.state.position[1] - stop[1]);
+            let drift = (rest.state.position.x - stop[0]).hypot(rest.state.position.y - stop[1]);
             assert!(rest.speed.abs() < 0.01 && drift < 0.02, "{rest:?}");
         }
     }
@@ -197,7 +197,7 @@ fn assert_sane(sim: &Simulation, id: sim::VehicleId) {
     let finite = s.position.iter().chain(&s.velocity).all(|x| x.is_finite())
         && s.wheel_speeds.iter().all(|x| x.is_finite());
     assert!(finite, "{s:?}");
-    assert!(s.position[2].abs() < 10.0, "{s:?}");
+    assert!(s.position.z.abs() < 10.0, "{s:?}");
     let v = s.velocity.iter().map(|x| x * x).sum::<f64>().sqrt();
     assert!(v < 100.0, "{s:?}");
 }

@@ -30,7 +30,7 @@ fn settled(model: Model, dt_ms: u32) -> (Simulation, sim::VehicleId, f64) {
         )
         .unwrap();
     common::run(&mut sim, 3.0);
-    let z = sim.telemetry(id).unwrap().state.position[2];
+    let z = sim.telemetry(id).unwrap().state.position.z;
     (sim, id, z)
 }
 
@@ -54,9 +54,9 @@ fn every_model_stands_drives_and_stops_at_100_ms() {
         let s = sim.telemetry(id).unwrap().state;
         assert!(stopped.is_some(), "{model:?} did not stop: {s:?}");
         assert!(
-            (s.position[2] - z100).abs() < 0.05,
+            (s.position.z - z100).abs() < 0.05,
             "{model:?} at {} m after the stop (ride height {z100} m)",
-            s.position[2]
+            s.position.z
         );
     }
 }

@@ -46,7 +46,7 @@ fn slip_at_ramp(sim: &sim::Simulation, id: sim::VehicleId, mu: f64) -> Option<f6
         .sum();
     let force = (m + free_inertia) * a + rolling;
     let height = spec.wheels[Wheel::RearRight].radius + c.center_of_mass[2];
-    let wheelbase = spec.wheels[Wheel::FrontRight].position[0];
+    let wheelbase = spec.wheels[Wheel::FrontRight].position.x;
     let transfer = m * a * height / wheelbase / 2.0;
     let per_wheel = force / driven.len() as f64;
     let mut kappa: f64 = 0.0;
@@ -124,7 +124,8 @@ fn check(model: Model, webots: bool) {
             "{model:?} capped at {v} m/s, not {cap}"
         );
     }
-    let [x, y, _] = sim.telemetry(id).unwrap().state.position;
+    let p = sim.telemetry(id).unwrap().state.position;
+    let (x, y) = (p.x, p.y);
     if webots {
         // Webots' contact (as before the slip-based tyre): within 0.5 % of the distance; the
         // Tractor's axles, velocity-locked on tyres of 0.38 and 0.6 m, wind up against each

@@ -6,6 +6,7 @@
 use crate::common;
 
 use sim::TyreChoice;
+use sim::nalgebra::Vector3;
 
 use sim::{Simulation, VehicleId, VehiclePlacement, VehicleSpec, World, WorldConfig};
 use vehicle_model::{AutoShiftParams, CarParams, Model, TyreModel, Wheel};
@@ -60,14 +61,14 @@ impl Bicycle {
         let wheels = Wheel::ALL.map(|w| spec.wheels[w]);
         let m = c.mass + wheels.iter().map(|w| w.mass).sum::<f64>();
         let x = (c.mass * c.center_of_mass[0]
-            + wheels.iter().map(|w| w.mass * w.position[0]).sum::<f64>())
+            + wheels.iter().map(|w| w.mass * w.position.x).sum::<f64>())
             / m;
         let mut iz = c.inertia[2] + c.mass * (c.center_of_mass[0] - x).powi(2);
         for w in &wheels {
             iz += w.transverse_inertia()
-                + w.mass * ((w.position[0] - x).powi(2) + w.position[1].powi(2));
+                + w.mass * ((w.position.x - x).powi(2) + w.position.y.powi(2));
         }
-        let front_x = spec.wheels[Wheel::FrontRight].position[0];
+        let front_x = spec.wheels[Wheel::FrontRight].position.x;
         let loads = spec.static_wheel_loads();
         let stiffness = |w: Wheel| match spec.tyres.of(w) {
             TyreModel::MagicFormula(t) => {
@@ -142,7 +143,7 @@ impl Bicycle {
 
 /// The angle (rad, in (−π, π]) between the car's heading and the velocity of its origin.
 fn body_slip(s: &sim::VehicleState) -> f64 {
-    let beta = s.velocity[1].atan2(s.velocity[0]) - s.roll_pitch_yaw[2];
+    let beta = s.velocity.y.atan2(s.velocity.x) - s.roll_pitch_yaw.yaw;
     (beta + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU) - std::f64::consts::PI
 }
 
@@ -323,7 +324,7 @@ fn locked_wheels_slide_straight_and_stop_on_the_sliding_friction() {
         .fold((0.0, 0.0), |(a, b), (l, f)| (a + l, b + f));
     let mu_slide = sliding / total;
     let s0 = sim.telemetry(id).unwrap();
-    let (v0, yaw0, x0) = (s0.speed, s0.state.roll_pitch_yaw[2], s0.state.position);
+    let (v0, yaw0, x0) = (s0.speed, s0.state.roll_pitch_yaw.yaw, s0.state.position);
     {
         let d = sim.driver_mut(id).unwrap();
         d.set_cruising_speed(0.0);
@@ -333,9 +334,9 @@ fn locked_wheels_slide_straight_and_stop_on_the_sliding_friction() {
     }
     common::run_until(&mut sim, 10.0, |s| s.telemetry(id).unwrap().speed < 0.01).unwrap();
     let s = sim.telemetry(id).unwrap().state;
-    let distance = (s.position[0] - x0[0]).hypot(s.position[1] - x0[1]);
+    let distance = (s.position.x - x0[0]).hypot(s.position.y - x0[1]);
     let expected = v0 * v0 / (2.0 * mu_slide * G);
-    let turn = (s.roll_pitch_yaw[2] - yaw0).abs();
+    let turn = (s.roll_pitch_yaw.yaw - yaw0).abs();
     println!(
         "μ_slide {mu_slide:.3}: stopped in {distance:.2} m (v²/2μg = {expected:.2} m), heading change {turn:.4} rad"
     );
@@ -353,7 +354,7 @@ fn parked_on_a_ten_percent_slope_with_the_brake_on_the_car_holds() {
     // 10 % slope: gravity tilted by atan(0.1) about y (the car faces uphill along +x).
     let theta = 0.1_f64.atan();
     let world = World::new(WorldConfig {
-        gravity: [-G * theta.sin(), 0.0, -G * theta.cos()],
+        gravity: Vector3::new(-G * theta.sin(), 0.0, -G * theta.cos()),
         ..WorldConfig::default()
     })
     .unwrap();
@@ -381,13 +382,13 @@ fn stopping_distance(dt_ms: u32) -> f64 {
     let (mut sim, id) = car(Model::BmwX5.params(), 1.0, dt_ms);
     sim.driver_mut(id).unwrap().set_cruising_speed(60.0);
     common::run(&mut sim, 10.0);
-    let x0 = sim.telemetry(id).unwrap().state.position[0];
+    let x0 = sim.telemetry(id).unwrap().state.position.x;
     let d = sim.driver_mut(id).unwrap();
     d.set_cruising_speed(0.0);
     d.set_throttle(0.0);
     d.set_brake_intensity(1.0);
     common::run_until(&mut sim, 10.0, |s| s.telemetry(id).unwrap().speed < 0.01).unwrap();
-    sim.telemetry(id).unwrap().state.position[0] - x0
+    sim.telemetry(id).unwrap().state.position.x - x0
 }
 
 #[test]
@@ -482,12 +483,12 @@ fn braking_within_the_grip_follows_the_brake_torque() {
         }
         let (a, b) = (a / m, b / m);
         let s0 = sim.telemetry(id).unwrap();
-        let (v0, x0) = (s0.speed, s0.state.position[0]);
+        let (v0, x0) = (s0.speed, s0.state.position.x);
         let d = sim.driver_mut(id).unwrap();
         d.set_throttle(0.0);
         d.set_brake_intensity(1.0);
         common::run_until(&mut sim, 10.0, |s| s.telemetry(id).unwrap().speed < 0.01).unwrap();
-        let distance = sim.telemetry(id).unwrap().state.position[0] - x0;
+        let distance = sim.telemetry(id).unwrap().state.position.x - x0;
         let expected = v0 / b - a / (b * b) * (1.0 + b * v0 / a).ln();
         println!(
             "{tyre:?}: stopped from {v0:.2} m/s in {distance:.2} m (expected {expected:.2} m; \

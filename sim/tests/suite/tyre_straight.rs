@@ -86,7 +86,7 @@ fn drive(model: Model, mu: f64, drive: Drive) -> (f64, f64, f64, bool) {
         }
     }
     let s = sim.telemetry(id).unwrap().state;
-    (s.position[0], s.position[1], s.roll_pitch_yaw[2], spins)
+    (s.position.x, s.position.y, s.roll_pitch_yaw.yaw, spins)
 }
 
 /// True if a wheel's commanded torque exceeds what its tyre can carry at rest: the peak

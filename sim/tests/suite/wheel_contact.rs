@@ -23,7 +23,7 @@ fn rolling_rate(sim: &Simulation, id: VehicleId, w: Wheel) -> f64 {
     let v = sim.world().vehicle(id).unwrap();
     let s = v.state();
     let spec = &v.spec().wheels[w];
-    (s.forward_speed - s.yaw_rate * spec.position[1]) / spec.radius
+    (s.forward_speed - s.yaw_rate * spec.position.y) / spec.radius
 }
 
 /// Steps `sim` for `seconds` and returns the largest relative deviation of `wheels` from their

@@ -6,6 +6,7 @@
 use crate::common;
 
 use ackermann::Wheel;
+use sim::nalgebra::{Point2, Point3, Vector3};
 use sim::{
     Obstacle, ParamError, Rule, SimError, Simulation, VehicleId, VehiclePlacement, World,
     WorldConfig,
@@ -17,11 +18,14 @@ fn bmw_x5_spec_from_its_parameters() {
     let spec = common::spec(&Model::BmwX5.params());
     // Wheel centres at (L, ∓Tf/2, 0) and (0, ∓Tr/2, 0): L = 2.995, Tf = Tr = 1.628.
     let fr = spec.wheels[Wheel::FrontRight];
-    assert_eq!(fr.position, [2.995, -0.814, 0.0]);
-    assert_eq!(spec.wheels[Wheel::RearLeft].position, [0.0, 0.814, 0.0]);
+    assert_eq!(fr.position, Point3::new(2.995, -0.814, 0.0));
+    assert_eq!(
+        spec.wheels[Wheel::RearLeft].position,
+        Point3::new(0.0, 0.814, 0.0)
+    );
     assert_eq!((fr.radius, fr.width, fr.mass), (0.374, 0.25, 30.0));
     assert_eq!(spec.chassis.mass, 2000.0);
-    assert_eq!(spec.chassis.center_of_mass, [1.2975, 0.0, 0.1]);
+    assert_eq!(spec.chassis.center_of_mass, Point3::new(1.2975, 0.0, 0.1));
     assert_eq!(
         spec.chassis.inertia,
         [1125.07, 4473.54, 4346.1, 0.0, 846.89, 0.0]
@@ -68,7 +72,7 @@ fn invalid_parameters_name_the_field() {
         }))
     ));
     let cfg = WorldConfig {
-        gravity: [0.0, 0.0, f64::NAN],
+        gravity: Vector3::new(0.0, 0.0, f64::NAN),
         ..WorldConfig::default()
     };
     assert!(matches!(
@@ -121,8 +125,8 @@ fn a_wall_stops_the_car() {
     // A 1 m thick wall whose near face is at x = 12 m; the Prius' nose (box to L + r = 3.117 m
     // ahead of its origin) meets it when the origin reaches x ≈ 8.9 m.
     let wall = Obstacle::Box {
-        center: [12.5, 0.0, 1.0],
-        half_extents: [0.5, 5.0, 1.0],
+        center: Point3::new(12.5, 0.0, 1.0),
+        half_extents: Vector3::new(0.5, 5.0, 1.0),
         yaw: 0.0,
         friction: None,
     };
@@ -130,7 +134,7 @@ fn a_wall_stops_the_car() {
     sim.driver_mut(id).unwrap().set_cruising_speed(20.0);
     common::run(&mut sim, 5.0);
     let t = sim.telemetry(id).unwrap();
-    let x = t.state.position[0];
+    let x = t.state.position.x;
     assert!(x < 12.0 - 2.8 && x > 7.0, "{t:?}");
     // Without the wall it would be ~25 m further.
     assert!(t.state.position.iter().all(|v| v.is_finite()));
@@ -140,7 +144,7 @@ fn a_wall_stops_the_car() {
 fn the_car_climbs_a_ramp() {
     // A 10 m ramp rising 1 m, starting 5 m ahead.
     let ramp = Obstacle::Ramp {
-        start: [5.0, 0.0],
+        start: Point2::new(5.0, 0.0),
         yaw: 0.0,
         length: 10.0,
         width: 4.0,
@@ -148,15 +152,15 @@ fn the_car_climbs_a_ramp() {
         friction: None,
     };
     let (mut sim, id) = world_with(vec![ramp]);
-    let z0 = sim.telemetry(id).unwrap().state.position[2];
+    let z0 = sim.telemetry(id).unwrap().state.position.z;
     sim.driver_mut(id).unwrap().set_cruising_speed(10.0);
     let climbed = common::run_until(&mut sim, 8.0, |s| {
-        s.telemetry(id).unwrap().state.position[2] > z0 + 0.4
+        s.telemetry(id).unwrap().state.position.z > z0 + 0.4
     });
     assert!(climbed.is_some());
     // Pitched nose up on the 5.7° slope (atan 0.1): pitch about −0.1 rad (nose up is
     // negative about +y).
-    let pitch = sim.telemetry(id).unwrap().state.roll_pitch_yaw[1];
+    let pitch = sim.telemetry(id).unwrap().state.roll_pitch_yaw.pitch;
     assert!(pitch < -0.05, "{pitch}");
 }
 
@@ -251,6 +255,6 @@ fn a_wheel_torque_in_the_air_turns_the_chassis_the_other_way() {
     // nose up (negative): after step k the pitch rate is about −400·k·dt/Iyy, so the pitch
     // after 10 steps is about −400·55·dt²/Iyy = −2.2/Iyy (4 % less with the damping), with Iyy
     // about 4500 to 5000 kg·m² for the body and wheels.
-    let pitch = s.roll_pitch_yaw[1];
+    let pitch = s.roll_pitch_yaw.pitch;
     assert!(pitch < -2.2 / 5200.0 && pitch > -2.2 / 4400.0, "{pitch}");
 }
