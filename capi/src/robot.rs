@@ -90,10 +90,7 @@ impl Robot {
                     .map_err(failed)?,
             ),
             ([car], None) => {
-                let placement = sim::placement::car_placement(&car.params);
-                let (id, report) = simulation
-                    .add_car_with(car.params.clone(), &car.tyre, car.mounting, placement)
-                    .map_err(failed)?;
+                let (id, report) = simulation.add_described_car(car).map_err(failed)?;
                 // The loader validated the fields already; anything left is still reported.
                 for w in &report {
                     eprintln!("Warning: {}: {w}", description.source);

@@ -15,7 +15,7 @@ use control_loop::Op;
 use libfuzzer_sys::arbitrary::{Result, Unstructured};
 use libfuzzer_sys::fuzz_target;
 use sim::world_file;
-use sim::{Mounting, TyreChoice};
+use sim::Mounting;
 use simulation::{RobotOp, run};
 use values::{hostile, hostile_int};
 use vehicle_model::Model;
@@ -82,8 +82,7 @@ fuzz_target!(|data: &[u8]| {
         let mut world = world_file::with_model(model);
         world.config.basic_time_step_ms = step;
         for car in &mut world.cars {
-            car.mounting = if joints { Mounting::Joints } else { Mounting::Cast };
-            car.tyre = TyreChoice::of_model(model);
+            car.spec.mounting = if joints { Mounting::Joints } else { Mounting::Cast };
         }
         run(&world, &calls(&mut u, op), &[])
     };

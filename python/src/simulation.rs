@@ -94,10 +94,9 @@ impl Simulation {
 
     /// Adds the car of `car` at its `translation`/`rotation`; returns the parameter report.
     fn add(&mut self, car: &world_file::CarDescription, source: &str) -> PyResult<Vec<String>> {
-        let placement = sim::placement::car_placement(&car.params);
         let (id, report) = self
             .simulation
-            .add_car_with(car.params.clone(), &car.tyre, car.mounting, placement)
+            .add_described_car(car)
             .map_err(|e| sim_error(&e))?;
         self.cars.push(Car {
             id,

@@ -4,10 +4,12 @@
 use vehicle_model::{CarParams, ControlMode, Driver, Gear, ParamReport, Sensors};
 
 use crate::error::SimError;
+use crate::placement::car_placement;
 use crate::vehicle::{
     Mounting, TyreChoice, VehicleId, VehiclePlacement, VehicleSpec, VehicleState,
 };
 use crate::world::World;
+use crate::world_file::CarDescription;
 
 /// One car's driver and whether it has had its first step.
 struct Controlled {
@@ -140,13 +142,48 @@ impl Simulation {
         let (driver, report) = Driver::new(params, self.world.config().basic_time_step_ms);
         let mut spec = VehicleSpec::from_car_with(driver.params(), tyre)?;
         spec.mounting = mounting;
+        let id = self.drive(driver, spec, placement)?;
+        Ok((id, report))
+    }
+
+    /// Adds the car of a world file (or of [`CarDescription::of_model`]) at its `translation`
+    /// and `rotation` ([`car_placement`]): its driver from `car.params` (validated already:
+    /// the report is empty unless they were changed since), its body the `car.spec` the
+    /// loader built.
+    ///
+    /// ```
+    /// use sim::{Simulation, World, world_file};
+    /// let description = world_file::default_world();
+    /// let mut sim = Simulation::new(World::new(description.config.clone())?);
+    /// let (id, report) = sim.add_described_car(&description.cars[0])?;
+    /// assert!(report.is_empty());
+    /// assert_eq!(sim.world().vehicle(id)?.spec(), &description.cars[0].spec);
+    /// # Ok::<(), sim::SimError>(())
+    /// ```
+    pub fn add_described_car(
+        &mut self,
+        car: &CarDescription,
+    ) -> Result<(VehicleId, ParamReport), SimError> {
+        let step_ms = self.world.config().basic_time_step_ms;
+        let (driver, report) = Driver::new(car.params.clone(), step_ms);
+        let id = self.drive(driver, car.spec, car_placement(&car.params))?;
+        Ok((id, report))
+    }
+
+    /// Puts the car of `spec` in the world at `placement`, driven by `driver`.
+    fn drive(
+        &mut self,
+        driver: Driver<f64>,
+        spec: VehicleSpec,
+        placement: VehiclePlacement,
+    ) -> Result<VehicleId, SimError> {
         let id = self.world.add_vehicle(spec, placement)?;
         self.cars.push(Controlled {
             id,
             driver,
             sampled: false,
         });
-        Ok((id, report))
+        Ok(id)
     }
 
     fn car(&self, id: VehicleId) -> Result<&Controlled, SimError> {

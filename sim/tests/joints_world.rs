@@ -181,7 +181,7 @@ fn a_car_pushes_a_200_kg_box_with_its_front_wheels() {
 fn test_track(mounting: Mounting) -> Vec<(String, String, f64)> {
     let mut world = world_file::default_world();
     for car in &mut world.cars {
-        car.mounting = mounting;
+        car.spec.mounting = mounting;
     }
     let report = scenario::run(&world, Scenario::TestTrack, &mut |_| {}).unwrap();
     report

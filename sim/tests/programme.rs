@@ -61,7 +61,7 @@ fn a_programme_drives_as_the_same_driver_calls() {
         .add_car_with(
             car.params.clone(),
             &car.tyre,
-            car.mounting,
+            car.spec.mounting,
             car_placement(&car.params),
         )
         .unwrap();

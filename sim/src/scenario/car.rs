@@ -4,7 +4,6 @@
 
 use vehicle_model::Driver;
 
-use crate::placement::car_placement;
 use crate::replay::Recorder;
 use crate::simulation::Simulation;
 use crate::telemetry::{Sample, Telemetry, VehicleKind};
@@ -50,12 +49,7 @@ impl CarRig {
     ) -> Result<Self, ScenarioError> {
         let mut sim = Simulation::new(World::new(desc.config.clone())?);
         // The world file validated the params already: the report is empty.
-        let (id, _) = sim.add_car_with(
-            car.params.clone(),
-            &car.tyre,
-            car.mounting,
-            car_placement(&car.params),
-        )?;
+        let (id, _) = sim.add_described_car(car)?;
         let vehicle = sim.world().vehicle(id)?;
         let (state, spec) = (*vehicle.state(), *vehicle.spec());
         let samples = vec![Sample::of_car(&sim, id)?];

@@ -3,7 +3,6 @@
 //! one world.
 
 use crate::diff_wheels::RobotId;
-use crate::placement::car_placement;
 use crate::programme::{Cursor, DriverCommand, WheelSpeeds};
 use crate::simulation::Simulation;
 use crate::telemetry::{Sample, Telemetry, VehicleKind};
@@ -59,12 +58,7 @@ pub(crate) fn run(
     let mut sim = Simulation::new(World::new(world.config.clone())?);
     let mut cars = Vec::with_capacity(world.cars.len());
     for c in &world.cars {
-        let (id, _) = sim.add_car_with(
-            c.params.clone(),
-            &c.tyre,
-            c.mounting,
-            car_placement(&c.params),
-        )?;
+        let (id, _) = sim.add_described_car(c)?;
         cars.push(Car {
             id,
             name: &c.name,

@@ -156,7 +156,12 @@ pub fn with_model(model: Model) -> WorldDescription {
     } else {
         format!("<default world with {}>", model.webots_name())
     };
-    let (car, messages) = CarDescription::of_model(model);
+    // Every shipped model builds (a test says so); were one not to, the world would hold no
+    // car and say why.
+    let (cars, messages) = match CarDescription::of_model(model) {
+        Ok((car, messages)) => (vec![car], messages),
+        Err(e) => (Vec::new(), vec![format!("this car cannot be built: {e}")]),
+    };
     let warnings = messages
         .into_iter()
         .map(|message| WorldWarning {
@@ -170,7 +175,7 @@ pub fn with_model(model: Model) -> WorldDescription {
         source,
         config: WorldConfig::default(),
         duration: None,
-        cars: vec![car],
+        cars,
         robot: None,
         warnings,
     }
@@ -341,5 +346,17 @@ mod tests {
     fn embedded_default_world_matches_default_world() {
         let parsed = parse_str(DEFAULT_WORLD_NAME, DEFAULT_WORLD).unwrap();
         assert_eq!(parsed, default_world());
+    }
+
+    #[test]
+    fn every_shipped_model_builds_its_default_world() {
+        for model in Model::ALL {
+            let world = with_model(model);
+            assert_eq!(world.cars.len(), 1, "{model:?}: {:?}", world.warnings);
+            assert!(world.warnings.is_empty(), "{model:?}: {:?}", world.warnings);
+            let car = &world.cars[0];
+            let rebuilt = crate::VehicleSpec::from_car_with(&car.params, &car.tyre);
+            assert_eq!(Ok(car.spec), rebuilt, "{model:?}");
+        }
     }
 }

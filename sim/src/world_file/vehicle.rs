@@ -14,6 +14,7 @@ use super::error::{NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, cl
 use super::programme::{PROGRAMME, read_car_programme};
 use super::read::{Section, as_f64, describe};
 use super::tyre;
+use crate::error::ParamError;
 use crate::programme::Programme;
 use crate::vehicle::{Mounting, TyreChoice, VehicleSpec};
 
@@ -34,12 +35,16 @@ pub struct CarDescription {
     /// super::WorldDescription::warnings).
     pub params: CarParams<f64>,
     /// The tyres (`tyre`, `[vehicle.tyre]`): by default the slip-based tyre of the model's
-    /// class ([`Model::tyre_class`]) without overrides. The coefficients are in range; they
-    /// are fitted to each axle's radius and load when the car is built
-    /// ([`VehicleSpec::from_car_with`](crate::VehicleSpec::from_car_with)).
+    /// class ([`Model::tyre_class`]) without overrides, fitted to each axle's radius and load
+    /// in [`CarDescription::spec`].
     pub tyre: TyreChoice,
-    /// How the wheels hang on the chassis (`mounting = "cast"`, the default, or `"joints"`).
-    pub mounting: Mounting,
+    /// The car as the simulator builds it: from `params` on `tyre`
+    /// ([`VehicleSpec::from_car_with`](crate::VehicleSpec::from_car_with)), with the wheels
+    /// mounted as `mounting` says (`"cast"`, the default, or `"joints"`). Built once, when the
+    /// description is made (a car that cannot be built is an error of the file), and put in a
+    /// world by [`Simulation::add_described_car`](crate::Simulation::add_described_car); after
+    /// changing `params` or `tyre`, build it again.
+    pub spec: VehicleSpec,
     /// The car's name in telemetry, plots and metrics (`name`; by default the model's name,
     /// numbered `-1`, `-2`… when several cars share a model).
     pub name: String,
@@ -50,21 +55,25 @@ pub struct CarDescription {
 impl CarDescription {
     /// The validated parameters of `model` on the tyres of its class, and the messages of
     /// its validation (none for the shipped models).
-    pub fn of_model(model: Model) -> (Self, Vec<String>) {
+    ///
+    /// # Errors
+    /// The [`ParamError`] of a car that cannot be built (no shipped model).
+    pub fn of_model(model: Model) -> Result<(Self, Vec<String>), ParamError> {
         let (params, report) = model.params::<f64>().validated();
         let messages = report.iter().map(message).collect();
         let tyre = TyreChoice::of_model(model);
-        (
+        let spec = VehicleSpec::from_car_with(&params, &tyre)?;
+        Ok((
             CarDescription {
                 model,
                 params,
                 tyre,
-                mounting: Mounting::default(),
+                spec,
                 name: model.webots_name().to_string(),
                 programme: Programme::default(),
             },
             messages,
-        )
+        ))
     }
 }
 
@@ -183,13 +192,14 @@ pub(crate) fn read_vehicle(
     }
     // Fields that are each plausible may still make a car that cannot be built (a 33 m tyre
     // of the default density weighs more than 1e6 kg): a world that loads must build.
-    if let Err(e) = VehicleSpec::from_car_with(&params, &tyre) {
-        return Err(s.src.error(
+    let mut spec = VehicleSpec::from_car_with(&params, &tyre).map_err(|e| {
+        s.src.error(
             s.span(),
             Some("vehicle".to_string()),
             WorldFileErrorKind::InvalidValue(format!("this car cannot be built: {e}")),
-        ));
-    }
+        )
+    })?;
+    spec.mounting = mounting;
     let name = s.string(NAME)?.unwrap_or("").to_string();
     let gears = i32::try_from(params.gear_ratios.len().saturating_sub(1)).unwrap_or(i32::MAX);
     let programme = read_car_programme(s, gears)?;
@@ -197,7 +207,7 @@ pub(crate) fn read_vehicle(
         model,
         params,
         tyre,
-        mounting,
+        spec,
         name,
         programme,
     })

@@ -28,8 +28,8 @@ mod world_file;
 
 use proptest::prelude::*;
 use proptest::test_runner::Config;
+use sim::Mounting;
 use sim::world_file as wf;
-use sim::{Mounting, TyreChoice};
 use vehicle_model::Model;
 
 use simulation::RobotOp;
@@ -44,13 +44,12 @@ fn config(cases: u32) -> Config {
     config
 }
 
-/// The default world with `model` on `mounting` and its shipped tyres.
+/// The default world with `model` (on its shipped tyres) on `mounting`.
 fn car_world(model: Model, mounting: Mounting, basic_time_step_ms: u32) -> wf::WorldDescription {
     let mut world = wf::with_model(model);
     world.config.basic_time_step_ms = basic_time_step_ms;
     for car in &mut world.cars {
-        car.mounting = mounting;
-        car.tyre = TyreChoice::of_model(model);
+        car.spec.mounting = mounting;
     }
     world
 }

@@ -9,7 +9,7 @@
 //! its warnings are typed.
 
 use sim::world_file::WorldDescription;
-use sim::{RobotId, RobotWarning, SimError, Simulation, VehicleId, VehicleState, World, placement};
+use sim::{RobotId, RobotWarning, SimError, Simulation, VehicleId, VehicleState, World};
 
 use crate::control_loop::{Op, apply, check_state};
 
@@ -47,8 +47,7 @@ pub fn build(description: &WorldDescription) -> Result<Built, SimError> {
     let mut sim = Simulation::new(World::new(description.config.clone())?);
     let mut car = None;
     for c in &description.cars {
-        let place = placement::car_placement(&c.params);
-        let (id, _) = sim.add_car_with(c.params.clone(), &c.tyre, c.mounting, place)?;
+        let (id, _) = sim.add_described_car(c)?;
         car = car.or(Some(id));
     }
     let robot = match &description.robot {
