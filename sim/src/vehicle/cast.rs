@@ -1,5 +1,5 @@
-//! The cast car (`mounting = "cast"`): its chassis body and its shape-cast wheel contacts (see
-//! the [`vehicle`](super) module docs).
+//! The cast car (`mounting = "cast"`): its chassis body, its shape-cast wheel contacts and its
+//! step (see the [`vehicle`](super) module docs).
 
 use ackermann::Wheel;
 use rapier3d::parry::query::ShapeCastOptions;
@@ -8,9 +8,10 @@ use rapier3d::prelude::{
     QueryFilter, RigidBodyBuilder, RigidBodyHandle, Rotation, Vector,
 };
 
-use super::contact::{Contact, Spring, Support};
+use super::contact::{self, Body, Contact, Spring, Support, WheelRow};
 use super::spec::{ChassisSpec, VehicleSpec};
-use super::{Frame, MIN_GROUND_COSINE};
+use super::wheels::Footing;
+use super::{Frame, MIN_GROUND_COSINE, Vehicle};
 use crate::geom::{self, G_CAR_BODY};
 
 /// The rapier side of one car: its single rigid body.
@@ -132,6 +133,78 @@ pub(crate) fn find_contact(
     };
     let contact = Contact::on_ground(Support::Spring(spring), n, axis, centre, radius, frame.com)?;
     Some((contact, friction))
+}
+
+impl Vehicle {
+    /// The cast car's step of `dt` seconds: the steering is this crate's; the suspension,
+    /// tyres, brakes and spins are solved together on the chassis, whose velocity goes to
+    /// rapier.
+    pub(super) fn pre_step_cast(&mut self, world: &mut PhysicsWorld, parts: &Parts, dt: f64) {
+        self.steer(dt);
+        let Some(chassis) = world.bodies.get(parts.chassis) else {
+            return;
+        };
+        let frame = Frame::of(chassis);
+        let mut body = Body::new(
+            chassis.linvel() + world.gravity * dt as f32,
+            chassis.angvel(),
+            parts.inv_mass,
+            parts.inv_inertia,
+            frame.pose.rotation,
+        );
+        let mut rows = [WheelRow::idle(); 4];
+        let mut imposed = [0.0; 4];
+        let mut axes = [Vector::ZERO; 4];
+        let mut roads = [0.0; 4];
+        for (i, w) in Wheel::ALL.into_iter().enumerate() {
+            let (steer, axis) = self.wheel_axis(w, &frame);
+            axes[i] = axis;
+            imposed[i] = self.start_row(w, &mut rows[i], dt);
+            if let Some((contact, road)) = find_contact(world, &self.spec, w, &frame, steer, axis) {
+                roads[i] = road;
+                let footing = Footing {
+                    road: f64::from(road),
+                    load: self.tyre_load(w, &contact, dt),
+                };
+                self.set_up_contact(w, &mut rows[i], contact, &body, footing, dt);
+            }
+        }
+        contact::solve(&mut body, &mut rows, dt as f32);
+        // Each wheel's record is taken on the chassis with the spin reactions of the wheels
+        // before it: the order of the two calls is part of the results.
+        for (i, w) in Wheel::ALL.into_iter().enumerate() {
+            let omega = rows[i].solved_spin(imposed[i]);
+            self.react_to_spin(&mut body, w, axes[i], omega);
+            self.finish_wheel(w, &rows[i], &body, f64::from(roads[i]), omega, dt);
+        }
+        if let Some(chassis) = world.bodies.get_mut(parts.chassis) {
+            chassis.set_linvel(body.linvel, true);
+            chassis.set_angvel(body.angvel, true);
+        }
+    }
+
+    /// The rotation of wheel `w` by its steering angle, and its spin axis in world axes (the
+    /// chassis' y turned by the steering).
+    fn wheel_axis(&self, w: Wheel, frame: &Frame) -> (Rotation, Vector) {
+        let delta = match w {
+            Wheel::FrontRight => self.state.steering.right,
+            Wheel::FrontLeft => self.state.steering.left,
+            Wheel::RearRight | Wheel::RearLeft => 0.0,
+        };
+        // Positive steering turns right: the wheel (its axis, car y) turned by −δ about z.
+        let steer = Rotation::from_rotation_z(-delta as f32);
+        (steer, frame.pose.rotation * (steer * Vector::Y))
+    }
+
+    /// The load (N) wheel `w`'s tyre coefficients are taken at on `contact`: the last step's,
+    /// or the spring's at the current compression for a wheel that just landed.
+    fn tyre_load(&self, w: Wheel, contact: &Contact, dt: f64) -> f64 {
+        let previous = f64::from(self.impulses[w].normal) / dt;
+        match contact.support {
+            Support::Spring(s) if previous <= 0.0 => f64::from(s.stiffness * s.compression),
+            _ => previous,
+        }
+    }
 }
 
 #[cfg(test)]

@@ -45,9 +45,11 @@ use rapier3d::prelude::{
     Pose, RigidBody, RigidBodyBuilder, RigidBodyHandle, RigidBodyType, Vector,
 };
 
-use super::MIN_GROUND_COSINE;
 use super::cast::{body_inertia, mass_properties};
+use super::contact::{self, Body, Contact, Support, WheelRow};
 use super::spec::{SpringDamper, VehicleSpec};
+use super::wheels::Footing;
+use super::{Frame, MIN_GROUND_COSINE, Vehicle};
 use crate::geom::{self, G_CAR_BODY, G_CAR_WHEEL};
 use crate::motor::{self, WHEEL_MOTOR_MAX_TORQUE};
 
@@ -321,7 +323,7 @@ pub(crate) fn car_pose(chassis: &RigidBody, parts: &Parts) -> Pose {
 
 /// Sets the steering motors to the position controller's velocities `rates` (rad/s, positive
 /// = right, `[FR, FL]`), within `max_torque` (N·m).
-pub(crate) fn steer(world: &mut PhysicsWorld, parts: &Parts, rates: [f64; 2], max_torque: f64) {
+fn steer(world: &mut PhysicsWorld, parts: &Parts, rates: [f64; 2], max_torque: f64) {
     for (handle, rate) in parts.steer_joints.into_iter().zip(rates) {
         if let Some(j) = joint_mut(world, handle) {
             // The joint angle is −steering: positive steering turns right, about −z.
@@ -332,7 +334,7 @@ pub(crate) fn steer(world: &mut PhysicsWorld, parts: &Parts, rates: [f64; 2], ma
 
 /// A wheel's ground contact of the last rapier step.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct GroundContact {
+struct GroundContact {
     /// The ground's normal (unit, out of the ground).
     pub normal: Vector,
     /// The normal impulse rapier applied over the last step (N·s, ≥ 0).
@@ -345,7 +347,7 @@ pub(crate) struct GroundContact {
 
 /// Wheel `w`'s ground: of the surfaces its tyre touched in the last step and that are not too
 /// steep to stand on (against the chassis' `up`), the one that carried the largest load.
-pub(crate) fn ground_contact(
+fn ground_contact(
     world: &PhysicsWorld,
     parts: &Parts,
     w: Wheel,
@@ -391,11 +393,7 @@ pub(crate) fn ground_contact(
 }
 
 /// The wheel centre (m, world) and its spin axis (unit, world) of wheel `w`.
-pub(crate) fn wheel_frame(
-    world: &PhysicsWorld,
-    parts: &Parts,
-    w: Wheel,
-) -> Option<(Vector, Vector)> {
+fn wheel_frame(world: &PhysicsWorld, parts: &Parts, w: Wheel) -> Option<(Vector, Vector)> {
     let b = world.bodies.get(parts.wheels[w])?;
     Some((b.translation(), *b.rotation() * Vector::Y))
 }
@@ -405,7 +403,7 @@ pub(crate) fn wheel_frame(
 /// on the wheel, as a force over the step of `dt` seconds (a multibody link moves only through
 /// its joints' coordinates), with its reaction on the ground's body if that is dynamic, as an
 /// impulse. The wheel's forces of the last step are cleared first.
-pub(crate) fn drive(
+fn drive(
     world: &mut PhysicsWorld,
     parts: &Parts,
     w: Wheel,
@@ -435,7 +433,7 @@ pub(crate) fn drive(
 /// A tyre's impulse over one step, where it acts, and the ground's body that takes its
 /// reaction.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct TyreImpulse {
+struct TyreImpulse {
     /// Impulse on the wheel (N·s, world).
     pub impulse: Vector,
     /// Contact point (m, world).
@@ -471,4 +469,79 @@ pub(crate) fn read(world: &PhysicsWorld, parts: &Parts) -> Option<Readings> {
         r.spins[w] = f64::from(v);
     }
     Some(r)
+}
+
+impl Vehicle {
+    /// The step of `dt` seconds of a car on joints: rapier's steering motors get the position
+    /// controller's velocities; the tyres, brakes and spins are solved on the whole car with
+    /// the loads of rapier's last contacts, and go to rapier as tyre forces and spin motors.
+    pub(super) fn pre_step_joints(&mut self, world: &mut PhysicsWorld, parts: &Parts, dt: f64) {
+        let rates = self.steering_rates();
+        steer(world, parts, rates, self.spec.steering.max_torque);
+        let Some(chassis) = world.bodies.get(parts.chassis) else {
+            return;
+        };
+        let pose = car_pose(chassis, parts);
+        let frame = Frame {
+            pose,
+            com: pose.transform_point(parts.com),
+            up: pose.rotation * Vector::Z,
+        };
+        let mut body = Body::new(
+            chassis.velocity_at_point(frame.com) + world.gravity * dt as f32,
+            chassis.angvel(),
+            parts.inv_mass,
+            parts.inv_inertia,
+            pose.rotation,
+        );
+        let mut rows = [WheelRow::idle(); 4];
+        let mut imposed = [0.0; 4];
+        let mut roads = [0.0; 4];
+        let mut grounds = [None; 4];
+        for (i, w) in Wheel::ALL.into_iter().enumerate() {
+            imposed[i] = self.start_row(w, &mut rows[i], dt);
+            let radius = self.spec.wheels[w].radius as f32;
+            let Some((contact, g)) = wheel_contact(world, parts, w, &frame, radius) else {
+                continue;
+            };
+            // rapier carried the load: the row's normal impulse is given.
+            rows[i].impulses.normal = g.impulse;
+            roads[i] = g.friction;
+            grounds[i] = g.body;
+            let footing = Footing {
+                road: f64::from(g.friction),
+                load: f64::from(g.impulse) / dt,
+            };
+            self.set_up_contact(w, &mut rows[i], contact, &body, footing, dt);
+        }
+        contact::solve(&mut body, &mut rows, dt as f32);
+        for (i, w) in Wheel::ALL.into_iter().enumerate() {
+            let omega = rows[i].solved_spin(imposed[i]);
+            let tyre = rows[i].contact.map(|c| TyreImpulse {
+                impulse: c.forward * rows[i].impulses.forward
+                    + c.lateral * rows[i].impulses.lateral,
+                point: frame.com + c.contact_arm,
+                ground: grounds[i],
+            });
+            drive(world, parts, w, omega, tyre, dt as f32);
+            self.finish_wheel(w, &rows[i], &body, f64::from(roads[i]), omega, dt);
+        }
+    }
+}
+
+/// Wheel `w`'s contact for the solve (its tyre of `radius`, m, on the ground rapier found under
+/// it in the last step, with arms from the centre of mass of `frame`) and that ground; `None`
+/// in the air.
+fn wheel_contact(
+    world: &PhysicsWorld,
+    parts: &Parts,
+    w: Wheel,
+    frame: &Frame,
+    radius: f32,
+) -> Option<(Contact, GroundContact)> {
+    let g = ground_contact(world, parts, w, frame.up)?;
+    let (centre, axis) = wheel_frame(world, parts, w)?;
+    let support = Support::Given { normal: g.normal };
+    let contact = Contact::on_ground(support, g.normal, axis, centre, radius, frame.com)?;
+    Some((contact, g))
 }

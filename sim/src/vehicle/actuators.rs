@@ -1,0 +1,126 @@
+//! The Webots motors of a car for one step: the steering (the position controller, reached
+//! within the motors' torque), each wheel's spin before the tyres act (the velocity ramp, or the
+//! drive torque, damping and brake) and the kinematic wipers.
+
+use ackermann::{Wheel, WheelAngles};
+use vehicle_model::WheelDrive;
+
+use super::Vehicle;
+use super::contact::Spin;
+use crate::motor::{self, PositionServo, VelocityRamp};
+
+impl Vehicle {
+    /// The steering angles commanded (rad, positive = right): 0 before the first command.
+    fn steering_target(&self) -> WheelAngles<f64> {
+        self.commands
+            .as_ref()
+            .map_or(WheelAngles::new(0.0, 0.0), |c| c.steering)
+    }
+
+    /// Moves the steering for the coming step of `dt` seconds: the Webots position controller's
+    /// velocity command, reached within `maxSteeringTorque` against the wheel's inertia about
+    /// the steering axis.
+    pub(super) fn steer(&mut self, dt: f64) {
+        use vehicle_model::actuator::{SteeringMotor, SteeringState};
+        let target = self.steering_target();
+        let motor = |w: Wheel| SteeringMotor {
+            servo: self.steering_servo,
+            max_torque: self.spec.steering.max_torque,
+            inertia: self.spec.wheels[w].transverse_inertia(),
+        };
+        let [right_rate, left_rate] = self.steering_rates;
+        let right = motor(Wheel::FrontRight).step(
+            SteeringState {
+                angle: self.state.steering.right,
+                rate: right_rate,
+            },
+            target.right,
+            dt,
+        );
+        let left = motor(Wheel::FrontLeft).step(
+            SteeringState {
+                angle: self.state.steering.left,
+                rate: left_rate,
+            },
+            target.left,
+            dt,
+        );
+        self.steering_rates = [right.rate, left.rate];
+        self.state.steering = WheelAngles::new(right.angle, left.angle);
+    }
+
+    /// The position controller's steering velocities toward the command, `[right, left]`
+    /// (rad/s, positive = right): what the steering motors of a car on joints turn at, within
+    /// their torque.
+    pub(super) fn steering_rates(&self) -> [f64; 2] {
+        let target = self.steering_target();
+        let measured = self.state.steering;
+        [
+            self.steering_servo.velocity(target.right, measured.right),
+            self.steering_servo.velocity(target.left, measured.left),
+        ]
+    }
+
+    /// Sets up wheel `w`'s spin for the step: the imposed rate of a velocity command, or a free
+    /// spin after the drive torque and the damping, with its brake.
+    pub(super) fn spin(&mut self, w: Wheel, dt: f64) -> (Spin, f64) {
+        let (drive, brake) = match &self.commands {
+            Some(c) => (c.drive[w], c.brake_torque[w]),
+            None => (WheelDrive::Free, 0.0),
+        };
+        let omega = self.state.wheel_speeds[w];
+        if let WheelDrive::Velocity {
+            target,
+            acceleration,
+            max_velocity,
+        } = drive
+        {
+            // The ramp starts from the axle's mean wheel speed: both motors of an axle take
+            // over from the same command, so a settling or slipping wheel's speed at the
+            // switch does not become a lasting left–right difference of the drive.
+            let axle_mean = 0.5 * (omega + self.state.wheel_speeds[w.mirror()]);
+            let ramp = self.ramps[w].get_or_insert(VelocityRamp::starting_at(axle_mean));
+            return (
+                Spin::Imposed,
+                ramp.step(target, acceleration, max_velocity, dt),
+            );
+        }
+        self.ramps[w] = None;
+        let inertia = self.spec.wheels[w].spin_inertia();
+        let wheel = vehicle_model::actuator::WheelSpin {
+            inertia,
+            damping: self.spec.wheels_damping,
+        };
+        let omega = wheel.step(omega, drive.torque().unwrap_or(0.0), dt);
+        let brake = if brake.is_finite() {
+            brake.max(0.0)
+        } else {
+            0.0
+        };
+        let spin = Spin::Free {
+            inv_inertia: (1.0 / inertia) as f32,
+            brake_impulse: (brake * dt) as f32,
+        };
+        (spin, omega)
+    }
+
+    /// Moves the kinematic wipers toward their command for a step of `dt` seconds.
+    pub(super) fn step_wipers(&mut self, dt: f64) {
+        if let (Some(angle), Some([lo, hi])) = (self.state.wiper, self.spec.wiper_range)
+            && let Some(cmd) = self.commands.as_ref().and_then(|c| c.cockpit.wipers)
+        {
+            let servo = PositionServo {
+                gain: motor::POSITION_P_GAIN,
+                max_velocity: if cmd.velocity.is_finite() {
+                    cmd.velocity.abs()
+                } else {
+                    0.0
+                },
+                min_position: lo,
+                max_position: hi,
+            };
+            let next = angle + servo.velocity(cmd.target, angle) * dt;
+            self.state.wiper = Some(next.clamp(lo, hi));
+        }
+    }
+}
