@@ -285,24 +285,16 @@ impl WorldConfig {
         for b in &self.bodies {
             b.validate()?;
         }
-        ParamError::check(
-            "solver.iterations",
-            self.solver.iterations as f64,
-            "between 1 and 64",
-            |v| (1.0..=64.0).contains(&v),
-        )?;
-        ParamError::check(
-            "solver.pgs_iterations",
-            self.solver.pgs_iterations as f64,
-            "between 1 and 64",
-            |v| (1.0..=64.0).contains(&v),
-        )?;
-        ParamError::check(
-            "solver.friction_iterations",
-            self.solver.friction_iterations as f64,
-            "between 1 and 64",
-            |v| (1.0..=64.0).contains(&v),
-        )?;
+        let s = &self.solver;
+        for (field, n) in [
+            ("solver.iterations", s.iterations),
+            ("solver.pgs_iterations", s.pgs_iterations),
+            ("solver.friction_iterations", s.friction_iterations),
+        ] {
+            ParamError::check(field, n as f64, "between 1 and 64", |v| {
+                (1.0..=64.0).contains(&v)
+            })?;
+        }
         Ok(())
     }
 }
@@ -337,5 +329,48 @@ mod tests {
         c.solver.friction_iterations = 0;
         let e = c.validate().unwrap_err();
         assert_eq!((e.field, e.value), ("solver.friction_iterations", 0.0));
+        c.solver.friction_iterations = 16;
+        c.solver.pgs_iterations = 65;
+        let e = c.validate().unwrap_err();
+        assert_eq!((e.field, e.value), ("solver.pgs_iterations", 65.0));
+    }
+
+    #[test]
+    fn obstacles_stand_where_their_fields_say() {
+        // A ramp's frame is its low edge's middle on the ground; its footprint runs `length`
+        // along its heading (a quarter turn: along +y) and `width` across.
+        let ramp = Obstacle::Ramp {
+            start: Point2::new(5.0, 1.0),
+            yaw: core::f64::consts::FRAC_PI_2,
+            length: 10.0,
+            width: 4.0,
+            height: 1.0,
+            friction: Some(0.5),
+        };
+        assert_eq!(
+            ramp.placement(),
+            (Point3::new(5.0, 1.0, 0.0), core::f64::consts::FRAC_PI_2)
+        );
+        assert_eq!(ramp.friction(), Some(0.5));
+        let corners = ramp.footprint().map(|p| [p.x, p.y]);
+        let expected = [[7.0, 1.0], [7.0, 11.0], [3.0, 11.0], [3.0, 1.0]];
+        for (c, e) in corners.iter().zip(expected) {
+            // cos(π/2) is 6e-17, not 0.
+            assert!(
+                (c[0] - e[0]).abs() < 1e-12 && (c[1] - e[1]).abs() < 1e-12,
+                "{corners:?}"
+            );
+        }
+        // A box's frame is its centre.
+        let wall = Obstacle::Box {
+            center: Point3::new(1.0, 2.0, 3.0),
+            half_extents: Vector3::new(0.5, 1.0, 3.0),
+            yaw: 0.0,
+            friction: None,
+        };
+        assert_eq!(wall.placement(), (Point3::new(1.0, 2.0, 3.0), 0.0));
+        assert_eq!(wall.friction(), None);
+        let xy = wall.footprint().map(|p| [p.x, p.y]);
+        assert_eq!(xy, [[0.5, 1.0], [1.5, 1.0], [1.5, 3.0], [0.5, 3.0]]);
     }
 }

@@ -120,7 +120,8 @@ impl Simulation {
     }
 
     /// As [`Simulation::add_car_on`], with its wheels mounted as `mounting` says (a world
-    /// file's [`CarDescription::mounting`](crate::world_file::CarDescription::mounting)).
+    /// file's `mounting`; [`Simulation::add_described_car`] adds a world file's car as it
+    /// is described).
     ///
     /// ```
     /// use sim::{Mounting, Simulation, TyreChoice, VehiclePlacement, World, WorldConfig};
