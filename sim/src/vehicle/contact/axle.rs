@@ -24,6 +24,7 @@ pub(super) struct Axle {
 }
 
 impl Axle {
+    #[inline]
     pub(super) fn new(body: &Body, wheels: &[WheelRow], dt: f32) -> Axle {
         let contacts = [wheels[0].contact, wheels[1].contact];
         let mut axle = Axle {
@@ -58,6 +59,7 @@ impl Axle {
 }
 
 /// The brake: drives the spin toward 0 with an impulse within `±brake_impulse`.
+#[inline]
 pub(super) fn brake_row(w: &mut WheelRow) {
     let Spin::Free {
         inv_inertia,
@@ -78,6 +80,7 @@ pub(super) fn brake_row(w: &mut WheelRow) {
 
 /// The implicit spring-dampers of an axle: `P = dt·k·x + dt·(k·dt + c)·ẋ` for each wheel with
 /// `ẋ` the compression rate after both impulses, `P ≥ 0`.
+#[inline]
 pub(super) fn suspension_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle) {
     let springs = [0, 1].map(|i| pair[i].contact.and_then(|c| c.spring().copied()));
     let mut m = [[1.0, 0.0], [0.0, 1.0]];
@@ -108,6 +111,7 @@ pub(super) fn suspension_block(body: &mut Body, pair: &mut [WheelRow], axle: &Ax
 /// tyres' compliance determines how the two wheels share a lateral load; Webots' rigid contact
 /// leaves that undetermined (two lateral rows on one line of a rigid chassis), so its wheels
 /// are solved one at a time, as ODE's solver does, alternating which goes first.
+#[inline]
 pub(super) fn tyre_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle, sweep: usize) {
     if pair.iter().any(|w| matches!(w.grip, Grip::Coulomb { .. })) {
         let order = if sweep.is_multiple_of(2) {
@@ -146,6 +150,7 @@ pub(super) fn tyre_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle, sw
 }
 
 /// Wheel `i` of an axle's tyre rows alone, the other wheel's impulses held.
+#[inline]
 fn wheel_tyre(body: &mut Body, w: &mut WheelRow, axle: &Axle, i: usize) {
     let Some(rows) = tyre_rows(body, w) else {
         return;
@@ -166,6 +171,7 @@ fn wheel_tyre(body: &mut Body, w: &mut WheelRow, axle: &Axle, i: usize) {
 
 /// The forward and lateral tyre rows of a wheel on the ground, `α·ΔP + β·(K·ΔP) = b` as
 /// `(α, β, b)` with the current slip velocities; `None` in the air.
+#[inline]
 fn tyre_rows(body: &Body, w: &WheelRow) -> Option<[(f32, f32, f32); 2]> {
     let c = w.contact?;
     let v = c.slip_velocity(body, w.omega);
@@ -178,6 +184,7 @@ fn tyre_rows(body: &Body, w: &WheelRow) -> Option<[(f32, f32, f32); 2]> {
 
 /// Adds `delta` (N·s, forward and lateral) to the wheel's tyre impulses within its friction
 /// limits, and applies what was added to the chassis and the spin.
+#[inline]
 fn apply_tyre(body: &mut Body, w: &mut WheelRow, delta: [f32; 2]) {
     let Some(c) = w.contact else { return };
     let (f0, l0) = (w.impulses.forward, w.impulses.lateral);

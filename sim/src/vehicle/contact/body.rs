@@ -38,11 +38,13 @@ impl Body {
     }
 
     /// Velocity (m/s) of the chassis point at `arm` (m) from the centre of mass.
+    #[inline]
     pub fn velocity_at(&self, arm: Vector) -> Vector {
         self.linvel + self.angvel.cross(arm)
     }
 
     /// Applies `impulse` (N·s) at `arm` (m) from the centre of mass.
+    #[inline]
     pub(super) fn apply(&mut self, arm: Vector, impulse: Vector) {
         self.linvel += impulse * self.inv_mass;
         self.angvel += self.inv_inertia * arm.cross(impulse);
@@ -50,6 +52,7 @@ impl Body {
 
     /// `d1ᵀ·M⁻¹·d2` for a unit impulse along `d2` at `arm2` seen along `d1` at `arm1`: the
     /// inverse effective mass (1/kg) coupling two rows.
+    #[inline]
     pub(super) fn coupling(&self, arm1: Vector, d1: Vector, arm2: Vector, d2: Vector) -> f32 {
         d1.dot(d2) * self.inv_mass + arm1.cross(d1).dot(self.inv_inertia * arm2.cross(d2))
     }

@@ -6,6 +6,7 @@
 /// of itself to the last bit and round-off cannot start a turn that the car would amplify (a
 /// car whose driven wheels slide is yaw-unstable). Any other state is solved all the same:
 /// the change of variables is exact and invertible.
+#[inline]
 pub(super) fn solve_mirrored(m: &[[f32; 4]; 4], rhs: &[f32; 4]) -> Option<[f32; 4]> {
     // Symmetric forward, symmetric lateral, antisymmetric forward, antisymmetric lateral parts
     // of a row (or a column) ordered forward 0, lateral 0, forward 1, lateral 1; the mirror
@@ -26,6 +27,7 @@ pub(super) fn solve_mirrored(m: &[[f32; 4]; 4], rhs: &[f32; 4]) -> Option<[f32; 
 }
 
 /// Solves the 2×2 system `m·x = rhs`; `None` if singular.
+#[inline]
 pub(super) fn solve2(m: [[f32; 2]; 2], rhs: [f32; 2]) -> Option<[f32; 2]> {
     let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
     if !(det.is_finite() && det.abs() > f32::MIN_POSITIVE) {
@@ -40,6 +42,7 @@ pub(super) fn solve2(m: [[f32; 2]; 2], rhs: [f32; 2]) -> Option<[f32; 2]> {
 
 /// Solves the 4×4 system `m·x = rhs` by Gaussian elimination with partial pivoting; `None` if
 /// singular.
+#[inline]
 pub(super) fn solve4(mut m: [[f32; 4]; 4], mut rhs: [f32; 4]) -> Option<[f32; 4]> {
     for col in 0..4 {
         let pivot = (col..4).max_by(|&a, &b| m[a][col].abs().total_cmp(&m[b][col].abs()))?;

@@ -22,6 +22,7 @@ pub(crate) enum Spin {
 }
 
 impl Spin {
+    #[inline]
     pub(super) fn inv_inertia(self) -> f32 {
         match self {
             Spin::Imposed => 0.0,
@@ -100,6 +101,7 @@ impl Contact {
     }
 
     /// The spring of a wheel with its own suspension row.
+    #[inline]
     pub(super) fn spring(&self) -> Option<&Spring> {
         match &self.support {
             Support::Spring(s) => Some(s),
@@ -108,6 +110,7 @@ impl Contact {
     }
 
     /// Applies the normal impulse `p` (N·s) of this contact to `body`.
+    #[inline]
     pub(super) fn apply_normal(&self, body: &mut Body, p: f32) {
         match self.support {
             Support::Spring(s) => body.apply(s.hardpoint_arm, s.up * p),
@@ -116,6 +119,7 @@ impl Contact {
     }
     /// The slip velocity `[forward, lateral]` (m/s) of the contact point over the ground for a
     /// wheel spinning at `omega` (rad/s).
+    #[inline]
     pub fn slip_velocity(&self, body: &Body, omega: f32) -> [f32; 2] {
         let v = body.velocity_at(self.contact_arm);
         [
@@ -144,6 +148,7 @@ pub(crate) enum Grip {
 
 impl Grip {
     /// `[x, y]` within this step's friction limits for suspension impulse `normal` (N·s).
+    #[inline]
     pub(super) fn clamp(&self, x: f32, y: f32, normal: f32) -> [f32; 2] {
         let normal = normal.max(0.0);
         match *self {
@@ -158,6 +163,7 @@ impl Grip {
     /// The row `α·ΔP + β·(K·ΔP) = c − β·v` of direction `i` (`v` the current slip velocity):
     /// the force law written so that no coefficient is infinite. `normal` is the current
     /// suspension impulse (N·s), `current` the direction's accumulated impulse (N·s).
+    #[inline]
     pub(super) fn row(&self, i: usize, normal: f32, current: f32) -> (f32, f32, f32) {
         // Law: P = a − b·v (impulse against end-of-step slip velocity).
         let (a, b) = match *self {
