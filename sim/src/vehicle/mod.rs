@@ -407,6 +407,9 @@ impl Vehicle {
             self.set_grip(w, &mut rows[i], contact, &body, footing, dt);
             rows[i].contact = Some(contact);
         }
+        for row in &mut rows {
+            row.cold_start_rigid_forward();
+        }
         contact::solve(&mut body, &mut rows, dt as f32);
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
             let omega = rows[i].solved_spin(imposed[i]);
