@@ -8,9 +8,9 @@
 //! * [`CarParams`]: every `Car`, `AckermannVehicle` and `VehicleWheel` field with its Webots
 //!   default and validation ([`CarParams::validate`]: invalid → default + [`ParamWarning`]),
 //!   settable by Webots name ([`CarParams::set_field`]).
-//! * [`Model`]: `Car`, `BmwX5`, `CitroenCZero`, `ToyotaPrius`, `LincolnMKZ`,
-//!   `RangeRoverSportSVR`, `TeslaModel3`, `MercedesBenzSprinter`, `GreenPowerEVStar`, `Bus`,
-//!   `Truck`, `Tractor` ([`Model::from_name`], [`Model::params`]).
+//! * [`Model`]: the plain `Car` and the models shipped with Webots (`Model::BmwX5`, …, the
+//!   vehicles of [`proto_geom::ShippedVehicle`]; [`Model::ALL`], [`Model::from_name`],
+//!   [`Model::params`]).
 //! * [`Driver`]: the control loop. Setters take the driver's commands and return the
 //!   [`Warning`] Webots would print; [`Driver::step`] takes the [`Sensors`] and returns the
 //!   actuator [`Commands`] (steering targets, per-wheel [`WheelDrive`] and brake torque,
