@@ -165,8 +165,9 @@ pub use mode::{ControlMode, IndicatorState, WiperMode};
 pub use model::Model;
 pub use params::{
     BodyPhysics, CarField, CarParams, DEFAULT_BODY_MASS, DEFAULT_GEAR_RATIOS, EngineSound,
-    FieldError, FieldKind, FieldValue, GearRatios, MAX_PARAM_WARNINGS, NumberRule, ParamReport,
-    ParamWarning, Refusal, WheelMotor, is_physical_inertia, wheel_slot_name,
+    FieldError, FieldKind, FieldPath, FieldValue, GearRatios, MAX_PARAM_WARNINGS, NumberRule,
+    ParamReport, ParamWarning, Refusal, WheelMotor, WheelSetting, WheelSlot, is_physical_inertia,
+    wheel_slot_name,
 };
 pub use sound::{BLINKER_SOUND_FILE, SoundCommand, Sounds};
 pub use tyre::{

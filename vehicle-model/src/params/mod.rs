@@ -3,6 +3,7 @@
 
 mod body;
 mod field;
+mod path;
 mod set;
 mod sound_name;
 mod validate;
@@ -16,7 +17,7 @@ use crate::wipers::WiperRange;
 
 pub use body::{BodyPhysics, is_physical_inertia};
 pub use field::{CarField, FieldError, FieldKind, FieldValue, NumberRule};
-pub use set::wheel_slot_name;
+pub use path::{FieldPath, WheelSetting, WheelSlot, wheel_slot_name};
 pub use sound_name::EngineSound;
 pub use warning::{MAX_PARAM_WARNINGS, ParamReport, ParamWarning, Refusal};
 
