@@ -55,12 +55,15 @@ struct Geometry {
 }
 
 /// One row per shipped vehicle, in declaration order (checked at compile time below).
-const SHIPPED: [Geometry; 11] = {
+///
+/// References to rows, each its own constant: a lookup with a constant vehicle compiles to
+/// that row alone, and a firmware image keeps only the rows it uses.
+const SHIPPED: [&Geometry; 11] = {
     use ShippedVehicle as V;
     use WheelPreset as W;
     let same = PerWheel::splat;
     [
-        Geometry {
+        &Geometry {
             vehicle: V::BmwX5,
             name: "BmwX5",
             dimensions: [2.995, 1.628, 1.628],
@@ -68,7 +71,7 @@ const SHIPPED: [Geometry; 11] = {
             wheel_mass: None,
             sensor_slots: Some([[3.85, 0.0, 0.45], [1.0, 0.0, 1.45], [-1.0, 0.0, 0.3]]),
         },
-        Geometry {
+        &Geometry {
             vehicle: V::CitroenCZero,
             name: "CitroenCZero",
             dimensions: [2.55, 1.31, 1.27],
@@ -83,7 +86,7 @@ const SHIPPED: [Geometry; 11] = {
             wheel_mass: Some((Wheel::RearRight, 6.0)),
             sensor_slots: Some([[3.075, 0.0, 0.05], [1.075, 0.0, 1.35], [-0.425, 0.0, 0.3]]),
         },
-        Geometry {
+        &Geometry {
             vehicle: V::ToyotaPrius,
             name: "ToyotaPrius",
             dimensions: [2.8, 1.628, 1.628],
@@ -91,7 +94,7 @@ const SHIPPED: [Geometry; 11] = {
             wheel_mass: None,
             sensor_slots: Some([[3.635, 0.0, 0.4], [1.1, 0.0, 1.3], [-0.85, 0.0, 0.3]]),
         },
-        Geometry {
+        &Geometry {
             vehicle: V::LincolnMKZ,
             name: "LincolnMKZ",
             dimensions: [2.94, 1.64, 1.64],
@@ -99,7 +102,7 @@ const SHIPPED: [Geometry; 11] = {
             wheel_mass: None,
             sensor_slots: Some([[3.944, 0.0, 0.142], [1.11, 0.0, 1.16], [-1.06, 0.0, 0.33]]),
         },
-        Geometry {
+        &Geometry {
             vehicle: V::RangeRoverSportSVR,
             name: "RangeRoverSportSVR",
             dimensions: [2.71, 1.64, 1.64],
@@ -107,7 +110,7 @@ const SHIPPED: [Geometry; 11] = {
             wheel_mass: None,
             sensor_slots: Some([[3.5, 0.0, 0.5], [1.4, 0.0, 1.3], [-1.06, 0.0, 0.33]]),
         },
-        Geometry {
+        &Geometry {
             vehicle: V::TeslaModel3,
             name: "TeslaModel3",
             dimensions: [2.94, 1.72, 1.72],
@@ -115,7 +118,7 @@ const SHIPPED: [Geometry; 11] = {
             wheel_mass: None,
             sensor_slots: Some([[3.79, 0.0, 0.142], [1.11, 0.0, 1.16], [-1.05, 0.0, 0.2]]),
         },
-        Geometry {
+        &Geometry {
             vehicle: V::MercedesBenzSprinter,
             name: "MercedesBenzSprinter",
             dimensions: [4.325, 1.7, 1.7],
@@ -123,7 +126,7 @@ const SHIPPED: [Geometry; 11] = {
             wheel_mass: None,
             sensor_slots: Some([[5.31, 0.0, 0.47], [2.99, 0.0, 2.3], [-1.62, 0.0, 0.19]]),
         },
-        Geometry {
+        &Geometry {
             vehicle: V::GreenPowerEVStar,
             name: "GreenPowerEVStar",
             dimensions: [4.325, 1.7, 1.5],
@@ -131,7 +134,7 @@ const SHIPPED: [Geometry; 11] = {
             wheel_mass: None,
             sensor_slots: None,
         },
-        Geometry {
+        &Geometry {
             vehicle: V::Bus,
             name: "Bus",
             dimensions: [4.5, 2.5, 2.5],
@@ -139,7 +142,7 @@ const SHIPPED: [Geometry; 11] = {
             wheel_mass: None,
             sensor_slots: Some([[11.5, 0.0, 0.2], [2.5, 0.0, 5.3], [-6.2, 0.0, 1.0]]),
         },
-        Geometry {
+        &Geometry {
             vehicle: V::Truck,
             name: "Truck",
             dimensions: [5.25, 2.2, 2.2],
@@ -147,7 +150,7 @@ const SHIPPED: [Geometry; 11] = {
             wheel_mass: None,
             sensor_slots: Some([[6.75, 0.0, 1.1], [4.3, 0.0, 4.15], [-7.3, 0.0, 2.7]]),
         },
-        Geometry {
+        &Geometry {
             vehicle: V::Tractor,
             name: "Tractor",
             dimensions: [1.76, 1.4, 1.4],
@@ -188,7 +191,7 @@ impl ShippedVehicle {
     };
 
     const fn geometry(self) -> &'static Geometry {
-        &SHIPPED[self as usize]
+        SHIPPED[self as usize]
     }
 
     /// The Webots PROTO name (`"BmwX5"`, …).

@@ -95,8 +95,8 @@ impl Model {
     /// by discriminant (the order `table.rs` checks at compile time).
     const fn preset(self) -> &'static Preset {
         match self.0 {
-            None => &PRESETS[0],
-            Some(v) => &PRESETS[v as usize + 1],
+            None => PRESETS[0],
+            Some(v) => PRESETS[v as usize + 1],
         }
     }
 
@@ -123,6 +123,9 @@ impl Model {
     /// assert_eq!(bmw.brake_coefficient, 1800.0);
     /// assert!(bmw.clone().validate().is_empty());
     /// ```
+    // Always inlined: a call with a constant model (the usual one, and `CarParams::default`)
+    // then reads only its own row, which keeps the rest of the table out of a firmware image.
+    #[inline(always)]
     pub fn params<T: Real>(self) -> CarParams<T> {
         let f = T::from_f64;
         let p = self.preset();

@@ -114,9 +114,12 @@ use EngineType::{Combustion, Electric, PowerSplitHybrid};
 use ShippedVehicle as V;
 
 /// Every model: the plain `Car`, then the shipped vehicles in declaration order.
-pub(super) const PRESETS: [Preset; 1 + ShippedVehicle::ALL.len()] = [
-    CAR,
-    Preset {
+///
+/// References to rows, each its own constant: a lookup with a constant model compiles to that
+/// row alone, and a firmware image keeps only the rows it uses.
+pub(super) const PRESETS: [&Preset; 1 + ShippedVehicle::ALL.len()] = [
+    &CAR,
+    &Preset {
         shipped: Some(V::BmwX5),
         time_0_to_100: 7.0,
         engine: engine(
@@ -135,7 +138,7 @@ pub(super) const PRESETS: [Preset; 1 + ShippedVehicle::ALL.len()] = [
         wipers: Some(WiperRange { min: 0.0, max: 1.6 }),
         ..CAR
     },
-    Preset {
+    &Preset {
         shipped: Some(V::CitroenCZero),
         drive_type: Propulsion,
         time_0_to_100: 17.5,
@@ -162,7 +165,7 @@ pub(super) const PRESETS: [Preset; 1 + ShippedVehicle::ALL.len()] = [
         ),
         ..CAR
     },
-    Preset {
+    &Preset {
         shipped: Some(V::ToyotaPrius),
         time_0_to_100: 10.7,
         engine: EngineParams {
@@ -183,7 +186,7 @@ pub(super) const PRESETS: [Preset; 1 + ShippedVehicle::ALL.len()] = [
         ),
         ..CAR
     },
-    Preset {
+    &Preset {
         shipped: Some(V::LincolnMKZ),
         drive_type: FourByFour,
         time_0_to_100: 4.97,
@@ -199,7 +202,7 @@ pub(super) const PRESETS: [Preset; 1 + ShippedVehicle::ALL.len()] = [
         body: body(1950.0, [1.6, 0.0, 0.2], None),
         ..CAR
     },
-    Preset {
+    &Preset {
         shipped: Some(V::RangeRoverSportSVR),
         drive_type: FourByFour,
         time_0_to_100: 4.7,
@@ -214,7 +217,7 @@ pub(super) const PRESETS: [Preset; 1 + ShippedVehicle::ALL.len()] = [
         body: body(2700.0, [1.6, 0.0, 0.2], None),
         ..CAR
     },
-    Preset {
+    &Preset {
         shipped: Some(V::TeslaModel3),
         drive_type: Propulsion,
         time_0_to_100: 4.0,
@@ -245,7 +248,7 @@ pub(super) const PRESETS: [Preset; 1 + ShippedVehicle::ALL.len()] = [
         ),
         ..CAR
     },
-    Preset {
+    &Preset {
         shipped: Some(V::MercedesBenzSprinter),
         tyre_class: TyreClass::Commercial,
         time_0_to_100: 14.0,
@@ -265,7 +268,7 @@ pub(super) const PRESETS: [Preset; 1 + ShippedVehicle::ALL.len()] = [
         body: body(4500.0, [1.5, 0.0, 0.0], None),
         ..CAR
     },
-    Preset {
+    &Preset {
         shipped: Some(V::GreenPowerEVStar),
         tyre_class: TyreClass::Commercial,
         time_0_to_100: 24.0,
@@ -287,7 +290,7 @@ pub(super) const PRESETS: [Preset; 1 + ShippedVehicle::ALL.len()] = [
         body: body(6500.0, [1.5, 0.0, 0.0], None),
         ..CAR
     },
-    Preset {
+    &Preset {
         shipped: Some(V::Bus),
         tyre_class: TyreClass::Commercial,
         time_0_to_100: 25.0,
@@ -309,7 +312,7 @@ pub(super) const PRESETS: [Preset; 1 + ShippedVehicle::ALL.len()] = [
         body: body(8000.0, [2.25, 0.0, 0.1], None),
         ..CAR
     },
-    Preset {
+    &Preset {
         shipped: Some(V::Truck),
         tyre_class: TyreClass::Commercial,
         drive_type: FourByFour,
@@ -336,7 +339,7 @@ pub(super) const PRESETS: [Preset; 1 + ShippedVehicle::ALL.len()] = [
         body: body(8000.0, [5.25 - 0.75, 0.0, 0.1], None),
         ..CAR
     },
-    Preset {
+    &Preset {
         shipped: Some(V::Tractor),
         tyre_class: TyreClass::Tractor,
         drive_type: FourByFour,
