@@ -164,10 +164,10 @@ pub use lights::{DEFAULT_INDICATOR_PERIOD, Lights, blink_on};
 pub use mode::{ControlMode, IndicatorState, WiperMode};
 pub use model::Model;
 pub use params::{
-    BodyPhysics, CarField, CarParams, DEFAULT_BODY_MASS, DEFAULT_GEAR_RATIOS, EngineSound,
-    FieldError, FieldKind, FieldPath, FieldValue, GearRatios, MAX_PARAM_WARNINGS, NumberRule,
-    ParamReport, ParamWarning, Refusal, WheelMotor, WheelSetting, WheelSlot, is_physical_inertia,
-    wheel_slot_name,
+    BODY_HEIGHT_PER_TRACK, BODY_LENGTH_PER_WHEELBASE, BodyPhysics, CarField, CarParams,
+    DEFAULT_BODY_MASS, DEFAULT_GEAR_RATIOS, EngineSound, FieldError, FieldKind, FieldPath,
+    FieldValue, GearRatios, MAX_PARAM_WARNINGS, NumberRule, ParamReport, ParamWarning, Refusal,
+    WheelMotor, WheelSetting, WheelSlot, is_physical_inertia, wheel_slot_name,
 };
 pub use sound::{BLINKER_SOUND_FILE, SoundCommand, Sounds};
 pub use tyre::{
@@ -184,4 +184,4 @@ pub use ackermann::{DriveType, Geometry, PerWheel, Real, Wheel, WheelAngles};
 /// km/h per m/s: the factor between the Webots API's speeds (km/h) and the SI ones.
 pub const KMH_PER_MS: f64 = 3.6;
 pub use powertrain::{AutoShiftParams, EngineParams, EngineType, Gear};
-pub use proto_geom::{SensorSlots, WheelParams, WheelPhysics};
+pub use proto_geom::{DEFAULT_WHEEL_DENSITY, SensorSlots, WheelParams, WheelPhysics};

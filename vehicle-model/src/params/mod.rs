@@ -15,7 +15,9 @@ use proto_geom::{SensorSlots, WheelParams};
 
 use crate::wipers::WiperRange;
 
-pub use body::{BodyPhysics, is_physical_inertia};
+pub use body::{
+    BODY_HEIGHT_PER_TRACK, BODY_LENGTH_PER_WHEELBASE, BodyPhysics, is_physical_inertia,
+};
 pub use field::{CarField, FieldError, FieldKind, FieldValue, NumberRule};
 pub use path::{FieldPath, WheelSetting, WheelSlot, wheel_slot_name};
 pub use sound_name::EngineSound;
