@@ -216,10 +216,15 @@ impl<T: Real> Engine<T> {
     /// `hybridPowerSplitRatio` must lie in [0, 1]. All fields are checked whatever the engine
     /// type, so a model can switch type without becoming invalid.
     pub fn new(params: EngineParams<T>) -> Result<Self, PowertrainError> {
-        positive(Field::EngineMaxTorque, params.max_torque)?;
-        positive(Field::EngineMaxPower, params.max_power)?;
-        positive(Field::EngineMinRpm, params.min_rpm)?;
-        positive(Field::EngineMaxRpm, params.max_rpm)?;
+        let limits = [
+            (Field::EngineMaxTorque, params.max_torque),
+            (Field::EngineMaxPower, params.max_power),
+            (Field::EngineMinRpm, params.min_rpm),
+            (Field::EngineMaxRpm, params.max_rpm),
+        ];
+        for (field, value) in limits {
+            positive(field, value)?;
+        }
         below(
             Field::EngineMinRpm,
             params.min_rpm,
