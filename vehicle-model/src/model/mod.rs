@@ -20,7 +20,8 @@ use table::{PRESETS, Preset};
 /// A car model: the plain Webots `Car` or one of the models shipped with Webots
 /// ([`ShippedVehicle`]).
 ///
-/// The models are the associated constants (`Model::BmwX5`, …), usable in `match` patterns;
+/// The models are the associated constants (`Model::BmwX5`, …), which `match` takes as
+/// patterns (with a catch-all arm: constants are not checked for exhaustiveness);
 /// [`Model::ALL`] lists them.
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
 pub struct Model(Option<ShippedVehicle>);
