@@ -60,9 +60,9 @@ use vehicle_model::{
 const GRAVITY: f32 = 9.81;
 /// Air density at sea level, 15 °C (kg/m³).
 const AIR_DENSITY: f32 = 1.225;
-/// Webots' `Physics {}` density for a wheel whose model gives no mass (kg/m³): the sim crate
-/// gives such a wheel the same.
-const DEFAULT_WHEEL_DENSITY: f32 = 1000.0;
+/// Webots' `Physics {}` density for a wheel whose model gives no mass (kg/m³), as the sim crate
+/// gives such a wheel.
+const DEFAULT_WHEEL_DENSITY: f32 = vehicle_model::DEFAULT_WHEEL_DENSITY as f32;
 /// Block Gauss–Seidel sweeps over the four wheels per step. The wheels couple only through
 /// the body, which is heavy next to a tyre's compliance over a step, so with the warm start
 /// few are needed: with 2, the turns and stops of the tests agree with 30 sweeps to five
