@@ -9,7 +9,9 @@
 
 use core::fmt;
 
-use vehicle_model::{Commands, Driver, Model, ParamWarning, PerWheel, Real, Sensors, Wheel};
+use vehicle_model::{
+    Commands, Driver, KMH_PER_MS, Model, ParamWarning, PerWheel, Real, Sensors, Wheel,
+};
 
 /// Which control mode the loop runs in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -97,7 +99,7 @@ impl<T: Real> ControlLoop<T> {
             }
         }
         let dt = f(f64::from(BASIC_TIME_STEP_MS) / 1000.0);
-        let v = SPEED_KMH / 3.6;
+        let v = SPEED_KMH / KMH_PER_MS;
         let geometry = *driver.geometry();
         let increments = PerWheel::from_fn(|w| {
             let r = if w.is_front() {
@@ -210,7 +212,7 @@ mod tests {
         let d = l.increment(Wheel::FrontRight);
         // FR: 30 km/h · 0.98 / r per second, r = the model's front radius.
         let r = l.driver().front_wheel_radius();
-        assert!((d - (30.0 / 3.6) * 0.98 / r * 0.01).abs() < 1e-7);
+        assert!((d - (30.0 / KMH_PER_MS as f32) * 0.98 / r * 0.01).abs() < 1e-7);
         for _ in 0..WRAP_STEPS - 1 {
             l.step();
         }

@@ -232,6 +232,7 @@ impl RobotScene {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use vehicle_model::KMH_PER_MS;
 
     #[test]
     fn a_car_cruises_on_its_circle_in_both_modes() {
@@ -254,7 +255,7 @@ mod tests {
                 LoopMode::Torque => assert!(v > 9.0 && v < 10.1, "speed {v}"),
             }
             // The driver's estimate from the wheel encoders agrees with the body's speed.
-            assert!((driver.current_speed() / 3.6 - v).abs() < 0.1 * v.max(1.0));
+            assert!((driver.current_speed() / KMH_PER_MS - v).abs() < 0.1 * v.max(1.0));
             // Right turn: yaw rate ≈ −v·tan δ/L (= −10·0.1003/2.995 = −0.335 rad/s at 10 m/s),
             // give or take what tyre slip and the steering servo make of it (at the time of
             // writing both cars turn within 0.3 % of this kinematic rate).

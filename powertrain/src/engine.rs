@@ -144,20 +144,43 @@ pub struct EngineParams<T: Real> {
     pub hybrid_power_split_rpm: T,
 }
 
-impl<T: Real> Default for EngineParams<T> {
+impl EngineParams<f64> {
     /// The Webots `Car` PROTO defaults: combustion, 250 N·m, 50 000 W, 1000 to 4500 rpm,
-    /// torque `150 + 0.1·rpm`, split ratio 0.25 at 3000 rpm.
-    fn default() -> Self {
+    /// torque `150 + 0.1·rpm`, split ratio 0.25 at 3000 rpm. A constant, for tables of
+    /// presets; [`Default`] gives it in any scalar type.
+    pub const DEFAULT: Self = EngineParams {
+        engine_type: EngineType::Combustion,
+        max_torque: 250.0,
+        max_power: 50_000.0,
+        min_rpm: 1000.0,
+        max_rpm: 4500.0,
+        function_coefficients: [150.0, 0.1, 0.0],
+        hybrid_power_split_ratio: 0.25,
+        hybrid_power_split_rpm: 3000.0,
+    };
+}
+
+impl<T: Real> EngineParams<T> {
+    /// The same fields in scalar type `U` (each value rounded to the nearest `U`).
+    pub fn cast<U: Real>(self) -> EngineParams<U> {
+        let f = |v: T| U::from_f64(v.to_f64());
         EngineParams {
-            engine_type: EngineType::Combustion,
-            max_torque: T::from_f64(250.0),
-            max_power: T::from_f64(50_000.0),
-            min_rpm: T::from_f64(1000.0),
-            max_rpm: T::from_f64(4500.0),
-            function_coefficients: [T::from_f64(150.0), T::from_f64(0.1), T::ZERO],
-            hybrid_power_split_ratio: T::from_f64(0.25),
-            hybrid_power_split_rpm: T::from_f64(3000.0),
+            engine_type: self.engine_type,
+            max_torque: f(self.max_torque),
+            max_power: f(self.max_power),
+            min_rpm: f(self.min_rpm),
+            max_rpm: f(self.max_rpm),
+            function_coefficients: self.function_coefficients.map(f),
+            hybrid_power_split_ratio: f(self.hybrid_power_split_ratio),
+            hybrid_power_split_rpm: f(self.hybrid_power_split_rpm),
         }
+    }
+}
+
+impl<T: Real> Default for EngineParams<T> {
+    /// [`EngineParams::DEFAULT`], the Webots `Car` PROTO defaults.
+    fn default() -> Self {
+        EngineParams::DEFAULT.cast()
     }
 }
 
@@ -193,10 +216,15 @@ impl<T: Real> Engine<T> {
     /// `hybridPowerSplitRatio` must lie in [0, 1]. All fields are checked whatever the engine
     /// type, so a model can switch type without becoming invalid.
     pub fn new(params: EngineParams<T>) -> Result<Self, PowertrainError> {
-        positive(Field::EngineMaxTorque, params.max_torque)?;
-        positive(Field::EngineMaxPower, params.max_power)?;
-        positive(Field::EngineMinRpm, params.min_rpm)?;
-        positive(Field::EngineMaxRpm, params.max_rpm)?;
+        let limits = [
+            (Field::EngineMaxTorque, params.max_torque),
+            (Field::EngineMaxPower, params.max_power),
+            (Field::EngineMinRpm, params.min_rpm),
+            (Field::EngineMaxRpm, params.max_rpm),
+        ];
+        for (field, value) in limits {
+            positive(field, value)?;
+        }
         below(
             Field::EngineMinRpm,
             params.min_rpm,

@@ -67,8 +67,9 @@ pub use plausible::Plausible;
 pub use sensors::{SensorSlot, SensorSlots};
 pub use shipped::ShippedVehicle;
 pub use wheel::{
-    BoundingCylinder, MassProperties, PbrAppearance, ValidWheel, WheelField, WheelParams,
-    WheelPhysics, WheelPreset, WheelRule, WheelShape, WheelSide, WheelWarning, WheelWarnings,
+    BoundingCylinder, DEFAULT_WHEEL_DENSITY, MassProperties, PbrAppearance, ValidWheel, WheelField,
+    WheelParams, WheelPhysics, WheelPreset, WheelRule, WheelShape, WheelSide, WheelWarning,
+    WheelWarnings,
 };
 
 #[cfg(feature = "alloc")]

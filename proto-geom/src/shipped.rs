@@ -1,4 +1,5 @@
-//! The vehicles shipped with Webots: dimensions, wheels and sensor slots (spec §4.5, §5).
+//! The vehicles shipped with Webots: dimensions, wheels and sensor slots (spec §4.5, §5), one
+//! row of [`SHIPPED`] each.
 
 use ackermann::{PerWheel, Real, Wheel};
 use nalgebra::Point3;
@@ -35,37 +36,167 @@ pub enum ShippedVehicle {
     Tractor,
 }
 
+/// A shipped vehicle's geometry as its PROTO gives it (lengths in m, masses in kg), converted
+/// to the scalar type on use.
+struct Geometry {
+    vehicle: ShippedVehicle,
+    /// The PROTO name.
+    name: &'static str,
+    /// `wheelbase`, `trackFront`, `trackRear` (m).
+    dimensions: [f64; 3],
+    /// The wheel in each slot.
+    wheels: PerWheel<WheelPreset>,
+    /// A slot whose wheel the car's `Physics` node gives another mass than the preset's (kg).
+    wheel_mass: Option<(Wheel, f64)>,
+    /// Front, top and rear sensor-slot positions (m), `None` without the four slots. The
+    /// figures of the Y-up PROTO revisions (x, y = up, z = forward) are converted with
+    /// FLU = (z, x, y).
+    sensor_slots: Option<[[f64; 3]; 3]>,
+}
+
+/// One row per shipped vehicle, in declaration order (checked at compile time below).
+///
+/// References to rows, each its own constant: a lookup with a constant vehicle compiles to
+/// that row alone, and a firmware image keeps only the rows it uses.
+const SHIPPED: [&Geometry; 11] = {
+    use ShippedVehicle as V;
+    use WheelPreset as W;
+    let same = PerWheel::splat;
+    [
+        &Geometry {
+            vehicle: V::BmwX5,
+            name: "BmwX5",
+            dimensions: [2.995, 1.628, 1.628],
+            wheels: same(W::BmwX5Wheel),
+            wheel_mass: None,
+            sensor_slots: Some([[3.85, 0.0, 0.45], [1.0, 0.0, 1.45], [-1.0, 0.0, 0.3]]),
+        },
+        &Geometry {
+            vehicle: V::CitroenCZero,
+            name: "CitroenCZero",
+            dimensions: [2.55, 1.31, 1.27],
+            // A quirk of the PROTO: the rear-right slot holds a *front* wheel (so the rear
+            // radius the car library reads is 0.28475 m) with the rear wheels' 6 kg.
+            wheels: PerWheel::new(
+                W::CitroenCZeroFrontWheel,
+                W::CitroenCZeroFrontWheel,
+                W::CitroenCZeroFrontWheel,
+                W::CitroenCZeroRearWheel,
+            ),
+            wheel_mass: Some((Wheel::RearRight, 6.0)),
+            sensor_slots: Some([[3.075, 0.0, 0.05], [1.075, 0.0, 1.35], [-0.425, 0.0, 0.3]]),
+        },
+        &Geometry {
+            vehicle: V::ToyotaPrius,
+            name: "ToyotaPrius",
+            dimensions: [2.8, 1.628, 1.628],
+            wheels: same(W::ToyotaPriusWheel),
+            wheel_mass: None,
+            sensor_slots: Some([[3.635, 0.0, 0.4], [1.1, 0.0, 1.3], [-0.85, 0.0, 0.3]]),
+        },
+        &Geometry {
+            vehicle: V::LincolnMKZ,
+            name: "LincolnMKZ",
+            dimensions: [2.94, 1.64, 1.64],
+            wheels: same(W::LincolnMKZWheel),
+            wheel_mass: None,
+            sensor_slots: Some([[3.944, 0.0, 0.142], [1.11, 0.0, 1.16], [-1.06, 0.0, 0.33]]),
+        },
+        &Geometry {
+            vehicle: V::RangeRoverSportSVR,
+            name: "RangeRoverSportSVR",
+            dimensions: [2.71, 1.64, 1.64],
+            wheels: same(W::RangeRoverSportSVRWheel),
+            wheel_mass: None,
+            sensor_slots: Some([[3.5, 0.0, 0.5], [1.4, 0.0, 1.3], [-1.06, 0.0, 0.33]]),
+        },
+        &Geometry {
+            vehicle: V::TeslaModel3,
+            name: "TeslaModel3",
+            dimensions: [2.94, 1.72, 1.72],
+            wheels: same(W::TeslaModel3Wheel),
+            wheel_mass: None,
+            sensor_slots: Some([[3.79, 0.0, 0.142], [1.11, 0.0, 1.16], [-1.05, 0.0, 0.2]]),
+        },
+        &Geometry {
+            vehicle: V::MercedesBenzSprinter,
+            name: "MercedesBenzSprinter",
+            dimensions: [4.325, 1.7, 1.7],
+            wheels: same(W::VehicleWheel),
+            wheel_mass: None,
+            sensor_slots: Some([[5.31, 0.0, 0.47], [2.99, 0.0, 2.3], [-1.62, 0.0, 0.19]]),
+        },
+        &Geometry {
+            vehicle: V::GreenPowerEVStar,
+            name: "GreenPowerEVStar",
+            dimensions: [4.325, 1.7, 1.5],
+            wheels: axles(W::GreenPowerEVStarFrontWheel, W::GreenPowerEVStarRearWheel),
+            wheel_mass: None,
+            sensor_slots: None,
+        },
+        &Geometry {
+            vehicle: V::Bus,
+            name: "Bus",
+            dimensions: [4.5, 2.5, 2.5],
+            wheels: same(W::BusWheel),
+            wheel_mass: None,
+            sensor_slots: Some([[11.5, 0.0, 0.2], [2.5, 0.0, 5.3], [-6.2, 0.0, 1.0]]),
+        },
+        &Geometry {
+            vehicle: V::Truck,
+            name: "Truck",
+            dimensions: [5.25, 2.2, 2.2],
+            wheels: same(W::TruckWheel),
+            wheel_mass: None,
+            sensor_slots: Some([[6.75, 0.0, 1.1], [4.3, 0.0, 4.15], [-7.3, 0.0, 2.7]]),
+        },
+        &Geometry {
+            vehicle: V::Tractor,
+            name: "Tractor",
+            dimensions: [1.76, 1.4, 1.4],
+            wheels: axles(W::TractorFrontWheel, W::TractorRearWheel),
+            wheel_mass: None,
+            sensor_slots: None,
+        },
+    ]
+};
+
+/// The same wheel on each axle.
+const fn axles(front: WheelPreset, rear: WheelPreset) -> PerWheel<WheelPreset> {
+    PerWheel::new(front, front, rear, rear)
+}
+
+// `ShippedVehicle::geometry` indexes the table by discriminant.
+const _: () = {
+    let mut i = 0;
+    while i < SHIPPED.len() {
+        assert!(
+            SHIPPED[i].vehicle as usize == i,
+            "SHIPPED is not in declaration order"
+        );
+        i += 1;
+    }
+};
+
 impl ShippedVehicle {
-    /// Every shipped vehicle.
-    pub const ALL: [ShippedVehicle; 11] = [
-        ShippedVehicle::BmwX5,
-        ShippedVehicle::CitroenCZero,
-        ShippedVehicle::ToyotaPrius,
-        ShippedVehicle::LincolnMKZ,
-        ShippedVehicle::RangeRoverSportSVR,
-        ShippedVehicle::TeslaModel3,
-        ShippedVehicle::MercedesBenzSprinter,
-        ShippedVehicle::GreenPowerEVStar,
-        ShippedVehicle::Bus,
-        ShippedVehicle::Truck,
-        ShippedVehicle::Tractor,
-    ];
+    /// Every shipped vehicle, in declaration order.
+    pub const ALL: [ShippedVehicle; SHIPPED.len()] = {
+        let mut all = [ShippedVehicle::BmwX5; SHIPPED.len()];
+        let mut i = 0;
+        while i < all.len() {
+            all[i] = SHIPPED[i].vehicle;
+            i += 1;
+        }
+        all
+    };
+
+    const fn geometry(self) -> &'static Geometry {
+        SHIPPED[self as usize]
+    }
 
     /// The Webots PROTO name (`"BmwX5"`, …).
     pub const fn proto_name(self) -> &'static str {
-        match self {
-            ShippedVehicle::BmwX5 => "BmwX5",
-            ShippedVehicle::CitroenCZero => "CitroenCZero",
-            ShippedVehicle::ToyotaPrius => "ToyotaPrius",
-            ShippedVehicle::LincolnMKZ => "LincolnMKZ",
-            ShippedVehicle::RangeRoverSportSVR => "RangeRoverSportSVR",
-            ShippedVehicle::TeslaModel3 => "TeslaModel3",
-            ShippedVehicle::MercedesBenzSprinter => "MercedesBenzSprinter",
-            ShippedVehicle::GreenPowerEVStar => "GreenPowerEVStar",
-            ShippedVehicle::Bus => "Bus",
-            ShippedVehicle::Truck => "Truck",
-            ShippedVehicle::Tractor => "Tractor",
-        }
+        self.geometry().name
     }
 
     /// The vehicle with PROTO name `name` (exact, case-sensitive).
@@ -77,23 +208,11 @@ impl ShippedVehicle {
 
     /// `wheelbase`, `trackFront`, `trackRear` (m).
     pub fn dimensions<T: Real>(self) -> VehicleDimensions<T> {
-        let (l, tf, tr) = match self {
-            ShippedVehicle::BmwX5 => (2.995, 1.628, 1.628),
-            ShippedVehicle::CitroenCZero => (2.55, 1.31, 1.27),
-            ShippedVehicle::ToyotaPrius => (2.8, 1.628, 1.628),
-            ShippedVehicle::LincolnMKZ => (2.94, 1.64, 1.64),
-            ShippedVehicle::RangeRoverSportSVR => (2.71, 1.64, 1.64),
-            ShippedVehicle::TeslaModel3 => (2.94, 1.72, 1.72),
-            ShippedVehicle::MercedesBenzSprinter => (4.325, 1.7, 1.7),
-            ShippedVehicle::GreenPowerEVStar => (4.325, 1.7, 1.5),
-            ShippedVehicle::Bus => (4.5, 2.5, 2.5),
-            ShippedVehicle::Truck => (5.25, 2.2, 2.2),
-            ShippedVehicle::Tractor => (1.76, 1.4, 1.4),
-        };
+        let [wheelbase, track_front, track_rear] = self.geometry().dimensions.map(T::from_f64);
         VehicleDimensions {
-            wheelbase: T::from_f64(l),
-            track_front: T::from_f64(tf),
-            track_rear: T::from_f64(tr),
+            wheelbase,
+            track_front,
+            track_rear,
         }
     }
 
@@ -103,35 +222,7 @@ impl ShippedVehicle {
     /// wheel (so the rear radius the car library reads is 0.28475 m), the rear-left a rear one
     /// ([`ShippedVehicle::wheel_params`] gives that front wheel the rear wheels' 6 kg).
     pub const fn wheel_presets(self) -> PerWheel<WheelPreset> {
-        let same = PerWheel::splat;
-        match self {
-            ShippedVehicle::BmwX5 => same(WheelPreset::BmwX5Wheel),
-            ShippedVehicle::CitroenCZero => PerWheel::new(
-                WheelPreset::CitroenCZeroFrontWheel,
-                WheelPreset::CitroenCZeroFrontWheel,
-                WheelPreset::CitroenCZeroFrontWheel,
-                WheelPreset::CitroenCZeroRearWheel,
-            ),
-            ShippedVehicle::ToyotaPrius => same(WheelPreset::ToyotaPriusWheel),
-            ShippedVehicle::LincolnMKZ => same(WheelPreset::LincolnMKZWheel),
-            ShippedVehicle::RangeRoverSportSVR => same(WheelPreset::RangeRoverSportSVRWheel),
-            ShippedVehicle::TeslaModel3 => same(WheelPreset::TeslaModel3Wheel),
-            ShippedVehicle::MercedesBenzSprinter => same(WheelPreset::VehicleWheel),
-            ShippedVehicle::GreenPowerEVStar => PerWheel::new(
-                WheelPreset::GreenPowerEVStarFrontWheel,
-                WheelPreset::GreenPowerEVStarFrontWheel,
-                WheelPreset::GreenPowerEVStarRearWheel,
-                WheelPreset::GreenPowerEVStarRearWheel,
-            ),
-            ShippedVehicle::Bus => same(WheelPreset::BusWheel),
-            ShippedVehicle::Truck => same(WheelPreset::TruckWheel),
-            ShippedVehicle::Tractor => PerWheel::new(
-                WheelPreset::TractorFrontWheel,
-                WheelPreset::TractorFrontWheel,
-                WheelPreset::TractorRearWheel,
-                WheelPreset::TractorRearWheel,
-            ),
-        }
+        self.geometry().wheels
     }
 
     /// The wheels' fields as placed in their slots (name and `wheelSide` set per slot, see
@@ -140,11 +231,12 @@ impl ShippedVehicle {
     /// `CitroenCZero`'s rear-right front wheel gets the rear wheels' `Physics` node (6 kg), as in
     /// its PROTO.
     pub fn wheel_params<T: Real>(self) -> PerWheel<WheelParams<T>> {
-        let mut wheels = self
-            .wheel_presets()
+        let geometry = self.geometry();
+        let mut wheels = geometry
+            .wheels
             .map_with_wheel(|w: Wheel, p: WheelPreset| p.params().in_slot(w));
-        if self == ShippedVehicle::CitroenCZero {
-            wheels[Wheel::RearRight].physics = WheelPhysics::Mass(T::from_f64(6.0));
+        if let Some((slot, mass)) = geometry.wheel_mass {
+            wheels[slot].physics = WheelPhysics::Mass(T::from_f64(mass));
         }
         wheels
     }
@@ -157,30 +249,10 @@ impl ShippedVehicle {
     /// The sensor slots (spec §4.5), or `None` for `GreenPowerEVStar` and `Tractor`, which do
     /// not have the four slots.
     pub fn sensor_slots<T: Real>(self) -> Option<SensorSlots<T>> {
-        let p = |[x, y, z]: [f64; 3]| Point3::new(T::from_f64(x), T::from_f64(y), T::from_f64(z));
-        let s = |front, top, rear| SensorSlots::new(p(front), p(top), p(rear));
-        Some(match self {
-            ShippedVehicle::BmwX5 => s([3.85, 0.0, 0.45], [1.0, 0.0, 1.45], [-1.0, 0.0, 0.3]),
-            ShippedVehicle::ToyotaPrius => s([3.635, 0.0, 0.4], [1.1, 0.0, 1.3], [-0.85, 0.0, 0.3]),
-            ShippedVehicle::TeslaModel3 => {
-                s([3.79, 0.0, 0.142], [1.11, 0.0, 1.16], [-1.05, 0.0, 0.2])
-            }
-            ShippedVehicle::MercedesBenzSprinter => {
-                s([5.31, 0.0, 0.47], [2.99, 0.0, 2.3], [-1.62, 0.0, 0.19])
-            }
-            ShippedVehicle::Bus => s([11.5, 0.0, 0.2], [2.5, 0.0, 5.3], [-6.2, 0.0, 1.0]),
-            ShippedVehicle::Truck => s([6.75, 0.0, 1.1], [4.3, 0.0, 4.15], [-7.3, 0.0, 2.7]),
-            // Y-up figures (x, y = up, z = forward) converted with FLU = (z, x, y).
-            ShippedVehicle::CitroenCZero => {
-                s([3.075, 0.0, 0.05], [1.075, 0.0, 1.35], [-0.425, 0.0, 0.3])
-            }
-            ShippedVehicle::LincolnMKZ => {
-                s([3.944, 0.0, 0.142], [1.11, 0.0, 1.16], [-1.06, 0.0, 0.33])
-            }
-            ShippedVehicle::RangeRoverSportSVR => {
-                s([3.5, 0.0, 0.5], [1.4, 0.0, 1.3], [-1.06, 0.0, 0.33])
-            }
-            ShippedVehicle::GreenPowerEVStar | ShippedVehicle::Tractor => return None,
-        })
+        let [front, top, rear] = self
+            .geometry()
+            .sensor_slots?
+            .map(|p| Point3::from(p.map(T::from_f64)));
+        Some(SensorSlots::new(front, top, rear))
     }
 }

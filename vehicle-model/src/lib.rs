@@ -8,9 +8,9 @@
 //! * [`CarParams`]: every `Car`, `AckermannVehicle` and `VehicleWheel` field with its Webots
 //!   default and validation ([`CarParams::validate`]: invalid → default + [`ParamWarning`]),
 //!   settable by Webots name ([`CarParams::set_field`]).
-//! * [`Model`]: `Car`, `BmwX5`, `CitroenCZero`, `ToyotaPrius`, `LincolnMKZ`,
-//!   `RangeRoverSportSVR`, `TeslaModel3`, `MercedesBenzSprinter`, `GreenPowerEVStar`, `Bus`,
-//!   `Truck`, `Tractor` ([`Model::from_name`], [`Model::params`]).
+//! * [`Model`]: the plain `Car` and the models shipped with Webots (`Model::BmwX5`, …, the
+//!   vehicles of [`proto_geom::ShippedVehicle`]; [`Model::ALL`], [`Model::from_name`],
+//!   [`Model::params`]).
 //! * [`Driver`]: the control loop. Setters take the driver's commands and return the
 //!   [`Warning`] Webots would print; [`Driver::step`] takes the [`Sensors`] and returns the
 //!   actuator [`Commands`] (steering targets, per-wheel [`WheelDrive`] and brake torque,
@@ -164,9 +164,10 @@ pub use lights::{DEFAULT_INDICATOR_PERIOD, Lights, blink_on};
 pub use mode::{ControlMode, IndicatorState, WiperMode};
 pub use model::Model;
 pub use params::{
-    BodyPhysics, CarField, CarParams, DEFAULT_BODY_MASS, DEFAULT_GEAR_RATIOS, EngineSound,
-    FieldError, FieldKind, FieldValue, GearRatios, MAX_PARAM_WARNINGS, NumberRule, ParamReport,
-    ParamWarning, Refusal, WheelMotor, is_physical_inertia, wheel_slot_name,
+    BODY_HEIGHT_PER_TRACK, BODY_LENGTH_PER_WHEELBASE, BodyPhysics, CarField, CarParams,
+    DEFAULT_BODY_MASS, DEFAULT_GEAR_RATIOS, EngineSound, FieldError, FieldKind, FieldPath,
+    FieldValue, GearRatios, MAX_PARAM_WARNINGS, NumberRule, ParamReport, ParamWarning, Refusal,
+    WheelMotor, WheelSetting, WheelSlot, is_physical_inertia, wheel_slot_name,
 };
 pub use sound::{BLINKER_SOUND_FILE, SoundCommand, Sounds};
 pub use tyre::{
@@ -183,4 +184,4 @@ pub use ackermann::{DriveType, Geometry, PerWheel, Real, Wheel, WheelAngles};
 /// km/h per m/s: the factor between the Webots API's speeds (km/h) and the SI ones.
 pub const KMH_PER_MS: f64 = 3.6;
 pub use powertrain::{AutoShiftParams, EngineParams, EngineType, Gear};
-pub use proto_geom::{SensorSlots, WheelParams, WheelPhysics};
+pub use proto_geom::{DEFAULT_WHEEL_DENSITY, SensorSlots, WheelParams, WheelPhysics};

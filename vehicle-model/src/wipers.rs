@@ -30,14 +30,6 @@ pub struct WiperRange<T: Real> {
 }
 
 impl<T: Real> WiperRange<T> {
-    /// The BmwX5 wipers: [0, 1.6] rad.
-    pub fn bmw_x5() -> Self {
-        WiperRange {
-            min: T::ZERO,
-            max: T::from_f64(1.6),
-        }
-    }
-
     /// True if both ends are finite and `min < max`.
     pub fn is_valid(&self) -> bool {
         self.min.is_finite() && self.max.is_finite() && self.min < self.max
@@ -126,6 +118,9 @@ impl<T: Real> Wipers<T> {
 mod tests {
     use super::*;
 
+    /// A range of [0, 1.6] rad, the BmwX5's.
+    const RANGE: WiperRange<f64> = WiperRange { min: 0.0, max: 1.6 };
+
     fn at(w: &mut Wipers<f64>, t: f64, pos: f64) -> f64 {
         w.step(t, Some(pos));
         w.command().target
@@ -133,7 +128,7 @@ mod tests {
 
     #[test]
     fn normal_mode_sweeps_continuously() {
-        let mut w = Wipers::new(WiperRange::bmw_x5());
+        let mut w = Wipers::new(RANGE);
         w.set_mode(WiperMode::Normal);
         assert_eq!(w.command().velocity, 2.0);
         assert_eq!(at(&mut w, 1.5, 0.0), 1.6); // parked: go up
@@ -144,7 +139,7 @@ mod tests {
 
     #[test]
     fn slow_mode_only_starts_in_multiples_of_four_seconds() {
-        let mut w = Wipers::new(WiperRange::bmw_x5());
+        let mut w = Wipers::new(RANGE);
         w.set_mode(WiperMode::Slow);
         // floor(t) = 1, 2, 3: held down.
         for t in [1.0, 2.5, 3.99] {
@@ -160,7 +155,7 @@ mod tests {
 
     #[test]
     fn fast_mode_velocity_and_down_parks() {
-        let mut w = Wipers::new(WiperRange::bmw_x5());
+        let mut w = Wipers::new(RANGE);
         w.set_mode(WiperMode::Fast);
         assert_eq!(w.command().velocity, 4.0);
         assert_eq!(at(&mut w, 0.1, 0.0), 1.6);
@@ -179,7 +174,7 @@ mod tests {
 
     #[test]
     fn missing_or_invalid_sensor_changes_nothing() {
-        let mut w = Wipers::new(WiperRange::bmw_x5());
+        let mut w = Wipers::new(RANGE);
         w.set_mode(WiperMode::Normal);
         w.step(1.0, None);
         assert_eq!(w.command().target, 0.0);

@@ -1,8 +1,9 @@
 //! Parameter validation (invalid → default + warning) and setting fields by Webots name.
 
+use proto_geom::WheelField;
 use vehicle_model::{
-    CarField, CarParams, DriveType, EngineType, FieldError, FieldKind, FieldValue, Model,
-    ParamWarning, Wheel, WheelPhysics, WiperRange,
+    CarField, CarParams, DriveType, EngineType, FieldError, FieldKind, FieldPath, FieldValue,
+    Model, ParamWarning, Wheel, WheelPhysics, WheelSetting, WheelSlot, WiperRange,
 };
 
 fn value(field: CarField, value: f64, used: f64) -> ParamWarning {
@@ -232,6 +233,82 @@ fn set_field_by_webots_name() {
             q.set_field(&format!("wheelFrontRight.{name}"), FieldValue::Number(9.0)),
             Ok(())
         );
+    }
+}
+
+#[test]
+fn field_paths_parse_once_and_name_what_they_set() {
+    // Every name parses to the path that prints it back, and setting by path is setting by
+    // name.
+    let wheel_paths = WheelSlot::ALL
+        .into_iter()
+        .flat_map(|slot| WheelSetting::ALL.map(|setting| FieldPath::Wheel(slot, setting)));
+    let paths: Vec<FieldPath> = CarField::ALL
+        .map(FieldPath::Car)
+        .into_iter()
+        .chain(wheel_paths)
+        .collect();
+    assert_eq!(paths.len(), 31 + 5 * 14);
+    for path in paths {
+        let name = path.to_string();
+        assert_eq!(FieldPath::parse(&name), Some(path), "{name}");
+        if path.kind() == FieldKind::Number {
+            let (mut by_name, mut by_path) = (Model::BmwX5.params(), Model::BmwX5.params());
+            // 9 is an integer, a length, a mass and a density, and no number of the BmwX5.
+            assert_eq!(
+                by_name.set_field(&name, FieldValue::Number(9.0)),
+                Ok(()),
+                "{name}"
+            );
+            assert_eq!(by_path.set(path, FieldValue::Number(9.0)), Ok(()), "{name}");
+            assert_eq!(by_name, by_path, "{name}");
+            assert_ne!(by_name, Model::BmwX5.params(), "{name} changed nothing");
+        }
+    }
+    // The names lists are the enums' names.
+    assert_eq!(
+        CarParams::<f64>::WHEEL_SLOT_NAMES,
+        [
+            "wheelFrontRight",
+            "wheelFrontLeft",
+            "wheelRearRight",
+            "wheelRearLeft",
+            "wheels"
+        ]
+    );
+    assert_eq!(
+        CarParams::<f64>::WHEEL_FIELD_NAMES,
+        WheelSetting::ALL.map(|s| s.webots_name())
+    );
+    // A setting names the VehicleWheel field its warnings name: itself, or `physics` for the
+    // mass and the density of the Physics node.
+    for setting in WheelSetting::ALL {
+        let field = setting.field();
+        assert_ne!(setting, WheelSetting::Field(WheelField::Physics));
+        match setting {
+            WheelSetting::Mass | WheelSetting::Density => assert_eq!(field, WheelField::Physics),
+            _ => assert_eq!(field.webots_name(), setting.webots_name()),
+        }
+    }
+    // `physics` itself holds no number: refused, the params unchanged.
+    assert_eq!(FieldPath::parse("wheels.physics"), None);
+    let mut p = CarParams::<f64>::default();
+    let physics = FieldPath::Wheel(WheelSlot::All, WheelSetting::Field(WheelField::Physics));
+    assert_eq!(
+        p.set(physics, FieldValue::Number(3.0)),
+        Err(FieldError::UnknownField)
+    );
+    assert_eq!(p, CarParams::default());
+    for bad in [
+        "",
+        ".",
+        "wheels.",
+        ".mass",
+        "wheels.mass.x",
+        "wheel.mass",
+        "Wheelbase",
+    ] {
+        assert_eq!(FieldPath::parse(bad), None, "{bad}");
     }
 }
 

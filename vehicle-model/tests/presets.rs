@@ -376,3 +376,22 @@ fn sensor_slots_of_every_model() {
         assert_eq!(model.params::<f64>().sensor_slots, None, "{model}");
     }
 }
+
+#[test]
+fn models_are_the_plain_car_then_the_shipped_vehicles() {
+    use proto_geom::ShippedVehicle;
+    assert_eq!(Model::ALL[0], Model::Car);
+    assert_eq!(Model::Car.shipped(), None);
+    assert_eq!(Model::ALL.len(), 1 + ShippedVehicle::ALL.len());
+    for (model, vehicle) in Model::ALL[1..].iter().zip(ShippedVehicle::ALL) {
+        assert_eq!(model.shipped(), Some(vehicle));
+        assert_eq!(Model::from(vehicle), *model);
+        assert_eq!(model.webots_name(), vehicle.proto_name());
+        // Debug prints the constant's name, as it did when `Model` was an enum.
+        assert_eq!(format!("{model:?}"), vehicle.proto_name());
+        assert_eq!(model.to_string(), vehicle.proto_name());
+    }
+    // The constants are patterns.
+    let commercial = |m: Model| matches!(m, Model::Bus | Model::Truck);
+    assert!(commercial(Model::Truck) && !commercial(Model::Tractor));
+}

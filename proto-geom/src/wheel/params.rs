@@ -44,6 +44,10 @@ impl WheelSide {
     }
 }
 
+/// The density of Webots' default `Physics {}` node (kg/m³): a wheel whose model gives it no
+/// mass weighs its bounding cylinder of water.
+pub const DEFAULT_WHEEL_DENSITY: f64 = 1000.0;
+
 /// The wheel's `Physics` node (Webots field `physics`).
 ///
 /// Webots derives a wheel's mass and inertia from its bounding object when the `Physics` node
@@ -64,10 +68,11 @@ pub enum WheelPhysics<T> {
 }
 
 impl<T: Real> WheelPhysics<T> {
-    /// The Webots default `Physics {}`: density 1000 kg/m³, mass −1 (derived).
+    /// The Webots default `Physics {}`: density [`DEFAULT_WHEEL_DENSITY`] (1000 kg/m³), mass
+    /// −1 (derived).
     #[inline]
     pub fn webots_default() -> Self {
-        WheelPhysics::Density(T::from_f64(1000.0))
+        WheelPhysics::Density(T::from_f64(DEFAULT_WHEEL_DENSITY))
     }
 }
 

@@ -2,7 +2,7 @@
 
 use ackermann::Real;
 
-use super::params::{WheelParams, WheelPhysics};
+use super::params::{DEFAULT_WHEEL_DENSITY, WheelParams, WheelPhysics};
 use super::warning::{WheelField, WheelRule, WheelWarnings};
 use crate::plausible::{self, Plausible};
 
@@ -330,7 +330,7 @@ impl<T: Real> WheelParams<T> {
         };
         if let Some((v, range)) = physics_value {
             let fallback = WheelPhysics::<T>::webots_default();
-            let density = T::from_f64(1000.0);
+            let density = T::from_f64(DEFAULT_WHEEL_DENSITY);
             if check_in(&mut w, WheelField::Physics, v, density, Some(range)).is_some() {
                 p.physics = fallback;
             }

@@ -514,6 +514,9 @@ impl Vehicle {
             };
             self.set_up_contact(w, &mut rows[i], contact, &body, footing, dt);
         }
+        for row in &mut rows {
+            row.cold_start_rigid_forward();
+        }
         contact::solve(&mut body, &mut rows, dt as f32);
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
             let omega = rows[i].solved_spin(imposed[i]);

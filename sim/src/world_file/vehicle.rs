@@ -7,7 +7,8 @@ use proto_geom::WheelField;
 use proto_geom::plausible::Compact;
 use toml::de::DeValue;
 use vehicle_model::{
-    CarField, CarParams, FieldError, FieldKind, FieldValue, Model, ParamWarning, wheel_slot_name,
+    CarParams, FieldError, FieldKind, FieldPath, FieldValue, Model, ParamWarning, Wheel,
+    WheelSetting, WheelSlot,
 };
 
 use super::error::{NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, closest};
@@ -129,7 +130,7 @@ pub(crate) fn read_vehicle(
         if ["model", "tyre", MOUNTING, NAME, PROGRAMME].contains(&key) {
             continue;
         }
-        if CarParams::<f64>::WHEEL_SLOT_NAMES.contains(&key) {
+        if let Some(slot) = WheelSlot::from_webots_name(key) {
             if !matches!(value, DeValue::Table(_)) {
                 return Err(s.error_at(
                     key,
@@ -140,10 +141,10 @@ pub(crate) fn read_vehicle(
                     },
                 ));
             }
-            read_wheel_slot(s, key, &mut params)?;
+            read_wheel_slot(s, slot, &mut params)?;
             continue;
         }
-        if CarField::from_webots_name(key).is_none() && !is_wheel_path(key) {
+        let Some(path) = FieldPath::parse(key) else {
             let candidates: Vec<&str> = top_keys()
                 .chain(CarParams::<f64>::WHEEL_SLOT_NAMES)
                 .collect();
@@ -154,21 +155,20 @@ pub(crate) fn read_vehicle(
                     suggestions: closest(key, candidates),
                 },
             ));
-        }
-        set(s, key, key, value, key_span, &mut params)?;
+        };
+        set(s, key, path, value, key_span, &mut params)?;
     }
     let report = params.validate();
     for w in &report {
-        let (key, span) = match warning_field(w) {
-            Some((slot, Some(field))) => {
-                let names: &[&str] = match field {
-                    WheelField::Physics => &["mass", "density"],
-                    _ => &[field.webots_name()],
-                };
-                locate_wheel_field(s, slot, names)
-            }
-            Some((name, None)) => (Some(s.key_path(name)), s.key_span(name)),
-            None => (None, None),
+        let (key, span) = match *w {
+            ParamWarning::Wheel { slot, warning } => locate_wheel_field(s, slot, warning.field),
+            _ => match w.field() {
+                Some(field) => {
+                    let name = field.webots_name();
+                    (Some(s.key_path(name)), s.key_span(name))
+                }
+                None => (None, None),
+            },
         };
         // Webots accepts the invalid values it has a fallback for (so do we, with its
         // warning); an implausible one is a mistake in the file, refused before it runs.
@@ -213,29 +213,30 @@ pub(crate) fn read_vehicle(
     })
 }
 
-/// True for a quoted key `"<slot>.<field>"` naming a wheel field.
-fn is_wheel_path(key: &str) -> bool {
-    key.split_once('.').is_some_and(|(slot, field)| {
-        CarParams::<f64>::WHEEL_SLOT_NAMES.contains(&slot)
-            && CarParams::<f64>::WHEEL_FIELD_NAMES.contains(&field)
-    })
-}
-
-/// Reads the `VehicleWheel` fields of the sub-table `[vehicle.<slot>]` (or `slot.field = …`).
+/// Reads the `VehicleWheel` fields of the sub-table `[vehicle.<slot>]`.
 fn read_wheel_slot(
     s: &Section<'_, '_>,
-    slot: &str,
+    slot: WheelSlot,
     params: &mut CarParams<f64>,
 ) -> Result<(), WorldFileError> {
-    let Some(t) = s.table(slot)? else {
+    let Some(t) = s.table(slot.webots_name())? else {
         return Ok(());
     };
-    t.check_keys(&CarParams::<f64>::WHEEL_FIELD_NAMES)?;
     for (field, value, key_span, _) in t.entries() {
+        let Some(setting) = WheelSetting::from_webots_name(field) else {
+            let names = CarParams::<f64>::WHEEL_FIELD_NAMES;
+            return Err(t.error_at(
+                field,
+                key_span,
+                WorldFileErrorKind::UnknownKey {
+                    suggestions: closest(field, names),
+                },
+            ));
+        };
         set(
             &t,
             field,
-            &format!("{slot}.{field}"),
+            FieldPath::Wheel(slot, setting),
             value,
             key_span,
             params,
@@ -244,17 +245,16 @@ fn read_wheel_slot(
     Ok(())
 }
 
-/// Sets the field `name` (a Webots name for [`CarParams::set_field`]) from the TOML `value`
-/// found at `key` of `s`.
+/// Sets the field at `path` from the TOML `value` found at `key` of `s`.
 fn set(
     s: &Section<'_, '_>,
     key: &str,
-    name: &str,
+    path: FieldPath,
     value: &DeValue<'_>,
     key_span: Range<usize>,
     params: &mut CarParams<f64>,
 ) -> Result<(), WorldFileError> {
-    let kind = CarField::from_webots_name(name).map_or(FieldKind::Number, CarField::kind);
+    let kind = path.kind();
     let wrong = |expected: String| {
         s.error_at(
             key,
@@ -292,7 +292,7 @@ fn set(
         (FieldKind::Text, DeValue::String(text)) => FieldValue::Text(text.as_ref()),
         _ => return Err(wrong(kind.to_string())),
     };
-    params.set_field(name, field_value).map_err(|e| match e {
+    params.set(path, field_value).map_err(|e| match e {
         FieldError::WrongKind { expected, .. } | FieldError::WrongLength { expected, .. } => {
             wrong(expected.to_string())
         }
@@ -324,37 +324,33 @@ fn describe_value(v: &DeValue<'_>) -> String {
     }
 }
 
-/// What a validation warning is about: a car field `(name, None)`, or a wheel field
-/// `(slot, Some(field))`.
-fn warning_field(w: &ParamWarning) -> Option<(&'static str, Option<WheelField>)> {
-    match *w {
-        ParamWarning::Wheel { slot, warning } => Some((wheel_slot_name(slot), Some(warning.field))),
-        _ => w.field().map(|field| (field.webots_name(), None)),
-    }
-}
-
-/// The dotted key and span of the entry that set wheel field `field` (one of its names) of
-/// `slot`: `[vehicle.<slot>]` or `slot.field`, then the same for `wheels` (all four); the
-/// key `vehicle.<slot>` without a span when the file did not set it.
+/// The dotted key and span of the entry that set wheel field `field` of `slot` (by any of
+/// its [`WheelSetting`] names): `[vehicle.<slot>]` or `slot.field`, then the same for
+/// `wheels` (all four); the key `vehicle.<slot>` without a span when the file did not set it.
 fn locate_wheel_field(
     s: &Section<'_, '_>,
-    slot: &str,
-    field: &[&str],
+    slot: Wheel,
+    field: WheelField,
 ) -> (Option<String>, Option<Range<usize>>) {
-    for table in [slot, "wheels"] {
+    let names: Vec<&str> = WheelSetting::ALL
+        .into_iter()
+        .filter(|setting| setting.field() == field)
+        .map(WheelSetting::webots_name)
+        .collect();
+    for table in [WheelSlot::One(slot), WheelSlot::All].map(WheelSlot::webots_name) {
         if let Ok(Some(t)) = s.table(table) {
-            for f in field {
+            for f in &names {
                 if let Some(span) = t.key_span(f) {
                     return (Some(t.key_path(f)), Some(span));
                 }
             }
         }
-        for f in field {
+        for f in &names {
             let quoted = format!("{table}.{f}");
             if let Some(span) = s.key_span(&quoted) {
                 return (Some(s.key_path(&quoted)), Some(span));
             }
         }
     }
-    (Some(s.key_path(slot)), None)
+    (Some(s.key_path(WheelSlot::One(slot).webots_name())), None)
 }

@@ -35,19 +35,19 @@ impl<T: Real> WheelSpeedEstimator<T> {
     /// One step with the encoder readings `angles` (rad; NaN or ±∞ = no sample) and the step
     /// length `dt_ms` (ms, > 0), computed as Webots does: `1000·(θ − θ_prev)/dt_ms`.
     pub(crate) fn update(&mut self, angles: &PerWheel<T>, dt_ms: T) {
-        let thousand = T::from_f64(1000.0);
+        let ms_per_s = T::from_f64(super::MS_PER_S);
         // A wheel without an acceleration contributes 0, which never beats a measured one.
         let mut accelerations = PerWheel::splat(T::ZERO);
         for ((i, &reading), acceleration) in angles.iter_wheels().zip(accelerations.iter_mut()) {
             let angle = Some(reading).filter(|a| a.is_finite());
             let speed = match (angle, self.previous_angle[i]) {
                 (Some(now), Some(before)) => {
-                    Some(thousand * (now - before) / dt_ms).filter(|s| s.is_finite())
+                    Some(ms_per_s * (now - before) / dt_ms).filter(|s| s.is_finite())
                 }
                 _ => None,
             };
             if let (Some(now), Some(before)) = (speed, self.speed[i]) {
-                *acceleration = thousand * (now - before) / dt_ms;
+                *acceleration = ms_per_s * (now - before) / dt_ms;
             }
             self.previous_angle[i] = angle;
             self.speed[i] = speed;

@@ -281,6 +281,8 @@ impl<T: Real> Driver<T> {
     }
 }
 
+/// Milliseconds per second: the step length is in ms (Webots' `basicTimeStep`), rates are per s.
+const MS_PER_S: f64 = 1000.0;
 /// Steering-wheel angle per wheel steering angle (dimensionless): Webots turns the
 /// `steering_wheel` motor to 10·δ.
 const STEERING_WHEEL_RATIO: f64 = 10.0;

@@ -68,7 +68,7 @@ impl<T: Real> Driver<T> {
         if self.mode == ControlMode::Torque
             && let Some(auto) = &mut self.auto_shift
         {
-            let dt = dt_ms / T::from_f64(1000.0);
+            let dt = dt_ms / T::from_f64(super::MS_PER_S);
             if let Some(gear) = auto.update(dt, self.rpm, self.gear, powertrain.gearbox()) {
                 self.gear = gear;
                 self.rpm = powertrain.rpm(&speeds, gear);

@@ -17,17 +17,25 @@ pub struct BodyPhysics<T: Real> {
     pub inertia: Option<[T; 6]>,
 }
 
+/// Length of the body box of [`BodyPhysics::box_inertia`] per wheelbase (dimensionless): a
+/// passenger car's wheelbase is about 60 % of its length.
+pub const BODY_LENGTH_PER_WHEELBASE: f64 = 1.6;
+
+/// Height of the body box of [`BodyPhysics::box_inertia`] per track (dimensionless).
+pub const BODY_HEIGHT_PER_TRACK: f64 = 0.75;
+
 impl<T: Real> BodyPhysics<T> {
     /// Inertia (kg·m², `[Ixx, Iyy, Izz, Ixy, Ixz, Iyz]`) of a uniform solid box of this mass,
-    /// used for models whose PROTO gives none: length `1.6·wheelbase` (a passenger car's
-    /// wheelbase is about 60 % of its length), width `track` and height `0.75·track`, where
-    /// `track` is the wider of the two tracks (m). Products of inertia are 0.
+    /// used for models whose PROTO gives none: length `1.6·wheelbase`
+    /// ([`BODY_LENGTH_PER_WHEELBASE`]), width `track` and height `0.75·track`
+    /// ([`BODY_HEIGHT_PER_TRACK`]), where `track` is the wider of the two tracks (m). Products
+    /// of inertia are 0.
     ///
     /// `I = m/12·(w² + h², l² + h², l² + w²)`.
     pub fn box_inertia(mass: T, wheelbase: T, track: T) -> [T; 6] {
-        let l = T::from_f64(1.6) * wheelbase;
+        let l = T::from_f64(BODY_LENGTH_PER_WHEELBASE) * wheelbase;
         let w = track;
-        let h = T::from_f64(0.75) * track;
+        let h = T::from_f64(BODY_HEIGHT_PER_TRACK) * track;
         let k = mass / T::from_f64(12.0);
         [
             k * (w * w + h * h),

@@ -3,6 +3,7 @@
 
 mod body;
 mod field;
+mod path;
 mod set;
 mod sound_name;
 mod validate;
@@ -14,9 +15,11 @@ use proto_geom::{SensorSlots, WheelParams};
 
 use crate::wipers::WiperRange;
 
-pub use body::{BodyPhysics, is_physical_inertia};
+pub use body::{
+    BODY_HEIGHT_PER_TRACK, BODY_LENGTH_PER_WHEELBASE, BodyPhysics, is_physical_inertia,
+};
 pub use field::{CarField, FieldError, FieldKind, FieldValue, NumberRule};
-pub use set::wheel_slot_name;
+pub use path::{FieldPath, WheelSetting, WheelSlot, wheel_slot_name};
 pub use sound_name::EngineSound;
 pub use warning::{MAX_PARAM_WARNINGS, ParamReport, ParamWarning, Refusal};
 
@@ -128,42 +131,11 @@ pub struct CarParams<T: Real> {
 }
 
 impl<T: Real> Default for CarParams<T> {
-    /// The plain Webots `Car` PROTO (R2022b) with default `VehicleWheel`s and no wipers. The
-    /// `Car` has `physics NULL`; the body here is [`DEFAULT_BODY_MASS`] at mid-wheelbase
-    /// with the derived box inertia.
+    /// The plain Webots `Car` PROTO (R2022b) with default `VehicleWheel`s and no wipers
+    /// ([`Model::Car`](crate::Model::Car)). The `Car` has `physics NULL`; the body here is
+    /// [`DEFAULT_BODY_MASS`] at mid-wheelbase with the derived box inertia.
     fn default() -> Self {
-        let f = T::from_f64;
-        CarParams {
-            translation: [T::ZERO, T::ZERO, f(0.4)],
-            rotation: [T::ZERO, T::ZERO, T::ONE, T::ZERO],
-            track_front: f(1.7),
-            track_rear: f(1.7),
-            wheelbase: f(4.0),
-            min_steering_angle: f(-1.0),
-            max_steering_angle: f(1.0),
-            suspension_front_spring_constant: f(100_000.0),
-            suspension_front_damping_constant: f(4000.0),
-            suspension_rear_spring_constant: f(100_000.0),
-            suspension_rear_damping_constant: f(4000.0),
-            wheels_damping_constant: f(5.0),
-            max_steering_torque: f(10_000.0),
-            wheels: PerWheel::from_fn(|w| WheelParams::default().in_slot(w)),
-            drive_type: DriveType::Traction,
-            engine: EngineParams::default(),
-            engine_sound: EngineSound::default(),
-            engine_sound_rpm_reference: f(1000.0),
-            brake_coefficient: f(700.0),
-            time_0_to_100: f(10.0),
-            max_velocity: f(50.0),
-            gear_ratios: gear_ratios(&DEFAULT_GEAR_RATIOS),
-            body: BodyPhysics {
-                mass: f(DEFAULT_BODY_MASS),
-                center_of_mass: [f(2.0), T::ZERO, T::ZERO],
-                inertia: None,
-            },
-            wipers: None,
-            sensor_slots: None,
-        }
+        crate::Model::Car.params()
     }
 }
 

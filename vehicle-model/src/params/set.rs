@@ -1,75 +1,42 @@
 //! Setting a field by its Webots name, e.g. from a world file.
 
-use ackermann::{DriveType, PerWheel, Real, Wheel};
+use ackermann::{DriveType, PerWheel, Real};
 use powertrain::EngineType;
-use proto_geom::{WheelParams, WheelPhysics};
+use proto_geom::{WheelField, WheelParams, WheelPhysics};
 
 use super::field::{CarField, FieldError, FieldKind, FieldValue};
+use super::path::{FieldPath, WheelSetting, WheelSlot};
 use super::sound_name::EngineSound;
 use super::{CarParams, GearRatios};
 
-/// Number of [`CarField`]s.
-const FIELD_COUNT: usize = CarField::ALL.len();
-
-/// A wheel slot prefix of [`CarParams::set_field`].
-#[derive(Clone, Copy)]
-enum WheelTarget {
-    One(Wheel),
-    All,
-}
-
-/// The Webots `Car` field that holds the wheel of slot `wheel` (`"wheelFrontRight"`, …).
-pub const fn wheel_slot_name(wheel: Wheel) -> &'static str {
-    match wheel {
-        Wheel::FrontRight => "wheelFrontRight",
-        Wheel::FrontLeft => "wheelFrontLeft",
-        Wheel::RearRight => "wheelRearRight",
-        Wheel::RearLeft => "wheelRearLeft",
-    }
+/// The `webots_name()` of every element of a constant list, as a constant array.
+macro_rules! webots_names {
+    ($all:expr) => {{
+        let mut names = [""; $all.len()];
+        let mut i = 0;
+        while i < names.len() {
+            names[i] = $all[i].webots_name();
+            i += 1;
+        }
+        names
+    }};
 }
 
 impl<T: Real> CarParams<T> {
     /// The Webots names of every field [`CarParams::set_field`] accepts without a wheel
     /// prefix: the `AckermannVehicle` and `Car` fields, then the body `Physics` fields `mass`,
     /// `centerOfMass`, `inertiaMatrix`.
-    pub const FIELD_NAMES: [&'static str; FIELD_COUNT] = {
-        let mut names = [""; FIELD_COUNT];
-        let mut i = 0;
-        while i < FIELD_COUNT {
-            names[i] = CarField::ALL[i].webots_name();
-            i += 1;
-        }
-        names
-    };
+    pub const FIELD_NAMES: [&'static str; CarField::ALL.len()] = webots_names!(CarField::ALL);
 
-    /// The wheel slot prefixes of [`CarParams::set_field`]: the four `Car` slot fields, and
-    /// `wheels` for all four at once.
-    pub const WHEEL_SLOT_NAMES: [&'static str; 5] = [
-        wheel_slot_name(Wheel::FrontRight),
-        wheel_slot_name(Wheel::FrontLeft),
-        wheel_slot_name(Wheel::RearRight),
-        wheel_slot_name(Wheel::RearLeft),
-        "wheels",
-    ];
+    /// The wheel slot prefixes of [`CarParams::set_field`] ([`WheelSlot::ALL`]): the four
+    /// `Car` slot fields, and `wheels` for all four at once.
+    pub const WHEEL_SLOT_NAMES: [&'static str; WheelSlot::ALL.len()] =
+        webots_names!(WheelSlot::ALL);
 
     /// The numeric `VehicleWheel` fields [`CarParams::set_field`] accepts after a slot prefix
-    /// (`mass` and `density` set the wheel's `Physics` node).
-    pub const WHEEL_FIELD_NAMES: [&'static str; 14] = [
-        "thickness",
-        "tireRadius",
-        "subdivision",
-        "curvatureFactor",
-        "edgeSubdivision",
-        "rimRadius",
-        "rimBeamNumber",
-        "rimBeamWidth",
-        "centralInnerRadius",
-        "centralOuterRadius",
-        "rimBeamThickness",
-        "rimBeamOffset",
-        "mass",
-        "density",
-    ];
+    /// ([`WheelSetting::ALL`]; `mass` and `density` set the wheel's `Physics` node).
+    pub const WHEEL_FIELD_NAMES: [&'static str; WheelSetting::ALL.len()] =
+        webots_names!(WheelSetting::ALL);
 
     /// Sets the field with Webots name `name` (case-sensitive) to `value`, unvalidated (run
     /// [`CarParams::validate`] afterwards; [`Driver::new`](crate::Driver::new) does).
@@ -95,15 +62,25 @@ impl<T: Real> CarParams<T> {
     /// [`FieldError`] if the name is unknown or the value has the wrong form (kind, list
     /// length, spelling, integer); the params are then unchanged.
     pub fn set_field(&mut self, name: &str, value: FieldValue<'_, T>) -> Result<(), FieldError> {
-        if let Some((slot, field)) = name.split_once('.') {
-            let target = match Wheel::ALL.into_iter().find(|w| wheel_slot_name(*w) == slot) {
-                Some(wheel) => WheelTarget::One(wheel),
-                None if slot == "wheels" => WheelTarget::All,
-                None => return Err(FieldError::UnknownField),
-            };
-            return set_wheel_field(&mut self.wheels, target, field, value);
-        }
-        let field = CarField::from_webots_name(name).ok_or(FieldError::UnknownField)?;
+        self.set(
+            FieldPath::parse(name).ok_or(FieldError::UnknownField)?,
+            value,
+        )
+    }
+
+    /// Sets the field at `path` to `value`, unvalidated, as [`CarParams::set_field`] does
+    /// for its name.
+    ///
+    /// # Errors
+    /// As [`CarParams::set_field`]; [`FieldError::UnknownField`] for
+    /// `WheelSetting::Field(WheelField::Physics)`, which names no value.
+    pub fn set(&mut self, path: FieldPath, value: FieldValue<'_, T>) -> Result<(), FieldError> {
+        let field = match path {
+            FieldPath::Car(field) => field,
+            FieldPath::Wheel(slot, setting) => {
+                return set_wheel_field(&mut self.wheels, slot, setting, value);
+            }
+        };
         let field_name = field.webots_name();
         let kind = field.kind();
         match (kind, value) {
@@ -218,17 +195,14 @@ impl<T: Real> CarParams<T> {
     }
 }
 
-/// Sets one numeric `VehicleWheel` field of the wheels of `target`.
+/// Sets one numeric `VehicleWheel` field of the wheels of `slot`.
 fn set_wheel_field<T: Real>(
     wheels: &mut PerWheel<WheelParams<T>>,
-    target: WheelTarget,
-    field: &str,
+    slot: WheelSlot,
+    setting: WheelSetting,
     value: FieldValue<'_, T>,
 ) -> Result<(), FieldError> {
-    let name = CarParams::<T>::WHEEL_FIELD_NAMES
-        .into_iter()
-        .find(|&n| n == field)
-        .ok_or(FieldError::UnknownField)?;
+    let name = setting.webots_name();
     let FieldValue::Number(v) = value else {
         return Err(FieldError::WrongKind {
             field: name,
@@ -247,26 +221,30 @@ fn set_wheel_field<T: Real>(
         }
     };
     let apply = |w: &mut WheelParams<T>| -> Result<(), FieldError> {
-        match name {
-            "thickness" => w.thickness = v,
-            "tireRadius" => w.tire_radius = v,
-            "subdivision" => w.subdivision = integer()?,
-            "curvatureFactor" => w.curvature_factor = v,
-            "edgeSubdivision" => w.edge_subdivision = integer()?,
-            "rimRadius" => w.rim_radius = v,
-            "rimBeamNumber" => w.rim_beam_number = integer()?,
-            "rimBeamWidth" => w.rim_beam_width = v,
-            "centralInnerRadius" => w.central_inner_radius = v,
-            "centralOuterRadius" => w.central_outer_radius = v,
-            "rimBeamThickness" => w.rim_beam_thickness = v,
-            "rimBeamOffset" => w.rim_beam_offset = v,
-            "mass" => w.physics = WheelPhysics::Mass(v),
-            _ => w.physics = WheelPhysics::Density(v),
+        use WheelField as F;
+        match setting {
+            WheelSetting::Field(field) => match field {
+                F::Thickness => w.thickness = v,
+                F::TireRadius => w.tire_radius = v,
+                F::Subdivision => w.subdivision = integer()?,
+                F::CurvatureFactor => w.curvature_factor = v,
+                F::EdgeSubdivision => w.edge_subdivision = integer()?,
+                F::RimRadius => w.rim_radius = v,
+                F::RimBeamNumber => w.rim_beam_number = integer()?,
+                F::RimBeamWidth => w.rim_beam_width = v,
+                F::CentralInnerRadius => w.central_inner_radius = v,
+                F::CentralOuterRadius => w.central_outer_radius = v,
+                F::RimBeamThickness => w.rim_beam_thickness = v,
+                F::RimBeamOffset => w.rim_beam_offset = v,
+                F::Physics => return Err(FieldError::UnknownField),
+            },
+            WheelSetting::Mass => w.physics = WheelPhysics::Mass(v),
+            WheelSetting::Density => w.physics = WheelPhysics::Density(v),
         }
         Ok(())
     };
-    match target {
-        WheelTarget::One(wheel) => apply(&mut wheels[wheel]),
-        WheelTarget::All => wheels.iter_mut().try_for_each(apply),
+    match slot {
+        WheelSlot::One(wheel) => apply(&mut wheels[wheel]),
+        WheelSlot::All => wheels.iter_mut().try_for_each(apply),
     }
 }

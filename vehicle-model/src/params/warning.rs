@@ -8,7 +8,7 @@ use proto_geom::plausible::Compact;
 use proto_geom::{Plausible, WheelRule, WheelWarning};
 
 use super::field::CarField;
-use super::set::wheel_slot_name;
+use super::path::wheel_slot_name;
 
 /// Capacity of a [`ParamReport`]; further warnings are only counted.
 pub const MAX_PARAM_WARNINGS: usize = 32;

@@ -1,8 +1,9 @@
 //! The numbers that broke things before, which every fuzzer weights its inputs towards: NaN,
 //! ±∞, the extremes, zeros of both signs, subnormals and a few ordinary values.
 //!
-//! One list for the property tests (`strategies.rs` here, `capi/tests/fuzz`) and the
-//! coverage-guided targets (`fuzz/fuzz_targets/values.rs`), which include this file by path.
+//! One list for the property tests (`strategies.rs` here, `capi/tests/fuzz`), the bad-input
+//! tests (`tests/bad_input.rs`) and the coverage-guided targets
+//! (`fuzz/fuzz_targets/values.rs`), which include this file by path.
 
 /// The special values, drawn often by every hostile-number generator.
 pub const SPECIAL: [f64; 19] = [

@@ -9,9 +9,9 @@ use super::Plant;
 
 /// Standard gravity (m/s²), as the sim crate's static loads use.
 const GRAVITY: f32 = 9.81;
-/// Webots' `Physics {}` density for a wheel whose model gives no mass (kg/m³): the sim crate
-/// gives such a wheel the same.
-const DEFAULT_WHEEL_DENSITY: f32 = 1000.0;
+/// Webots' `Physics {}` density for a wheel whose model gives no mass (kg/m³), as the sim crate
+/// gives such a wheel.
+const DEFAULT_WHEEL_DENSITY: f32 = vehicle_model::DEFAULT_WHEEL_DENSITY as f32;
 
 /// The physical constants of the plant that the car's parameters do not give.
 #[derive(Debug, Clone, Copy, PartialEq)]
