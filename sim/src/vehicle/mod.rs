@@ -15,10 +15,10 @@
 //!
 //! Webots builds the same car from ODE joints (`Hinge2Joint` at the front, `HingeJoint` at the
 //! rear) and cylinder contacts. A rapier multibody of chassis, knuckles and cylinders was this
-//! crate's first model: exact, but 56 µs per step, and rapier solves a multibody contact's
+//! crate's first model: exact, but about ten times the cost, and rapier solves a multibody contact's
 //! friction one world axis at a time, which made wheels away from the world axes chatter. The
 //! wheels here are the same joints written as constraints of a small solver of our own
-//! (`contact`), exact at any heading and about ten times cheaper; what changes is listed in
+//! (`contact`), exact at any heading and that much cheaper; what changes is listed in
 //! `COMPATIBILITY.md` (no wheel hop, one contact per wheel, found along the suspension axis).
 //!
 //! # Actuators and the step
