@@ -639,3 +639,80 @@ fn sweep_and_sweep_merge_subcommands() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The repository's root.
+fn repo() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap()
+        .to_path_buf()
+}
+
+#[test]
+fn the_slurm_example_runs_as_a_job_array_would() {
+    // examples/sweeps/slurm.sh as Slurm runs it for --array=0-7 (with `vehicle-sim` on the
+    // PATH and the variables Slurm sets), then slurm-merge.sh; a short sweep of 5 cases, so
+    // that 3 of the 8 shards have no case at all.
+    let dir = scratch("slurm");
+    let sweep = dir.join("s.toml");
+    std::fs::write(
+        &sweep,
+        "world = \"ToyotaPrius\"\nscenario = \"accel-speed\"\n[set]\nduration = 0.3\n[axes]\n\
+         \"vehicle.time0To100\" = { from = 8, to = 12, steps = 5 }\n",
+    )
+    .unwrap();
+    let bin = Path::new(env!("CARGO_BIN_EXE_vehicle-sim"))
+        .parent()
+        .unwrap();
+    let path = format!(
+        "{}:{}",
+        bin.display(),
+        std::env::var("PATH").unwrap_or_default()
+    );
+    let out = dir.join("out");
+    let run = |script: &str, task: Option<usize>| {
+        let mut c = Command::new("bash");
+        c.arg(repo().join("examples/sweeps").join(script))
+            .current_dir(&dir)
+            .env("PATH", &path)
+            .env("SWEEP", &sweep)
+            .env("OUT", &out)
+            .env("SLURM_CPUS_PER_TASK", "1")
+            .env_remove("JOB_COMPLETION_INDEX");
+        if let Some(t) = task {
+            c.env("SLURM_ARRAY_TASK_ID", t.to_string())
+                .env("SLURM_ARRAY_TASK_MIN", "0")
+                .env("SLURM_ARRAY_TASK_COUNT", "8");
+        }
+        let o = c.output().unwrap();
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{script} {task:?}: {}",
+            text(&o.stderr)
+        );
+        o
+    };
+    for task in 0..8 {
+        run("slurm.sh", Some(task));
+    }
+    let merged = run("slurm-merge.sh", None);
+    assert!(text(&merged.stdout).contains("merged 8 shards: 5 cases, 0 failed"));
+    let whole = dir.join("whole");
+    let o = vehicle_sim(&[
+        "sweep",
+        sweep.to_str().unwrap(),
+        "--out",
+        whole.to_str().unwrap(),
+        "-q",
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(
+        std::fs::read_to_string(out.join("merged/results.csv")).unwrap(),
+        std::fs::read_to_string(whole.join("results.csv")).unwrap()
+    );
+    // An empty shard: the header alone.
+    let empty = std::fs::read_to_string(out.join("shard-7/results.csv")).unwrap();
+    assert_eq!(empty.lines().count(), 1);
+    std::fs::remove_dir_all(&dir).unwrap();
+}

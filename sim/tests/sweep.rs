@@ -464,3 +464,21 @@ fn merges_refuse_missing_duplicated_and_foreign_shards() {
     sweep::merge(&[s0, s1], &dir.join("out")).unwrap();
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn the_example_sweeps_load() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/sweeps");
+    let brake = Sweep::load(dir.join("brake.toml")).unwrap();
+    assert_eq!(brake.len(), 3 * 7 * 4);
+    assert_eq!(
+        brake.columns().axes,
+        [
+            "ground.friction",
+            "vehicle.brakeCoefficient",
+            "vehicle.mass"
+        ]
+    );
+    let bench = Sweep::load(dir.join("brake-10000.toml")).unwrap();
+    assert_eq!(bench.len(), 10_000);
+    assert_eq!(Shard::new(0, 10).unwrap().len(bench.len()), 1000);
+}
