@@ -18,8 +18,8 @@ fn scratch(name: &str) -> PathBuf {
     dir
 }
 
-fn parse(text: &str) -> Result<Sweep, Box<SweepError>> {
-    Sweep::parse("s.toml", text, Path::new(".")).map_err(Box::new)
+fn parse(text: &str) -> Result<Sweep, SweepError> {
+    Sweep::parse("s.toml", text, Path::new("."))
 }
 
 /// Runs `shard` of `sweep` into `dir` on `threads` threads.

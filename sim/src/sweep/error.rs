@@ -18,10 +18,10 @@ pub enum SweepError {
     /// as a world file's errors do (e.g. `s.toml:5:1: unknown key 'vehicle.brakeCoeficient';
     /// did you mean 'brakeCoefficient'?` for an axis over a key that worlds do not have).
     #[error("{0}")]
-    File(WorldFileError),
+    File(Box<WorldFileError>),
     /// The base world cannot be loaded: the world file's error.
     #[error("{0}")]
-    World(WorldFileError),
+    World(Box<WorldFileError>),
     /// No case has this index.
     #[error("no case {index}: the sweep has {cases} cases, numbered from 0")]
     NoSuchCase {
@@ -33,10 +33,20 @@ pub enum SweepError {
 }
 
 impl SweepError {
+    /// [`SweepError::File`] of `e`.
+    pub(crate) fn file(e: WorldFileError) -> SweepError {
+        SweepError::File(Box::new(e))
+    }
+
+    /// [`SweepError::World`] of `e`.
+    pub(crate) fn world(e: WorldFileError) -> SweepError {
+        SweepError::World(Box::new(e))
+    }
+
     /// The located error of a sweep file or base world (its file, line, column and key).
     pub fn file_error(&self) -> Option<&WorldFileError> {
         match self {
-            SweepError::File(e) | SweepError::World(e) => Some(e),
+            SweepError::File(e) | SweepError::World(e) => Some(e.as_ref()),
             _ => None,
         }
     }

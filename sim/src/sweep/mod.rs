@@ -126,7 +126,7 @@ fn base_world(
         let looks_like_path = name.contains(['/', '\\']) || name.ends_with(".toml");
         if !looks_like_path {
             let models = Model::ALL.map(Model::webots_name);
-            return Err(SweepError::File(src.error(
+            return Err(SweepError::file(src.error(
                 Some(span.clone()),
                 Some("world".to_string()),
                 WorldFileErrorKind::NeitherFileNorModel {
@@ -139,7 +139,7 @@ fn base_world(
     let source = path.display().to_string();
     match std::fs::read_to_string(&path) {
         Ok(text) => Ok((source, text)),
-        Err(e) => Err(SweepError::World(WorldFileError {
+        Err(e) => Err(SweepError::world(WorldFileError {
             file: source,
             location: None,
             key: None,
@@ -183,10 +183,10 @@ impl Sweep {
     /// [`SweepError::World`] when the base world itself cannot be loaded.
     pub fn parse(file: &str, text: &str, dir: &Path) -> Result<Sweep, SweepError> {
         let src = Source { file, text };
-        let spec = file::read(src).map_err(SweepError::File)?;
+        let spec = file::read(src).map_err(SweepError::file)?;
         let (world_source, world_text) = base_world(src, spec.world.as_ref(), dir)?;
         let located = |span: &core::ops::Range<usize>, e: WorldFileError| {
-            SweepError::File(src.error(Some(span.clone()), e.key, e.kind))
+            SweepError::file(src.error(Some(span.clone()), e.key, e.kind))
         };
         let set: Vec<(KeyPath, AxisValue)> = spec
             .set
@@ -200,7 +200,7 @@ impl Sweep {
                 .find(|s| e.key.as_deref().is_some_and(|k| s.key.covers(k)))
             {
                 Some(s) => located(&s.span, e),
-                None => SweepError::World(e),
+                None => SweepError::world(e),
             }
         })?;
         if let Some((w, s)) = base.warnings.iter().find_map(|w| {
@@ -270,7 +270,7 @@ impl Sweep {
                     format!("zip needs axes of one length: '{a}' has {n} values, '{b}' has {m}")
                 }
             };
-            SweepError::File(src.error(
+            SweepError::file(src.error(
                 combine_span,
                 Some("combine".to_string()),
                 WorldFileErrorKind::InvalidValue(message),
@@ -279,7 +279,7 @@ impl Sweep {
         let mut probe = base.clone();
         probe.duration = Some(f64::from(base.config.basic_time_step_ms) / 1000.0);
         let report = scenario::run(&probe, scenario, &mut |_| {}).map_err(|e| {
-            SweepError::File(src.error(
+            SweepError::file(src.error(
                 Some(world_span.clone()),
                 Some("world".to_string()),
                 WorldFileErrorKind::InvalidValue(format!(
