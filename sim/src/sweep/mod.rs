@@ -148,10 +148,55 @@ fn base_world(
     }
 }
 
-/// True for the errors of a value's type or of a key (as opposed to a value the world file
-/// refuses): the same for every value an axis could generate, so the sweep file is wrong.
-fn is_structural(e: &WorldFileError) -> bool {
-    !matches!(e.kind, WorldFileErrorKind::InvalidValue(_))
+/// Checks the axis `a` of the sweep file `src` against the base world (`text` with `set`):
+/// every value of a list, the first of a range or draw (the others differ only in number). A
+/// key the world does not have (located at the axis's key), or a value of a type or name it
+/// does not take (at the value), is the sweep file's error; a value the world refuses is not:
+/// it is its cases' error.
+fn check_axis(
+    src: Source<'_>,
+    a: &axis::ReadAxis,
+    source: &str,
+    text: &str,
+    set: &[(KeyPath, AxisValue)],
+) -> Result<(), SweepError> {
+    let checked: Vec<(AxisValue, &core::ops::Range<usize>)> = match a.axis.values() {
+        AxisValues::List(values) => values.iter().cloned().zip(&a.value_spans).collect(),
+        _ => a
+            .axis
+            .value(0)
+            .into_iter()
+            .map(|v| (v, &a.key_span))
+            .collect(),
+    };
+    for (value, span) in checked {
+        let one = [(a.axis.key().clone(), value)];
+        let Err(e) = read_world(source, text, set, &one) else {
+            continue;
+        };
+        let at = match e.kind {
+            WorldFileErrorKind::InvalidValue(_) => continue,
+            WorldFileErrorKind::UnknownKey { .. } | WorldFileErrorKind::Structure(_) => &a.key_span,
+            _ => span,
+        };
+        return Err(SweepError::file(src.error(Some(at.clone()), e.key, e.kind)));
+    }
+    Ok(())
+}
+
+/// The metric columns of `scenario` on `world`: its metrics on a run of one step (every
+/// scenario reports the same keys however long it runs, a metric not reached being empty).
+fn metric_columns(
+    world: &WorldDescription,
+    scenario: Scenario,
+) -> Result<Vec<String>, scenario::ScenarioError> {
+    let mut probe = world.clone();
+    probe.duration = Some(f64::from(world.config.basic_time_step_ms) / 1000.0);
+    let report = scenario::run(&probe, scenario, &mut |_| {})?;
+    Ok(row::metric_cells(&report)
+        .into_iter()
+        .map(|(name, _)| name)
+        .collect())
 }
 
 impl Sweep {
@@ -237,29 +282,7 @@ impl Sweep {
             )
         })?;
         for a in &spec.axes {
-            let checked: Vec<(AxisValue, &core::ops::Range<usize>)> = match a.axis.values() {
-                AxisValues::List(values) => values.iter().cloned().zip(&a.value_spans).collect(),
-                _ => a
-                    .axis
-                    .value(0)
-                    .into_iter()
-                    .map(|v| (v, &a.key_span))
-                    .collect(),
-            };
-            for (value, span) in checked {
-                let one = [(a.axis.key().clone(), value)];
-                if let Err(e) = read_world(&world_source, &world_text, &set, &one) {
-                    // A key the world does not have is the axis's key's fault; a type or a
-                    // name, its value's.
-                    let at_key = matches!(
-                        e.kind,
-                        WorldFileErrorKind::UnknownKey { .. } | WorldFileErrorKind::Structure(_)
-                    );
-                    if is_structural(&e) {
-                        return Err(located(if at_key { &a.key_span } else { span }, e));
-                    }
-                }
-            }
+            check_axis(src, a, &world_source, &world_text, &set)?;
         }
         let axes: Vec<Axis> = spec.axes.into_iter().map(|a| a.axis).collect();
         let (combine, combine_span) = spec.combine;
@@ -276,9 +299,7 @@ impl Sweep {
                 WorldFileErrorKind::InvalidValue(message),
             ))
         })?;
-        let mut probe = base.clone();
-        probe.duration = Some(f64::from(base.config.basic_time_step_ms) / 1000.0);
-        let report = scenario::run(&probe, scenario, &mut |_| {}).map_err(|e| {
+        let metrics = metric_columns(&base, scenario).map_err(|e| {
             SweepError::file(src.error(
                 Some(world_span.clone()),
                 Some("world".to_string()),
@@ -289,10 +310,7 @@ impl Sweep {
         })?;
         let columns = Columns {
             axes: axes.iter().map(|a| a.key().to_string()).collect(),
-            metrics: row::metric_cells(&report)
-                .into_iter()
-                .map(|(name, _)| name)
-                .collect(),
+            metrics,
         };
         let fingerprint = Fingerprint::of(text, &world_text);
         Ok(Sweep {
