@@ -3,8 +3,9 @@
 //! criterion's results that prints ratios at the end of a run.
 //!
 //! The benchmarks themselves are in `benches/`: `kernels` (Ackermann angles, engine torque,
-//! torque split), `simulation` (physics steps of the `sim` world beside the peer) and
-//! `callgrind` (instruction counts under valgrind). See `README.md` for the commands and the
+//! torque split), `simulation` (physics steps of the `sim` world beside the peer),
+//! `callgrind` (instruction counts under valgrind), `replay` (what `replay.glb` adds to a
+//! run) and `sweep` (a sweep's cases per second on 1 and 2 threads). See `README.md` for the commands and the
 //! latest numbers.
 //!
 //! ```

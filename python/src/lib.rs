@@ -7,10 +7,13 @@
 //! * `Simulation`, the core of the Pythonic `webots_vehicle.Simulation`: a world of
 //!   `sim::Simulation`, cars added at will, per-step telemetry, the `vehicle-sim` scenarios
 //!   ([`simulation`]).
+//! * `Sweep`, the core of `webots_vehicle.Sweep`: a sweep file's cases by index, each run into
+//!   the row `vehicle-sim sweep` writes for it ([`sweep`]).
 //!
 //! Units: m, rad (positive steers right), rad/s, s; km/h and ms where the Webots API uses them.
 
 mod simulation;
+mod sweep;
 mod webots;
 
 use pyo3::prelude::*;
@@ -30,5 +33,6 @@ fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("WorldError", m.py().get_type::<WorldError>())?;
     webots::register(m)?;
     simulation::register(m)?;
+    sweep::register(m)?;
     Ok(())
 }

@@ -15,6 +15,9 @@
 //!   programmes, metrics, CSV, SVG plots and JSON (see `README.md`); the report takes any
 //!   run, also one driven through this API (`examples/custom_route.rs`).
 //! * [`replay`]: the run as an animated 3D scene, `replay.glb`.
+//! * [`sweep`]: one scenario on many variants of a world (axes over world-file keys), on
+//!   every core or split into shards for batch engines, one row of metrics per variant
+//!   (`vehicle-sim sweep`).
 //!
 //! The public API is in f64 and SI units (m, m/s, rad, rad/s, N·m, s; the step in ms as
 //! Webots' `basicTimeStep`), its geometry [`nalgebra`]'s (`Point3` for positions, `Vector3`
@@ -76,6 +79,7 @@ pub mod replay;
 pub mod report;
 pub mod rng;
 pub mod scenario;
+pub mod sweep;
 pub mod telemetry;
 pub mod world_file;
 

@@ -3,7 +3,8 @@
 //! Webots draws its slip and encoder noise from its own generator; the exact stream cannot be
 //! reproduced, so the simulator uses SplitMix64 (Steele, Lea and Flood, 2014): 64 bits of state,
 //! full period 2⁶⁴, and the same stream for the same seed on every platform. Each robot owns its
-//! generator, so adding a robot never changes the noise of another.
+//! generator, so adding a robot never changes the noise of another. A sweep's random axes draw
+//! from it too (`sweep::draw`), each draw at a fixed place in its axis's stream.
 
 /// SplitMix64: a seedable generator whose output depends only on the seed and the number of
 /// draws.
@@ -18,9 +19,19 @@ impl SplitMix64 {
         SplitMix64 { state: seed }
     }
 
+    /// The increment of the state per draw (the golden ratio's 64-bit fraction, odd).
+    const GAMMA: u64 = 0x9E37_79B9_7F4A_7C15;
+
+    /// Skips `n` draws at once: the stream goes on as after `n` calls of
+    /// [`next_u64`](Self::next_u64) (the state advances by a constant per draw), so that draw
+    /// `k` of a stream is reached without the `k` before it.
+    pub fn advance(&mut self, n: u64) {
+        self.state = self.state.wrapping_add(n.wrapping_mul(Self::GAMMA));
+    }
+
     /// The next 64 random bits.
     pub fn next_u64(&mut self) -> u64 {
-        self.state = self.state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        self.state = self.state.wrapping_add(Self::GAMMA);
         let mut z = self.state;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
         z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
@@ -52,6 +63,18 @@ mod tests {
         assert_eq!(r.next_u64(), 0xE220_A839_7B1D_CDAF);
         assert_eq!(r.next_u64(), 0x6E78_9E6A_A1B9_65F4);
         assert_eq!(r.next_u64(), 0x06C4_5D18_8009_454F);
+    }
+
+    #[test]
+    fn advance_skips_draws() {
+        let mut walked = SplitMix64::new(99);
+        for _ in 0..1000 {
+            walked.next_u64();
+        }
+        let mut jumped = SplitMix64::new(99);
+        jumped.advance(1000);
+        assert_eq!(jumped, walked);
+        assert_eq!(jumped.next_u64(), walked.next_u64());
     }
 
     #[test]

@@ -8,7 +8,9 @@ Two APIs in one package:
 * This package's simulator API: :class:`Simulation` (a world from a world file, a model name
   or keyword arguments), its cars (:class:`SimCar`), stepping, telemetry as numpy arrays
   (:class:`Telemetry`, ``to_pandas()``), and the ``vehicle-sim`` scenarios with their metrics
-  (:meth:`Simulation.run`).
+  (:meth:`Simulation.run`); sweeps: :class:`Sweep` (a sweep file's cases by index, each run
+  into its row of ``vehicle-sim sweep``'s ``results.csv``), :func:`run_case` and
+  :func:`load_results` (``results.csv`` as a pandas DataFrame).
 
 Units: m, m/s, rad (positive steering turns right), rad/s, N, s; km/h where the Webots driver
 API uses it (cruising speed, ``speed_kmh``); ms for ``basicTimeStep``. Frame: x forward, y
@@ -17,6 +19,7 @@ left, z up.
 
 from webots_vehicle._native import WorldError
 from webots_vehicle.simulation import SCENARIOS, RunResult, SimCar, Simulation, VehicleWarning
+from webots_vehicle.sweep import Sweep, load_results, run_case
 from webots_vehicle.telemetry import COLUMNS, Telemetry
 
 __all__ = [
@@ -25,7 +28,10 @@ __all__ = [
     "RunResult",
     "SimCar",
     "Simulation",
+    "Sweep",
     "Telemetry",
     "VehicleWarning",
     "WorldError",
+    "load_results",
+    "run_case",
 ]

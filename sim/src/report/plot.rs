@@ -21,6 +21,9 @@ pub enum SeriesKind {
     Cones,
     /// Closed outlines seen from above (obstacles), filled grey.
     Outline,
+    /// A scatter of measured points: small translucent dots, no line (e.g. the cases of a
+    /// sweep against one axis).
+    Points,
 }
 
 /// One named series of a plot; non-finite points break the line (and separate outlines).
@@ -90,6 +93,9 @@ const PALETTE: [RGBColor; 7] = [
 ];
 const GREY: RGBColor = RGBColor(0x88, 0x88, 0x88);
 const CONE: RGBColor = RGBColor(0xF0, 0x80, 0x00);
+/// Scatter dots: the palette's sky blue, translucent so that dense clouds show their density.
+const SCATTER: RGBColor = RGBColor(0x56, 0xB4, 0xE9);
+const SCATTER_ALPHA: f64 = 0.6;
 
 /// Width of the plot column (px); the legend column follows it.
 pub(crate) const PLOT_WIDTH: u32 = 760;
@@ -311,6 +317,14 @@ impl Figure {
                             .map(|p| TriangleMarker::new(p, 4, CONE.filled())),
                     )?;
                 }
+                SeriesKind::Points => {
+                    chart.draw_series(
+                        pieces(&thinned)
+                            .into_iter()
+                            .flatten()
+                            .map(|p| Circle::new(p, 3, SCATTER.mix(SCATTER_ALPHA).filled())),
+                    )?;
+                }
                 SeriesKind::Line | SeriesKind::Steps => {
                     let color = PALETTE[k % PALETTE.len()];
                     let (dash, marker) = style_of(k);
@@ -417,6 +431,15 @@ fn draw_legend(
                 GREY.stroke_width(1),
             ))?,
             SeriesKind::Cones => legend.draw(&TriangleMarker::new(mid, 4, CONE.filled()))?,
+            SeriesKind::Points => {
+                for dx in [-8, 0, 8] {
+                    legend.draw(&Circle::new(
+                        (mid.0 + dx, mid.1),
+                        2,
+                        SCATTER.mix(SCATTER_ALPHA).filled(),
+                    ))?;
+                }
+            }
             SeriesKind::Outline => legend.draw(&Rectangle::new(
                 [(x0 + 6, y - 6), (x1 - 6, y + 6)],
                 GREY.mix(0.25).filled(),

@@ -83,7 +83,7 @@ pub enum WorldFileErrorKind {
     Structure(String),
 }
 
-/// A small closed set of names that a world-file key chooses from.
+/// A small closed set of names that a world-file (or sweep-file) key chooses from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum NameSet {
@@ -97,6 +97,10 @@ pub enum NameSet {
     Indicator,
     /// A programme's `wiper_mode`: `down`, `slow`, `normal`, `fast`.
     WiperMode,
+    /// A sweep file's `scenario`: the `vehicle-sim` scenarios.
+    Scenario,
+    /// A sweep file's `combine`: `product`, `zip`.
+    Combine,
 }
 
 impl fmt::Display for NameSet {
@@ -107,6 +111,8 @@ impl fmt::Display for NameSet {
             NameSet::Mounting => "wheel mounting",
             NameSet::Indicator => "indicator state",
             NameSet::WiperMode => "wiper mode",
+            NameSet::Scenario => "scenario",
+            NameSet::Combine => "way to combine the axes",
         })
     }
 }
@@ -128,6 +134,13 @@ pub struct WorldFileError {
 }
 
 impl WorldFileError {
+    /// What is wrong, naming the key, without the file and location that `Display` puts
+    /// first: e.g. `invalid 'ground.friction': -0.5: must be finite and >= 0`. A sweep's
+    /// results name the key this way, the case's values being in the row.
+    pub fn message(&self) -> impl fmt::Display + '_ {
+        Message(self)
+    }
+
     /// The closest valid names offered with an unknown key or model (empty otherwise).
     pub fn suggestions(&self) -> &[String] {
         match &self.kind {
@@ -168,8 +181,18 @@ impl fmt::Display for WorldFileError {
             }
             f.write_str(": ")?;
         }
-        let key = self.key.as_deref().unwrap_or("");
-        match &self.kind {
+        write!(f, "{}", self.message())
+    }
+}
+
+/// [`WorldFileError::message`].
+struct Message<'a>(&'a WorldFileError);
+
+impl fmt::Display for Message<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let e = self.0;
+        let key = e.key.as_deref().unwrap_or("");
+        match &e.kind {
             WorldFileErrorKind::Io(m) => write!(f, "cannot read the world file: {m}"),
             WorldFileErrorKind::Syntax(m) => write!(f, "invalid TOML: {m}"),
             WorldFileErrorKind::UnknownKey { suggestions } => {
@@ -319,6 +342,10 @@ mod tests {
         assert_eq!(
             e.to_string(),
             "w.toml:4:1: unknown key 'vehicle.timeTo100'; did you mean 'time0To100' or 'a'?"
+        );
+        assert_eq!(
+            e.message().to_string(),
+            "unknown key 'vehicle.timeTo100'; did you mean 'time0To100' or 'a'?"
         );
     }
 }

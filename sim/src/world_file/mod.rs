@@ -31,8 +31,9 @@
 
 mod bodies;
 mod error;
+mod overrides;
 mod programme;
-mod read;
+pub(crate) mod read;
 mod robot;
 mod statics;
 mod tyre;
@@ -47,9 +48,11 @@ use vehicle_model::Model;
 use crate::config::WorldConfig;
 
 pub use error::{Location, NameSet, WorldFileError, WorldFileErrorKind, WorldWarning};
+pub use overrides::KeyPath;
 pub use robot::RobotDescription;
 pub use vehicle::CarDescription;
 
+pub(crate) use error::closest;
 use read::{Section, Source};
 
 /// The text of the built-in default world: a BmwX5 on flat ground, `basicTimeStep` 10 ms.
@@ -66,6 +69,15 @@ friction = 1.0
 
 /// The name under which the default world appears in messages.
 pub const DEFAULT_WORLD_NAME: &str = "<default world>";
+
+/// The text of the default world with the car `model`: what [`with_model`] describes, as a
+/// world file.
+pub fn model_world_text(model: Model) -> String {
+    DEFAULT_WORLD.replace(
+        "model = \"BmwX5\"",
+        &format!("model = \"{}\"", model.webots_name()),
+    )
+}
 
 /// Top-level keys of a world file.
 const ROOT_KEYS: [&str; 9] = [
@@ -208,7 +220,7 @@ pub fn load(spec: &str) -> Result<WorldDescription, WorldFileError> {
                 key: None,
                 kind: WorldFileErrorKind::NeitherFileNorModel {
                     name: spec.to_string(),
-                    suggestions: error::closest(spec, vehicle::model_names()),
+                    suggestions: closest(spec, vehicle::model_names()),
                 },
             });
         }
@@ -236,14 +248,39 @@ pub fn load_file(path: &Path) -> Result<WorldDescription, WorldFileError> {
 /// # Errors
 /// As [`load`], except for reading the file.
 pub fn parse_str(file: &str, text: &str) -> Result<WorldDescription, WorldFileError> {
+    parse_with(file, text, Vec::new())
+}
+
+/// Parses world-file text with `overrides` set in its document first (each value replacing
+/// what the text has at its key, the tables on the way created), then read as any world file:
+/// an invalid value gets the error (or warning) of that key. A sweep makes each case's world
+/// this way. An error that the text does not locate (a new key) has no location.
+///
+/// # Errors
+/// As [`parse_str`]; an override whose path leads through something that is not a table (or
+/// past the file's `[[…]]` tables) is a [`WorldFileErrorKind::Structure`] error at its key.
+pub(crate) fn parse_with(
+    file: &str,
+    text: &str,
+    overrides: Vec<(&KeyPath, DeValue<'_>)>,
+) -> Result<WorldDescription, WorldFileError> {
     let src = Source { file, text };
-    let doc = DeTable::parse(text).map_err(|e| {
+    let mut doc = DeTable::parse(text).map_err(|e| {
         src.error(
             e.span(),
             None,
             WorldFileErrorKind::Syntax(e.message().to_string()),
         )
     })?;
+    for (path, value) in overrides {
+        overrides::set(doc.get_mut(), path, value).map_err(|m| {
+            src.error(
+                None,
+                Some(path.to_string()),
+                WorldFileErrorKind::Structure(m),
+            )
+        })?;
+    }
     let root = Section::root(src, doc.get_ref());
     root.check_keys(&ROOT_KEYS)?;
     let config = statics::read_world(&root)?;
@@ -346,6 +383,29 @@ mod tests {
     fn embedded_default_world_matches_default_world() {
         let parsed = parse_str(DEFAULT_WORLD_NAME, DEFAULT_WORLD).unwrap();
         assert_eq!(parsed, default_world());
+        for model in Model::ALL {
+            let expected = with_model(model);
+            let parsed = parse_str(&expected.source, &model_world_text(model)).unwrap();
+            assert_eq!(parsed, expected, "{model:?}");
+        }
+    }
+
+    #[test]
+    fn overrides_are_read_as_the_file_would_be() {
+        let path = KeyPath::parse("ground.friction").unwrap();
+        fn value(t: &str) -> DeValue<'_> {
+            DeValue::parse(t).unwrap().into_inner()
+        }
+        let w = parse_with("w", DEFAULT_WORLD, vec![(&path, value("0.5"))]).unwrap();
+        assert_eq!(w.config.ground_friction, 0.5);
+        let e = parse_with("w", DEFAULT_WORLD, vec![(&path, value("-0.5"))]).unwrap_err();
+        assert_eq!(
+            e.message().to_string(),
+            "invalid 'ground.friction': -0.5: must be finite and >= 0"
+        );
+        let path = KeyPath::parse("vehicle.model.name").unwrap();
+        let e = parse_with("w", DEFAULT_WORLD, vec![(&path, value("1"))]).unwrap_err();
+        assert_eq!(e.key.as_deref(), Some("vehicle.model.name"));
     }
 
     #[test]

@@ -1,8 +1,11 @@
 //! The `vehicle-sim` command: its options (clap), the run with its progress bar (indicatif),
-//! and the outputs.
+//! and the outputs; its sweeps are the subcommands `sweep` and `sweep-merge` ([`SweepOptions`],
+//! [`MergeOptions`]).
 //!
 //! [`main`] is the whole program with its streams and exit code passed in, so tests run it
 //! in-process.
+
+mod sweep;
 
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
@@ -10,13 +13,15 @@ use std::time::{Duration, Instant};
 
 use clap::builder::PossibleValue;
 use clap::error::ErrorKind;
-use clap::{Parser, ValueEnum};
+use clap::{Parser, Subcommand, ValueEnum};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use vehicle_model::Model;
 
 use crate::report;
 use crate::scenario::{self, Progress, Scenario};
 use crate::world_file::{self, WorldDescription};
+
+pub use sweep::{DEFAULT_SWEEP_DIR, MergeOptions, ShardChoice, SweepOptions};
 
 /// Exit code of a successful run.
 pub const EXIT_OK: i32 = 0;
@@ -77,9 +82,13 @@ fn models_help() -> String {
     version,
     about = "Drive Webots-style cars and a DifferentialWheels robot on rapier3d physics and \
              report metrics, telemetry CSV and SVG plots.",
-    after_help = after_help()
+    after_help = after_help(),
+    args_conflicts_with_subcommands = true
 )]
 pub struct Options {
+    /// A sweep instead of one run
+    #[command(subcommand)]
+    pub command: Option<Command>,
     /// A TOML world file, or a shipped model name for the default world with that car
     /// (default: BmwX5 on flat ground, 10 ms)
     #[arg(long, value_name = "FILE|MODEL")]
@@ -109,6 +118,16 @@ pub struct Options {
     /// `seed` (cars have no noise)
     #[arg(long, value_name = "N")]
     pub seed: Option<u64>,
+}
+
+/// The subcommands: sweeps.
+#[derive(Debug, Clone, PartialEq, Eq, Subcommand)]
+pub enum Command {
+    /// Run one scenario on every case of a sweep file (axes over world-file keys) on every
+    /// core, or one shard of the cases; a row of metrics per case in results.csv
+    Sweep(SweepOptions),
+    /// Merge the output directories of a sweep's shards into one results.csv in case order
+    SweepMerge(MergeOptions),
 }
 
 fn after_help() -> String {
@@ -205,6 +224,11 @@ pub fn main(
             return EXIT_USAGE;
         }
     };
+    match &options.command {
+        Some(Command::Sweep(o)) => return sweep::sweep_main(o, out, err, err_is_terminal),
+        Some(Command::SweepMerge(o)) => return sweep::merge_main(o, out, err),
+        None => {}
+    }
     let world = match load_world(&options) {
         Ok(w) => w,
         Err(e) => {
@@ -317,6 +341,7 @@ mod tests {
         assert_eq!(
             o,
             Options {
+                command: None,
                 world: Some("w.toml".into()),
                 scenario: Some(Scenario::Brake),
                 out: PathBuf::from("o"),
@@ -337,12 +362,55 @@ mod tests {
     }
 
     #[test]
+    fn parses_the_sweep_subcommands() {
+        let o = parse(&[
+            "sweep",
+            "s.toml",
+            "--out",
+            "o",
+            "--threads",
+            "2",
+            "--shard",
+            "auto",
+            "--shards",
+            "4",
+        ])
+        .unwrap();
+        assert_eq!(
+            o.command,
+            Some(Command::Sweep(SweepOptions {
+                file: "s.toml".into(),
+                out: "o".into(),
+                threads: Some(2),
+                shard: Some(ShardChoice::Auto),
+                shards: Some(4),
+                quiet: false,
+            }))
+        );
+        let o = parse(&["sweep", "s.toml", "--shard", "1/3", "-q"]).unwrap();
+        let Some(Command::Sweep(s)) = o.command else {
+            panic!("{o:?}")
+        };
+        assert_eq!(s.shard, Some(ShardChoice::Fixed("1/3".parse().unwrap())));
+        assert_eq!(s.out, PathBuf::from(DEFAULT_SWEEP_DIR));
+        let o = parse(&["sweep-merge", "a", "b", "--out", "m"]).unwrap();
+        assert_eq!(
+            o.command,
+            Some(Command::SweepMerge(MergeOptions {
+                dirs: vec!["a".into(), "b".into()],
+                out: "m".into(),
+                quiet: false,
+            }))
+        );
+    }
+
+    #[test]
     fn usage_errors() {
         let kind = |args: &[&str]| parse(args).unwrap_err().kind();
         assert_eq!(kind(&["--fast"]), ErrorKind::UnknownArgument);
         assert_eq!(kind(&["--world"]), ErrorKind::InvalidValue);
         assert_eq!(kind(&["--scenario", "drift"]), ErrorKind::InvalidValue);
-        assert_eq!(kind(&["x"]), ErrorKind::UnknownArgument);
+        assert_eq!(kind(&["x"]), ErrorKind::InvalidSubcommand);
         assert_eq!(
             kind(&["--out", "a", "--out", "b"]),
             ErrorKind::ArgumentConflict
@@ -352,6 +420,27 @@ mod tests {
         assert_eq!(kind(&["--seed", "x"]), ErrorKind::ValueValidation);
         assert_eq!(kind(&["--help"]), ErrorKind::DisplayHelp);
         assert_eq!(kind(&["--version"]), ErrorKind::DisplayVersion);
+        assert_eq!(kind(&["sweep"]), ErrorKind::MissingRequiredArgument);
+        assert_eq!(
+            kind(&["--world", "w.toml", "sweep", "s.toml"]),
+            ErrorKind::ArgumentConflict
+        );
+        assert_eq!(
+            kind(&["sweep", "s.toml", "--threads", "0"]),
+            ErrorKind::ValueValidation
+        );
+        assert_eq!(
+            kind(&["sweep", "s.toml", "--shard", "3/3"]),
+            ErrorKind::ValueValidation
+        );
+        assert_eq!(
+            kind(&["sweep", "s.toml", "--shards", "3"]),
+            ErrorKind::MissingRequiredArgument
+        );
+        assert_eq!(
+            kind(&["sweep-merge", "a"]),
+            ErrorKind::MissingRequiredArgument
+        );
         // A misspelt scenario gets a suggestion.
         let e = parse(&["--scenario", "brak"]).unwrap_err().to_string();
         assert!(e.contains("brake"), "{e}");

@@ -1,0 +1,326 @@
+//! `sweep-merge`: the output directories of a sweep's shards put back together into one
+//! `results.csv` in case order, identical to the whole sweep's, after checking that the
+//! shards come from one sweep and that every case is there exactly once.
+//!
+//! The rows are read as streams, one from each shard in turn (case `c` is in shard
+//! `c mod n`), so memory does not grow with the number of cases.
+
+use std::fs::File;
+use std::io::BufWriter;
+use std::path::{Path, PathBuf};
+
+use super::manifest::{MANIFEST_JSON, Manifest};
+use super::output::{OutputError, PLOTS_DIR, RESULTS_CSV, TIMINGS_CSV, csv_at, finish, io_at};
+use super::plots::write_plots;
+use super::row::csv_writer;
+use super::shard::Shard;
+
+/// Why shards cannot be merged.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum MergeError {
+    /// No directory was given.
+    #[error("no shard directory to merge")]
+    NoInput,
+    /// A directory has no readable manifest.
+    #[error("{0}")]
+    Manifest(String),
+    /// Two directories come from different sweeps (or program versions).
+    #[error(
+        "{} is not a shard of the sweep of {}: {what}",
+        other.display(),
+        first.display()
+    )]
+    DifferentSweep {
+        /// The first directory.
+        first: PathBuf,
+        /// The one that differs.
+        other: PathBuf,
+        /// What differs.
+        what: String,
+    },
+    /// Two directories hold the same shard.
+    #[error("shard {shard} is given twice: {} and {}", dirs[0].display(), dirs[1].display())]
+    DuplicateShard {
+        /// The shard.
+        shard: Shard,
+        /// Its two directories.
+        dirs: [PathBuf; 2],
+    },
+    /// Shards are missing.
+    #[error("{} missing: merge the outputs of all {count} shards", list(missing))]
+    MissingShards {
+        /// The missing shards.
+        missing: Vec<Shard>,
+        /// The number of shards.
+        count: usize,
+    },
+    /// A shard's run did not finish.
+    #[error(
+        "shard {shard} in {} did not finish: it has {rows} of its {expected} rows (run it again)",
+        dir.display()
+    )]
+    Incomplete {
+        /// The shard.
+        shard: Shard,
+        /// Its directory.
+        dir: PathBuf,
+        /// Rows written.
+        rows: usize,
+        /// Rows it should have.
+        expected: usize,
+    },
+    /// A case's row is not where it should be.
+    #[error("case {case} is missing: {}/{file} {found}", dir.display())]
+    MissingCase {
+        /// The case.
+        case: usize,
+        /// The directory of the shard that should have it.
+        dir: PathBuf,
+        /// The file.
+        file: &'static str,
+        /// What the file has instead (`ends before it`, `has case 12 in its place`).
+        found: String,
+    },
+    /// A file has rows after its shard's last case.
+    #[error(
+        "{}/{file} has a row after its shard's last case (case {case}): a case is duplicated \
+         or the sweep had more cases",
+        dir.display()
+    )]
+    ExtraRow {
+        /// The directory.
+        dir: PathBuf,
+        /// The file.
+        file: &'static str,
+        /// The row's case.
+        case: String,
+    },
+    /// A `results.csv` whose header is not the manifest's columns.
+    #[error("{}/{RESULTS_CSV}: its header is not the columns of {MANIFEST_JSON}", dir.display())]
+    Header {
+        /// The directory.
+        dir: PathBuf,
+    },
+    /// The output directory is one of the shards'.
+    #[error("--out {} is one of the shard directories: merge into another", .0.display())]
+    OutputIsInput(PathBuf),
+    /// A file could not be read or written.
+    #[error(transparent)]
+    Output(#[from] OutputError),
+}
+
+/// `1/3`, `1/3 and 2/3 are`…
+fn list(shards: &[Shard]) -> String {
+    let names: Vec<String> = shards.iter().map(ToString::to_string).collect();
+    match names.split_last() {
+        Some((last, [])) => format!("shard {last} is"),
+        Some((last, rest)) => format!("shards {} and {last} are", rest.join(", ")),
+        None => "no shard is".to_string(),
+    }
+}
+
+/// What merging did.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MergeSummary {
+    /// The number of shards merged.
+    pub shards: usize,
+    /// Rows written (the sweep's cases).
+    pub rows: usize,
+    /// Rows of failed cases among them.
+    pub errors: usize,
+    /// The files written, `results.csv` first.
+    pub files: Vec<PathBuf>,
+}
+
+/// The manifests of `dirs` checked to be the complete set of shards of one sweep, in shard
+/// order.
+fn shards_of(dirs: &[PathBuf]) -> Result<Vec<(PathBuf, Manifest)>, MergeError> {
+    let mut found: Vec<(PathBuf, Manifest)> = Vec::with_capacity(dirs.len());
+    for dir in dirs {
+        let m = Manifest::read(dir).map_err(MergeError::Manifest)?;
+        let shard = m.shard().ok_or_else(|| {
+            MergeError::Manifest(format!(
+                "{}: shard {}/{} is not a shard",
+                dir.join(MANIFEST_JSON).display(),
+                m.shard_index,
+                m.shard_count
+            ))
+        })?;
+        if let Some((first, f)) = found.first() {
+            let differs = |what: String| MergeError::DifferentSweep {
+                first: first.clone(),
+                other: dir.clone(),
+                what,
+            };
+            if f.fingerprint != m.fingerprint {
+                return Err(differs(format!(
+                    "its fingerprint {} differs from {} (sweep '{}' against '{}': the sweep \
+                     file, its base world or vehicle-sim's version {} against {} changed)",
+                    m.fingerprint, f.fingerprint, m.sweep, f.sweep, m.version, f.version
+                )));
+            }
+            if f.shard_count != m.shard_count {
+                return Err(differs(format!(
+                    "it is shard {shard} where {} is shard {}/{}: shards of one run share \
+                     their count",
+                    first.display(),
+                    f.shard_index,
+                    f.shard_count
+                )));
+            }
+            if f.columns != m.columns || f.cases != m.cases || f.axes != m.axes {
+                return Err(differs("its columns or number of cases differ".to_string()));
+            }
+        }
+        if let Some((other, _)) = found.iter().find(|(_, o)| o.shard_index == m.shard_index) {
+            return Err(MergeError::DuplicateShard {
+                shard,
+                dirs: [other.clone(), dir.clone()],
+            });
+        }
+        let expected = shard.len(m.cases);
+        if !m.complete || m.rows != expected {
+            return Err(MergeError::Incomplete {
+                shard,
+                dir: dir.clone(),
+                rows: m.rows,
+                expected,
+            });
+        }
+        found.push((dir.clone(), m));
+    }
+    let count = found.first().map_or(0, |(_, m)| m.shard_count);
+    let missing: Vec<Shard> = (0..count)
+        .filter(|i| !found.iter().any(|(_, m)| m.shard_index == *i))
+        .filter_map(|i| Shard::new(i, count))
+        .collect();
+    if !missing.is_empty() {
+        return Err(MergeError::MissingShards { missing, count });
+    }
+    found.sort_by_key(|(_, m)| m.shard_index);
+    Ok(found)
+}
+
+/// Interleaves the `file` of each shard directory (in shard order) into `out/file`, checking
+/// that the row of case `c` is the next of shard `c mod n`; `header` is checked against the
+/// first line of each when given. Returns the rows written and those whose last cell (the
+/// error) is not empty.
+fn interleave(
+    shards: &[(PathBuf, Manifest)],
+    file: &'static str,
+    cases: usize,
+    header: Option<&[String]>,
+    out: &Path,
+) -> Result<(usize, usize), MergeError> {
+    let mut readers = Vec::with_capacity(shards.len());
+    let mut first_header = None;
+    for (dir, _) in shards {
+        let path = dir.join(file);
+        let mut r = csv::ReaderBuilder::new()
+            .from_path(&path)
+            .map_err(csv_at(&path))?;
+        let h = r.headers().map_err(csv_at(&path))?.clone();
+        if header.is_some_and(|cols| !h.iter().eq(cols.iter().map(String::as_str))) {
+            return Err(MergeError::Header { dir: dir.clone() });
+        }
+        first_header.get_or_insert(h);
+        readers.push((dir, path, r.into_records()));
+    }
+    let out_path = out.join(file);
+    let mut w = csv_writer(BufWriter::new(
+        File::create(&out_path).map_err(io_at(&out_path))?,
+    ));
+    if let Some(h) = &first_header {
+        w.write_record(h).map_err(csv_at(&out_path))?;
+    }
+    let n = readers.len().max(1);
+    let mut errors = 0;
+    for case in 0..cases {
+        let Some((dir, path, records)) = readers.get_mut(case % n) else {
+            break;
+        };
+        let missing = |found: String| MergeError::MissingCase {
+            case,
+            dir: dir.to_path_buf(),
+            file,
+            found,
+        };
+        let record = match records.next() {
+            None => return Err(missing("ends before it".to_string())),
+            Some(r) => r.map_err(csv_at(path))?,
+        };
+        let index = record.get(0).unwrap_or("");
+        if index != case.to_string() {
+            return Err(missing(format!("has case {index} in its place")));
+        }
+        errors += usize::from(record.iter().next_back().is_some_and(|e| !e.is_empty()));
+        w.write_record(&record).map_err(csv_at(&out_path))?;
+    }
+    for (dir, path, records) in &mut readers {
+        if let Some(r) = records.next() {
+            let r = r.map_err(csv_at(path))?;
+            return Err(MergeError::ExtraRow {
+                dir: dir.to_path_buf(),
+                file,
+                case: r.get(0).unwrap_or("").to_string(),
+            });
+        }
+    }
+    finish(w, &out_path)?;
+    Ok((cases, errors))
+}
+
+/// Merges the output directories `dirs` of a sweep's shards (`vehicle-sim sweep --shard`)
+/// into `out` (created if needed): `results.csv` in case order, byte for byte what the whole
+/// sweep writes, `timings.csv`, `sweep.json` (as for shard 0/1) and the plots.
+///
+/// # Errors
+/// A [`MergeError`] saying which directory is not of the sweep, which shard is missing or
+/// given twice or did not finish, which case is missing or duplicated, or which file could
+/// not be read or written.
+pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<MergeSummary, MergeError> {
+    if dirs.is_empty() {
+        return Err(MergeError::NoInput);
+    }
+    if let Ok(o) = out.canonicalize()
+        && dirs.iter().any(|d| d.canonicalize().is_ok_and(|d| d == o))
+    {
+        return Err(MergeError::OutputIsInput(out.to_path_buf()));
+    }
+    let shards = shards_of(dirs)?;
+    let Some((_, first)) = shards.first() else {
+        return Err(MergeError::NoInput);
+    };
+    let mut manifest = first.clone();
+    std::fs::create_dir_all(out).map_err(io_at(out))?;
+    let (rows, errors) = interleave(
+        &shards,
+        RESULTS_CSV,
+        manifest.cases,
+        Some(&manifest.columns),
+        out,
+    )?;
+    interleave(&shards, TIMINGS_CSV, manifest.cases, None, out)?;
+    manifest.shard_index = 0;
+    manifest.shard_count = 1;
+    manifest.rows = rows;
+    manifest.errors = errors;
+    manifest.complete = true;
+    let manifest_path = out.join(MANIFEST_JSON);
+    manifest.write(out).map_err(io_at(&manifest_path))?;
+    let results = out.join(RESULTS_CSV);
+    let mut files = vec![results.clone(), out.join(TIMINGS_CSV), manifest_path];
+    files.extend(write_plots(
+        &results,
+        &manifest.axes,
+        &manifest.scenario,
+        &out.join(PLOTS_DIR),
+    )?);
+    Ok(MergeSummary {
+        shards: shards.len(),
+        rows,
+        errors,
+        files,
+    })
+}

@@ -1,0 +1,193 @@
+//! A sweep's output directory: `results.csv` streamed one row per case in case order,
+//! `timings.csv` (the wall times, apart so that `results.csv` is the same on every run),
+//! the manifest `sweep.json` and the summary plots.
+
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use crate::report::{PlotError, TIMING_DIGITS, significant};
+
+use super::Sweep;
+use super::manifest::Manifest;
+use super::plots::write_plots;
+use super::row::{CASE_COLUMN, csv_writer};
+use super::runner::{self, RunError};
+use super::shard::Shard;
+
+/// The results: one row per case, in case order.
+pub const RESULTS_CSV: &str = "results.csv";
+/// The wall time of each case (s), in case order.
+pub const TIMINGS_CSV: &str = "timings.csv";
+/// The directory of the summary plots (each metric against each numeric axis).
+pub const PLOTS_DIR: &str = "plots";
+/// The column of `timings.csv` after `case`.
+pub(crate) const WALL_COLUMN: &str = "wall_seconds";
+
+/// Why a sweep's outputs could not be written.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum OutputError {
+    /// A file or directory could not be written or read.
+    #[error("{}: {source}", path.display())]
+    Io {
+        /// The path concerned.
+        path: PathBuf,
+        /// What the system reported.
+        source: std::io::Error,
+    },
+    /// A CSV file could not be written or read.
+    #[error("{}: {source}", path.display())]
+    Csv {
+        /// The file.
+        path: PathBuf,
+        /// What the CSV library reported.
+        source: csv::Error,
+    },
+    /// The run could not start its threads.
+    #[error(transparent)]
+    Run(RunError),
+    /// A plot could not be drawn.
+    #[error(transparent)]
+    Plot(#[from] PlotError),
+}
+
+/// A closure turning an I/O error into an [`OutputError`] about `path`.
+pub(crate) fn io_at(path: &Path) -> impl FnOnce(std::io::Error) -> OutputError + '_ {
+    move |source| OutputError::Io {
+        path: path.to_path_buf(),
+        source,
+    }
+}
+
+/// A closure turning a CSV error into an [`OutputError`] about `path`.
+pub(crate) fn csv_at(path: &Path) -> impl Fn(csv::Error) -> OutputError + '_ {
+    move |source| OutputError::Csv {
+        path: path.to_path_buf(),
+        source,
+    }
+}
+
+/// What a sweep run did.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunSummary {
+    /// The shard run.
+    pub shard: Shard,
+    /// Rows written (the shard's cases).
+    pub rows: usize,
+    /// Rows of failed cases among them.
+    pub errors: usize,
+    /// Threads used.
+    pub threads: usize,
+    /// Wall time of the run (s).
+    pub wall_seconds: f64,
+    /// The files written, `results.csv` first.
+    pub files: Vec<PathBuf>,
+}
+
+/// Runs the cases of `shard` of `sweep` on `threads` threads (every core when `None`) and
+/// writes into `dir` (created if needed): `results.csv` (each row as soon as the cases
+/// before it are written, flushed, so a stopped run leaves the rows done), `timings.csv`,
+/// `sweep.json` (marked complete at the end) and the plots (`plots/`, whose earlier SVG files
+/// are removed first). `progress` is told the rows written and the shard's total after each.
+///
+/// # Errors
+/// The first file that could not be written, or [`OutputError::Run`].
+pub fn write_sweep(
+    sweep: &Sweep,
+    shard: Shard,
+    threads: Option<usize>,
+    dir: &Path,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<RunSummary, OutputError> {
+    let start = Instant::now();
+    std::fs::create_dir_all(dir).map_err(io_at(dir))?;
+    let total = shard.len(sweep.len());
+    let mut manifest = Manifest {
+        sweep: sweep.file().to_string(),
+        fingerprint: sweep.fingerprint().to_string(),
+        version: env!("CARGO_PKG_VERSION").to_string(),
+        scenario: sweep.scenario().name().to_string(),
+        cases: sweep.len(),
+        shard_index: shard.index(),
+        shard_count: shard.count(),
+        axes: sweep.columns().axes.clone(),
+        columns: sweep
+            .columns()
+            .names()
+            .iter()
+            .map(|s| s.to_string())
+            .collect(),
+        rows: 0,
+        errors: 0,
+        complete: false,
+    };
+    let manifest_path = dir.join(super::MANIFEST_JSON);
+    manifest.write(dir).map_err(io_at(&manifest_path))?;
+    let results_path = dir.join(RESULTS_CSV);
+    let timings_path = dir.join(TIMINGS_CSV);
+    let create = |path: &Path| {
+        File::create(path)
+            .map(|f| csv_writer(BufWriter::new(f)))
+            .map_err(io_at(path))
+    };
+    let mut results = create(&results_path)?;
+    let mut timings = create(&timings_path)?;
+    results
+        .write_record(sweep.columns().names())
+        .map_err(csv_at(&results_path))?;
+    timings
+        .write_record([CASE_COLUMN, WALL_COLUMN])
+        .map_err(csv_at(&timings_path))?;
+    let (mut rows, mut errors) = (0, 0);
+    let mut sink = |row: super::Row, wall: Duration| -> std::io::Result<()> {
+        results.write_record(row.cells())?;
+        // Flushed row by row: a batch task stopped at its time limit leaves its rows done.
+        results.flush()?;
+        let seconds = significant(wall.as_secs_f64(), TIMING_DIGITS);
+        timings.write_record([row.case.to_string(), seconds.to_string()])?;
+        rows += 1;
+        errors += usize::from(row.error.is_some());
+        progress(rows, total);
+        Ok(())
+    };
+    let threads = runner::thread_count(threads);
+    runner::run(sweep, shard, Some(threads), &mut sink).map_err(|e| match e {
+        RunError::Sink(source) => OutputError::Io {
+            path: results_path.clone(),
+            source,
+        },
+        other => OutputError::Run(other),
+    })?;
+    results.flush().map_err(io_at(&results_path))?;
+    timings.flush().map_err(io_at(&timings_path))?;
+    drop((results, timings));
+    manifest.rows = rows;
+    manifest.errors = errors;
+    manifest.complete = true;
+    manifest.write(dir).map_err(io_at(&manifest_path))?;
+    let mut files = vec![results_path.clone(), timings_path, manifest_path];
+    files.extend(write_plots(
+        &results_path,
+        &sweep.columns().axes,
+        sweep.scenario().name(),
+        &dir.join(PLOTS_DIR),
+    )?);
+    Ok(RunSummary {
+        shard,
+        rows,
+        errors,
+        threads,
+        wall_seconds: start.elapsed().as_secs_f64(),
+        files,
+    })
+}
+
+/// Flushes a CSV writer's buffer to its file and the file's buffer to the disk's cache.
+pub(crate) fn finish<W: Write>(w: csv::Writer<W>, path: &Path) -> Result<(), OutputError> {
+    let mut inner = w
+        .into_inner()
+        .map_err(|e| io_at(path)(std::io::Error::other(e.to_string())))?;
+    inner.flush().map_err(io_at(path))
+}

@@ -1,0 +1,167 @@
+//! Running a shard's cases on every core, the rows handed over in case order.
+//!
+//! Each worker of a rayon pool takes the next case from a shared counter (one atomic
+//! increment per case: no lock on the way), runs it and sends its row to the calling thread,
+//! which hands the rows over in case order, holding those that finished early in a reorder
+//! window. A worker waits before starting a case more than the window ahead of the last row
+//! handed over, so the rows held never exceed the window, however many cases the sweep has:
+//! memory stays flat. A slow case holds the others back by the window at most.
+
+use std::collections::BTreeMap;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::{Condvar, Mutex, PoisonError, mpsc};
+use std::time::{Duration, Instant};
+
+use super::Sweep;
+use super::row::Row;
+use super::shard::Shard;
+
+/// Cases a worker may run ahead of the first row not yet handed over, per thread. A case
+/// usually takes milliseconds and its row a few hundred bytes: the window holds a few
+/// seconds of work, while one slow case lets the other threads go on.
+pub const WINDOW_PER_THREAD: usize = 32;
+
+/// Why a run stopped.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum RunError {
+    /// The thread pool could not be built.
+    #[error("cannot start {threads} threads: {message}")]
+    Threads {
+        /// The number asked for.
+        threads: usize,
+        /// What rayon reported.
+        message: String,
+    },
+    /// The row's consumer failed (e.g. a full disk); the run stopped.
+    #[error(transparent)]
+    Sink(#[from] std::io::Error),
+}
+
+/// Where the run is: set by the calling thread, read by the workers.
+struct Gate {
+    /// Rows handed over so far (the shard's `k`-th case is the next).
+    handed: AtomicUsize,
+    /// Set when the consumer failed: the workers stop.
+    stop: AtomicBool,
+    lock: Mutex<()>,
+    moved: Condvar,
+}
+
+impl Gate {
+    /// Blocks while case `k` is `window` or more ahead of the rows handed over; false when
+    /// the run stopped.
+    fn wait_for(&self, k: usize, window: usize) -> bool {
+        let ahead = |g: &Gate| k >= g.handed.load(Ordering::Acquire) + window;
+        if ahead(self) {
+            let mut guard = self.lock.lock().unwrap_or_else(PoisonError::into_inner);
+            while ahead(self) && !self.stop.load(Ordering::Acquire) {
+                guard = self
+                    .moved
+                    .wait(guard)
+                    .unwrap_or_else(PoisonError::into_inner);
+            }
+        }
+        !self.stop.load(Ordering::Acquire)
+    }
+
+    /// Records progress (or the stop) and wakes the waiting workers.
+    fn advance(&self, handed: usize, stop: bool) {
+        {
+            let _guard = self.lock.lock().unwrap_or_else(PoisonError::into_inner);
+            self.handed.store(handed, Ordering::Release);
+            if stop {
+                self.stop.store(true, Ordering::Release);
+            }
+        }
+        self.moved.notify_all();
+    }
+}
+
+/// The threads to use: `threads`, or every core when `None`.
+pub(crate) fn thread_count(threads: Option<usize>) -> usize {
+    threads
+        .filter(|&n| n > 0)
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from))
+}
+
+/// Runs the cases of `shard` of `sweep` on `threads` threads (every core when `None`) and
+/// hands each row with its wall time to `sink`, in case order, on the calling thread. A
+/// failing case is a row with its error; the run stops only when `sink` fails.
+///
+/// # Errors
+/// [`RunError::Threads`] when the pool cannot start, [`RunError::Sink`] with the sink's
+/// error.
+pub fn run(
+    sweep: &Sweep,
+    shard: Shard,
+    threads: Option<usize>,
+    sink: &mut dyn FnMut(Row, Duration) -> std::io::Result<()>,
+) -> Result<(), RunError> {
+    let threads = thread_count(threads);
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .thread_name(|i| format!("sweep-{i}"))
+        .build()
+        .map_err(|e| RunError::Threads {
+            threads,
+            message: e.to_string(),
+        })?;
+    let total = shard.len(sweep.len());
+    let window = WINDOW_PER_THREAD * threads;
+    let next = AtomicUsize::new(0);
+    let gate = Gate {
+        handed: AtomicUsize::new(0),
+        stop: AtomicBool::new(false),
+        lock: Mutex::new(()),
+        moved: Condvar::new(),
+    };
+    let (tx, rx) = mpsc::sync_channel::<(usize, Row, Duration)>(window);
+    let mut failure = None;
+    pool.in_place_scope(|scope| {
+        for _ in 0..threads {
+            let tx = tx.clone();
+            let (next, gate) = (&next, &gate);
+            scope.spawn(move |_| {
+                loop {
+                    let k = next.fetch_add(1, Ordering::Relaxed);
+                    if k >= total || !gate.wait_for(k, window) {
+                        break;
+                    }
+                    let start = Instant::now();
+                    // `case_at(k)` is below the sweep's length: the row always comes.
+                    let Ok(row) = sweep.run_case(shard.case_at(k)) else {
+                        break;
+                    };
+                    if tx.send((k, row, start.elapsed())).is_err() {
+                        break;
+                    }
+                }
+            });
+        }
+        drop(tx);
+        // The rows that came before their turn, by their position in the shard.
+        let mut early: BTreeMap<usize, (Row, Duration)> = BTreeMap::new();
+        let mut handed = 0;
+        for (k, row, wall) in rx {
+            early.insert(k, (row, wall));
+            while let Some((row, wall)) = early.remove(&handed) {
+                if let Err(e) = sink(row, wall) {
+                    failure = Some(e);
+                    break;
+                }
+                handed += 1;
+            }
+            gate.advance(handed, failure.is_some());
+            if failure.is_some() {
+                // Leaving the loop drops the receiver: a worker's next send fails, and the
+                // stop flag ends those waiting for their turn.
+                break;
+            }
+        }
+    });
+    match failure {
+        Some(e) => Err(RunError::Sink(e)),
+        None => Ok(()),
+    }
+}

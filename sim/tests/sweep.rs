@@ -1,0 +1,484 @@
+//! Sweeps: the same results whole, in shards merged, on any number of threads; the physics
+//! of real sweeps; failing cases; the errors of sweep files and of merges.
+
+// Helpers outside #[test] functions unwrap too: a failure is a test failure.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use std::path::{Path, PathBuf};
+
+use sim::sweep::{
+    self, AxisValue, CaseError, MergeError, RESULTS_CSV, Row, Shard, Sweep, SweepError,
+};
+
+/// A fresh scratch directory for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("sim-sweep-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn parse(text: &str) -> Result<Sweep, SweepError> {
+    Sweep::parse("s.toml", text, Path::new("."))
+}
+
+/// Runs `shard` of `sweep` into `dir` on `threads` threads.
+fn write(sweep: &Sweep, shard: Shard, threads: usize, dir: &Path) {
+    sweep::write_sweep(sweep, shard, Some(threads), dir, &mut |_, _| {}).unwrap();
+}
+
+fn read(path: &Path) -> String {
+    std::fs::read_to_string(path).unwrap()
+}
+
+/// Every row of the sweep, run one by one.
+fn rows(sweep: &Sweep) -> Vec<Row> {
+    (0..sweep.len())
+        .map(|i| sweep.run_case(i).unwrap())
+        .collect()
+}
+
+/// The number in metric column `name` of `row`.
+fn metric(sweep: &Sweep, row: &Row, name: &str) -> f64 {
+    let j = sweep
+        .columns()
+        .metrics
+        .iter()
+        .position(|m| m == name)
+        .unwrap();
+    match row.metrics[j] {
+        sweep::Cell::Number(x) => x,
+        other => panic!("{name} of case {} is {other:?}: {:?}", row.case, row.error),
+    }
+}
+
+/// A short sweep of every axis shape: 2 × 3 × 2 = 12 cases of 2 s of `accel-speed`, one of
+/// which (ground friction −1) fails.
+const SHORT: &str = "\
+world = \"ToyotaPrius\"
+scenario = \"accel-speed\"
+[set]
+duration = 2
+[axes]
+\"ground.friction\" = [0.8, -1]
+\"vehicle.time0To100\" = { from = 8, to = 12, steps = 3 }
+\"vehicle.mass\" = { normal = [1400, 100], count = 2, seed = 11 }
+";
+
+#[test]
+fn whole_sharded_and_threaded_runs_write_the_same_results() {
+    let dir = scratch("shards");
+    let sweep = parse(SHORT).unwrap();
+    assert_eq!(sweep.len(), 12);
+    write(&sweep, Shard::WHOLE, 2, &dir.join("whole"));
+    write(&sweep, Shard::WHOLE, 1, &dir.join("one-thread"));
+    let shards: Vec<PathBuf> = (0..3)
+        .map(|i| {
+            let d = dir.join(format!("shard-{i}"));
+            write(&sweep, Shard::new(i, 3).unwrap(), 2, &d);
+            d
+        })
+        .collect();
+    // The shards are handed over in another order than their index: the merge orders them.
+    let given = [shards[2].clone(), shards[0].clone(), shards[1].clone()];
+    let summary = sweep::merge(&given, &dir.join("merged")).unwrap();
+    assert_eq!((summary.shards, summary.rows, summary.errors), (3, 12, 6));
+    let whole = read(&dir.join("whole").join(RESULTS_CSV));
+    assert_eq!(read(&dir.join("one-thread").join(RESULTS_CSV)), whole);
+    assert_eq!(read(&dir.join("merged").join(RESULTS_CSV)), whole);
+    // And row by row through the library, as the Python package does.
+    let lines: String =
+        sweep.columns().csv_header() + &rows(&sweep).iter().map(Row::csv_line).collect::<String>();
+    assert_eq!(lines, whole);
+    // Shard 1 holds cases 1, 4, 7, 10.
+    let shard1 = read(&shards[1].join(RESULTS_CSV));
+    let cases: Vec<&str> = shard1
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').next().unwrap())
+        .collect();
+    assert_eq!(cases, ["1", "4", "7", "10"]);
+    // The wall times are apart, one per case.
+    let timings = read(&dir.join("merged").join(sweep::TIMINGS_CSV));
+    assert_eq!(timings.lines().count(), 13);
+    assert!(timings.starts_with("case,wall_seconds\n0,"));
+    // Plots of each numeric axis (here all three), from the merged rows too.
+    for axis in ["ground.friction", "vehicle.time0To100", "vehicle.mass"] {
+        let svg = read(&dir.join("merged/plots").join(format!("{axis}.svg")));
+        assert!(
+            svg.contains("12 cases") && svg.contains("time_0_100_nominal_s"),
+            "{axis}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn an_invalid_value_fails_its_cases_only_naming_the_key() {
+    let sweep = parse(SHORT).unwrap();
+    // Cases 6 to 11 have friction −1, the first axis (the slowest).
+    for row in &rows(&sweep) {
+        let failed = row.values[0] == AxisValue::Integer(-1);
+        assert_eq!(row.error.is_some(), failed, "case {}", row.case);
+        if failed {
+            assert_eq!(
+                row.error.as_ref().unwrap().to_string(),
+                "invalid 'ground.friction': -1: must be finite and >= 0"
+            );
+            assert!(row.metrics.iter().all(|c| *c == sweep::Cell::Empty));
+            assert!(
+                row.csv_line()
+                    .ends_with(",invalid 'ground.friction': -1: must be finite and >= 0\n")
+            );
+        } else {
+            // Complete: within 2 s a car has neither reached 100 km/h (empty) nor failed;
+            // every other metric has its value.
+            let empty: Vec<&String> = sweep
+                .columns()
+                .metrics
+                .iter()
+                .zip(&row.metrics)
+                .filter(|(_, c)| **c == sweep::Cell::Empty)
+                .map(|(m, _)| m)
+                .collect();
+            assert_eq!(empty, ["time_0_100_s"], "case {}", row.case);
+            assert_eq!(metric(&sweep, row, "sim_seconds"), 2.0);
+            // The nominal 0-100 time is the axis's value.
+            let nominal = row.values[1].as_f64().unwrap();
+            assert_eq!(metric(&sweep, row, "time_0_100_nominal_s"), nominal);
+        }
+    }
+    // A negative mass is a value that a world file replaces by the default with a warning
+    // (as Webots does); in a sweep the case fails instead, naming the key.
+    let sweep = parse(
+        "world = \"BmwX5\"\nscenario = \"brake\"\n[set]\nduration = 0.5\n[axes]\n\
+         \"vehicle.mass\" = [2000, -100]\n",
+    )
+    .unwrap();
+    let all = rows(&sweep);
+    assert_eq!(all[0].error, None);
+    let Some(CaseError::Replaced { key, message }) = &all[1].error else {
+        panic!("{:?}", all[1].error)
+    };
+    assert_eq!(key, "vehicle.mass");
+    assert!(message.contains("'mass' value -100"), "{message}");
+    // The message has a comma: the CSV quotes it.
+    assert!(
+        all[1].csv_line().starts_with(
+            "1,-100,,,,,,,,,\"invalid 'vehicle.mass': a world file would replace the value: "
+        ),
+        "{}",
+        all[1].csv_line()
+    );
+}
+
+/// The product of friction [0.6, 0.8, 1.0] and brakeCoefficient [500, 1000, 3000] of a BmwX5
+/// braking from 100 km/h, as (friction, brakeCoefficient, stopping distance (m)).
+fn braking_sweep() -> Vec<(f64, f64, f64)> {
+    let sweep = parse(
+        "world = \"BmwX5\"\nscenario = \"brake\"\n[axes]\n\
+         \"ground.friction\" = [0.6, 0.8, 1.0]\n\"vehicle.brakeCoefficient\" = [500, 1000, 3000]\n",
+    )
+    .unwrap();
+    let dir = scratch("brake");
+    write(&sweep, Shard::WHOLE, 2, &dir);
+    let text = read(&dir.join(RESULTS_CSV));
+    std::fs::remove_dir_all(&dir).unwrap();
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    text.lines()
+        .skip(1)
+        .map(|l| {
+            let cells: Vec<&str> = l.split(',').collect();
+            let num = |name: &str| cells[col(name)].parse::<f64>().unwrap();
+            // Every case started braking from 100 km/h (within the cruise control's creep).
+            assert!((num("initial_speed_kmh") - 99.5).abs() < 0.5, "{l}");
+            (
+                num("ground.friction"),
+                num("vehicle.brakeCoefficient"),
+                num("stop_distance_m"),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn braking_distance_falls_as_friction_and_brake_torque_rise() {
+    let cases = braking_sweep();
+    let distance = |mu: f64, c: f64| {
+        cases
+            .iter()
+            .find(|&&(m, k, _)| m == mu && k == c)
+            .map(|&(.., d)| d)
+            .unwrap()
+    };
+    for mu in [0.6, 0.8, 1.0] {
+        // Brake-limited: 500 and 1000 N·m per wheel decelerate the 2.1 t car at 2.5 and
+        // 5 m/s² (its `stop_distance_expected_m`, v0²/2a), below the grip μ·g (5.9 to
+        // 9.8 m/s²), so the tyres roll and twice the torque doubles the brakes' deceleration:
+        // the distance falls, but not to half, since the rolling resistance and the wheels'
+        // damping decelerate the car by the same amount in both.
+        let (d500, d1000) = (distance(mu, 500.0), distance(mu, 1000.0));
+        assert!(
+            d1000 < d500 && d1000 > 0.5 * d500,
+            "μ {mu}: {d500} m, {d1000} m"
+        );
+        // 3000 N·m (15 m/s² of torque) locks the wheels at any of these frictions: the stop is
+        // grip-limited, shorter than at 500 N·m. (Not always shorter than at 1000 N·m: a
+        // locked tyre slides with less friction than its peak, and Webots' cars have no ABS;
+        // on μ 0.6 the locked car stops in 95 m, the rolling one in 70 m.)
+        assert!(distance(mu, 3000.0) < d500);
+    }
+    // Where the brakes limit, the friction does not matter: the three distances at 500 N·m
+    // agree within 1 % (the tyres' slip under 2.5 m/s² is a small part of the grip at every
+    // friction).
+    let d: Vec<f64> = [0.6, 0.8, 1.0].map(|mu| distance(mu, 500.0)).to_vec();
+    assert!((d[0] - d[2]).abs() < 0.01 * d[2], "{d:?}");
+    // Where the grip limits (wheels locked at 3000 N·m), the deceleration is the tyres'
+    // sliding friction, proportional to the ground's: the distance falls as it rises.
+    let locked: Vec<f64> = [0.6, 0.8, 1.0].map(|mu| distance(mu, 3000.0)).to_vec();
+    assert!(locked[0] > locked[1] && locked[1] > locked[2], "{locked:?}");
+}
+
+#[test]
+fn time_to_100_rises_with_mass() {
+    // Full throttle through the automatic gearbox: the same engine torque at the wheels
+    // accelerates a heavier car less (a = F/m, less the mass-proportional rolling
+    // resistance), so it takes longer to reach 100 km/h.
+    let sweep = parse(
+        "world = \"BmwX5\"\nscenario = \"accel-torque\"\n[axes]\n\"vehicle.mass\" = [1800, 2400, 3000]\n",
+    )
+    .unwrap();
+    // (While the driven wheels spin at the traction limit, μ·m·g, the acceleration does not
+    // depend on the mass; the time still rises, by less than the mass, since the phases where
+    // the engine limits scale with it.)
+    let t: Vec<f64> = rows(&sweep)
+        .iter()
+        .map(|r| metric(&sweep, r, "time_0_100_s"))
+        .collect();
+    assert!(t[0] < t[1] && t[1] < t[2], "{t:?}");
+}
+
+#[test]
+fn random_axes_are_the_same_on_any_shard_count() {
+    let text = "world = \"BmwX5\"\nscenario = \"brake\"\ncombine = \"zip\"\n[axes]\n\
+                \"vehicle.mass\" = { uniform = [1800, 2600], count = 50, seed = 42 }\n\
+                \"ground.friction\" = { normal = [0.8, 0.05], count = 50, seed = 42 }\n";
+    let sweep = parse(text).unwrap();
+    assert_eq!(sweep.len(), 50);
+    let whole: Vec<Vec<AxisValue>> = (0..50).map(|i| sweep.values(i).unwrap()).collect();
+    for n in [2, 3, 7, 50] {
+        // Each shard on its own (as a separate process would load the sweep), in its order.
+        let mut got: Vec<(usize, Vec<AxisValue>)> = (0..n)
+            .flat_map(|i| {
+                let own = parse(text).unwrap();
+                Shard::new(i, n)
+                    .unwrap()
+                    .cases(50)
+                    .map(move |c| (c, own.values(c).unwrap()))
+                    .collect::<Vec<_>>()
+            })
+            .collect();
+        got.sort_by_key(|(c, _)| *c);
+        let values: Vec<Vec<AxisValue>> = got.into_iter().map(|(_, v)| v).collect();
+        assert_eq!(values, whole, "{n} shards");
+    }
+    // Case 7 backwards equals case 7 forwards: no draw depends on another.
+    assert_eq!(sweep.values(7).unwrap(), whole[7]);
+    // Same seed, other axes: independent streams (the key is part of the draw).
+    let masses: Vec<f64> = whole.iter().map(|v| v[0].as_f64().unwrap()).collect();
+    assert!(masses.iter().all(|m| (1800.0..2600.0).contains(m)));
+    let frictions: Vec<f64> = whole.iter().map(|v| v[1].as_f64().unwrap()).collect();
+    let mean = frictions.iter().sum::<f64>() / 50.0;
+    // The mean of 50 draws of sd 0.05 is within 4 standard errors (0.028) of 0.8.
+    assert!((mean - 0.8).abs() < 0.03, "{mean}");
+    // Another seed, other values.
+    let other = parse(&text.replace("seed = 42 }\n\"ground", "seed = 43 }\n\"ground")).unwrap();
+    assert_ne!(other.values(0).unwrap()[0], whole[0][0]);
+    assert_eq!(other.values(0).unwrap()[1], whole[0][1]);
+}
+
+#[test]
+fn sweep_file_errors_name_file_line_and_key() {
+    let err = |text: &str| parse(text).err().map(|e| e.to_string());
+    // An axis over a key that worlds do not have: the world file's error, at the axis.
+    assert_eq!(
+        err("scenario = \"brake\"\n[axes]\n\"vehicle.brakeCoeficient\" = [900]\n").as_deref(),
+        Some("s.toml:3:1: unknown key 'vehicle.brakeCoeficient'; did you mean 'brakeCoefficient'?")
+    );
+    // A value of a type the key does not take, at the value.
+    assert_eq!(
+        err("scenario = \"brake\"\n[axes]\n\"ground.friction\" = [0.5, \"wet\"]\n").as_deref(),
+        Some("s.toml:3:27: 'ground.friction' takes a number, found a string")
+    );
+    assert_eq!(
+        err("[axes]\n\"vehicle.model\" = [\"BmwX5\", \"BMWX6\"]\n").as_deref(),
+        Some("s.toml:2:29: unknown vehicle model 'BMWX6'; did you mean 'BmwX5'?")
+    );
+    // A generated number for a key that takes a string.
+    assert_eq!(
+        err("[axes]\n\"vehicle.model\" = { from = 1, to = 2, steps = 2 }\n").as_deref(),
+        Some("s.toml:2:1: 'vehicle.model' takes a string, found an integer")
+    );
+    // [set] values are checked at their key.
+    assert_eq!(
+        err("[set]\n\"ground.friction\" = -2\n").as_deref(),
+        Some("s.toml:2:1: invalid 'ground.friction': -2: must be finite and >= 0")
+    );
+    assert_eq!(
+        err("[set]\nvehicle.wheelbase = -2\n").as_deref(),
+        Some(
+            "s.toml:2:9: invalid 'vehicle.wheelbase': a world file would replace the value: \
+             invalid 'wheelbase' value -2 (must be > 0), used 4 instead."
+        )
+    );
+    assert_eq!(
+        err("world = \"BmwX6\"\n").as_deref(),
+        Some(
+            "'BmwX6' is neither a world file nor a vehicle model; did you mean 'BmwX5'? \
+             (models: Car, BmwX5, CitroenCZero, ToyotaPrius, LincolnMKZ, RangeRoverSportSVR, \
+             TeslaModel3, MercedesBenzSprinter, GreenPowerEVStar, Bus, Truck, Tractor)"
+        )
+    );
+    assert_eq!(
+        err("scenario = \"square\"\n").as_deref(),
+        Some(
+            "s.toml:1:1: invalid 'scenario': scenario 'square' needs a world with one \
+             DifferentialWheels robot, but the world holds BmwX5"
+        )
+    );
+    assert_eq!(
+        err("combine = \"zip\"\n[axes]\n\"ground.friction\" = [1, 2]\n\"vehicle.mass\" = [1]\n")
+            .as_deref(),
+        Some(
+            "s.toml:1:1: invalid 'combine': zip needs axes of one length: 'ground.friction' \
+             has 2 values, 'vehicle.mass' has 1"
+        )
+    );
+    // A path that leads through a value that is no table.
+    assert_eq!(
+        err("[axes]\n\"vehicle.model.x\" = [1]\n").as_deref(),
+        Some("s.toml:2:1: cannot set 'vehicle.model.x': 'vehicle.model' is a string, not a table")
+    );
+    // Missing files: the sweep's, the base world's (relative to the sweep file).
+    let e = Sweep::load("/nonexistent/s.toml").unwrap_err().to_string();
+    assert!(
+        e.starts_with("/nonexistent/s.toml: cannot read the sweep file: "),
+        "{e}"
+    );
+    let dir = scratch("errors");
+    std::fs::write(dir.join("s.toml"), "world = \"w.toml\"\n").unwrap();
+    let e = Sweep::load(dir.join("s.toml")).unwrap_err();
+    let world = e.file_error().unwrap();
+    assert_eq!(world.file, dir.join("w.toml").display().to_string());
+    std::fs::write(
+        dir.join("w.toml"),
+        "[vehicle]\nmodel = \"ToyotaPrius\"\nmass = 1500\n",
+    )
+    .unwrap();
+    let s = Sweep::load(dir.join("s.toml")).unwrap();
+    assert_eq!(s.base().car().unwrap().params.body.mass, 1500.0);
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert_eq!(
+        parse(SHORT).unwrap().run_case(12).unwrap_err().to_string(),
+        "no case 12: the sweep has 12 cases, numbered from 0"
+    );
+}
+
+#[test]
+fn merges_refuse_missing_duplicated_and_foreign_shards() {
+    let dir = scratch("merge-errors");
+    let text = "world = \"BmwX5\"\nscenario = \"brake\"\n[set]\nduration = 0.2\n[axes]\n\
+                \"ground.friction\" = [0.5, 0.6, 0.7, 0.8, 0.9]\n";
+    let sweep = parse(text).unwrap();
+    let shard = |i: usize| {
+        let d = dir.join(format!("s{i}"));
+        write(&sweep, Shard::new(i, 2).unwrap(), 1, &d);
+        d
+    };
+    let (s0, s1) = (shard(0), shard(1));
+    let err = |dirs: &[PathBuf]| sweep::merge(dirs, &dir.join("out")).unwrap_err();
+    assert!(matches!(
+        err(std::slice::from_ref(&s0)),
+        MergeError::MissingShards { ref missing, count: 2 } if missing == &[Shard::new(1, 2).unwrap()]
+    ));
+    assert!(matches!(
+        err(&[s0.clone(), s0.clone()]),
+        MergeError::DuplicateShard { .. }
+    ));
+    // Another sweep's shard: another fingerprint.
+    let other = parse(&text.replace("0.9]", "0.95]")).unwrap();
+    let foreign = dir.join("foreign");
+    write(&other, Shard::new(1, 2).unwrap(), 1, &foreign);
+    let e = err(&[s0.clone(), foreign.clone()]).to_string();
+    assert!(
+        e.contains("is not a shard of the sweep of") && e.contains("fingerprint"),
+        "{e}"
+    );
+    // A case lost from a shard's file (a row deleted by hand): named with its shard.
+    let results = s1.join(RESULTS_CSV);
+    let full = read(&results);
+    let cut: String = full
+        .lines()
+        .filter(|l| !l.starts_with("3,"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    std::fs::write(&results, cut).unwrap();
+    let e = err(&[s0.clone(), s1.clone()]).to_string();
+    assert_eq!(
+        e,
+        format!(
+            "case 3 is missing: {}/results.csv ends before it",
+            s1.display()
+        )
+    );
+    // A duplicated case.
+    std::fs::write(&results, full.clone() + full.lines().last().unwrap() + "\n").unwrap();
+    let e = err(&[s0.clone(), s1.clone()]).to_string();
+    assert!(
+        e.contains("has a row after its shard's last case (case 3)"),
+        "{e}"
+    );
+    // A shard whose run stopped: its manifest says so.
+    std::fs::write(&results, &full).unwrap();
+    let manifest = s1.join(sweep::MANIFEST_JSON);
+    let m = read(&manifest);
+    std::fs::write(
+        &manifest,
+        m.replace("\"complete\": true", "\"complete\": false"),
+    )
+    .unwrap();
+    let e = err(&[s0.clone(), s1.clone()]).to_string();
+    assert_eq!(
+        e,
+        format!(
+            "shard 1/2 in {} did not finish: it has 2 of its 2 rows (run it again)",
+            s1.display()
+        )
+    );
+    std::fs::write(&manifest, m).unwrap();
+    assert!(matches!(
+        sweep::merge(&[s0.clone(), s1.clone()], &s0).unwrap_err(),
+        MergeError::OutputIsInput(_)
+    ));
+    sweep::merge(&[s0, s1], &dir.join("out")).unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn the_example_sweeps_load() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/sweeps");
+    let brake = Sweep::load(dir.join("brake.toml")).unwrap();
+    assert_eq!(brake.len(), 3 * 7 * 4);
+    assert_eq!(
+        brake.columns().axes,
+        [
+            "ground.friction",
+            "vehicle.brakeCoefficient",
+            "vehicle.mass"
+        ]
+    );
+    let bench = Sweep::load(dir.join("brake-10000.toml")).unwrap();
+    assert_eq!(bench.len(), 10_000);
+    assert_eq!(Shard::new(0, 10).unwrap().len(bench.len()), 1000);
+}
