@@ -1,0 +1,230 @@
+//! The `vehicle-sim sweep` and `sweep-merge` subcommands: outputs, shards and their merge,
+//! and the Slurm example run as a job array would run it.
+
+// Helpers outside #[test] functions unwrap too: a failure is a test failure.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn vehicle_sim(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_vehicle-sim"))
+        .args(args)
+        .output()
+        .expect("vehicle-sim runs")
+}
+
+/// A fresh scratch directory for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("vehicle-sim-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// `vehicle-sim sweep …` with extra environment variables.
+fn sweep_cmd(args: &[&str], env: &[(&str, &str)]) -> Output {
+    let mut c = Command::new(env!("CARGO_BIN_EXE_vehicle-sim"));
+    c.args(args);
+    for var in [
+        "SLURM_ARRAY_TASK_ID",
+        "SLURM_ARRAY_TASK_COUNT",
+        "SLURM_ARRAY_TASK_MIN",
+        "JOB_COMPLETION_INDEX",
+    ] {
+        c.env_remove(var);
+    }
+    c.envs(env.iter().copied())
+        .output()
+        .expect("vehicle-sim runs")
+}
+
+#[test]
+fn sweep_and_sweep_merge_subcommands() {
+    let dir = scratch("sweep");
+    let sweep = dir.join("s.toml");
+    std::fs::write(
+        &sweep,
+        "world = \"BmwX5\"\nscenario = \"brake\"\n[set]\nduration = 0.5\n[axes]\n\
+         \"ground.friction\" = [0.7, 0.8, 0.9, -1]\n",
+    )
+    .unwrap();
+    let s = sweep.to_str().unwrap();
+    let path = |name: &str| dir.join(name).to_str().unwrap().to_string();
+    let whole = path("whole");
+    let out = sweep_cmd(&["sweep", s, "--out", &whole, "--threads", "2"], &[]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    assert!(
+        stdout.contains("4 cases of brake on <default world>, 2 threads"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("1 failed (see their error column)"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("results.csv, timings.csv, sweep.json, plots/ground.friction.svg"),
+        "{stdout}"
+    );
+    // Not a terminal: no progress bar.
+    assert!(out.stderr.is_empty(), "{}", text(&out.stderr));
+    let results = std::fs::read_to_string(dir.join("whole/results.csv")).unwrap();
+    assert_eq!(results.lines().count(), 5);
+    assert!(results.ends_with(",invalid 'ground.friction': -1: must be finite and >= 0\n"));
+    // Two shards: one by its index, one from a Slurm array task's environment (tasks 1-2).
+    let a = path("a");
+    let out = sweep_cmd(&["sweep", s, "--out", &a, "--shard", "0/2", "-q"], &[]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(out.stdout.is_empty());
+    let b = path("b");
+    let slurm = [
+        ("SLURM_ARRAY_TASK_ID", "2"),
+        ("SLURM_ARRAY_TASK_COUNT", "2"),
+        ("SLURM_ARRAY_TASK_MIN", "1"),
+    ];
+    let out = sweep_cmd(&["sweep", s, "--out", &b, "--shard", "auto", "-q"], &slurm);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let merged = path("merged");
+    let out = sweep_cmd(&["sweep-merge", &b, &a, "--out", &merged], &[]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(text(&out.stdout).starts_with("vehicle-sim: merged 2 shards: 4 cases, 1 failed\n"));
+    assert_eq!(
+        std::fs::read_to_string(dir.join("merged/results.csv")).unwrap(),
+        results
+    );
+    // A Kubernetes pod: its index, the count from --shards.
+    let k = path("k");
+    let out = sweep_cmd(
+        &[
+            "sweep", s, "--out", &k, "--shard", "auto", "--shards", "2", "-q",
+        ],
+        &[("JOB_COMPLETION_INDEX", "1")],
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(
+        std::fs::read_to_string(dir.join("k/results.csv")).unwrap(),
+        std::fs::read_to_string(dir.join("b/results.csv")).unwrap()
+    );
+    // Usage errors exit 2, load and merge errors 1, each saying why.
+    let out = sweep_cmd(
+        &["sweep", s, "--shard", "auto"],
+        &[("JOB_COMPLETION_INDEX", "1")],
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        text(&out.stderr).contains("give --shards N (the Job's completions)"),
+        "{}",
+        text(&out.stderr)
+    );
+    let out = sweep_cmd(&["sweep", s, "--shard", "auto"], &[]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).contains("neither SLURM_ARRAY_TASK_ID"));
+    let out = sweep_cmd(&["sweep", s, "--shard", "1/2", "--shards", "3"], &[]);
+    assert_eq!(out.status.code(), Some(2));
+    let out = sweep_cmd(&["sweep", &path("missing.toml")], &[]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(text(&out.stderr).contains("cannot read the sweep file"));
+    let out = sweep_cmd(&["sweep-merge", &a, "--out", &path("m2")], &[]);
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(
+        text(&out.stderr),
+        "vehicle-sim: error: shard 1/2 is missing: merge the outputs of all 2 shards\n"
+    );
+    // The default run is untouched by the subcommands; `sweep --help` documents the outputs.
+    let out = vehicle_sim(&["sweep", "--help"]);
+    assert_eq!(out.status.code(), Some(0));
+    let help = text(&out.stdout);
+    for word in [
+        "--shard",
+        "--shards",
+        "--threads",
+        "results.csv",
+        "timings.csv",
+        "sweep-merge",
+    ] {
+        assert!(help.contains(word), "sweep --help lacks {word}:\n{help}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The repository's root.
+fn repo() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap()
+        .to_path_buf()
+}
+
+#[test]
+fn the_slurm_example_runs_as_a_job_array_would() {
+    // examples/sweeps/slurm.sh as Slurm runs it for --array=0-7 (with `vehicle-sim` on the
+    // PATH and the variables Slurm sets), then slurm-merge.sh; a short sweep of 5 cases, so
+    // that 3 of the 8 shards have no case at all.
+    let dir = scratch("slurm");
+    let sweep = dir.join("s.toml");
+    std::fs::write(
+        &sweep,
+        "world = \"ToyotaPrius\"\nscenario = \"accel-speed\"\n[set]\nduration = 0.3\n[axes]\n\
+         \"vehicle.time0To100\" = { from = 8, to = 12, steps = 5 }\n",
+    )
+    .unwrap();
+    let bin = Path::new(env!("CARGO_BIN_EXE_vehicle-sim"))
+        .parent()
+        .unwrap();
+    let path = format!(
+        "{}:{}",
+        bin.display(),
+        std::env::var("PATH").unwrap_or_default()
+    );
+    let out = dir.join("out");
+    let run = |script: &str, task: Option<usize>| {
+        let mut c = Command::new("bash");
+        c.arg(repo().join("examples/sweeps").join(script))
+            .current_dir(&dir)
+            .env("PATH", &path)
+            .env("SWEEP", &sweep)
+            .env("OUT", &out)
+            .env("SLURM_CPUS_PER_TASK", "1")
+            .env_remove("JOB_COMPLETION_INDEX");
+        if let Some(t) = task {
+            c.env("SLURM_ARRAY_TASK_ID", t.to_string())
+                .env("SLURM_ARRAY_TASK_MIN", "0")
+                .env("SLURM_ARRAY_TASK_COUNT", "8");
+        }
+        let o = c.output().unwrap();
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{script} {task:?}: {}",
+            text(&o.stderr)
+        );
+        o
+    };
+    for task in 0..8 {
+        run("slurm.sh", Some(task));
+    }
+    let merged = run("slurm-merge.sh", None);
+    assert!(text(&merged.stdout).contains("merged 8 shards: 5 cases, 0 failed"));
+    let whole = dir.join("whole");
+    let o = vehicle_sim(&[
+        "sweep",
+        sweep.to_str().unwrap(),
+        "--out",
+        whole.to_str().unwrap(),
+        "-q",
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(
+        std::fs::read_to_string(out.join("merged/results.csv")).unwrap(),
+        std::fs::read_to_string(whole.join("results.csv")).unwrap()
+    );
+    // An empty shard: the header alone.
+    let empty = std::fs::read_to_string(out.join("shard-7/results.csv")).unwrap();
+    assert_eq!(empty.lines().count(), 1);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
