@@ -544,7 +544,6 @@ fn wheel_contact(
 ) -> Option<(Contact, GroundContact)> {
     let g = ground_contact(world, parts, w, frame.up)?;
     let (centre, axis) = wheel_frame(world, parts, w)?;
-    let support = Support::Given { normal: g.normal };
-    let contact = Contact::on_ground(support, g.normal, axis, centre, radius, frame.com)?;
+    let contact = Contact::on_ground(Support::Given, g.normal, axis, centre, radius, frame.com)?;
     Some((contact, g))
 }
