@@ -168,13 +168,12 @@ impl Vehicle {
         self.id
     }
 
-    /// The rapier bodies of this car: the chassis, then (on joints) the knuckles and wheels.
+    /// The rapier bodies of this car: the chassis, then (on joints) the wheels.
     pub(crate) fn bodies(&self) -> Vec<RigidBodyHandle> {
         match &self.parts {
             Parts::Cast(p) => vec![p.chassis],
             Parts::Joints(p) => [p.chassis]
                 .into_iter()
-                .chain(p.knuckles)
                 .chain(p.wheels.iter().copied())
                 .collect(),
         }
@@ -259,7 +258,6 @@ impl Vehicle {
                 let r = joints::read(world, p).ok_or(fail(BodyPart::Chassis))?;
                 s.steering = WheelAngles::new(r.steering[0], r.steering[1]);
                 s.suspension = r.suspension;
-                s.wheel_speeds = r.spins;
                 let pose = joints::car_pose(chassis, p);
                 (chassis, pose, pose.transform_point(p.com))
             }

@@ -28,7 +28,7 @@ fn flag(r: &RunReport, s: Scenario, key: &str) -> bool {
 }
 
 known_joints_gap! {
-    "joints: in `brake` the rear wheels lock on μ 1 and the car yaws away (1.71 rad; see joints_world.rs), so the stop takes 4.36 s for 49.2 m (v0·t/2 = 60.3 m)",
+    "joints: in `brake` the rear wheels lock on μ 1 and the car yaws away (0.14 rad; see joints_world.rs), so the stop takes 3.99 s for 47.0 m (v0·t/2 = 55.2 m)",
     fn test_track_on_the_default_car() {
         test_track(&world_file::default_world());
     }

@@ -16,6 +16,9 @@ pub(super) struct Axle {
     k_normal: [[f32; 2]; 2],
     /// `n·up` per wheel: the share of its normal impulse that its spring carries.
     axis_cosine: [f32; 2],
+    /// `[forward·up, lateral·up]` per wheel: the shares of its tyre impulses that its spring
+    /// carries when the chassis leans on the ground.
+    tyre_along_axis: [[f32; 2]; 2],
     /// `dt·k·x` (N·s) per wheel: the spring's impulse at the current compression.
     spring_impulse: [f32; 2],
     /// `dt·(k·dt + c)` (kg) per wheel: the implicit spring-damper's impulse per m/s of
@@ -33,6 +36,7 @@ impl Axle {
         let mut axle = Axle {
             k_normal: [[0.0; 2]; 2],
             axis_cosine: [1.0; 2],
+            tyre_along_axis: [[0.0; 2]; 2],
             spring_impulse: [0.0; 2],
             softness: [0.0; 2],
             k_tyre: [[0.0; 4]; 4],
@@ -41,6 +45,7 @@ impl Axle {
             let Some(ci) = ci else { continue };
             if let Some(si) = ci.spring() {
                 axle.axis_cosine[i] = ci.axis_cosine(si);
+                axle.tyre_along_axis[i] = [ci.forward.dot(si.up), ci.lateral.dot(si.up)];
                 axle.spring_impulse[i] = dt * si.stiffness * si.compression;
                 axle.softness[i] = dt * (si.stiffness * dt + si.damping);
             }
@@ -83,9 +88,10 @@ pub(super) fn brake_row(w: &mut WheelRow) {
     w.omega += (new - old) * inv_inertia;
 }
 
-/// The implicit spring-dampers of an axle: `N·(n·up) = dt·k·x + dt·(k·dt + c)·ẋ` for each
-/// wheel's normal impulse `N ≥ 0` (along the ground's normal at the contact point), with `ẋ`
-/// the compression rate along the suspension axis after both impulses.
+/// The implicit spring-dampers of an axle: `N·(n·up) + P_t·up = dt·k·x + dt·(k·dt + c)·ẋ`
+/// for each wheel's normal impulse `N ≥ 0` (along the ground's normal at the contact point),
+/// with `P_t` its tyre impulse (the sweep's latest) and `ẋ` the compression rate along the
+/// suspension axis after both normal impulses.
 #[inline]
 pub(super) fn suspension_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle) {
     let springs = [0, 1].map(|i| {
@@ -102,7 +108,12 @@ pub(super) fn suspension_block(body: &mut Body, pair: &mut [WheelRow], axle: &Ax
         for (j, (out, k)) in m[i].iter_mut().zip(axle.k_normal[i]).enumerate() {
             *out = if i == j { cosine } else { 0.0 } + soft * k;
         }
-        rhs[i] = axle.spring_impulse[i] + soft * rate - cosine * pair[i].impulses.normal;
+        let tyre = pair[i].impulses;
+        let [along_forward, along_lateral] = axle.tyre_along_axis[i];
+        rhs[i] = axle.spring_impulse[i] + soft * rate
+            - cosine * tyre.normal
+            - along_forward * tyre.forward
+            - along_lateral * tyre.lateral;
     }
     let Some(delta) = solve2(m, rhs) else { return };
     for (i, c) in springs.iter().enumerate() {

@@ -65,10 +65,11 @@ pub(crate) enum Support {
 /// The spring pushes along the suspension axis; what reaches the chassis is the ground's
 /// normal force at the contact point, carried through the wheel (taken as massless) by the
 /// spring and, across the axis, by the rigid slider: the normal impulse `N` meets the
-/// spring's `N·(n·up) = P_spring`. (A force along the axis at the hard point instead would
-/// push a pitched or rolled chassis along the ground with `N·sin(tilt)`, a force no friction
-/// gives: 180 N forward on a nose-down BmwX5.) The small component of the tyre force along a
-/// tilted axis is left out of the spring's balance.
+/// spring's `N·(n·up) + P_t·up = P_spring`, `P_t` the tyre's impulse: on a chassis leaning
+/// in a turn the tyres' lateral forces push along the tilted axes, as on the car on joints.
+/// (A force along the axis at the hard point instead would push a pitched or rolled chassis
+/// along the ground with `N·sin(tilt)`, a force no friction gives: 180 N forward on a
+/// nose-down BmwX5.)
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Spring {
     /// Hard point (the wheel centre at the unloaded spring length) − centre of mass (m).
