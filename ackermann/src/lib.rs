@@ -26,11 +26,11 @@
 //! # Robustness
 //!
 //! `no_std`, no allocation, generic over [`Real`] (`f32` for firmware, `f64` elsewhere; all
-//! transcendental functions come from `libm`, so host and target agree bit for bit). No
-//! function panics, and none returns NaN or ∞ for any input: bad dimensions are rejected by
-//! [`Geometry::new`], a NaN steering angle means straight ahead, angles beyond ±π/2 mean the
-//! pivot at ±π/2 ([`effective_steering_angle`]), and Webots' divisions by zero are replaced
-//! by documented limits. Where this crate deliberately differs from Webots is listed in the
+//! transcendental functions come from `libm` or are polynomials of plain arithmetic, so host and
+//! target agree bit for bit). No function panics, and none returns NaN or ∞ for any input: bad
+//! dimensions are rejected by [`Geometry::new`], a NaN steering angle means straight ahead, angles
+//! beyond ±π/2 mean the pivot at ±π/2 ([`effective_steering_angle`]), and Webots' divisions by
+//! zero are replaced by documented limits. Where this crate deliberately differs from Webots is listed in the
 //! workspace's `COMPATIBILITY.md`.
 //!
 //! # Example

@@ -2,7 +2,11 @@
 //!
 //! Firmware runs in `f32` (the Cortex-M4F FPU is single precision); the C API and Webots parity
 //! work use `f64`. All transcendental functions go through [`libm`], never the platform's maths
-//! library, so the host and the target compute bit-identical results for the same inputs.
+//! library, so the host and the target compute bit-identical results for the same inputs; the
+//! two polynomial kernels for hot paths ([`Real::atan_unit`], [`Real::sin_quadrant`]) are pure
+//! arithmetic in a fixed order, bit-identical too.
+
+mod poly;
 
 use core::fmt::{Debug, Display};
 use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Rem, Sub, SubAssign};
@@ -86,6 +90,13 @@ pub trait Real:
     fn powi(self, n: i32) -> Self;
     /// `e^self`.
     fn exp(self) -> Self;
+    /// `atan(self)` (rad) for `self` in [0, 1], by a polynomial without libm's argument
+    /// reduction: within 1 ulp of [`Real::atan`] on [0, 1] (the tests of `real/poly.rs`), and
+    /// bit-identical on every target. Meaningless outside [0, 1].
+    fn atan_unit(self) -> Self;
+    /// `sin(self)` for `self` in [0, π/2], by a polynomial: within 2 ulp of [`Real::sin`] there,
+    /// bit-identical on every target. Meaningless outside [0, π/2].
+    fn sin_quadrant(self) -> Self;
 
     /// True for NaN.
     fn is_nan(self) -> bool;
@@ -148,7 +159,7 @@ macro_rules! impl_real {
     ($t:ty, $m:ident, sin = $sin:ident, cos = $cos:ident, tan = $tan:ident, atan = $atan:ident,
      atan2 = $atan2:ident, asin = $asin:ident, sqrt = $sqrt:ident, hypot = $hypot:ident,
      floor = $floor:ident, round = $round:ident, trunc = $trunc:ident, pow = $pow:ident,
-     exp = $exp:ident) => {
+     exp = $exp:ident, atan_unit = $atan_unit:ident, sin_quadrant = $sin_quadrant:ident) => {
         impl Real for $t {
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
@@ -226,6 +237,14 @@ macro_rules! impl_real {
                 libm::$exp(self)
             }
             #[inline]
+            fn atan_unit(self) -> Self {
+                poly::$atan_unit(self)
+            }
+            #[inline]
+            fn sin_quadrant(self) -> Self {
+                poly::$sin_quadrant(self)
+            }
+            #[inline]
             fn is_nan(self) -> bool {
                 <$t>::is_nan(self)
             }
@@ -252,7 +271,9 @@ impl_real!(
     round = roundf,
     trunc = truncf,
     pow = powf,
-    exp = expf
+    exp = expf,
+    atan_unit = atan_unit_f32,
+    sin_quadrant = sin_quadrant_f32
 );
 impl_real!(
     f64,
@@ -269,7 +290,9 @@ impl_real!(
     round = round,
     trunc = trunc,
     pow = pow,
-    exp = exp
+    exp = exp,
+    atan_unit = atan_unit_f64,
+    sin_quadrant = sin_quadrant_f64
 );
 
 #[cfg(test)]
