@@ -14,12 +14,12 @@
 //!   steering angle.
 //!
 //! Webots builds the same car from ODE joints (`Hinge2Joint` at the front, `HingeJoint` at the
-//! rear) and cylinder contacts. A rapier multibody of chassis, knuckles and cylinders was this
-//! crate's first model: exact, but about ten times the cost, and rapier solves a multibody contact's
-//! friction one world axis at a time, which made wheels away from the world axes chatter. The
-//! wheels here are the same joints written as constraints of a small solver of our own
-//! (`contact`), exact at any heading and that much cheaper; what changes is listed in
-//! `COMPATIBILITY.md` (no wheel hop, one contact per wheel, found along the suspension axis).
+//! rear) and cylinder contacts. The wheels here are those joints written as constraints of a
+//! small solver of our own (`contact`), exact at any heading and about a sixth of the cost of
+//! the same car in rapier; what changes is listed in `COMPATIBILITY.md` (no wheel hop, one
+//! contact per wheel, found along the suspension axis). That car in rapier is the other
+//! mounting (`joints`): a multibody of the chassis and four wheel bodies on suspension and
+//! steering joints, with the same solve for the tyres, brakes and spins.
 //!
 //! # Actuators and the step
 //!
