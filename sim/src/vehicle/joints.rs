@@ -15,10 +15,11 @@
 //!   `thickness` whose tread is rounded across its whole width (axis: rapier's local y). A
 //!   sharp-edged cylinder stands on its edge as soon as the body rolls and carries roll moment
 //!   there (a BmwX5 in a steady turn loaded its inner wheels more than its outer ones); the
-//!   rounded tread touches flat ground at one point of its centre plane however the wheel
-//!   leans, as the tyre solve assumes. They collide with the ground, ramps, steps, boxes and
-//!   other cars (not with their own car: the multibody's self-contacts are off), and their
-//!   rapier friction is 0: the tyre forces are this crate's.
+//!   rounded tread touches flat ground near its centre plane however the wheel leans, as the
+//!   tyre solve assumes, and on the road it keeps one contact point (`tread`). They collide
+//!   with the ground, ramps, steps, boxes and other cars (not with their own car: the
+//!   multibody's self-contacts are off), and their rapier friction is 0: the tyre forces are
+//!   this crate's.
 //!
 //! All joints form one rapier **multibody** (reduced coordinates): exact joints at a 2-tonne
 //! chassis on 30 kg wheels, where impulse joints leave a steering offset and a creep at rest.
@@ -60,6 +61,7 @@ use rapier3d::prelude::{
 use super::cast::{body_inertia, mass_properties};
 use super::contact::{self, Body, Contact, Support, WheelRow};
 use super::spec::{SpringDamper, VehicleSpec};
+use super::tread::WHEEL_HOOKS;
 use super::wheels::Footing;
 use super::{Frame, Vehicle};
 use crate::geom::{self, G_CAR_BODY, G_CAR_WHEEL};
@@ -209,7 +211,8 @@ pub(crate) fn build(world: &mut PhysicsWorld, spec: &VehicleSpec, origin: Pose) 
             ))
             .friction(0.0)
             .friction_combine_rule(multiply)
-            .collision_groups(geom::groups(G_CAR_WHEEL)),
+            .collision_groups(geom::groups(G_CAR_WHEEL))
+            .active_hooks(WHEEL_HOOKS),
             Some(wheel),
         );
         // Every wheel slides on its suspension (LinZ); a front wheel also steers (AngZ). The

@@ -59,7 +59,10 @@ mod contact;
 mod joints;
 mod spec;
 mod state;
+mod tread;
 mod wheels;
+
+pub(crate) use tread::WheelRoadHooks;
 
 use ackermann::{PerWheel, Wheel, WheelAngles};
 use proto_geom::nalgebra::Point3;

@@ -166,7 +166,7 @@ straight_tests! {
 }
 
 known_joints_gap! {
-    "joints: braking on μ 0.5 with the rear wheels locked, the RangeRover yaws -0.061 rad (limit 0.01): a rear-locked car is yaw-unstable, and rapier's contacts are not mirror-exact as the cast car's solve is",
+    "joints: braking on μ 0.5 with the rear wheels locked, the RangeRover yaws 0.065 rad (limit 0.01): a rear-locked car is yaw-unstable, and rapier's contacts are not mirror-exact as the cast car's solve is",
     fn range_rover_drives_straight() {
         check(Model::RangeRoverSportSVR);
     }
