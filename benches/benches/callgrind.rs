@@ -25,6 +25,7 @@ use benches::fixtures;
 use benches::peer::{PeerParams, RayCastCar};
 use benches::scenes::{CarScene, RobotScene};
 use powertrain::{Engine, EngineType, LimitedSlip, split_torque};
+use sim::{Mounting, TyreChoice};
 use vehicle_model::{Real, WheelDrive};
 
 /// Steps run natively in smoke mode.
@@ -96,6 +97,12 @@ const CASES: &[Case] = &[
         function: "cg_car_step",
         steps: 100,
         run: run_car::<{ TORQUE }>,
+    },
+    Case {
+        name: "sim_car_speed_joints_1",
+        function: "cg_car_step",
+        steps: 100,
+        run: run_joints_car,
     },
     Case {
         name: "sim_differential_wheels_physics",
@@ -234,6 +241,18 @@ fn run_car<const TORQUE_MODE: bool>(steps: u64) {
         LoopMode::Speed
     };
     let mut scene = CarScene::new(1, mode).unwrap();
+    for _ in 0..SETTLE_STEPS {
+        scene.step().unwrap();
+    }
+    for _ in 0..steps {
+        cg_car_step(&mut scene);
+    }
+}
+
+/// The speed-mode car of `run_car` with its wheels on rapier joints.
+fn run_joints_car(steps: u64) {
+    let mut scene =
+        CarScene::mounted(1, LoopMode::Speed, &TyreChoice::default(), Mounting::Joints).unwrap();
     for _ in 0..SETTLE_STEPS {
         scene.step().unwrap();
     }

@@ -99,8 +99,6 @@ pub enum BodyPart {
     Chassis,
     /// A car wheel.
     Wheel(Wheel),
-    /// The steering knuckle of a front wheel of a car on joints.
-    Knuckle(Wheel),
     /// The body of a DifferentialWheels robot.
     RobotBody,
     /// The left wheel of a DifferentialWheels robot.
@@ -124,7 +122,6 @@ impl fmt::Display for BodyPart {
         match self {
             BodyPart::Chassis => f.write_str("chassis"),
             BodyPart::Wheel(w) => write!(f, "{} wheel", wheel(w)),
-            BodyPart::Knuckle(w) => write!(f, "{} steering knuckle", wheel(w)),
             BodyPart::RobotBody => f.write_str("body"),
             BodyPart::LeftWheel => f.write_str("left wheel"),
             BodyPart::RightWheel => f.write_str("right wheel"),

@@ -15,7 +15,7 @@ use crate::diff_wheels::{
 };
 use crate::error::{BodyOwner, BodyPart, SimError};
 use crate::geom::{self, G_STATIC};
-use crate::vehicle::{Vehicle, VehicleId, VehiclePlacement, VehicleSpec};
+use crate::vehicle::{Vehicle, VehicleId, VehiclePlacement, VehicleSpec, WheelRoadHooks};
 
 /// A physics world with a flat ground at z = 0, static obstacles, cars and DifferentialWheels
 /// robots, advanced by [`World::step`] in fixed steps of `basicTimeStep`.
@@ -347,7 +347,7 @@ impl World {
                     v.pre_step(&mut self.physics, dt);
                 }
             }
-            self.physics.step();
+            self.physics.step_with_events(&WheelRoadHooks, &());
         }
         self.last_substeps = substeps;
         self.time_ms += u64::from(self.config.basic_time_step_ms);

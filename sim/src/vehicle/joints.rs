@@ -1,25 +1,41 @@
-//! The car on rapier joints (`mounting = "joints"`): the Webots `Car` PROTO's bodies and joints
-//! as one rapier multibody, with the tyre forces of the same solve as the cast car.
+//! The car on rapier joints (`mounting = "joints"`): the Webots `Car` PROTO's bodies and
+//! joints as one rapier multibody, with the tyre forces, brakes and wheel spins of the same
+//! solve as the cast car.
 //!
 //! # Bodies and joints
 //!
-//! * **chassis**: the model's body (mass, centre of mass, inertia tensor) less the two
-//!   knuckles, and the collision box; its rapier frame sits at its own centre of mass, the root
-//!   of the multibody (a free root far from its centre of mass, like the Truck's rear axle 4.5 m
-//!   behind it, makes rapier's reduced-coordinate solve drift);
-//! * **front wheels** (Webots `Hinge2Joint`): chassis → *knuckle* on a joint whose free axes are
-//!   the suspension (LinZ, the chassis' vertical) and the steering (AngZ), then knuckle → wheel
-//!   on a spin hinge (AngY). A rapier joint cannot free two angular axes one after the other,
-//!   hence the knuckle: a small body (a quarter of the wheel's mass, taken from the chassis so
-//!   the car keeps its mass and centre of mass);
-//! * **rear wheels** (Webots `HingeJoint`): chassis → wheel, suspension (LinZ) and spin (AngY);
-//! * **wheels**: solid cylinders of `tireRadius` × `thickness` with the wheel's mass, whose axis
-//!   is rapier's local y, the spin axis. They collide with the ground, ramps, steps, boxes and
-//!   other cars (not with their own car: the multibody's self-contacts are off), and their
-//!   rapier friction is 0: the tyre forces are this crate's.
+//! * **chassis**: the model's body (mass, centre of mass, inertia tensor) and the collision
+//!   box; its rapier frame sits at its centre of mass, the root of the multibody (a free root
+//!   far from its centre of mass, like the Truck's rear axle 4.5 m behind it, makes rapier's
+//!   reduced-coordinate solve drift);
+//! * **front wheels** (Webots `Hinge2Joint`): chassis → wheel on a joint whose free axes are
+//!   the suspension (LinZ, the chassis' vertical) and the steering (AngZ);
+//! * **rear wheels** (Webots `HingeJoint`): chassis → wheel on the suspension (LinZ);
+//! * **wheels**: the wheel's mass and inertia, colliding as a cylinder of `tireRadius` ×
+//!   `thickness` whose tread is rounded across its whole width (axis: rapier's local y). A
+//!   sharp-edged cylinder stands on its edge as soon as the body rolls and carries roll moment
+//!   there (a BmwX5 in a steady turn loaded its inner wheels more than its outer ones); the
+//!   rounded tread touches flat ground near its centre plane however the wheel leans, as the
+//!   tyre solve assumes, and on the road it keeps one contact point (`tread`). They collide
+//!   with the ground, ramps, steps, boxes and other cars (not with their own car: the
+//!   multibody's self-contacts are off), and their rapier friction is 0: the tyre forces are
+//!   this crate's.
 //!
 //! All joints form one rapier **multibody** (reduced coordinates): exact joints at a 2-tonne
-//! chassis on 8 kg knuckles, where impulse joints leave a steering offset and a creep at rest.
+//! chassis on 30 kg wheels, where impulse joints leave a steering offset and a creep at rest.
+//!
+//! # The wheels' spin is this crate's
+//!
+//! The wheel bodies do not spin in rapier: the spin is a coordinate of the tyre solve, as on
+//! the cast car (its rate, the wheel angle it integrates to, its inertia in the solve). rapier's
+//! multibody treats the velocity-product (Coriolis and gyroscopic) terms semi-implicitly, which
+//! at a wheel turning half a radian per 10 ms step does not conserve momentum: with spinning
+//! wheel bodies, a BmwX5 in a steady 1 m/s² turn at 20 m/s got 30 N of lateral force and a
+//! 57 N·m yaw moment from nowhere (both growing with speed and step), and understeered 25 %
+//! more than the single-track model. The wheel's spin inertia enters the solve, and the
+//! reaction of its change of spin (`I·Δω`) goes to rapier as a torque on the wheel about its
+//! axle, which the joint passes to the chassis. The gyroscopic moment of the spinning wheels
+//! is left out, as on the cast car (under 2 % of the roll moment of a turn).
 //!
 //! # Who solves what
 //!
@@ -33,12 +49,9 @@
 //! the load (its normal impulse) and the ground's friction; the solve runs on the whole car as
 //! one rigid body (the joints hold the wheels to the chassis in the ground plane) with the
 //! loads given, and its results go to rapier as the tyre force at each contact point on the
-//! wheel (its reaction on the ground, if the ground is a dynamic body) and as each spin
-//! joint's rigid velocity motor at the solved spin: the motor's torque, which rapier applies
-//! between wheel and carrier, is the drive, brake and damping torque the solve found.
+//! wheel (its reaction on the ground, if the ground is a dynamic body) and the spin reaction.
 
 use ackermann::{PerWheel, Wheel};
-use proto_geom::nalgebra::Point3;
 use rapier3d::prelude::{
     CoefficientCombineRule, ColliderBuilder, ColliderHandle, GenericJoint, GenericJointBuilder,
     JointAxesMask, JointAxis, MassProperties, Mat3, Multibody, MultibodyJointHandle, PhysicsWorld,
@@ -48,14 +61,22 @@ use rapier3d::prelude::{
 use super::cast::{body_inertia, mass_properties};
 use super::contact::{self, Body, Contact, Support, WheelRow};
 use super::spec::{SpringDamper, VehicleSpec};
+use super::tread::WHEEL_HOOKS;
 use super::wheels::Footing;
-use super::{Frame, MIN_GROUND_COSINE, Vehicle};
+use super::{Frame, Vehicle};
 use crate::geom::{self, G_CAR_BODY, G_CAR_WHEEL};
-use crate::motor::{self, WHEEL_MOTOR_MAX_TORQUE};
+use crate::motor;
 
-/// A knuckle's mass as a fraction of its wheel's (dimensionless): light enough not to change
-/// the car, heavy enough for the multibody's mass matrix to stay well conditioned.
-const KNUCKLE_MASS_FRACTION: f64 = 0.25;
+/// Half height (m) of the flat core of a wheel's rounded tread: rapier's round cylinder needs
+/// one; the rest of the half width is the rounded border.
+const ROUND_TREAD_CORE: f64 = 1e-3;
+
+/// Smallest cosine between a contact's normal and the chassis' up axis for the contact to be
+/// a wheel's ground, the surface its tyre grips on (45°): the road or a ramp, or the edge of a
+/// step up to `1 − cos 45°` = 29 % of the tyre's radius high (a BmwX5 climbs a 10 cm step on
+/// its tyres' grip). A higher edge (a box's, a kerb's) meets the tyre's shoulder: it pushes
+/// the wheel and takes no tyre force, and the ground under the wheel keeps the load and grip.
+const TREAD_GROUND_COSINE: f32 = core::f32::consts::FRAC_1_SQRT_2;
 
 /// Index of LinZ in rapier's 6-DoF spatial layout (lin x, y, z, ang x, y, z).
 const LIN_Z: usize = 2;
@@ -68,15 +89,11 @@ pub(crate) struct Parts {
     pub chassis: RigidBodyHandle,
     /// The chassis body's frame in the car frame: its own centre of mass (m).
     pub chassis_offset: Vector,
-    /// Steering knuckles of the front wheels, `[FR, FL]`.
-    pub knuckles: [RigidBodyHandle; 2],
     pub wheels: PerWheel<RigidBodyHandle>,
     pub colliders: PerWheel<ColliderHandle>,
-    /// chassis → knuckle joints `[FR, FL]`: suspension (LinZ, DoF 0), steering (AngZ, DoF 1).
-    pub steer_joints: [MultibodyJointHandle; 2],
-    /// Spin joints: knuckle → wheel at the front (AngY, DoF 0); chassis → wheel at the rear
-    /// (suspension LinZ, DoF 0, and spin AngY, DoF 1).
-    pub spin_joints: PerWheel<MultibodyJointHandle>,
+    /// chassis → wheel joints: the suspension (LinZ, DoF 0) and, at the front, the steering
+    /// (AngZ, DoF 1).
+    pub joints: PerWheel<MultibodyJointHandle>,
     /// The whole car's centre of mass in the car frame (m).
     pub com: Vector,
     /// 1/total mass (1/kg).
@@ -87,66 +104,27 @@ pub(crate) struct Parts {
 }
 
 impl Parts {
-    /// The local index of the spin DoF of wheel `w` in its joint.
-    fn spin_dof(w: Wheel) -> usize {
-        if w.is_front() { 0 } else { 1 }
-    }
-
-    /// The joint that carries wheel `w`'s suspension and its DoF.
-    fn suspension_joint(&self, w: Wheel) -> (MultibodyJointHandle, usize) {
-        match front_index(w) {
-            Some(i) => (self.steer_joints[i], 0),
-            None => (self.spin_joints[w], 0),
-        }
+    /// The steering joints, `[FR, FL]`.
+    fn steer_joints(&self) -> [MultibodyJointHandle; 2] {
+        [
+            self.joints[Wheel::FrontRight],
+            self.joints[Wheel::FrontLeft],
+        ]
     }
 
     /// Every body of the car with the part it is, chassis first.
     pub fn bodies(&self) -> impl Iterator<Item = (RigidBodyHandle, crate::error::BodyPart)> + '_ {
         use crate::error::BodyPart;
-        [
-            (self.chassis, BodyPart::Chassis),
-            (self.knuckles[0], BodyPart::Knuckle(Wheel::FrontRight)),
-            (self.knuckles[1], BodyPart::Knuckle(Wheel::FrontLeft)),
-        ]
-        .into_iter()
-        .chain(Wheel::ALL.map(|w| (self.wheels[w], BodyPart::Wheel(w))))
+        [(self.chassis, BodyPart::Chassis)]
+            .into_iter()
+            .chain(Wheel::ALL.map(|w| (self.wheels[w], BodyPart::Wheel(w))))
     }
 }
 
-/// The index of a front wheel in the `[FR, FL]` arrays.
-fn front_index(w: Wheel) -> Option<usize> {
-    match w {
-        Wheel::FrontRight => Some(0),
-        Wheel::FrontLeft => Some(1),
-        Wheel::RearRight | Wheel::RearLeft => None,
-    }
-}
-
-/// The knuckle mass (kg) of front wheel `w`.
-fn knuckle_mass(spec: &VehicleSpec, w: Wheel) -> f64 {
-    KNUCKLE_MASS_FRACTION * spec.wheels[w].mass
-}
-
-/// The chassis body's mass properties about its own centre of mass (the model's body less the
-/// knuckles, whose small share of the inertia is neglected) and that centre of mass in the
-/// car frame (m).
-fn chassis_mass_properties(spec: &VehicleSpec) -> (MassProperties, Point3<f64>) {
+/// The chassis body's mass properties about its own centre of mass.
+fn chassis_mass_properties(spec: &VehicleSpec) -> MassProperties {
     let c = &spec.chassis;
-    let mut mass = c.mass;
-    let mut moment = c.center_of_mass.coords.map(|x| x * c.mass);
-    for w in [Wheel::FrontRight, Wheel::FrontLeft] {
-        let mk = knuckle_mass(spec, w);
-        mass -= mk;
-        for (m, p) in moment.iter_mut().zip(spec.wheels[w].position.iter()) {
-            *m -= mk * p;
-        }
-    }
-    let com = Point3::from(moment.map(|m| m / mass));
-    let inertia = body_inertia(c);
-    (
-        MassProperties::with_inertia_matrix(Vector::ZERO, mass as f32, inertia),
-        com,
-    )
+    MassProperties::with_inertia_matrix(Vector::ZERO, c.mass as f32, body_inertia(c))
 }
 
 /// A joint whose frame on the first body sits at `anchor` (m, first body's frame), axes
@@ -177,30 +155,22 @@ fn joint_mut(world: &mut PhysicsWorld, handle: MultibodyJointHandle) -> Option<&
     mb.link_mut(link).map(|l| &mut l.joint.data)
 }
 
-/// Joint coordinates (rapier spatial layout: m and rad) and the velocity of DoF `dof` (m/s or
-/// rad/s) of the joint of `handle`.
-fn joint_state(
-    world: &PhysicsWorld,
-    handle: MultibodyJointHandle,
-    dof: usize,
-) -> Option<([f32; 6], f32)> {
+/// Joint coordinates (rapier spatial layout: m and rad) of the joint of `handle`.
+fn joint_coords(world: &PhysicsWorld, handle: MultibodyJointHandle) -> Option<[f32; 6]> {
     let (mb, link) = world.multibody_joints.get(handle)?;
-    let l = mb.link(link)?;
-    let c = l.joint().coords();
-    let v = mb.joint_velocity(l).get(dof).copied()?;
-    Some(([c[0], c[1], c[2], c[3], c[4], c[5]], v))
+    let c = mb.link(link)?.joint().coords();
+    Some([c[0], c[1], c[2], c[3], c[4], c[5]])
 }
 
 /// Creates the bodies and joints of `spec` with the car origin at `origin` (springs unloaded).
 /// `None` if rapier refuses a joint (it never does for this tree).
 pub(crate) fn build(world: &mut PhysicsWorld, spec: &VehicleSpec, origin: Pose) -> Option<Parts> {
     let multiply = CoefficientCombineRule::Multiply;
-    let (mass_properties_chassis, offset) = chassis_mass_properties(spec);
-    let offset = geom::point(&offset);
+    let offset = geom::point(&spec.chassis.center_of_mass);
     let chassis = world.insert_body(
         RigidBodyBuilder::dynamic()
             .pose(origin * Pose::from_translation(offset))
-            .additional_mass_properties(mass_properties_chassis)
+            .additional_mass_properties(chassis_mass_properties(spec))
             .can_sleep(false),
     );
     let half = geom::vector(&spec.chassis.box_half_extents);
@@ -214,103 +184,87 @@ pub(crate) fn build(world: &mut PhysicsWorld, spec: &VehicleSpec, origin: Pose) 
         Some(chassis),
     );
 
-    let at = |p: &Point3<f64>| origin * Pose::from_translation(geom::point(p));
-    let mut knuckles = [chassis; 2];
-    let mut steer_joints = [None; 2];
-    for w in [Wheel::FrontRight, Wheel::FrontLeft] {
-        let s = &spec.wheels[w];
-        // The knuckle gets the wheel's transverse inertia: a light, low-inertia body between
-        // the chassis and a wheel only slows the solver down.
-        let ik = s.transverse_inertia() as f32;
-        let knuckle = world.insert_body(
-            RigidBodyBuilder::dynamic()
-                .pose(at(&s.position))
-                .additional_mass_properties(MassProperties::new(
-                    Vector::ZERO,
-                    knuckle_mass(spec, w) as f32,
-                    Vector::splat(ik),
-                ))
-                .can_sleep(false),
-        );
-        let mut j = joint(
-            JointAxesMask::LIN_X
-                | JointAxesMask::LIN_Y
-                | JointAxesMask::ANG_X
-                | JointAxesMask::ANG_Y,
-            geom::point(&s.position) - offset,
-        );
-        // No joint limits: rapier's multibody emits every limit row every step, active or
-        // not; the servo keeps the steering within its range and Webots' suspension has no
-        // stops.
-        motor::set_rigid_velocity_motor(&mut j, JointAxis::AngZ, 0.0, spec.steering.max_torque);
-        let i = usize::from(w == Wheel::FrontLeft);
-        steer_joints[i] = Some(world.insert_multibody_joint(chassis, knuckle, j)?);
-        knuckles[i] = knuckle;
-    }
-
     let mut wheels = PerWheel::splat(chassis);
     let mut colliders = PerWheel::splat(ColliderHandle::invalid());
-    let mut spin_joints = [None; 4];
+    let mut joints = [None; 4];
     for (n, w) in Wheel::ALL.into_iter().enumerate() {
         let s = &spec.wheels[w];
         let wheel = world.insert_body(
             RigidBodyBuilder::dynamic()
-                .pose(at(&s.position))
-                .can_sleep(false)
-                .allow_fast_rotation(true),
+                .pose(origin * Pose::from_translation(geom::point(&s.position)))
+                .can_sleep(false),
         );
-        // rapier's cylinder axis is its local y: the spin axis.
+        // rapier's (round) cylinder axis is its local y, the axle. The mass properties are the
+        // solid cylinder's (`WheelSpec`), not the rounded shape's.
+        let border = (s.width / 2.0 - ROUND_TREAD_CORE) as f32;
+        let transverse = s.transverse_inertia() as f32;
         colliders[w] = world.insert_collider(
-            ColliderBuilder::cylinder((s.width / 2.0) as f32, s.radius as f32)
-                .mass(s.mass as f32)
-                .friction(0.0)
-                .friction_combine_rule(multiply)
-                .collision_groups(geom::groups(G_CAR_WHEEL)),
+            ColliderBuilder::round_cylinder(
+                ROUND_TREAD_CORE as f32,
+                s.radius as f32 - border,
+                border,
+            )
+            .mass_properties(MassProperties::new(
+                Vector::ZERO,
+                s.mass as f32,
+                Vector::new(transverse, s.spin_inertia() as f32, transverse),
+            ))
+            .friction(0.0)
+            .friction_combine_rule(multiply)
+            .collision_groups(geom::groups(G_CAR_WHEEL))
+            .active_hooks(WHEEL_HOOKS),
             Some(wheel),
         );
-        let spin_locked = JointAxesMask::LIN_X
+        // Every wheel slides on its suspension (LinZ); a front wheel also steers (AngZ). The
+        // spin (AngY) is locked: it is the solve's coordinate.
+        let steering = if w.is_front() {
+            JointAxesMask::empty()
+        } else {
+            JointAxesMask::ANG_Z
+        };
+        let locked = JointAxesMask::LIN_X
             | JointAxesMask::LIN_Y
             | JointAxesMask::ANG_X
-            | JointAxesMask::ANG_Z;
-        let j = match front_index(w) {
-            Some(_) => joint(spin_locked | JointAxesMask::LIN_Z, Vector::ZERO),
-            None => joint(spin_locked, geom::point(&s.position) - offset),
-        };
-        let carrier = front_index(w).map_or(chassis, |i| knuckles[i]);
-        spin_joints[n] = Some(world.insert_multibody_joint(carrier, wheel, j)?);
+            | JointAxesMask::ANG_Y
+            | steering;
+        let mut j = joint(locked, geom::point(&s.position) - offset);
+        if w.is_front() {
+            // No joint limits: rapier's multibody emits every limit row every step, active or
+            // not; the servo keeps the steering within its range.
+            motor::set_rigid_velocity_motor(&mut j, JointAxis::AngZ, 0.0, spec.steering.max_torque);
+        }
+        joints[n] = Some(world.insert_multibody_joint(chassis, wheel, j)?);
         wheels[w] = wheel;
     }
-    let [fr, fl] = steer_joints;
-    let [s0, s1, s2, s3] = spin_joints;
+    let [j0, j1, j2, j3] = joints;
     let whole = mass_properties(spec);
     let parts = Parts {
         chassis,
         chassis_offset: offset,
-        knuckles,
         wheels,
         colliders,
-        steer_joints: [fr?, fl?],
-        spin_joints: PerWheel([s0?, s1?, s2?, s3?]),
+        joints: PerWheel([j0?, j1?, j2?, j3?]),
         com: whole.local_com,
         inv_mass: whole.inv_mass,
         inv_inertia: whole.reconstruct_inverse_inertia_matrix(),
     };
 
-    if let Some((mb, _)) = world.multibody_joints.get_mut(parts.steer_joints[0]) {
-        // rapier gives every free angular DoF a default damping of 0.1; Webots has none but
-        // `wheelsDampingConstant` on the spins, which the tyre solve applies.
+    if let Some((mb, _)) = world
+        .multibody_joints
+        .get_mut(parts.joints[Wheel::FrontRight])
+    {
+        // rapier gives every free angular DoF a default damping of 0.1; Webots has none.
         mb.damping_mut().fill(0.0);
         mb.set_self_contacts_enabled(false);
     }
     for w in Wheel::ALL {
-        let (handle, dof) = parts.suspension_joint(w);
         let suspension = if w.is_front() {
             spec.front_suspension
         } else {
             spec.rear_suspension
         };
-        if let Some((mb, link)) = world.multibody_joints.get_mut(handle) {
-            set_suspension(mb, link, dof, suspension);
+        if let Some((mb, link)) = world.multibody_joints.get_mut(parts.joints[w]) {
+            set_suspension(mb, link, 0, suspension);
         }
     }
     Some(parts)
@@ -324,7 +278,7 @@ pub(crate) fn car_pose(chassis: &RigidBody, parts: &Parts) -> Pose {
 /// Sets the steering motors to the position controller's velocities `rates` (rad/s, positive
 /// = right, `[FR, FL]`), within `max_torque` (N·m).
 fn steer(world: &mut PhysicsWorld, parts: &Parts, rates: [f64; 2], max_torque: f64) {
-    for (handle, rate) in parts.steer_joints.into_iter().zip(rates) {
+    for (handle, rate) in parts.steer_joints().into_iter().zip(rates) {
         if let Some(j) = joint_mut(world, handle) {
             // The joint angle is −steering: positive steering turns right, about −z.
             motor::set_rigid_velocity_motor(j, JointAxis::AngZ, -rate, max_torque);
@@ -345,8 +299,8 @@ struct GroundContact {
     pub body: Option<RigidBodyHandle>,
 }
 
-/// Wheel `w`'s ground: of the surfaces its tyre touched in the last step and that are not too
-/// steep to stand on (against the chassis' `up`), the one that carried the largest load.
+/// Wheel `w`'s ground: of the surfaces its tyre touched in the last step within 45° of the
+/// chassis' `up` ([`TREAD_GROUND_COSINE`]), the one that carried the largest load.
 fn ground_contact(
     world: &PhysicsWorld,
     parts: &Parts,
@@ -363,14 +317,22 @@ fn ground_contact(
             (pair.collider1, 1.0)
         };
         for m in pair.solver_manifolds() {
-            if m.points.is_empty() {
+            if m.data.solver_contacts.is_empty() {
                 continue;
             }
             let normal = m.data.normal * sign;
-            if normal.dot(up) < MIN_GROUND_COSINE {
+            if normal.dot(up) < TREAD_GROUND_COSINE {
                 continue;
             }
-            let impulse: f32 = m.points.iter().map(|p| p.data.impulse.max(0.0)).sum();
+            // The points the solver used: a wheel's ground contact keeps one (`tread`), and a
+            // point it dropped keeps the impulse of a step it was used in.
+            let impulse: f32 = m
+                .data
+                .solver_contacts
+                .iter()
+                .filter_map(|c| m.points.get(c.contact_indices()[0] as usize))
+                .map(|p| p.data.impulse.max(0.0))
+                .sum();
             if best.is_some_and(|b| b.impulse >= impulse) {
                 continue;
             }
@@ -398,22 +360,20 @@ fn wheel_frame(world: &PhysicsWorld, parts: &Parts, w: Wheel) -> Option<(Vector,
     Some((b.translation(), *b.rotation() * Vector::Y))
 }
 
-/// Applies the solved step of wheel `w`: the spin joint's rigid velocity motor at `omega`
-/// (rad/s), and the tyre's impulse over the step `tyre.impulse` (N·s, world) at `tyre.point`
-/// on the wheel, as a force over the step of `dt` seconds (a multibody link moves only through
-/// its joints' coordinates), with its reaction on the ground's body if that is dynamic, as an
-/// impulse. The wheel's forces of the last step are cleared first.
+/// Applies the solved step of wheel `w` to rapier: the tyre's impulse over the step
+/// `tyre.impulse` (N·s, world) at `tyre.point` on the wheel, as a force over the step of `dt`
+/// seconds (a multibody link moves only through its joints' coordinates), with its reaction
+/// on the ground's body if that is dynamic, as an impulse; and `spin_reaction` (N·m, world),
+/// the torque that spun the wheel up or down, on the wheel, whose joint passes it to the
+/// chassis. The wheel's forces of the last step are cleared first.
 fn drive(
     world: &mut PhysicsWorld,
     parts: &Parts,
     w: Wheel,
-    omega: f64,
     tyre: Option<TyreImpulse>,
+    spin_reaction: Vector,
     dt: f32,
 ) {
-    if let Some(j) = joint_mut(world, parts.spin_joints[w]) {
-        motor::set_rigid_velocity_motor(j, JointAxis::AngY, omega, WHEEL_MOTOR_MAX_TORQUE);
-    }
     if let Some(b) = world.bodies.get_mut(parts.wheels[w]) {
         // rapier keeps user forces and torques (separately) until reset.
         b.reset_forces(true);
@@ -421,6 +381,7 @@ fn drive(
         if let Some(t) = tyre {
             b.add_force_at_point(t.impulse / dt, t.point, true);
         }
+        b.add_torque(spin_reaction, true);
     }
     if let Some(t) = tyre
         && let Some(ground) = t.ground
@@ -442,12 +403,11 @@ struct TyreImpulse {
     pub ground: Option<RigidBodyHandle>,
 }
 
-/// The joint readings of one step: steering angles `[FR, FL]` (rad, positive = right),
-/// suspension compressions (m, > 0 = wheel pushed up) and spin rates (rad/s).
+/// The joint readings of one step: steering angles `[FR, FL]` (rad, positive = right) and
+/// suspension compressions (m, > 0 = wheel pushed up).
 pub(crate) struct Readings {
     pub steering: [f64; 2],
     pub suspension: PerWheel<f64>,
-    pub spins: PerWheel<f64>,
 }
 
 /// Reads the joints of `parts`; `None` if a joint is missing.
@@ -455,18 +415,15 @@ pub(crate) fn read(world: &PhysicsWorld, parts: &Parts) -> Option<Readings> {
     let mut r = Readings {
         steering: [0.0; 2],
         suspension: PerWheel::splat(0.0),
-        spins: PerWheel::splat(0.0),
     };
-    for (i, handle) in parts.steer_joints.into_iter().enumerate() {
-        let (c, _) = joint_state(world, handle, 0)?;
-        r.steering[i] = -f64::from(c[ANG_Z]);
-    }
     for w in Wheel::ALL {
-        let (handle, _) = parts.suspension_joint(w);
-        let (c, _) = joint_state(world, handle, 0)?;
+        let c = joint_coords(world, parts.joints[w])?;
         r.suspension[w] = f64::from(c[LIN_Z]);
-        let (_, v) = joint_state(world, parts.spin_joints[w], Parts::spin_dof(w))?;
-        r.spins[w] = f64::from(v);
+        match w {
+            Wheel::FrontRight => r.steering[0] = -f64::from(c[ANG_Z]),
+            Wheel::FrontLeft => r.steering[1] = -f64::from(c[ANG_Z]),
+            Wheel::RearRight | Wheel::RearLeft => {}
+        }
     }
     Some(r)
 }
@@ -474,7 +431,8 @@ pub(crate) fn read(world: &PhysicsWorld, parts: &Parts) -> Option<Readings> {
 impl Vehicle {
     /// The step of `dt` seconds of a car on joints: rapier's steering motors get the position
     /// controller's velocities; the tyres, brakes and spins are solved on the whole car with
-    /// the loads of rapier's last contacts, and go to rapier as tyre forces and spin motors.
+    /// the loads of rapier's last contacts, and go to rapier as tyre forces and the spins'
+    /// reactions.
     pub(super) fn pre_step_joints(&mut self, world: &mut PhysicsWorld, parts: &Parts, dt: f64) {
         let rates = self.steering_rates();
         steer(world, parts, rates, self.spec.steering.max_torque);
@@ -526,7 +484,12 @@ impl Vehicle {
                 point: frame.com + c.contact_arm,
                 ground: grounds[i],
             });
-            drive(world, parts, w, omega, tyre, dt as f32);
+            let axis = wheel_frame(world, parts, w).map_or(Vector::ZERO, |(_, axis)| axis);
+            let spin_change =
+                self.spec.wheels[w].spin_inertia() * (omega - self.state.wheel_speeds[w]);
+            let spin_reaction = axis * (-spin_change / dt) as f32;
+            drive(world, parts, w, tyre, spin_reaction, dt as f32);
+            self.react_to_spin(&mut body, w, axis, omega);
             self.finish_wheel(w, &rows[i], &body, f64::from(roads[i]), omega, dt);
         }
     }
@@ -544,7 +507,6 @@ fn wheel_contact(
 ) -> Option<(Contact, GroundContact)> {
     let g = ground_contact(world, parts, w, frame.up)?;
     let (centre, axis) = wheel_frame(world, parts, w)?;
-    let support = Support::Given { normal: g.normal };
-    let contact = Contact::on_ground(support, g.normal, axis, centre, radius, frame.com)?;
+    let contact = Contact::on_ground(Support::Given, g.normal, axis, centre, radius, frame.com)?;
     Some((contact, g))
 }

@@ -14,12 +14,12 @@
 //!   steering angle.
 //!
 //! Webots builds the same car from ODE joints (`Hinge2Joint` at the front, `HingeJoint` at the
-//! rear) and cylinder contacts. A rapier multibody of chassis, knuckles and cylinders was this
-//! crate's first model: exact, but about ten times the cost, and rapier solves a multibody contact's
-//! friction one world axis at a time, which made wheels away from the world axes chatter. The
-//! wheels here are the same joints written as constraints of a small solver of our own
-//! (`contact`), exact at any heading and that much cheaper; what changes is listed in
-//! `COMPATIBILITY.md` (no wheel hop, one contact per wheel, found along the suspension axis).
+//! rear) and cylinder contacts. The wheels here are those joints written as constraints of a
+//! small solver of our own (`contact`), exact at any heading and about a sixth of the cost of
+//! the same car in rapier; what changes is listed in `COMPATIBILITY.md` (no wheel hop, one
+//! contact per wheel, found along the suspension axis). That car in rapier is the other
+//! mounting (`joints`): a multibody of the chassis and four wheel bodies on suspension and
+//! steering joints, with the same solve for the tyres, brakes and spins.
 //!
 //! # Actuators and the step
 //!
@@ -59,7 +59,10 @@ mod contact;
 mod joints;
 mod spec;
 mod state;
+mod tread;
 mod wheels;
+
+pub(crate) use tread::WheelRoadHooks;
 
 use ackermann::{PerWheel, Wheel, WheelAngles};
 use proto_geom::nalgebra::Point3;
@@ -168,13 +171,12 @@ impl Vehicle {
         self.id
     }
 
-    /// The rapier bodies of this car: the chassis, then (on joints) the knuckles and wheels.
+    /// The rapier bodies of this car: the chassis, then (on joints) the wheels.
     pub(crate) fn bodies(&self) -> Vec<RigidBodyHandle> {
         match &self.parts {
             Parts::Cast(p) => vec![p.chassis],
             Parts::Joints(p) => [p.chassis]
                 .into_iter()
-                .chain(p.knuckles)
                 .chain(p.wheels.iter().copied())
                 .collect(),
         }
@@ -259,7 +261,6 @@ impl Vehicle {
                 let r = joints::read(world, p).ok_or(fail(BodyPart::Chassis))?;
                 s.steering = WheelAngles::new(r.steering[0], r.steering[1]);
                 s.suspension = r.suspension;
-                s.wheel_speeds = r.spins;
                 let pose = joints::car_pose(chassis, p);
                 (chassis, pose, pose.transform_point(p.com))
             }

@@ -194,34 +194,32 @@ fn understeer(params: CarParams<f64>, v: f64, ay: f64) -> (f64, f64) {
     ((delta - (l * r / u).atan()) / (u * r), bike.understeer())
 }
 
-known_joints_gap! {
-    "joints: K = 1.00 mrad/(m/s²) at 10 m/s against the single-track 1.15 (-13 %); the cast car is within 10 %. Cause not found yet",
-    fn steady_cornering_has_the_single_track_understeer_gradient() {
-        // Linear range (a_y = 1 m/s²): δ = L/R + K·a_y, on a BmwX5 with 63 % of its weight on the
-        // front axle, which understeers clearly (K ≈ 1.2 mrad per m/s²), and with almost no wheel
-        // damping: the stock 2 N·m·s/rad brakes each free wheel by 0.4 kN at 30 m/s, and the
-        // drive and brake forces take some of each tyre's cornering stiffness (combined slip),
-        // which the single-track model does not know. It also leaves out the lateral load transfer
-        // (the cornering stiffness is concave in load) and the track width: 10 %.
-        let mut front_heavy = Model::BmwX5.params();
-        front_heavy.body.center_of_mass[0] = 1.9;
-        front_heavy.wheels_damping_constant = 0.01;
-        for v in [10.0, 20.0, 30.0] {
-            let (k, expected) = understeer(front_heavy.clone(), v, 1.0);
-            println!("v {v}: K {k:.5} rad/(m/s²), single-track {expected:.5}");
-            assert!(expected > 5e-4, "{expected}");
-            assert!(
-                (k - expected).abs() < 0.1 * expected,
-                "v {v}: K {k} vs {expected}"
-            );
-        }
-        // The stock BmwX5 is close to neutral (K ≈ −0.6 mrad per m/s², 57 % of its weight on the
-        // rear axle): there the same unmodelled effects, its wheel damping included, are a larger
-        // share of K, and the car is checked to be within 0.25 mrad per m/s² of the model.
-        let (k, expected) = understeer(Model::BmwX5.params(), 20.0, 1.0);
-        println!("stock: K {k:.5} rad/(m/s²), single-track {expected:.5}");
-        assert!((k - expected).abs() < 2.5e-4, "{k} vs {expected}");
+#[test]
+fn steady_cornering_has_the_single_track_understeer_gradient() {
+    // Linear range (a_y = 1 m/s²): δ = L/R + K·a_y, on a BmwX5 with 63 % of its weight on the
+    // front axle, which understeers clearly (K ≈ 1.2 mrad per m/s²), and with almost no wheel
+    // damping: the stock 2 N·m·s/rad brakes each free wheel by 0.4 kN at 30 m/s, and the
+    // drive and brake forces take some of each tyre's cornering stiffness (combined slip),
+    // which the single-track model does not know. It also leaves out the lateral load transfer
+    // (the cornering stiffness is concave in load) and the track width: 10 %.
+    let mut front_heavy = Model::BmwX5.params();
+    front_heavy.body.center_of_mass[0] = 1.9;
+    front_heavy.wheels_damping_constant = 0.01;
+    for v in [10.0, 20.0, 30.0] {
+        let (k, expected) = understeer(front_heavy.clone(), v, 1.0);
+        println!("v {v}: K {k:.5} rad/(m/s²), single-track {expected:.5}");
+        assert!(expected > 5e-4, "{expected}");
+        assert!(
+            (k - expected).abs() < 0.1 * expected,
+            "v {v}: K {k} vs {expected}"
+        );
     }
+    // The stock BmwX5 is close to neutral (K ≈ −0.6 mrad per m/s², 57 % of its weight on the
+    // rear axle): there the same unmodelled effects, its wheel damping included, are a larger
+    // share of K, and the car is checked to be within 0.25 mrad per m/s² of the model.
+    let (k, expected) = understeer(Model::BmwX5.params(), 20.0, 1.0);
+    println!("stock: K {k:.5} rad/(m/s²), single-track {expected:.5}");
+    assert!((k - expected).abs() < 2.5e-4, "{k} vs {expected}");
 }
 
 #[test]
@@ -264,42 +262,44 @@ fn step_steer_yaw_response_has_the_single_track_time_constant() {
     );
 }
 
-#[test]
-fn the_grip_limit_is_the_tyres_peak_friction() {
-    // A slow steering ramp at 20 m/s on friction 1: the lateral acceleration levels off at the
-    // lateral peak friction (0.95) × g, and the car, front-heavy (it understeers), does not
-    // spin.
-    let mut params = Model::BmwX5.params();
-    params.body.center_of_mass[0] = 1.9; // 63 % of the weight on the front axle
-    let (mut sim, id) = car(params, 1.0, 10);
-    let bike = Bicycle::of(sim.world().vehicle(id).unwrap().spec());
-    assert!(bike.understeer() > 0.0, "{}", bike.understeer());
-    sim.driver_mut(id).unwrap().set_cruising_speed(72.0);
-    common::run(&mut sim, 12.0);
-    let mut peak: f64 = 0.0;
-    let mut window = Vec::new();
-    for k in 0..2000 {
-        let delta = 0.15 * f64::from(k) / 2000.0;
-        sim.driver_mut(id).unwrap().set_steering_angle(-delta);
-        sim.step().unwrap();
-        let t = sim.telemetry(id).unwrap();
-        window.push(t.speed * t.state.yaw_rate);
-        if window.len() > 50 {
-            window.remove(0);
-            peak = peak.max(window.iter().sum::<f64>() / 50.0);
+known_joints_gap! {
+    "joints: the peak of v·r over 0.5 s is 9.93 m/s² against 0.95 g = 9.32 (the cast car: 9.35): both level off at a lateral acceleration of 8.6-8.8 m/s², but at the limit the joints car's yaw oscillates more (body slip -0.08 to -0.22 rad against -0.12 to -0.18) and its load transfer is 3-4 % larger, also with 3 kg wheels: cause not found yet",
+    fn the_grip_limit_is_the_tyres_peak_friction() {
+        // A slow steering ramp at 20 m/s on friction 1: the lateral acceleration levels off at the
+        // lateral peak friction (0.95) × g, and the car, front-heavy (it understeers), does not
+        // spin.
+        let mut params = Model::BmwX5.params();
+        params.body.center_of_mass[0] = 1.9; // 63 % of the weight on the front axle
+        let (mut sim, id) = car(params, 1.0, 10);
+        let bike = Bicycle::of(sim.world().vehicle(id).unwrap().spec());
+        assert!(bike.understeer() > 0.0, "{}", bike.understeer());
+        sim.driver_mut(id).unwrap().set_cruising_speed(72.0);
+        common::run(&mut sim, 12.0);
+        let mut peak: f64 = 0.0;
+        let mut window = Vec::new();
+        for k in 0..2000 {
+            let delta = 0.15 * f64::from(k) / 2000.0;
+            sim.driver_mut(id).unwrap().set_steering_angle(-delta);
+            sim.step().unwrap();
+            let t = sim.telemetry(id).unwrap();
+            window.push(t.speed * t.state.yaw_rate);
+            if window.len() > 50 {
+                window.remove(0);
+                peak = peak.max(window.iter().sum::<f64>() / 50.0);
+            }
+            // At the limit the rear tyres too work near their peak slip angle (each axle carries
+            // lateral force in proportion to its load), so the body slip angle reaches about
+            // 0.1 rad; a car that spins passes 0.2 rad and keeps going.
+            let beta = body_slip(&t.state);
+            assert!(beta.abs() < 0.35, "spun: body slip {beta} rad at step {k}");
         }
-        // At the limit the rear tyres too work near their peak slip angle (each axle carries
-        // lateral force in proportion to its load), so the body slip angle reaches about
-        // 0.1 rad; a car that spins passes 0.2 rad and keeps going.
-        let beta = body_slip(&t.state);
-        assert!(beta.abs() < 0.35, "spun: body slip {beta} rad at step {k}");
+        // 5 %: the load transfer lowers the limit a little (the peak friction falls with load),
+        // and the steered front tyres, sliding at the limit, push along their sliding velocity
+        // with some of their longitudinal friction (1.0 against 0.95 sideways), which raises it.
+        let limit = 0.95 * G;
+        println!("peak lateral acceleration {peak:.3} m/s² (0.95 g = {limit:.3})");
+        assert!((peak / limit - 1.0).abs() < 0.05, "{peak} vs {limit}");
     }
-    // 5 %: the load transfer lowers the limit a little (the peak friction falls with load),
-    // and the steered front tyres, sliding at the limit, push along their sliding velocity
-    // with some of their longitudinal friction (1.0 against 0.95 sideways), which raises it.
-    let limit = 0.95 * G;
-    println!("peak lateral acceleration {peak:.3} m/s² (0.95 g = {limit:.3})");
-    assert!((peak / limit - 1.0).abs() < 0.05, "{peak} vs {limit}");
 }
 
 #[test]

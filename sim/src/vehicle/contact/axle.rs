@@ -11,8 +11,14 @@ use super::rows::{Grip, Spin, WheelRow};
 /// The per-step constants of one axle (wheels `2·a` and `2·a + 1`).
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Axle {
-    /// Suspension rows' inverse effective masses (1/kg), 2×2.
+    /// Suspension rows' inverse effective masses (1/kg), 2×2: the compression rate along
+    /// wheel `i`'s axis per unit normal impulse of wheel `j`.
     k_normal: [[f32; 2]; 2],
+    /// `n·up` per wheel: the share of its normal impulse that its spring carries.
+    axis_cosine: [f32; 2],
+    /// `[forward·up, lateral·up]` per wheel: the shares of its tyre impulses that its spring
+    /// carries when the chassis leans on the ground.
+    tyre_along_axis: [[f32; 2]; 2],
     /// `dt·k·x` (N·s) per wheel: the spring's impulse at the current compression.
     spring_impulse: [f32; 2],
     /// `dt·(k·dt + c)` (kg) per wheel: the implicit spring-damper's impulse per m/s of
@@ -29,6 +35,8 @@ impl Axle {
         let contacts = [wheels[0].contact, wheels[1].contact];
         let mut axle = Axle {
             k_normal: [[0.0; 2]; 2],
+            axis_cosine: [1.0; 2],
+            tyre_along_axis: [[0.0; 2]; 2],
             spring_impulse: [0.0; 2],
             softness: [0.0; 2],
             k_tyre: [[0.0; 4]; 4],
@@ -36,14 +44,16 @@ impl Axle {
         for (i, ci) in contacts.iter().enumerate() {
             let Some(ci) = ci else { continue };
             if let Some(si) = ci.spring() {
+                axle.axis_cosine[i] = ci.axis_cosine(si);
+                axle.tyre_along_axis[i] = [ci.forward.dot(si.up), ci.lateral.dot(si.up)];
                 axle.spring_impulse[i] = dt * si.stiffness * si.compression;
                 axle.softness[i] = dt * (si.stiffness * dt + si.damping);
             }
             for (j, cj) in contacts.iter().enumerate() {
                 let Some(cj) = cj else { continue };
-                if let (Some(si), Some(sj)) = (ci.spring(), cj.spring()) {
+                if let (Some(si), Some(_)) = (ci.spring(), cj.spring()) {
                     axle.k_normal[i][j] =
-                        body.coupling(si.hardpoint_arm, si.up, sj.hardpoint_arm, sj.up);
+                        body.coupling(si.hardpoint_arm, si.up, cj.contact_arm, cj.normal);
                 }
                 for (m, dm) in [ci.forward, ci.lateral].into_iter().enumerate() {
                     for (n, dn) in [cj.forward, cj.lateral].into_iter().enumerate() {
@@ -78,29 +88,40 @@ pub(super) fn brake_row(w: &mut WheelRow) {
     w.omega += (new - old) * inv_inertia;
 }
 
-/// The implicit spring-dampers of an axle: `P = dt·k·x + dt·(k·dt + c)·ẋ` for each wheel with
-/// `ẋ` the compression rate after both impulses, `P ≥ 0`.
+/// The implicit spring-dampers of an axle: `N·(n·up) + P_t·up = dt·k·x + dt·(k·dt + c)·ẋ`
+/// for each wheel's normal impulse `N ≥ 0` (along the ground's normal at the contact point),
+/// with `P_t` its tyre impulse (the sweep's latest) and `ẋ` the compression rate along the
+/// suspension axis after both normal impulses.
 #[inline]
 pub(super) fn suspension_block(body: &mut Body, pair: &mut [WheelRow], axle: &Axle) {
-    let springs = [0, 1].map(|i| pair[i].contact.and_then(|c| c.spring().copied()));
+    let springs = [0, 1].map(|i| {
+        let c = pair[i].contact?;
+        Some((c, *c.spring()?))
+    });
     let mut m = [[1.0, 0.0], [0.0, 1.0]];
     let mut rhs = [0.0; 2];
     for i in 0..2 {
-        let Some(c) = springs[i] else { continue };
-        let rate = -c.up.dot(body.velocity_at(c.hardpoint_arm));
-        let s = axle.softness[i];
+        let Some((_, s)) = springs[i] else { continue };
+        let rate = -s.up.dot(body.velocity_at(s.hardpoint_arm));
+        let soft = axle.softness[i];
+        let cosine = axle.axis_cosine[i];
         for (j, (out, k)) in m[i].iter_mut().zip(axle.k_normal[i]).enumerate() {
-            *out = f32::from(u8::from(i == j)) + s * k;
+            *out = if i == j { cosine } else { 0.0 } + soft * k;
         }
-        rhs[i] = axle.spring_impulse[i] + s * rate - pair[i].impulses.normal;
+        let tyre = pair[i].impulses;
+        let [along_forward, along_lateral] = axle.tyre_along_axis[i];
+        rhs[i] = axle.spring_impulse[i] + soft * rate
+            - cosine * tyre.normal
+            - along_forward * tyre.forward
+            - along_lateral * tyre.lateral;
     }
     let Some(delta) = solve2(m, rhs) else { return };
     for (i, c) in springs.iter().enumerate() {
-        let Some(c) = c else { continue };
+        let Some((c, _)) = c else { continue };
         let old = pair[i].impulses.normal;
         let new = (old + delta[i]).max(0.0);
         pair[i].impulses.normal = new;
-        body.apply(c.hardpoint_arm, c.up * (new - old));
+        c.apply_normal(body, new - old);
     }
 }
 

@@ -39,6 +39,9 @@ pub(crate) struct Contact {
     pub support: Support,
     /// Contact point − centre of mass (m).
     pub contact_arm: Vector,
+    /// The ground's normal at the contact (unit, out of the ground): the direction of the
+    /// ground's normal force on the tyre.
+    pub normal: Vector,
     /// Rolling direction in the ground plane (unit).
     pub forward: Vector,
     /// Wheel axis projected on the ground plane (unit, to the car's left for an unsteered wheel).
@@ -53,15 +56,20 @@ pub(crate) enum Support {
     /// The solve's own suspension row (the cast car: the wheel is no body).
     Spring(Spring),
     /// A contact that rapier solves (the car on joints: the wheel is a body on a suspension
-    /// joint): the wheel row's normal impulse is given, and acts along `normal` (the ground's
-    /// unit normal) at the contact point.
-    Given {
-        /// The ground's normal at the contact (unit, out of the ground).
-        normal: Vector,
-    },
+    /// joint): the wheel row's normal impulse is given.
+    Given,
 }
 
 /// A suspension spring-damper between the chassis and a wheel that is no body.
+///
+/// The spring pushes along the suspension axis; what reaches the chassis is the ground's
+/// normal force at the contact point, carried through the wheel (taken as massless) by the
+/// spring and, across the axis, by the rigid slider: the normal impulse `N` meets the
+/// spring's `N·(n·up) + P_t·up = P_spring`, `P_t` the tyre's impulse: on a chassis leaning
+/// in a turn the tyres' lateral forces push along the tilted axes, as on the car on joints.
+/// (A force along the axis at the hard point instead would push a pitched or rolled chassis
+/// along the ground with `N·sin(tilt)`, a force no friction gives: 180 N forward on a
+/// nose-down BmwX5.)
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Spring {
     /// Hard point (the wheel centre at the unloaded spring length) − centre of mass (m).
@@ -94,10 +102,18 @@ impl Contact {
         (lateral != Vector::ZERO).then(|| Contact {
             support,
             contact_arm: centre - normal * radius - com,
+            normal,
             forward: lateral.cross(normal),
             lateral,
             radius,
         })
+    }
+
+    /// `n·up`: the cosine between the ground's normal and the suspension axis (1 on flat
+    /// ground under a level chassis), the share of the normal impulse the spring carries.
+    #[inline]
+    pub(super) fn axis_cosine(&self, s: &Spring) -> f32 {
+        self.normal.dot(s.up)
     }
 
     /// The spring of a wheel with its own suspension row.
@@ -105,17 +121,15 @@ impl Contact {
     pub(super) fn spring(&self) -> Option<&Spring> {
         match &self.support {
             Support::Spring(s) => Some(s),
-            Support::Given { .. } => None,
+            Support::Given => None,
         }
     }
 
-    /// Applies the normal impulse `p` (N·s) of this contact to `body`.
+    /// Applies the normal impulse `p` (N·s) of this contact to `body`: along the ground's
+    /// normal at the contact point.
     #[inline]
     pub(super) fn apply_normal(&self, body: &mut Body, p: f32) {
-        match self.support {
-            Support::Spring(s) => body.apply(s.hardpoint_arm, s.up * p),
-            Support::Given { normal } => body.apply(self.contact_arm, normal * p),
-        }
+        body.apply(self.contact_arm, self.normal * p);
     }
     /// The slip velocity `[forward, lateral]` (m/s) of the contact point over the ground for a
     /// wheel spinning at `omega` (rad/s).

@@ -25,6 +25,7 @@ fn contact(compression: f32) -> Contact {
             damping: 0.0,
         }),
         contact_arm: Vector::ZERO,
+        normal: Vector::Z,
         forward: Vector::X,
         lateral: Vector::Y,
         radius: 0.5,
@@ -66,6 +67,26 @@ fn implicit_spring_impulse() {
     solve(&mut b, &mut w, 0.01);
     let p = w[0].impulses.normal;
     assert!((p - 10.0 / 1.01).abs() < 1e-4, "{p}");
+    assert!((b.linvel.z - p * 1e-3).abs() < 1e-7);
+}
+
+#[test]
+fn a_tilted_suspension_pushes_along_the_ground_normal() {
+    // The chassis pitched by θ = 0.1 rad on flat ground, no friction: the spring along the
+    // tilted axis carries N·cos θ, and the body gets the ground's normal force only, no push
+    // along the ground. N·cos θ = dt·k·(x + dt·ẋ') with ẋ' = −cos θ·N/m: N = 10/(1.01·cos θ).
+    let theta = 0.1_f32;
+    let up = Vector::new(theta.sin(), 0.0, theta.cos());
+    let mut c = contact(0.01);
+    if let Support::Spring(s) = &mut c.support {
+        s.up = up;
+    }
+    let mut b = body();
+    let mut w = one(wheel(Some(c), rigid(0.0), Spin::Imposed, 0.0));
+    solve(&mut b, &mut w, 0.01);
+    let p = w[0].impulses.normal;
+    assert!((p - 10.0 / (1.01 * theta.cos())).abs() < 1e-4, "{p}");
+    assert_eq!(b.linvel.x, 0.0);
     assert!((b.linvel.z - p * 1e-3).abs() < 1e-7);
 }
 
