@@ -94,6 +94,12 @@ pub trait Real:
     /// reduction: within 1 ulp of [`Real::atan`] on [0, 1] (the tests of `real/poly.rs`), and
     /// bit-identical on every target. Meaningless outside [0, 1].
     fn atan_unit(self) -> Self;
+    /// `atan(self)` (rad) for `self ≥ 0`: [`Real::atan_unit`] up to 1; above, `π/2 − 1/x`
+    /// plus `1/x` times a rational in `x²`, so the reciprocal and the rational's two
+    /// polynomials start together, and only the rational's quotient follows them. Within 2 ulp
+    /// of [`Real::atan`] (the tests of `real/poly.rs`), bit-identical on every target.
+    /// Meaningless below 0.
+    fn atan_nonneg(self) -> Self;
     /// `sin(self)` for `self` in [0, π/2], by a polynomial: within 2 ulp of [`Real::sin`] there,
     /// bit-identical on every target. Meaningless outside [0, π/2].
     fn sin_quadrant(self) -> Self;
@@ -159,7 +165,7 @@ macro_rules! impl_real {
     ($t:ty, $m:ident, sin = $sin:ident, cos = $cos:ident, tan = $tan:ident, atan = $atan:ident,
      atan2 = $atan2:ident, asin = $asin:ident, sqrt = $sqrt:ident, hypot = $hypot:ident,
      floor = $floor:ident, round = $round:ident, trunc = $trunc:ident, pow = $pow:ident,
-     exp = $exp:ident, atan_unit = $atan_unit:ident, sin_quadrant = $sin_quadrant:ident) => {
+     exp = $exp:ident, atan_unit = $atan_unit:ident, atan_nonneg = $atan_nonneg:ident, sin_quadrant = $sin_quadrant:ident) => {
         impl Real for $t {
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
@@ -240,6 +246,10 @@ macro_rules! impl_real {
             fn atan_unit(self) -> Self {
                 poly::$atan_unit(self)
             }
+            #[inline(always)]
+            fn atan_nonneg(self) -> Self {
+                poly::$atan_nonneg(self)
+            }
             #[inline]
             fn sin_quadrant(self) -> Self {
                 poly::$sin_quadrant(self)
@@ -273,6 +283,7 @@ impl_real!(
     pow = powf,
     exp = expf,
     atan_unit = atan_unit_f32,
+    atan_nonneg = atan_nonneg_f32,
     sin_quadrant = sin_quadrant_f32
 );
 impl_real!(
@@ -292,6 +303,7 @@ impl_real!(
     pow = pow,
     exp = exp,
     atan_unit = atan_unit_f64,
+    atan_nonneg = atan_nonneg_f64,
     sin_quadrant = sin_quadrant_f64
 );
 

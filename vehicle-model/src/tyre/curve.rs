@@ -76,7 +76,7 @@ impl<T: Real> Shape<T> {
     #[inline(always)]
     pub fn at_u(&self, u: T, inv_u: T) -> T {
         let phi = (T::ONE - self.e) * u + self.e * atan_pos(u, inv_u);
-        sin_0_pi(self.c * atan_pos(phi, T::ONE / phi))
+        sin_0_pi(self.c * phi.atan_nonneg())
     }
 
     /// Where the curve peaks, `t = C·u_p`.
