@@ -94,6 +94,11 @@ pub trait Real:
     /// reduction: within 1 ulp of [`Real::atan`] on [0, 1] (the tests of `real/poly.rs`), and
     /// bit-identical on every target. Meaningless outside [0, 1].
     fn atan_unit(self) -> Self;
+    /// [`Real::atan_unit`] given `square`, `self²` formed by the caller (which may have it
+    /// before `self`, so that the polynomial, in the square, need not wait for `self`). Within
+    /// 1 ulp of [`Real::atan`] for `square = self·self`; a square off by a few ulp moves the
+    /// result by less than `0.22·self` times its relative error.
+    fn atan_unit_sq(self, square: Self) -> Self;
     /// `atan(self)` (rad) for `self ≥ 0`: [`Real::atan_unit`] up to 1; above, `π/2 − 1/x`
     /// plus `1/x` times a rational in `x²`, so the reciprocal and the rational's two
     /// polynomials start together, and only the rational's quotient follows them. Within 2 ulp
@@ -165,7 +170,7 @@ macro_rules! impl_real {
     ($t:ty, $m:ident, sin = $sin:ident, cos = $cos:ident, tan = $tan:ident, atan = $atan:ident,
      atan2 = $atan2:ident, asin = $asin:ident, sqrt = $sqrt:ident, hypot = $hypot:ident,
      floor = $floor:ident, round = $round:ident, trunc = $trunc:ident, pow = $pow:ident,
-     exp = $exp:ident, atan_unit = $atan_unit:ident, atan_nonneg = $atan_nonneg:ident, sin_quadrant = $sin_quadrant:ident) => {
+     exp = $exp:ident, atan_unit = $atan_unit:ident, atan_unit_sq = $atan_unit_sq:ident, atan_nonneg = $atan_nonneg:ident, sin_quadrant = $sin_quadrant:ident) => {
         impl Real for $t {
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
@@ -247,6 +252,10 @@ macro_rules! impl_real {
                 poly::$atan_unit(self)
             }
             #[inline(always)]
+            fn atan_unit_sq(self, square: Self) -> Self {
+                poly::$atan_unit_sq(self, square)
+            }
+            #[inline(always)]
             fn atan_nonneg(self) -> Self {
                 poly::$atan_nonneg(self)
             }
@@ -283,6 +292,7 @@ impl_real!(
     pow = powf,
     exp = expf,
     atan_unit = atan_unit_f32,
+    atan_unit_sq = atan_unit_sq_f32,
     atan_nonneg = atan_nonneg_f32,
     sin_quadrant = sin_quadrant_f32
 );
@@ -303,6 +313,7 @@ impl_real!(
     pow = pow,
     exp = exp,
     atan_unit = atan_unit_f64,
+    atan_unit_sq = atan_unit_sq_f64,
     atan_nonneg = atan_nonneg_f64,
     sin_quadrant = sin_quadrant_f64
 );

@@ -216,18 +216,28 @@ pub(super) fn atan_nonneg_f32(x: f32) -> f32 {
     }
 }
 
+/// `atan(x)` for `x` in [0, 1], `f64`, given `z = x²`.
+#[inline(always)]
+pub(super) fn atan_unit_sq_f64(x: f64, z: f64) -> f64 {
+    x - x * z * estrin20(z - 0.5, &ATAN_F64)
+}
+
+/// `atan(x)` for `x` in [0, 1], `f32`, given `z = x²`.
+#[inline(always)]
+pub(super) fn atan_unit_sq_f32(x: f32, z: f32) -> f32 {
+    x - x * z * estrin9(z - 0.5, &ATAN_F32)
+}
+
 /// `atan(x)` for `x` in [0, 1], `f64`.
 #[inline]
 pub(super) fn atan_unit_f64(x: f64) -> f64 {
-    let z = x * x;
-    x - x * z * estrin20(z - 0.5, &ATAN_F64)
+    atan_unit_sq_f64(x, x * x)
 }
 
 /// `atan(x)` for `x` in [0, 1], `f32`.
 #[inline]
 pub(super) fn atan_unit_f32(x: f32) -> f32 {
-    let z = x * x;
-    x - x * z * estrin9(z - 0.5, &ATAN_F32)
+    atan_unit_sq_f32(x, x * x)
 }
 
 /// `sin(x)` for `x` in [0, π/2], `f64`.

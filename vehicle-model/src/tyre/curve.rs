@@ -63,19 +63,25 @@ impl<T: Real> Shape<T> {
     #[cfg(test)]
     pub fn at(&self, t: T) -> T {
         let u = t / self.c;
-        self.at_u(u, T::ONE / u)
+        let inv_u = T::ONE / u;
+        self.at_u(u, inv_u, u * u, inv_u * inv_u)
     }
 
     /// The curve at `u = t/C ≥ 0`, given `1/u` too (∞ at `u = 0`): `sin(C·atan(φ))`,
     /// `φ = (1 − E)·u + E·atan(u)`. The caller forms both `u` and `1/u` by products of values
     /// it has anyway ([`super::MagicFormula`]'s combined slip), so the first arc tangent needs no
-    /// division to reduce its argument; the second divides once. The arc tangents and the sine are
-    /// [`Real::atan_unit`] and [`Real::sin_quadrant`] after exact reductions: within 1.5e-15 of
+    /// division to reduce its argument, and the second is [`Real::atan_nonneg`], whose reciprocal
+    /// starts with its polynomials. The arc tangents and the sine are [`Real::atan_unit`] and
+    /// [`Real::sin_quadrant`] after exact reductions: within 1.5e-15 of
     /// the peak of the same formula through libm's `atan` and `sin` in `f64`, 6e-7 in `f32`
     /// (the test `polynomial_curve_is_libm_curve`).
+    ///
+    /// The squares `u²` and `1/u²` are given too (to a few ulp): the caller forms them
+    /// without the square root that `u` waits for, and the first arc tangent's polynomial, in
+    /// the square, starts before `u` is known.
     #[inline(always)]
-    pub fn at_u(&self, u: T, inv_u: T) -> T {
-        let phi = (T::ONE - self.e) * u + self.e * atan_pos(u, inv_u);
+    pub fn at_u(&self, u: T, inv_u: T, u_sq: T, inv_u_sq: T) -> T {
+        let phi = (T::ONE - self.e) * u + self.e * atan_pos(u, inv_u, u_sq, inv_u_sq);
         sin_0_pi(self.c * phi.atan_nonneg())
     }
 
@@ -97,12 +103,17 @@ impl<T: Real> Shape<T> {
     }
 }
 
-/// `atan(x)` for `x ≥ 0` given `1/x`: `π/2 − atan(1/x)` above 1. Either way the polynomial sees
-/// [0, 1], and the choice is a select of the argument and of the result, not of the code.
+/// `atan(x)` for `x ≥ 0` given `1/x` and both squares: `π/2 − atan(1/x)` above 1. Either way
+/// the polynomial sees [0, 1], and the choice is a select of the argument and of the result,
+/// not of the code.
 #[inline(always)]
-fn atan_pos<T: Real>(x: T, inv_x: T) -> T {
+fn atan_pos<T: Real>(x: T, inv_x: T, x_sq: T, inv_x_sq: T) -> T {
     let above = x > T::ONE;
-    let a = (if above { inv_x } else { x }).atan_unit();
+    let a = if above {
+        inv_x.atan_unit_sq(inv_x_sq)
+    } else {
+        x.atan_unit_sq(x_sq)
+    };
     if above { T::FRAC_PI_2 - a } else { a }
 }
 

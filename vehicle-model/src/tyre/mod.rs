@@ -302,13 +302,20 @@ impl<T: Real> MagicFormula<T> {
         }
         let inv_r2 = T::ONE / r2;
         // The shape's C blended by w = n_y² is q/r2 with q = C_x·a² + C_y·b².
-        let inv_q = T::ONE / (self.shapes[0].c * a2 + self.shapes[1].c * b2);
+        let q = self.shapes[0].c * a2 + self.shapes[1].c * b2;
+        let inv_q = T::ONE / q;
         let w = b2 * inv_r2;
         let inv_root = root * inv_r2;
         let inv_norm = c.divisor * inv_root;
         let n = [a * inv_root, b * inv_root];
         let shape = self.shapes[0].blend(&self.shapes[1], w);
-        let value = shape.at_u(norm * (r2 * inv_q), shape.c * inv_norm);
+        // u = t/C = norm·r2/q and its inverse, and their squares from r2 and the quotients,
+        // not from the square root: the first arc tangent's polynomial starts without it.
+        let r2_q = r2 * inv_q;
+        let q_r2 = q * inv_r2;
+        let u_sq = (r2 * (c.inv_divisor * c.inv_divisor)) * (r2_q * r2_q);
+        let inv_u_sq = (q_r2 * q_r2) * ((c.divisor * c.divisor) * inv_r2);
+        let value = shape.at_u(norm * r2_q, shape.c * inv_norm, u_sq, inv_u_sq);
         let secant = value * inv_norm;
         let adhesion = [0, 1].map(|i| c.mu[i] * value * n[i]);
         // Past the peak the patch slides: its force turns from the stiffness-weighted direction
