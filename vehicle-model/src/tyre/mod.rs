@@ -317,7 +317,8 @@ impl<T: Real> MagicFormula<T> {
         let inv_u_sq = (q_r2 * q_r2) * ((c.divisor * c.divisor) * inv_r2);
         let value = shape.at_u(norm * r2_q, shape.c * inv_norm, u_sq, inv_u_sq);
         let secant = value * inv_norm;
-        let adhesion = [0, 1].map(|i| c.mu[i] * value * n[i]);
+        // μ·n before the curve's value is known: one product follows it.
+        let adhesion = [0, 1].map(|i| (c.mu[i] * n[i]) * value);
         // Past the peak the patch slides: its force turns from the stiffness-weighted direction
         // toward the one opposing the sliding velocity, (κ, tan α), reached at twice the peak.
         let t_peak = self.t_peak[0] + (self.t_peak[1] - self.t_peak[0]) * w;
@@ -357,9 +358,12 @@ impl<T: Real> MagicFormula<T> {
         if !(slip[0].is_finite() && slip[1].is_finite() && load.is_finite()) {
             return [T::ZERO; 2];
         }
-        let c = self.at_load(load, road);
+        // The friction per unit load times the load is the force per unit of the curve: the
+        // evaluation then gives newtons, with no product after the curve's last one.
+        let mut c = self.at_load(load, road);
+        c.mu = c.mu.map(|m| m * load);
         let (f, _) = self.force_and_secant(slip, &c);
-        f.map(|v| v * load)
+        f
     }
 
     /// The slips `[κ_p, tan α_p]` at which the pure-slip forces peak, at `load` (N) on a road
