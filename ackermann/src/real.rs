@@ -99,6 +99,11 @@ pub trait Real:
     /// 1 ulp of [`Real::atan`] for `square = self·self`; a square off by a few ulp moves the
     /// result by less than `0.22·self` times its relative error.
     fn atan_unit_sq(self, square: Self) -> Self;
+    /// `offset + scale·atan(self)` for `self` in [0, 1] given `square = self²`, as
+    /// [`Real::atan_unit_sq`] with the affine map folded into the polynomial's last product
+    /// and sum (one product and one sum follow the polynomial, not four operations). Its
+    /// rounding differs from the map applied to [`Real::atan_unit_sq`]'s result.
+    fn atan_unit_affine(self, square: Self, offset: Self, scale: Self) -> Self;
     /// `atan(self)` (rad) for `self ≥ 0`: [`Real::atan_unit`] up to 1; above, `π/2 − 1/x`
     /// plus `1/x` times a rational in `x²`, so the reciprocal and the rational's two
     /// polynomials start together, and only the rational's quotient follows them. Within 2 ulp
@@ -170,7 +175,7 @@ macro_rules! impl_real {
     ($t:ty, $m:ident, sin = $sin:ident, cos = $cos:ident, tan = $tan:ident, atan = $atan:ident,
      atan2 = $atan2:ident, asin = $asin:ident, sqrt = $sqrt:ident, hypot = $hypot:ident,
      floor = $floor:ident, round = $round:ident, trunc = $trunc:ident, pow = $pow:ident,
-     exp = $exp:ident, atan_unit = $atan_unit:ident, atan_unit_sq = $atan_unit_sq:ident, atan_nonneg = $atan_nonneg:ident, sin_quadrant = $sin_quadrant:ident) => {
+     exp = $exp:ident, atan_unit = $atan_unit:ident, atan_unit_sq = $atan_unit_sq:ident, atan_unit_affine = $atan_unit_affine:ident, atan_nonneg = $atan_nonneg:ident, sin_quadrant = $sin_quadrant:ident) => {
         impl Real for $t {
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
@@ -256,6 +261,10 @@ macro_rules! impl_real {
                 poly::$atan_unit_sq(self, square)
             }
             #[inline(always)]
+            fn atan_unit_affine(self, square: Self, offset: Self, scale: Self) -> Self {
+                poly::$atan_unit_affine(self, square, offset, scale)
+            }
+            #[inline(always)]
             fn atan_nonneg(self) -> Self {
                 poly::$atan_nonneg(self)
             }
@@ -293,6 +302,7 @@ impl_real!(
     exp = expf,
     atan_unit = atan_unit_f32,
     atan_unit_sq = atan_unit_sq_f32,
+    atan_unit_affine = atan_unit_affine_f32,
     atan_nonneg = atan_nonneg_f32,
     sin_quadrant = sin_quadrant_f32
 );
@@ -314,6 +324,7 @@ impl_real!(
     exp = exp,
     atan_unit = atan_unit_f64,
     atan_unit_sq = atan_unit_sq_f64,
+    atan_unit_affine = atan_unit_affine_f64,
     atan_nonneg = atan_nonneg_f64,
     sin_quadrant = sin_quadrant_f64
 );

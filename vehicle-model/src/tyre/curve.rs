@@ -81,7 +81,14 @@ impl<T: Real> Shape<T> {
     /// the square, starts before `u` is known.
     #[inline(always)]
     pub fn at_u(&self, u: T, inv_u: T, u_sq: T, inv_u_sq: T) -> T {
-        let phi = (T::ONE - self.e) * u + self.e * atan_pos(u, inv_u, u_sq, inv_u_sq);
+        // φ = (1 − E)·u + E·atan(u); above 1, atan(u) = π/2 − atan(1/u). The map from the
+        // polynomial's arc tangent to φ is affine, folded into its last product and sum.
+        let base = (T::ONE - self.e) * u;
+        let phi = if u > T::ONE {
+            inv_u.atan_unit_affine(inv_u_sq, base + self.e * T::FRAC_PI_2, -self.e)
+        } else {
+            u.atan_unit_affine(u_sq, base, self.e)
+        };
         sin_0_pi(self.c * phi.atan_nonneg())
     }
 
@@ -101,20 +108,6 @@ impl<T: Real> Shape<T> {
             u_peak: mix(self.u_peak, other.u_peak),
         }
     }
-}
-
-/// `atan(x)` for `x ≥ 0` given `1/x` and both squares: `π/2 − atan(1/x)` above 1. Either way
-/// the polynomial sees [0, 1], and the choice is a select of the argument and of the result,
-/// not of the code.
-#[inline(always)]
-fn atan_pos<T: Real>(x: T, inv_x: T, x_sq: T, inv_x_sq: T) -> T {
-    let above = x > T::ONE;
-    let a = if above {
-        inv_x.atan_unit_sq(inv_x_sq)
-    } else {
-        x.atan_unit_sq(x_sq)
-    };
-    if above { T::FRAC_PI_2 - a } else { a }
 }
 
 /// `sin(x)` for `x` in [0, π): the curve's angle `C·atan(φ)` with `C < 2`, `φ ≥ 0`. Folded into
