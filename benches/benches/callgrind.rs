@@ -26,7 +26,9 @@ use benches::peer::{PeerParams, RayCastCar};
 use benches::scenes::{CarScene, RobotScene};
 use powertrain::{Engine, EngineType, LimitedSlip, split_torque};
 use sim::{Mounting, TyreChoice};
-use vehicle_model::{Real, WheelDrive};
+use vehicle_model::{
+    ContactVelocity, Linearised, MagicFormula, Real, TransientSlip, TyreClass, WheelDrive,
+};
 
 /// Steps run natively in smoke mode.
 const SMOKE_STEPS: u64 = 3;
@@ -85,6 +87,30 @@ const CASES: &[Case] = &[
         function: "cg_torque_split_f32",
         steps: 10_000,
         run: run_torque_split_f32,
+    },
+    Case {
+        name: "tyre_force_f32",
+        function: "cg_tyre_force_f32",
+        steps: 10_000,
+        run: run_tyre::<f32>,
+    },
+    Case {
+        name: "tyre_force_f64",
+        function: "cg_tyre_force_f64",
+        steps: 10_000,
+        run: run_tyre::<f64>,
+    },
+    Case {
+        name: "tyre_linearise_f32",
+        function: "cg_tyre_linearise_f32",
+        steps: 10_000,
+        run: run_tyre::<f32>,
+    },
+    Case {
+        name: "tyre_linearise_f64",
+        function: "cg_tyre_linearise_f64",
+        steps: 10_000,
+        run: run_tyre::<f64>,
     },
     Case {
         name: "sim_car_speed_1",
@@ -160,6 +186,104 @@ fn run_driver<T: CountedStep, const TORQUE_MODE: bool>(steps: u64) {
     }
     for _ in 0..steps {
         black_box(T::counted_step(&mut l));
+    }
+}
+
+#[inline(never)]
+fn cg_tyre_force_f32(t: &MagicFormula<f32>, slip: [f32; 2], load: f32) -> [f32; 2] {
+    t.force(slip, load, 1.0)
+}
+
+#[inline(never)]
+fn cg_tyre_force_f64(t: &MagicFormula<f64>, slip: [f64; 2], load: f64) -> [f64; 2] {
+    t.force(slip, load, 1.0)
+}
+
+#[inline(never)]
+fn cg_tyre_linearise_f32(
+    t: &MagicFormula<f32>,
+    s: &TransientSlip<f32>,
+    v: &ContactVelocity<f32>,
+    load: f32,
+) -> Linearised<f32> {
+    t.linearise(s, v, load, 1.0, 0.01)
+}
+
+#[inline(never)]
+fn cg_tyre_linearise_f64(
+    t: &MagicFormula<f64>,
+    s: &TransientSlip<f64>,
+    v: &ContactVelocity<f64>,
+    load: f64,
+) -> Linearised<f64> {
+    t.linearise(s, v, load, 1.0, 0.01)
+}
+
+/// The counted tyre evaluations in scalar type `T`.
+trait CountedTyre: Real {
+    fn force(t: &MagicFormula<Self>, slip: [Self; 2], load: Self) -> [Self; 2];
+    fn linearise(
+        t: &MagicFormula<Self>,
+        s: &TransientSlip<Self>,
+        v: &ContactVelocity<Self>,
+        load: Self,
+    ) -> Linearised<Self>;
+}
+
+impl CountedTyre for f32 {
+    fn force(t: &MagicFormula<f32>, slip: [f32; 2], load: f32) -> [f32; 2] {
+        cg_tyre_force_f32(t, slip, load)
+    }
+    fn linearise(
+        t: &MagicFormula<f32>,
+        s: &TransientSlip<f32>,
+        v: &ContactVelocity<f32>,
+        load: f32,
+    ) -> Linearised<f32> {
+        cg_tyre_linearise_f32(t, s, v, load)
+    }
+}
+
+impl CountedTyre for f64 {
+    fn force(t: &MagicFormula<f64>, slip: [f64; 2], load: f64) -> [f64; 2] {
+        cg_tyre_force_f64(t, slip, load)
+    }
+    fn linearise(
+        t: &MagicFormula<f64>,
+        s: &TransientSlip<f64>,
+        v: &ContactVelocity<f64>,
+        load: f64,
+    ) -> Linearised<f64> {
+        cg_tyre_linearise_f64(t, s, v, load)
+    }
+}
+
+/// The kernels bench's tyre (a passenger tyre at 4.2 kN, combined slip κ −0.08, tan α 0.05;
+/// the linearisation over 10 ms from a transient slip): both counted functions are called
+/// each step, and each case counts only its own.
+fn run_tyre<T: CountedTyre>(steps: u64) {
+    let f = T::from_f64;
+    let tyre = TyreClass::PassengerCar
+        .params(f(0.35), f(4000.0))
+        .validate()
+        .unwrap();
+    let state = TransientSlip {
+        ratio: f(-0.07),
+        angle_tan: f(0.045),
+    };
+    let v = ContactVelocity {
+        forward: f(20.0),
+        slip: [f(1.6), f(-0.9)],
+    };
+    let (slip, load) = ([f(-0.08), f(0.05)], f(4200.0));
+    for i in 0..WARM_UP_STEPS + steps {
+        if i < WARM_UP_STEPS {
+            black_box(tyre.force(black_box(slip), black_box(load), f(1.0)));
+            black_box(tyre.linearise(&state, &v, black_box(load), f(1.0), f(0.01)));
+        } else {
+            black_box(T::force(black_box(&tyre), black_box(slip), black_box(load)));
+            black_box(T::linearise(black_box(&tyre), &state, &v, black_box(load)));
+        }
     }
 }
 
