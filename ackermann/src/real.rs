@@ -3,8 +3,8 @@
 //! Firmware runs in `f32` (the Cortex-M4F FPU is single precision); the C API and Webots parity
 //! work use `f64`. All transcendental functions go through [`libm`], never the platform's maths
 //! library, so the host and the target compute bit-identical results for the same inputs; the
-//! two polynomial kernels for hot paths ([`Real::atan_unit`], [`Real::sin_quadrant`]) are pure
-//! arithmetic in a fixed order, bit-identical too.
+//! polynomial kernels for hot paths ([`Real::atan_unit`] and its variants, [`Real::atan_nonneg`],
+//! [`Real::sin_quadrant`]) are pure arithmetic in a fixed order, bit-identical too.
 
 mod poly;
 

@@ -1,11 +1,14 @@
-//! Polynomial arc tangent and sine on reduced ranges, for the hot paths that cannot afford libm's
-//! argument reduction (the tyre curve).
+//! Polynomial arc tangent and sine on reduced ranges, and a rational arc tangent above 1, for the
+//! hot paths that cannot afford libm's argument reduction (the tyre curve).
 //!
-//! Pure `+` and `×` in a fixed order (Rust never contracts them into fused operations), so every
-//! target computes the same bits, like the rest of [`super::Real`]. The coefficients were fitted
-//! for this crate (near-minimax, by least squares on Chebyshev points in 50-digit arithmetic,
-//! each coefficient rounded to the type before the later ones were refitted to that rounding);
-//! the tests below bound the whole evaluation, rounding included, against libm.
+//! Pure `+` and `×` (and the rational's two divisions, correctly rounded everywhere) in a fixed
+//! order (Rust never contracts them into fused operations), so every target computes the same
+//! bits, like the rest of [`super::Real`]. The coefficients were fitted for this crate: the
+//! polynomials near-minimax, by least squares on Chebyshev points in 50-digit arithmetic, each
+//! coefficient rounded to the type before the later ones were refitted to that rounding; the
+//! rationals by linearised least squares (the denominator of the previous pass as weight,
+//! reweighted toward minimax), rounded once. The tests below bound the whole evaluation,
+//! rounding included, against libm.
 
 use super::Real;
 
