@@ -40,7 +40,8 @@ def test_a_scenario_gives_the_metrics_and_telemetry_of_vehicle_sim(vehicle_sim, 
     header, rows = rows[0], rows[1:]
     telemetry = result.telemetry["lane-change"]
     assert header == ["scenario", "car", *telemetry.columns]
-    assert len(telemetry) == len(rows) == 1551
+    # The state at time 0, then one sample per 10 ms step.
+    assert len(telemetry) == len(rows) == 1 + round(metrics["sim_seconds"] / 0.01)
     scaled = telemetry.to_numpy() * 1e6
     rounded = np.sign(scaled) * np.floor(np.abs(scaled) + 0.5) / 1e6
     expected = np.array([[float(v) if v else math.nan for v in row[2:]] for row in rows])

@@ -33,7 +33,7 @@ fn test_track_on_the_default_car() {
 }
 
 known_joints_gap! {
-    "joints on Webots' rigid contact: cruising straight at 60 km/h before the lane change, the left and right tyres of each axle push against each other at the friction limit (about 4.5 kN each way: two rigid contacts on one axle share a lateral load in no unique way) and the car shakes sideways at ±9.9 m/s² with a 50 ms period, above the lane change's 1-9.81 m/s² band",
+    "joints on Webots' rigid contact: cruising straight at 60 km/h before the lane change, the left and right tyres of each axle push against each other at the friction limit (about 4.5 kN each way: two rigid contacts on one axle share a lateral load in no unique way) and the car shakes sideways at ±9.9 m/s² with a 50 ms period, above the lane change's 1-9.81 m/s² band; a yaw oscillation grows from the start of the acceleration, and a forceDependentSlip of 1e-6 m/s per N removes it",
     fn test_track_on_webots_contact() {
         let world = parse_str(
             "webots.toml",

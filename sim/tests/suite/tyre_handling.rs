@@ -263,7 +263,7 @@ fn step_steer_yaw_response_has_the_single_track_time_constant() {
 }
 
 known_joints_gap! {
-    "joints: the peak of v·r over 0.5 s is 9.93 m/s² against 0.95 g = 9.32 (the cast car: 9.35): both level off at a lateral acceleration of 8.6-8.8 m/s², but at the limit the joints car's yaw oscillates more (body slip -0.08 to -0.22 rad against -0.12 to -0.18) and its load transfer is 3-4 % larger, also with 3 kg wheels: cause not found yet",
+    "joints: the peak of v·r over 0.5 s is 9.93 m/s² against 0.95 g = 9.32 (the cast car: 9.35): both level off at the same lateral acceleration (8.82 against 8.84 m/s², 0.5 s means), but at the limit the joints car's yaw oscillates more, and the more the longer the step (peak v·r 9.67/9.93/10.61 m/s² at 5/10/20 ms, the cast car 9.41/9.35/9.20): not the one-step lag of its tyre loads (loads from the springs' current compression change nothing); cause not found yet",
     fn the_grip_limit_is_the_tyres_peak_friction() {
         // A slow steering ramp at 20 m/s on friction 1: the lateral acceleration levels off at the
         // lateral peak friction (0.95) × g, and the car, front-heavy (it understeers), does not

@@ -265,7 +265,7 @@ impl WheelRow {
 /// The impulses of one wheel's rows over a step.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub(crate) struct Impulses {
-    /// Suspension impulse along the chassis up axis (N·s, ≥ 0): load × dt.
+    /// The ground's normal impulse along its normal (N·s, ≥ 0): load × dt.
     pub normal: f32,
     /// Tyre impulse along the rolling direction (N·s).
     pub forward: f32,
