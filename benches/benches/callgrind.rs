@@ -26,9 +26,7 @@ use benches::peer::{PeerParams, RayCastCar};
 use benches::scenes::{CarScene, RobotScene};
 use powertrain::{Engine, EngineType, LimitedSlip, split_torque};
 use sim::{Mounting, TyreChoice};
-use vehicle_model::{
-    ContactVelocity, Linearised, MagicFormula, Real, TransientSlip, TyreClass, WheelDrive,
-};
+use vehicle_model::{ContactVelocity, Linearised, MagicFormula, Real, TransientSlip, WheelDrive};
 
 /// Steps run natively in smoke mode.
 const SMOKE_STEPS: u64 = 3;
@@ -262,27 +260,27 @@ impl CountedTyre for f64 {
 /// the linearisation over 10 ms from a transient slip): both counted functions are called
 /// each step, and each case counts only its own.
 fn run_tyre<T: CountedTyre>(steps: u64) {
-    let f = T::from_f64;
-    let tyre = TyreClass::PassengerCar
-        .params(f(0.35), f(4000.0))
-        .validate()
-        .unwrap();
-    let state = TransientSlip {
-        ratio: f(-0.07),
-        angle_tan: f(0.045),
-    };
-    let v = ContactVelocity {
-        forward: f(20.0),
-        slip: [f(1.6), f(-0.9)],
-    };
-    let (slip, load) = ([f(-0.08), f(0.05)], f(4200.0));
+    let c = fixtures::tyre_case::<T>().unwrap();
+    let (one, dt) = (T::ONE, T::from_f64(0.01));
     for i in 0..WARM_UP_STEPS + steps {
         if i < WARM_UP_STEPS {
-            black_box(tyre.force(black_box(slip), black_box(load), f(1.0)));
-            black_box(tyre.linearise(&state, &v, black_box(load), f(1.0), f(0.01)));
+            black_box(c.tyre.force(black_box(c.slip), black_box(c.load), one));
+            black_box(
+                c.tyre
+                    .linearise(&c.state, &c.velocity, black_box(c.load), one, dt),
+            );
         } else {
-            black_box(T::force(black_box(&tyre), black_box(slip), black_box(load)));
-            black_box(T::linearise(black_box(&tyre), &state, &v, black_box(load)));
+            black_box(T::force(
+                black_box(&c.tyre),
+                black_box(c.slip),
+                black_box(c.load),
+            ));
+            black_box(T::linearise(
+                black_box(&c.tyre),
+                &c.state,
+                &c.velocity,
+                black_box(c.load),
+            ));
         }
     }
 }

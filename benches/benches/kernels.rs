@@ -13,7 +13,6 @@ use benches::fixtures;
 use criterion::measurement::WallTime;
 use criterion::{BenchmarkGroup, BenchmarkId, Criterion, criterion_group, criterion_main};
 use powertrain::{EngineType, LimitedSlip, split_torque};
-use vehicle_model::{ContactVelocity, TransientSlip, TyreClass};
 
 fn wheel_angles<T: Real>(g: &mut BenchmarkGroup<'_, WallTime>, name: &str) {
     let geometry = fixtures::bmw_x5::<T>().unwrap();
@@ -50,31 +49,19 @@ fn torque_split<T: Real>(g: &mut BenchmarkGroup<'_, WallTime>, name: &str) {
 /// the linearisation a simulator asks for each wheel each step (transient slip predicted over
 /// 10 ms, force and slope per unit load), at a braking slip with a slip angle.
 fn tyre<T: Real>(g: &mut BenchmarkGroup<'_, WallTime>, name: &str) {
-    let f = T::from_f64;
-    let tyre = TyreClass::PassengerCar
-        .params(f(0.35), f(4000.0))
-        .validate()
-        .unwrap();
-    let slip = [f(-0.08), f(0.05)];
+    let c = fixtures::tyre_case::<T>().unwrap();
+    let one = T::ONE;
     g.bench_function(BenchmarkId::new("tyre_force", name), |b| {
-        b.iter(|| black_box(&tyre).force(black_box(slip), black_box(f(4200.0)), f(1.0)))
+        b.iter(|| black_box(&c.tyre).force(black_box(c.slip), black_box(c.load), one))
     });
-    let state = TransientSlip {
-        ratio: f(-0.07),
-        angle_tan: f(0.045),
-    };
-    let v = ContactVelocity {
-        forward: f(20.0),
-        slip: [f(1.6), f(-0.9)],
-    };
     g.bench_function(BenchmarkId::new("tyre_linearise", name), |b| {
         b.iter(|| {
-            black_box(&tyre).linearise(
-                black_box(&state),
-                black_box(&v),
-                black_box(f(4200.0)),
-                f(1.0),
-                f(0.01),
+            black_box(&c.tyre).linearise(
+                black_box(&c.state),
+                black_box(&c.velocity),
+                black_box(c.load),
+                one,
+                T::from_f64(0.01),
             )
         })
     });

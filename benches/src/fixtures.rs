@@ -1,10 +1,12 @@
-//! Inputs of the kernel benchmarks: a car geometry, one engine of each type, a sensor frame.
+//! Inputs of the kernel benchmarks: a car geometry, one engine of each type, a sensor frame,
+//! a tyre at a combined slip.
 //!
 //! Every benchmark starts from these, so that the criterion benches and the callgrind harness
 //! measure the same work.
 
 use ackermann::{DifferentialRatios, Geometry, GeometryError, PerWheel, Real};
 use powertrain::{Engine, EngineParams, EngineType, PowertrainError};
+use vehicle_model::{ContactVelocity, MagicFormula, TransientSlip, TyreClass, TyreError};
 
 /// The BMW X5 of Webots' car models: wheelbase 2.995 m, front and rear track 1.628 m, front and
 /// rear tyre radius 0.374 m.
@@ -75,6 +77,45 @@ pub fn turning_wheel_speeds<T: Real>() -> PerWheel<T> {
 /// As [`bmw_x5`].
 pub fn turning_ratios<T: Real>() -> Result<DifferentialRatios<T>, GeometryError> {
     Ok(bmw_x5::<T>()?.ackermann_ratios(T::from_f64(0.2)))
+}
+
+/// The tyre of the tyre benchmarks: a passenger tyre (radius 0.35 m, nominal load 4 kN) at a
+/// braking slip with a slip angle.
+#[derive(Debug, Clone, Copy)]
+pub struct TyreCase<T> {
+    /// The slip-based tyre.
+    pub tyre: MagicFormula<T>,
+    /// `[κ, tan α]` of the force evaluation: −0.08, 0.05.
+    pub slip: [T; 2],
+    /// Load (N): 4200.
+    pub load: T,
+    /// Transient slip the linearisation starts from: κ′ −0.07, tan α′ 0.045.
+    pub state: TransientSlip<T>,
+    /// Contact velocities of the linearisation (m/s): 20 forward, slip `[1.6, −0.9]`.
+    pub velocity: ContactVelocity<T>,
+}
+
+/// The [`TyreCase`] in `T`.
+///
+/// # Errors
+/// Never for these constants (see [`bmw_x5`]).
+pub fn tyre_case<T: Real>() -> Result<TyreCase<T>, TyreError> {
+    let f = T::from_f64;
+    Ok(TyreCase {
+        tyre: TyreClass::PassengerCar
+            .params(f(0.35), f(4000.0))
+            .validate()?,
+        slip: [f(-0.08), f(0.05)],
+        load: f(4200.0),
+        state: TransientSlip {
+            ratio: f(-0.07),
+            angle_tan: f(0.045),
+        },
+        velocity: ContactVelocity {
+            forward: f(20.0),
+            slip: [f(1.6), f(-0.9)],
+        },
+    })
 }
 
 #[cfg(test)]
