@@ -55,7 +55,7 @@ use ackermann::{PerWheel, Wheel};
 use rapier3d::prelude::{
     CoefficientCombineRule, ColliderBuilder, ColliderHandle, GenericJoint, GenericJointBuilder,
     JointAxesMask, JointAxis, MassProperties, Mat3, Multibody, MultibodyJointHandle, PhysicsWorld,
-    Pose, RigidBody, RigidBodyBuilder, RigidBodyHandle, RigidBodyType, Vector,
+    Pose, RigidBody, RigidBodyBuilder, RigidBodyHandle, Vector,
 };
 
 use super::cast::{body_inertia, mass_properties};
@@ -337,12 +337,9 @@ fn ground_contact(
                 continue;
             }
             let collider = world.colliders.get(other);
-            let body = collider.and_then(|c| c.parent()).filter(|&h| {
-                world
-                    .bodies
-                    .get(h)
-                    .is_some_and(|b| b.body_type() == RigidBodyType::Dynamic)
-            });
+            let body = collider
+                .and_then(|c| c.parent())
+                .filter(|&h| world.bodies.get(h).is_some_and(|b| b.is_dynamic()));
             best = Some(GroundContact {
                 normal,
                 impulse,
@@ -456,10 +453,16 @@ impl Vehicle {
         let mut imposed = [0.0; 4];
         let mut roads = [0.0; 4];
         let mut grounds = [None; 4];
+        let mut axes = [Vector::ZERO; 4];
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
             imposed[i] = self.start_row(w, &mut rows[i], dt);
+            let Some((centre, axis)) = wheel_frame(world, parts, w) else {
+                continue;
+            };
+            axes[i] = axis;
             let radius = self.spec.wheels[w].radius as f32;
-            let Some((contact, g)) = wheel_contact(world, parts, w, &frame, radius) else {
+            let Some((contact, g)) = wheel_contact(world, parts, w, &frame, centre, axis, radius)
+            else {
                 continue;
             };
             // rapier carried the load: the row's normal impulse is given.
@@ -484,29 +487,27 @@ impl Vehicle {
                 point: frame.com + c.contact_arm,
                 ground: grounds[i],
             });
-            let axis = wheel_frame(world, parts, w).map_or(Vector::ZERO, |(_, axis)| axis);
-            let spin_change =
-                self.spec.wheels[w].spin_inertia() * (omega - self.state.wheel_speeds[w]);
-            let spin_reaction = axis * (-spin_change / dt) as f32;
+            let spin_change = self.react_to_spin(&mut body, w, axes[i], omega);
+            let spin_reaction = axes[i] * (-spin_change / dt) as f32;
             drive(world, parts, w, tyre, spin_reaction, dt as f32);
-            self.react_to_spin(&mut body, w, axis, omega);
             self.finish_wheel(w, &rows[i], &body, f64::from(roads[i]), omega, dt);
         }
     }
 }
 
-/// Wheel `w`'s contact for the solve (its tyre of `radius`, m, on the ground rapier found under
-/// it in the last step, with arms from the centre of mass of `frame`) and that ground; `None`
-/// in the air.
+/// Wheel `w`'s contact for the solve (its tyre of `radius`, m, centred at `centre` on the spin
+/// `axis`, on the ground rapier found under it in the last step, with arms from the centre of
+/// mass of `frame`) and that ground; `None` in the air.
 fn wheel_contact(
     world: &PhysicsWorld,
     parts: &Parts,
     w: Wheel,
     frame: &Frame,
+    centre: Vector,
+    axis: Vector,
     radius: f32,
 ) -> Option<(Contact, GroundContact)> {
     let g = ground_contact(world, parts, w, frame.up)?;
-    let (centre, axis) = wheel_frame(world, parts, w)?;
     let contact = Contact::on_ground(Support::Given, g.normal, axis, centre, radius, frame.com)?;
     Some((contact, g))
 }

@@ -70,10 +70,11 @@ impl Vehicle {
     /// tyre force at the contact point, which carries the reaction of the torque that the tyre
     /// balances; this adds the part that spun the wheel up or down (I·Δω), so a motor, brake
     /// or damper turning a wheel in the air, or a speed ramp, also turns the chassis the other
-    /// way.
-    pub(super) fn react_to_spin(&self, body: &mut Body, w: Wheel, axis: Vector, omega: f64) {
+    /// way. Returns that change of the wheel's angular momentum about `axis` (N·m·s).
+    pub(super) fn react_to_spin(&self, body: &mut Body, w: Wheel, axis: Vector, omega: f64) -> f64 {
         let spin_change = self.spec.wheels[w].spin_inertia() * (omega - self.state.wheel_speeds[w]);
         body.angvel -= body.inv_inertia * (axis * spin_change as f32);
+        spin_change
     }
 
     /// Records wheel `w`'s end of step (spin `omega`, rad/s) and advances its tyre's transient
