@@ -4,27 +4,12 @@
 // Helpers outside #[test] functions unwrap too: a failure is a test failure.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output};
 
-fn vehicle_sim(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_vehicle-sim"))
-        .args(args)
-        .output()
-        .expect("vehicle-sim runs")
-}
+mod cli_common;
 
-/// A fresh scratch directory for one test.
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("vehicle-sim-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
+use cli_common::{scratch, text, vehicle_sim};
 
 #[test]
 fn help_lists_options_scenarios_and_models() {
