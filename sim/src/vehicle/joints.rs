@@ -60,7 +60,8 @@ use rapier3d::prelude::{
 
 use super::cast::{body_inertia, mass_properties};
 use super::contact::{self, Body, Contact, Support, WheelRow};
-use super::spec::{SpringDamper, VehicleSpec};
+use super::multibody::{self, WheelImpulse};
+use super::spec::{SpringDamper, VehicleSpec, WheelSpec};
 use super::tread::WHEEL_HOOKS;
 use super::wheels::Footing;
 use super::{Frame, Vehicle};
@@ -70,6 +71,40 @@ use crate::motor;
 /// Half height (m) of the flat core of a wheel's rounded tread: rapier's round cylinder needs
 /// one; the rest of the half width is the rounded border.
 const ROUND_TREAD_CORE: f64 = 1e-3;
+
+/// A wheel's tread as its rapier collider has it.
+#[derive(Debug, Clone, Copy)]
+struct Tread {
+    /// Outer radius (m).
+    radius: f32,
+    /// Radius of the rounded border across the tread (m): the half width less the core's.
+    border: f32,
+}
+
+impl Tread {
+    fn of(s: &WheelSpec) -> Tread {
+        Tread {
+            radius: s.radius as f32,
+            border: (s.width / 2.0 - ROUND_TREAD_CORE) as f32,
+        }
+    }
+
+    /// Where the tread of a wheel centred at `centre` (m, world) on the spin `axis` touches
+    /// ground of unit `normal`: one border radius along `−normal` from the border's centre
+    /// line nearest the ground (the tread's mid-plane taken for the 2 mm core, as for both
+    /// wheels of an axle alike). As the wheel leans, this moves across the tread by
+    /// `(radius − border)·sin(lean)`, and there the ground's normal force acts in rapier: the
+    /// tyre force goes there too, so that the solve's roll and pitch moments are rapier's
+    /// (under the wheel centre, a BmwX5 turning at 8.6 m/s² had about 100 N·m of roll the
+    /// solve did not see). Right under the centre if the wheel lies flat.
+    fn contact_point(&self, centre: Vector, axis: Vector, normal: Vector) -> Vector {
+        let down = (normal.dot(axis) * axis - normal).normalize_or_zero();
+        if down == Vector::ZERO {
+            return centre - normal * self.radius;
+        }
+        centre + down * (self.radius - self.border) - normal * self.border
+    }
+}
 
 /// Smallest cosine between a contact's normal and the chassis' up axis for the contact to be
 /// a wheel's ground, the surface its tyre grips on (45°): the road or a ramp, or the edge of a
@@ -196,13 +231,13 @@ pub(crate) fn build(world: &mut PhysicsWorld, spec: &VehicleSpec, origin: Pose) 
         );
         // rapier's (round) cylinder axis is its local y, the axle. The mass properties are the
         // solid cylinder's (`WheelSpec`), not the rounded shape's.
-        let border = (s.width / 2.0 - ROUND_TREAD_CORE) as f32;
+        let tread = Tread::of(s);
         let transverse = s.transverse_inertia() as f32;
         colliders[w] = world.insert_collider(
             ColliderBuilder::round_cylinder(
                 ROUND_TREAD_CORE as f32,
-                s.radius as f32 - border,
-                border,
+                tread.radius - tread.border,
+                tread.border,
             )
             .mass_properties(MassProperties::new(
                 Vector::ZERO,
@@ -357,49 +392,6 @@ fn wheel_frame(world: &PhysicsWorld, parts: &Parts, w: Wheel) -> Option<(Vector,
     Some((b.translation(), *b.rotation() * Vector::Y))
 }
 
-/// Applies the solved step of wheel `w` to rapier: the tyre's impulse over the step
-/// `tyre.impulse` (N·s, world) at `tyre.point` on the wheel, as a force over the step of `dt`
-/// seconds (a multibody link moves only through its joints' coordinates), with its reaction
-/// on the ground's body if that is dynamic, as an impulse; and `spin_reaction` (N·m, world),
-/// the torque that spun the wheel up or down, on the wheel, whose joint passes it to the
-/// chassis. The wheel's forces of the last step are cleared first.
-fn drive(
-    world: &mut PhysicsWorld,
-    parts: &Parts,
-    w: Wheel,
-    tyre: Option<TyreImpulse>,
-    spin_reaction: Vector,
-    dt: f32,
-) {
-    if let Some(b) = world.bodies.get_mut(parts.wheels[w]) {
-        // rapier keeps user forces and torques (separately) until reset.
-        b.reset_forces(true);
-        b.reset_torques(true);
-        if let Some(t) = tyre {
-            b.add_force_at_point(t.impulse / dt, t.point, true);
-        }
-        b.add_torque(spin_reaction, true);
-    }
-    if let Some(t) = tyre
-        && let Some(ground) = t.ground
-        && let Some(b) = world.bodies.get_mut(ground)
-    {
-        b.apply_impulse_at_point(-t.impulse, t.point, true);
-    }
-}
-
-/// A tyre's impulse over one step, where it acts, and the ground's body that takes its
-/// reaction.
-#[derive(Debug, Clone, Copy)]
-struct TyreImpulse {
-    /// Impulse on the wheel (N·s, world).
-    pub impulse: Vector,
-    /// Contact point (m, world).
-    pub point: Vector,
-    /// The ground's dynamic body, if any.
-    pub ground: Option<RigidBodyHandle>,
-}
-
 /// The joint readings of one step: steering angles `[FR, FL]` (rad, positive = right) and
 /// suspension compressions (m, > 0 = wheel pushed up).
 pub(crate) struct Readings {
@@ -442,9 +434,11 @@ impl Vehicle {
             com: pose.transform_point(parts.com),
             up: pose.rotation * Vector::Z,
         };
+        let (linvel, angvel) =
+            multibody::chassis_motion(world, parts).unwrap_or((chassis.linvel(), chassis.angvel()));
         let mut body = Body::new(
-            chassis.velocity_at_point(frame.com) + world.gravity * dt as f32,
-            chassis.angvel(),
+            linvel + angvel.cross(frame.com - chassis.center_of_mass()) + world.gravity * dt as f32,
+            angvel,
             parts.inv_mass,
             parts.inv_inertia,
             pose.rotation,
@@ -460,8 +454,8 @@ impl Vehicle {
                 continue;
             };
             axes[i] = axis;
-            let radius = self.spec.wheels[w].radius as f32;
-            let Some((contact, g)) = wheel_contact(world, parts, w, &frame, centre, axis, radius)
+            let tread = Tread::of(&self.spec.wheels[w]);
+            let Some((contact, g)) = wheel_contact(world, parts, w, &frame, centre, axis, tread)
             else {
                 continue;
             };
@@ -479,25 +473,38 @@ impl Vehicle {
             row.cold_start_rigid_forward();
         }
         contact::solve(&mut body, &mut rows, dt as f32);
+        let mut handed = PerWheel::splat(WheelImpulse::default());
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
             let omega = rows[i].solved_spin(imposed[i]);
-            let tyre = rows[i].contact.map(|c| TyreImpulse {
-                impulse: c.forward * rows[i].impulses.forward
-                    + c.lateral * rows[i].impulses.lateral,
-                point: frame.com + c.contact_arm,
-                ground: grounds[i],
-            });
             let spin_change = self.react_to_spin(&mut body, w, axes[i], omega);
-            let spin_reaction = axes[i] * (-spin_change / dt) as f32;
-            drive(world, parts, w, tyre, spin_reaction, dt as f32);
+            handed[w] = WheelImpulse {
+                tyre: rows[i].contact.map(|c| {
+                    (
+                        c.forward * rows[i].impulses.forward + c.lateral * rows[i].impulses.lateral,
+                        frame.com + c.contact_arm,
+                    )
+                }),
+                spin: axes[i] * -spin_change as f32,
+                ground: grounds[i],
+            };
             self.finish_wheel(w, &rows[i], &body, f64::from(roads[i]), omega, dt);
         }
+        if !self.joint_space_mass_ready {
+            self.joint_space_mass_ready = multibody::joint_space_mass_ready(world, parts);
+        }
+        multibody::hand_over(
+            world,
+            parts,
+            &handed,
+            dt as f32,
+            self.joint_space_mass_ready,
+        );
     }
 }
 
-/// Wheel `w`'s contact for the solve (its tyre of `radius`, m, centred at `centre` on the spin
-/// `axis`, on the ground rapier found under it in the last step, with arms from the centre of
-/// mass of `frame`) and that ground; `None` in the air.
+/// Wheel `w`'s contact for the solve (its `tread` centred at `centre` on the spin `axis`, on
+/// the ground rapier found under it in the last step, with arms from the centre of mass of
+/// `frame`) and that ground; `None` in the air.
 fn wheel_contact(
     world: &PhysicsWorld,
     parts: &Parts,
@@ -505,9 +512,59 @@ fn wheel_contact(
     frame: &Frame,
     centre: Vector,
     axis: Vector,
-    radius: f32,
+    tread: Tread,
 ) -> Option<(Contact, GroundContact)> {
     let g = ground_contact(world, parts, w, frame.up)?;
-    let contact = Contact::on_ground(Support::Given, g.normal, axis, centre, radius, frame.com)?;
+    let point = tread.contact_point(centre, axis, g.normal);
+    let contact = Contact::at_point(
+        Support::Given,
+        g.normal,
+        axis,
+        point,
+        tread.radius,
+        frame.com,
+    )?;
     Some((contact, g))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const TREAD: Tread = Tread {
+        radius: 0.374,
+        border: 0.124,
+    };
+
+    #[test]
+    fn an_upright_tread_touches_right_under_its_centre() {
+        let centre = Vector::new(1.0, 2.0, 0.5);
+        let p = TREAD.contact_point(centre, Vector::Y, Vector::Z);
+        assert!(
+            (p - Vector::new(1.0, 2.0, 0.5 - 0.374)).length() < 1e-6,
+            "{p:?}"
+        );
+    }
+
+    #[test]
+    fn a_leaning_tread_touches_under_its_border_circle_and_mirrors() {
+        // Leaning by φ = 0.05 rad about x: the border's centre line nearest the ground is
+        // (r − b)·(0, sin φ, −cos φ) from the centre, the contact b below it: y = 0.25·sin φ =
+        // 0.012495 m, z = −0.25·cos φ − 0.124 = −0.373688 m.
+        let phi: f32 = 0.05;
+        let lean = Vector::new(0.0, phi.cos(), phi.sin());
+        let p = TREAD.contact_point(Vector::ZERO, lean, Vector::Z);
+        assert!(
+            (p - Vector::new(0.0, 0.012_495, -0.373_688)).length() < 1e-6,
+            "{p:?}"
+        );
+        // The mirrored wheel (the other side of the axle, its axis mirrored in y and pointing
+        // the same way) touches at the mirrored point.
+        let mirrored = Vector::new(0.0, phi.cos(), -phi.sin());
+        let q = TREAD.contact_point(Vector::ZERO, mirrored, Vector::Z);
+        assert_eq!(q, Vector::new(p.x, -p.y, p.z));
+        // A wheel lying flat has no lowest circle: right under its centre.
+        let flat = TREAD.contact_point(Vector::ZERO, Vector::Z, Vector::Z);
+        assert_eq!(flat, Vector::new(0.0, 0.0, -0.374));
+    }
 }

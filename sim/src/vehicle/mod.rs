@@ -57,6 +57,7 @@ mod actuators;
 mod cast;
 mod contact;
 mod joints;
+mod multibody;
 mod spec;
 mod state;
 mod tread;
@@ -108,6 +109,9 @@ pub struct Vehicle {
     /// Transient slip of each slip-based tyre.
     slips: PerWheel<TransientSlip<f64>>,
     previous_com_velocity: Option<Vector>,
+    /// A car on joints: rapier has built its multibody's joint-space mass (at its first step),
+    /// so impulses may go to it as velocity changes (`multibody`).
+    joint_space_mass_ready: bool,
     state: VehicleState,
     steering_servo: PositionServo,
 }
@@ -150,6 +154,7 @@ impl Vehicle {
             impulses: PerWheel::splat(Impulses::default()),
             slips: PerWheel::splat(TransientSlip::default()),
             previous_com_velocity: None,
+            joint_space_mass_ready: false,
             state: VehicleState {
                 position: start,
                 roll_pitch_yaw: RollPitchYaw {
@@ -248,6 +253,9 @@ impl Vehicle {
     ) -> Result<(), SimError> {
         let fail = SimError::diverged(BodyOwner::Vehicle(self.id.0), time_ms);
         let mut s = self.state;
+        // The chassis' velocity (of its centre of mass) and angular velocity: a multibody
+        // link's own are those its last step started from (`multibody`).
+        let mut motion = None;
         let (chassis, pose, com) = match &self.parts {
             Parts::Cast(p) => {
                 let chassis = geom::finite_body(world, p.chassis).ok_or(fail(BodyPart::Chassis))?;
@@ -262,6 +270,7 @@ impl Vehicle {
                 s.steering = WheelAngles::new(r.steering[0], r.steering[1]);
                 s.suspension = r.suspension;
                 let pose = joints::car_pose(chassis, p);
+                motion = multibody::chassis_motion(world, p);
                 (chassis, pose, pose.transform_point(p.com))
             }
         };
@@ -275,12 +284,17 @@ impl Vehicle {
         let origin = pose.translation;
         s.position = geom::to_point(origin);
         s.roll_pitch_yaw = geom::roll_pitch_yaw(q);
-        let v = chassis.velocity_at_point(origin);
+        let (linvel, angvel) = motion.unwrap_or((chassis.linvel(), chassis.angvel()));
+        if !(linvel.is_finite() && angvel.is_finite()) {
+            return Err(fail(BodyPart::Chassis));
+        }
+        let velocity_at = |p: Vector| linvel + angvel.cross(p - chassis.center_of_mass());
+        let v = velocity_at(origin);
         s.velocity = geom::to_vector(v);
         s.forward_speed = f64::from(v.dot(q * Vector::X));
-        s.yaw_rate = f64::from(chassis.angvel().z);
+        s.yaw_rate = f64::from(angvel.z);
         // The whole car's centre of mass: the chassis body's, unless the wheels are bodies.
-        let v_com = chassis.velocity_at_point(com);
+        let v_com = velocity_at(com);
         if let Some(prev) = self.previous_com_velocity {
             let a = (v_com - prev) / dt as f32;
             s.longitudinal_acceleration = f64::from(a.dot(q * Vector::X));

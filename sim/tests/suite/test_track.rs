@@ -32,16 +32,14 @@ fn test_track_on_the_default_car() {
     test_track(&world_file::default_world());
 }
 
-known_joints_gap! {
-    "joints on Webots' rigid contact: cruising straight at 60 km/h before the lane change, the left and right tyres of each axle push against each other at the friction limit (about 4.5 kN each way: two rigid contacts on one axle share a lateral load in no unique way) and the car shakes sideways at ±9.9 m/s² with a 50 ms period, above the lane change's 1-9.81 m/s² band; a yaw oscillation grows from the start of the acceleration, and a forceDependentSlip of 1e-6 m/s per N removes it",
-    fn test_track_on_webots_contact() {
-        let world = parse_str(
-            "webots.toml",
-            "[vehicle]\nmodel = \"BmwX5\"\ntyre = \"webots\"\n[ground]\nfriction = 1.0\n",
-        )
-        .unwrap();
-        test_track(&world);
-    }
+#[test]
+fn test_track_on_webots_contact() {
+    let world = parse_str(
+        "webots.toml",
+        "[vehicle]\nmodel = \"BmwX5\"\ntyre = \"webots\"\n[ground]\nfriction = 1.0\n",
+    )
+    .unwrap();
+    test_track(&world);
 }
 
 /// The five car scenarios on a BmwX5 and what each must show, whichever the tyre.

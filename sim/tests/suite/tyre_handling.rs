@@ -262,44 +262,42 @@ fn step_steer_yaw_response_has_the_single_track_time_constant() {
     );
 }
 
-known_joints_gap! {
-    "joints: the peak of v·r over 0.5 s is 9.93 m/s² against 0.95 g = 9.32 (the cast car: 9.35): both level off at the same lateral acceleration (8.82 against 8.84 m/s², 0.5 s means), but at the limit the joints car's yaw oscillates more, and the more the longer the step (peak v·r 9.67/9.93/10.61 m/s² at 5/10/20 ms, the cast car 9.41/9.35/9.20): not the one-step lag of its tyre loads (loads from the springs' current compression change nothing); cause not found yet",
-    fn the_grip_limit_is_the_tyres_peak_friction() {
-        // A slow steering ramp at 20 m/s on friction 1: the lateral acceleration levels off at the
-        // lateral peak friction (0.95) × g, and the car, front-heavy (it understeers), does not
-        // spin.
-        let mut params = Model::BmwX5.params();
-        params.body.center_of_mass[0] = 1.9; // 63 % of the weight on the front axle
-        let (mut sim, id) = car(params, 1.0, 10);
-        let bike = Bicycle::of(sim.world().vehicle(id).unwrap().spec());
-        assert!(bike.understeer() > 0.0, "{}", bike.understeer());
-        sim.driver_mut(id).unwrap().set_cruising_speed(72.0);
-        common::run(&mut sim, 12.0);
-        let mut peak: f64 = 0.0;
-        let mut window = Vec::new();
-        for k in 0..2000 {
-            let delta = 0.15 * f64::from(k) / 2000.0;
-            sim.driver_mut(id).unwrap().set_steering_angle(-delta);
-            sim.step().unwrap();
-            let t = sim.telemetry(id).unwrap();
-            window.push(t.speed * t.state.yaw_rate);
-            if window.len() > 50 {
-                window.remove(0);
-                peak = peak.max(window.iter().sum::<f64>() / 50.0);
-            }
-            // At the limit the rear tyres too work near their peak slip angle (each axle carries
-            // lateral force in proportion to its load), so the body slip angle reaches about
-            // 0.1 rad; a car that spins passes 0.2 rad and keeps going.
-            let beta = body_slip(&t.state);
-            assert!(beta.abs() < 0.35, "spun: body slip {beta} rad at step {k}");
+#[test]
+fn the_grip_limit_is_the_tyres_peak_friction() {
+    // A slow steering ramp at 20 m/s on friction 1: the lateral acceleration levels off at the
+    // lateral peak friction (0.95) × g, and the car, front-heavy (it understeers), does not
+    // spin.
+    let mut params = Model::BmwX5.params();
+    params.body.center_of_mass[0] = 1.9; // 63 % of the weight on the front axle
+    let (mut sim, id) = car(params, 1.0, 10);
+    let bike = Bicycle::of(sim.world().vehicle(id).unwrap().spec());
+    assert!(bike.understeer() > 0.0, "{}", bike.understeer());
+    sim.driver_mut(id).unwrap().set_cruising_speed(72.0);
+    common::run(&mut sim, 12.0);
+    let mut peak: f64 = 0.0;
+    let mut window = Vec::new();
+    for k in 0..2000 {
+        let delta = 0.15 * f64::from(k) / 2000.0;
+        sim.driver_mut(id).unwrap().set_steering_angle(-delta);
+        sim.step().unwrap();
+        let t = sim.telemetry(id).unwrap();
+        window.push(t.speed * t.state.yaw_rate);
+        if window.len() > 50 {
+            window.remove(0);
+            peak = peak.max(window.iter().sum::<f64>() / 50.0);
         }
-        // 5 %: the load transfer lowers the limit a little (the peak friction falls with load),
-        // and the steered front tyres, sliding at the limit, push along their sliding velocity
-        // with some of their longitudinal friction (1.0 against 0.95 sideways), which raises it.
-        let limit = 0.95 * G;
-        println!("peak lateral acceleration {peak:.3} m/s² (0.95 g = {limit:.3})");
-        assert!((peak / limit - 1.0).abs() < 0.05, "{peak} vs {limit}");
+        // At the limit the rear tyres too work near their peak slip angle (each axle carries
+        // lateral force in proportion to its load), so the body slip angle reaches about
+        // 0.1 rad; a car that spins passes 0.2 rad and keeps going.
+        let beta = body_slip(&t.state);
+        assert!(beta.abs() < 0.35, "spun: body slip {beta} rad at step {k}");
     }
+    // 5 %: the load transfer lowers the limit a little (the peak friction falls with load),
+    // and the steered front tyres, sliding at the limit, push along their sliding velocity
+    // with some of their longitudinal friction (1.0 against 0.95 sideways), which raises it.
+    let limit = 0.95 * G;
+    println!("peak lateral acceleration {peak:.3} m/s² (0.95 g = {limit:.3})");
+    assert!((peak / limit - 1.0).abs() < 0.05, "{peak} vs {limit}");
 }
 
 #[test]

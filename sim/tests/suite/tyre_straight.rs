@@ -166,7 +166,7 @@ straight_tests! {
 }
 
 known_joints_gap! {
-    "joints: braking on μ 0.5 with the rear wheels locked, the RangeRover yaws 0.065 rad (limit 0.01): a rear-locked car is yaw-unstable, and rapier's contacts are not mirror-exact as the cast car's solve is",
+    "joints: braking on μ 0.5 with its rear wheels locked (Webots brakes all four alike), the RangeRover yaws 0.16 rad (limit 0.05): a rear-locked car is yaw-unstable (the yaw grows about 5-fold every 0.5 s), so the rounding of rapier's f32 multibody, not mirror-exact as the cast car's solve is, decides how far it turns; brake bias toward the front would remove the lock (a difference from Webots, not made)",
     fn range_rover_drives_straight() {
         check(Model::RangeRoverSportSVR);
     }

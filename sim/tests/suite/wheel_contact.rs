@@ -70,29 +70,27 @@ fn bmw_x5_free_rear_wheels_roll_smoothly_in_a_turn() {
     }
 }
 
-known_joints_gap! {
-    "joints: a free rear wheel is off its rolling rate by 0.52 % at its worst step (limit 0.5 %), its spin being the solve's as on the cast car, which keeps within the limit. Cause not found yet",
-    /// BmwX5 cruising straight at 20 km/h heading 45° from the world x axis (the worst heading
-    /// for a world-axis friction solve): the free rear wheels roll at v/r = 5.556/0.374 =
-    /// 14.85 rad/s within 0.5 % at every step.
-    fn bmw_x5_free_wheels_roll_smoothly_at_45_degrees() {
-        for tyre in [TyreChoice::of_model(Model::BmwX5), common::webots_tyre()] {
-            let mut sim = Simulation::new(World::new(WorldConfig::default()).unwrap());
-            let placement = VehiclePlacement {
-                yaw: std::f64::consts::FRAC_PI_4,
-                ..VehiclePlacement::default()
-            };
-            let (id, _) = sim
-                .add_car_with(Model::BmwX5.params(), &tyre, crate::MOUNTING, placement)
-                .unwrap();
-            common::run(&mut sim, 1.0);
-            sim.driver_mut(id).unwrap().set_cruising_speed(20.0);
-            common::run(&mut sim, 3.0);
-            let e = worst_deviation(&mut sim, id, 3.0, &REAR);
-            assert!(e < 0.005, "rear wheel off its rolling rate by {e}");
-            let v = sim.telemetry(id).unwrap().speed;
-            assert!((v - 20.0 / 3.6).abs() < 0.02, "{v} m/s");
-        }
+#[test]
+/// BmwX5 cruising straight at 20 km/h heading 45° from the world x axis (the worst heading
+/// for a world-axis friction solve): the free rear wheels roll at v/r = 5.556/0.374 =
+/// 14.85 rad/s within 0.5 % at every step.
+fn bmw_x5_free_wheels_roll_smoothly_at_45_degrees() {
+    for tyre in [TyreChoice::of_model(Model::BmwX5), common::webots_tyre()] {
+        let mut sim = Simulation::new(World::new(WorldConfig::default()).unwrap());
+        let placement = VehiclePlacement {
+            yaw: std::f64::consts::FRAC_PI_4,
+            ..VehiclePlacement::default()
+        };
+        let (id, _) = sim
+            .add_car_with(Model::BmwX5.params(), &tyre, crate::MOUNTING, placement)
+            .unwrap();
+        common::run(&mut sim, 1.0);
+        sim.driver_mut(id).unwrap().set_cruising_speed(20.0);
+        common::run(&mut sim, 3.0);
+        let e = worst_deviation(&mut sim, id, 3.0, &REAR);
+        assert!(e < 0.005, "rear wheel off its rolling rate by {e}");
+        let v = sim.telemetry(id).unwrap().speed;
+        assert!((v - 20.0 / 3.6).abs() < 0.02, "{v} m/s");
     }
 }
 

@@ -98,10 +98,24 @@ impl Contact {
         radius: f32,
         com: Vector,
     ) -> Option<Contact> {
+        Contact::at_point(support, normal, axis, centre - normal * radius, radius, com)
+    }
+
+    /// As [`Contact::on_ground`], touching the ground at `point` (m, world) instead of right
+    /// under the centre: where the ground's normal force acts on a wheel body whose tread is
+    /// rounded, which moves across the tread as the wheel leans.
+    pub fn at_point(
+        support: Support,
+        normal: Vector,
+        axis: Vector,
+        point: Vector,
+        radius: f32,
+        com: Vector,
+    ) -> Option<Contact> {
         let lateral = (axis - normal * normal.dot(axis)).normalize_or_zero();
         (lateral != Vector::ZERO).then(|| Contact {
             support,
-            contact_arm: centre - normal * radius - com,
+            contact_arm: point - com,
             normal,
             forward: lateral.cross(normal),
             lateral,
