@@ -110,6 +110,13 @@ pub trait Real:
     /// of [`Real::atan`] (the tests of `real/poly.rs`), bit-identical on every target.
     /// Meaningless below 0.
     fn atan_nonneg(self) -> Self;
+    /// `scale·atan(self)` (rad) for `self ≥ 0`, given `inv_scale = 1/scale`: as
+    /// [`Real::atan_nonneg`] with the product by `scale` folded into the last operations (up
+    /// to 1 into [`Real::atan_unit_affine`]'s; above, into the leading terms and the rational's
+    /// denominator), so no product follows the kernel. Within 4 ulp of `scale` times
+    /// [`Real::atan`] for `scale` in [1, 2] and `inv_scale` up to 2 ulp off `1/scale` (the tests
+    /// of `real/poly.rs`). Meaningless below 0.
+    fn atan_nonneg_scaled(self, scale: Self, inv_scale: Self) -> Self;
     /// `sin(self)` for `self` in [0, π/2], by a polynomial: within 2 ulp of [`Real::sin`] there,
     /// bit-identical on every target. Meaningless outside [0, π/2].
     fn sin_quadrant(self) -> Self;
@@ -175,7 +182,7 @@ macro_rules! impl_real {
     ($t:ty, $m:ident, sin = $sin:ident, cos = $cos:ident, tan = $tan:ident, atan = $atan:ident,
      atan2 = $atan2:ident, asin = $asin:ident, sqrt = $sqrt:ident, hypot = $hypot:ident,
      floor = $floor:ident, round = $round:ident, trunc = $trunc:ident, pow = $pow:ident,
-     exp = $exp:ident, atan_unit = $atan_unit:ident, atan_unit_sq = $atan_unit_sq:ident, atan_unit_affine = $atan_unit_affine:ident, atan_nonneg = $atan_nonneg:ident, sin_quadrant = $sin_quadrant:ident) => {
+     exp = $exp:ident, atan_unit = $atan_unit:ident, atan_unit_sq = $atan_unit_sq:ident, atan_unit_affine = $atan_unit_affine:ident, atan_nonneg = $atan_nonneg:ident, atan_nonneg_scaled = $atan_nonneg_scaled:ident, sin_quadrant = $sin_quadrant:ident) => {
         impl Real for $t {
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
@@ -268,6 +275,10 @@ macro_rules! impl_real {
             fn atan_nonneg(self) -> Self {
                 poly::$atan_nonneg(self)
             }
+            #[inline(always)]
+            fn atan_nonneg_scaled(self, scale: Self, inv_scale: Self) -> Self {
+                poly::$atan_nonneg_scaled(self, scale, inv_scale)
+            }
             #[inline]
             fn sin_quadrant(self) -> Self {
                 poly::$sin_quadrant(self)
@@ -304,6 +315,7 @@ impl_real!(
     atan_unit_sq = atan_unit_sq_f32,
     atan_unit_affine = atan_unit_affine_f32,
     atan_nonneg = atan_nonneg_f32,
+    atan_nonneg_scaled = atan_nonneg_scaled_f32,
     sin_quadrant = sin_quadrant_f32
 );
 impl_real!(
@@ -326,6 +338,7 @@ impl_real!(
     atan_unit_sq = atan_unit_sq_f64,
     atan_unit_affine = atan_unit_affine_f64,
     atan_nonneg = atan_nonneg_f64,
+    atan_nonneg_scaled = atan_nonneg_scaled_f64,
     sin_quadrant = sin_quadrant_f64
 );
 

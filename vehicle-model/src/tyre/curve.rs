@@ -64,32 +64,33 @@ impl<T: Real> Shape<T> {
     pub fn at(&self, t: T) -> T {
         let u = t / self.c;
         let inv_u = T::ONE / u;
-        self.at_u(u, inv_u, u * u, inv_u * inv_u)
+        self.at_u(u, inv_u, u * u, inv_u * inv_u, T::ONE / self.c)
     }
 
     /// The curve at `u = t/C ≥ 0`, given `1/u` too (∞ at `u = 0`): `sin(C·atan(φ))`,
     /// `φ = (1 − E)·u + E·atan(u)`. The caller forms both `u` and `1/u` by products of values
     /// it has anyway ([`super::MagicFormula`]'s combined slip), so the first arc tangent needs no
-    /// division to reduce its argument, and the second is [`Real::atan_nonneg`], whose reciprocal
-    /// starts with its polynomials. The arc tangents and the sine are [`Real::atan_unit`] and
-    /// [`Real::sin_quadrant`] after exact reductions: within 1.5e-15 of
-    /// the peak of the same formula through libm's `atan` and `sin` in `f64`, 6e-7 in `f32`
-    /// (the test `polynomial_curve_is_libm_curve`).
+    /// division to reduce its argument, and the second is [`Real::atan_nonneg_scaled`], whose
+    /// reciprocal starts with its polynomials and whose product by `C` is folded into its last
+    /// steps. The arc tangents and the sine are polynomial kernels after exact reductions: within
+    /// 1.5e-15 of the peak of the same formula through libm's `atan` and `sin` in `f64`, 6e-7 in
+    /// `f32` (the test `polynomial_curve_is_libm_curve`).
     ///
     /// The squares `u²` and `1/u²` are given too (to a few ulp): the caller forms them
     /// without the square root that `u` waits for, and the first arc tangent's polynomial, in
-    /// the square, starts before `u` is known.
+    /// the square, starts before `u` is known. So is `inv_c`, `1/C` to a few ulp, which scales
+    /// only the rational term of the second arc tangent (below a third of it).
     #[inline(always)]
-    pub fn at_u(&self, u: T, inv_u: T, u_sq: T, inv_u_sq: T) -> T {
+    pub fn at_u(&self, u: T, inv_u: T, u_sq: T, inv_u_sq: T, inv_c: T) -> T {
         // φ = (1 − E)·u + E·atan(u); above 1, atan(u) = π/2 − atan(1/u). The map from the
-        // polynomial's arc tangent to φ is affine, folded into its last product and sum.
+        // polynomial's arc tangent to φ is affine, folded into its last level.
         let base = (T::ONE - self.e) * u;
         let phi = if u > T::ONE {
             inv_u.atan_unit_affine(inv_u_sq, base + self.e * T::FRAC_PI_2, -self.e)
         } else {
             u.atan_unit_affine(u_sq, base, self.e)
         };
-        sin_0_pi(self.c * phi.atan_nonneg())
+        sin_0_pi(phi.atan_nonneg_scaled(self.c, inv_c))
     }
 
     /// Where the curve peaks, `t = C·u_p`.

@@ -178,8 +178,11 @@ struct AtLoad<T> {
     mu: [T; 2],
     /// `K/μ`, the curve variable `t` per unit slip, `[x, y]`: `gain/divisor`.
     scale: [T; 2],
-    /// `scale` before the load law's division, `[x, y]`.
+    /// `scale` before the load law's division, `[x, y]`, without the lateral load law's factor
+    /// `lateral` in `x` (the curve variable's `x` part is `(gain_x·κ)·lateral`).
     gain: [T; 2],
+    /// The longitudinal gain's load factor (dimensionless, > 0).
+    lateral: T,
     /// The load law's divisor (dimensionless, > 0), and its inverse.
     divisor: T,
     inv_divisor: T,
@@ -239,6 +242,7 @@ impl<T: Real> MagicFormula<T> {
                 mu: [T::ZERO; 2],
                 scale: [T::ONE; 2],
                 gain: [T::ONE; 2],
+                lateral: T::ONE,
                 divisor: T::ONE,
                 inv_divisor: T::ONE,
             };
@@ -251,14 +255,18 @@ impl<T: Real> MagicFormula<T> {
         // The curve variable is t = K·x/μ (per unit load): one division for both axes.
         let z = load * self.inv_saturation_load;
         let lateral = T::ONE + z * z;
-        let divisor = road * factor * lateral;
+        // Grouped for latency: `factor` (through the clamp) is the last of the three ready.
+        let divisor = (road * lateral) * factor;
         let inv_divisor = T::ONE / divisor;
         let mu = [p.longitudinal.peak_friction, p.lateral.peak_friction].map(|m| road * m * factor);
-        let gain = [self.scale_gain[0] * lateral, self.scale_gain[1]];
         AtLoad {
             mu,
-            scale: gain.map(|g| g * inv_divisor),
-            gain,
+            scale: [
+                self.scale_gain[0] * (lateral * inv_divisor),
+                self.scale_gain[1] * inv_divisor,
+            ],
+            gain: self.scale_gain,
+            lateral,
             divisor,
             inv_divisor,
         }
@@ -283,7 +291,8 @@ impl<T: Real> MagicFormula<T> {
         // tangent, sine), so it is written for latency: t = (a, b)/divisor, and the square root
         // of a² + b², the load law's division and two more divisions all start at once; every
         // later quotient (the direction, the blend weight, u = t/C and 1/u) is a product.
-        let [a, b] = [0, 1].map(|i| c.gain[i] * slip[i]);
+        // The slip's product with its gain starts before the load law's `lateral` is known.
+        let (a, b) = ((c.gain[0] * slip[0]) * c.lateral, c.gain[1] * slip[1]);
         let (a2, b2) = (a * a, b * b);
         let r2 = a2 + b2;
         let root = r2.sqrt();
@@ -311,11 +320,15 @@ impl<T: Real> MagicFormula<T> {
         let shape = self.shapes[0].blend(&self.shapes[1], w);
         // u = t/C = norm·r2/q and its inverse, and their squares from r2 and the quotients,
         // not from the square root: the first arc tangent's polynomial starts without it.
+        // Grouped so that two products follow the last quotient: u² = (r2³/q)·(1/(q·divisor²))
+        // and 1/u² = ((q·divisor)²/r2)·(1/r2²).
         let r2_q = r2 * inv_q;
-        let q_r2 = q * inv_r2;
-        let u_sq = (r2 * (c.inv_divisor * c.inv_divisor)) * (r2_q * r2_q);
-        let inv_u_sq = (q_r2 * q_r2) * ((c.divisor * c.divisor) * inv_r2);
-        let value = shape.at_u(norm * r2_q, shape.c * inv_norm, u_sq, inv_u_sq);
+        let r2_cubed = (r2 * r2) * r2;
+        let u_sq = (r2_cubed * inv_q) * (inv_q * (c.inv_divisor * c.inv_divisor));
+        let qd = q * c.divisor;
+        let inv_u_sq = ((qd * qd) * inv_r2) * (inv_r2 * inv_r2);
+        // r2/q is 1/C of the blended shape (C = q/r2) to a few ulp.
+        let value = shape.at_u(norm * r2_q, shape.c * inv_norm, u_sq, inv_u_sq, r2_q);
         let secant = value * inv_norm;
         // μ·n before the curve's value is known: one product follows it.
         let adhesion = [0, 1].map(|i| (c.mu[i] * n[i]) * value);
