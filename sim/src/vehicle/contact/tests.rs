@@ -70,6 +70,22 @@ fn implicit_spring_impulse() {
     assert!((b.linvel.z - p * 1e-3).abs() < 1e-7);
 }
 
+/// One frictionless wheel under a chassis pitched by `theta` (rad) on flat ground, x = 0.01 m,
+/// k = 1e5 N/m, damping `c` (N·s/m), the body moving forward at `speed` (m/s), solved over
+/// 10 ms: the body after the step and the normal impulse (N·s).
+fn pitched(theta: f32, c: f32, speed: f32) -> (Body, f32) {
+    let mut contact = contact(0.01);
+    if let Support::Spring(s) = &mut contact.support {
+        s.up = Vector::new(theta.sin(), 0.0, theta.cos());
+        s.damping = c;
+    }
+    let mut b = body();
+    b.linvel.x = speed;
+    let mut w = one(wheel(Some(contact), rigid(0.0), Spin::Imposed, 0.0));
+    solve(&mut b, &mut w, 0.01);
+    (b, w[0].impulses.normal)
+}
+
 #[test]
 fn a_tilted_suspension_pushes_along_the_ground_normal() {
     // The chassis pitched by θ = 0.1 rad on flat ground, no friction: the spring along the
@@ -77,15 +93,7 @@ fn a_tilted_suspension_pushes_along_the_ground_normal() {
     // along the ground. N·cos θ = dt·k·(x + dt·ẋ'), the hard point rising N/m off the ground
     // and so compressing at ẋ' = −N/(m·cos θ): N = 10/(cos θ + 0.01/cos θ).
     let theta = 0.1_f32;
-    let up = Vector::new(theta.sin(), 0.0, theta.cos());
-    let mut c = contact(0.01);
-    if let Support::Spring(s) = &mut c.support {
-        s.up = up;
-    }
-    let mut b = body();
-    let mut w = one(wheel(Some(c), rigid(0.0), Spin::Imposed, 0.0));
-    solve(&mut b, &mut w, 0.01);
-    let p = w[0].impulses.normal;
+    let (b, p) = pitched(theta, 0.0, 0.0);
     assert!(
         (p - 10.0 / (theta.cos() + 0.01 / theta.cos())).abs() < 1e-4,
         "{p}"
@@ -97,24 +105,13 @@ fn a_tilted_suspension_pushes_along_the_ground_normal() {
 #[test]
 fn a_pitched_chassis_moving_along_the_ground_does_not_work_its_damper() {
     // Pitched by θ = 0.1 rad and sliding along flat ground at 20 m/s (no friction): the hard
-    // point keeps its height over the ground, so the damper (c = 4000 N·s/m) adds nothing and
-    // N is the spring's alone, 10/(1.01·cos θ) N·s as in the test above. A rate read along the
-    // tilted axis, 20·sin θ = 2 m/s of extension, would take c·2·dt = 80 N·s off it. With
-    // the damper's implicit share of the rate N itself causes, dt·(k·dt + c) = 50 kg:
-    // N·cos θ = 10 − 50·N/(m·cos θ).
+    // point keeps its height over the ground, so the damper (c = 4000 N·s/m) only answers the
+    // rate N itself causes, as in the test above: with dt·(k·dt + c) = 50 kg,
+    // N·cos θ = 10 − 50·N/(m·cos θ). A rate read along the tilted axis, 20·sin θ = 2 m/s of
+    // extension, would take c·2·dt = 80 N·s more off it.
     let theta = 0.1_f32;
-    let up = Vector::new(theta.sin(), 0.0, theta.cos());
-    let mut c = contact(0.01);
-    if let Support::Spring(s) = &mut c.support {
-        s.up = up;
-        s.damping = 4000.0;
-    }
-    let mut b = body();
-    b.linvel.x = 20.0;
+    let (_, p) = pitched(theta, 4000.0, 20.0);
     let n = 10.0 / (theta.cos() + 0.05 / theta.cos());
-    let mut w = one(wheel(Some(c), rigid(0.0), Spin::Imposed, 0.0));
-    solve(&mut b, &mut w, 0.01);
-    let p = w[0].impulses.normal;
     assert!((p - n).abs() < 1e-4, "{p} vs {n}");
 }
 
