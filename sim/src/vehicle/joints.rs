@@ -29,10 +29,12 @@
 //! The wheel bodies do not spin in rapier: the spin is a coordinate of the tyre solve, as on
 //! the cast car (its rate, the wheel angle it integrates to, its inertia in the solve). rapier's
 //! multibody treats the velocity-product (Coriolis and gyroscopic) terms semi-implicitly, which
-//! at a wheel turning half a radian per 10 ms step does not conserve momentum: with spinning
-//! wheel bodies, a BmwX5 in a steady 1 m/s² turn at 20 m/s got 30 N of lateral force and a
-//! 57 N·m yaw moment from nowhere (both growing with speed and step), and understeered 25 %
-//! more than the single-track model. The wheel's spin inertia enters the solve, and the
+//! is a poor fit for a wheel turning half a radian per 10 ms step: with spinning wheel bodies
+//! a BmwX5 understeered 25 % more than the single-track model, more the faster it went and the
+//! longer the step. (A momentum balance then put 30 N of lateral force and a 57 N·m yaw moment
+//! from nowhere on it in a 1 m/s² turn at 20 m/s, but it read the link bodies' velocities,
+//! which are a step old (`multibody`), so those two figures are uncertain.) The wheel's spin
+//! inertia enters the solve, and the
 //! reaction of its change of spin (`I·Δω`) goes to rapier as a torque on the wheel about its
 //! axle, which the joint passes to the chassis. The gyroscopic moment of the spinning wheels
 //! is left out, as on the cast car (under 2 % of the roll moment of a turn).
