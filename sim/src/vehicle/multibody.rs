@@ -36,6 +36,9 @@ use super::joints::Parts;
 /// step; the rest acts as a force over the step (see the module documentation).
 const VELOCITY_SHARE: f32 = 0.5;
 
+/// Most DoFs of a car's multibody [`hand_over`] solves for on the stack (a joints car has 12).
+const MAX_DOFS: usize = 16;
+
 /// The chassis' velocity (m/s, of its centre of mass) and angular velocity (rad/s), world
 /// axes, from the multibody's root DoFs; `None` if the multibody is missing.
 pub(crate) fn chassis_motion(world: &PhysicsWorld, parts: &Parts) -> Option<(Vector, Vector)> {
@@ -119,7 +122,13 @@ fn velocity_change(
     let Some((mb, _)) = joints.get(parts.joints[Wheel::FrontRight]) else {
         return false;
     };
-    let mut g = na::DVector::<f32>::zeros(mb.ndofs());
+    // On the stack: a joints car has 12 DoFs (the chassis' 6, four suspensions, two steerings).
+    let mut buffer = [0.0_f32; MAX_DOFS];
+    let n = mb.ndofs();
+    if n > MAX_DOFS {
+        return false;
+    }
+    let mut g = na::DVectorViewMut::from_slice(&mut buffer[..n], n);
     for w in Wheel::ALL {
         let (Some((_, link)), Some(wheel)) = (
             joints.get(parts.joints[w]),
