@@ -34,9 +34,8 @@
 //! longer the step. (A momentum balance then put 30 N of lateral force and a 57 N·m yaw moment
 //! from nowhere on it in a 1 m/s² turn at 20 m/s, but it read the link bodies' velocities,
 //! which are a step old (`multibody`), so those two figures are uncertain.) The wheel's spin
-//! inertia enters the solve, and the
-//! reaction of its change of spin (`I·Δω`) goes to rapier as a torque on the wheel about its
-//! axle, which the joint passes to the chassis. The gyroscopic moment of the spinning wheels
+//! inertia enters the solve, and the reaction of its change of spin (`I·Δω`) goes to rapier
+//! as a torque on the wheel about its axle, which the joint passes to the chassis. The gyroscopic moment of the spinning wheels
 //! is left out, as on the cast car (under 2 % of the roll moment of a turn).
 //!
 //! # Who solves what
@@ -436,11 +435,12 @@ impl Vehicle {
             com: pose.transform_point(parts.com),
             up: pose.rotation * Vector::Z,
         };
-        let (linvel, angvel) =
-            multibody::chassis_motion(world, parts).unwrap_or((chassis.linvel(), chassis.angvel()));
+        let Some(motion) = multibody::chassis_motion(world, parts) else {
+            return;
+        };
         let mut body = Body::new(
-            linvel + angvel.cross(frame.com - chassis.center_of_mass()) + world.gravity * dt as f32,
-            angvel,
+            motion.velocity_at(frame.com) + world.gravity * dt as f32,
+            motion.angvel,
             parts.inv_mass,
             parts.inv_inertia,
             pose.rotation,

@@ -253,13 +253,14 @@ impl Vehicle {
     ) -> Result<(), SimError> {
         let fail = SimError::diverged(BodyOwner::Vehicle(self.id.0), time_ms);
         let mut s = self.state;
-        // The chassis' velocity (of its centre of mass) and angular velocity: a multibody
-        // link's own are those its last step started from (`multibody`).
-        let mut motion = None;
-        let (chassis, pose, com) = match &self.parts {
+        let (motion, pose, com) = match &self.parts {
             Parts::Cast(p) => {
                 let chassis = geom::finite_body(world, p.chassis).ok_or(fail(BodyPart::Chassis))?;
-                (chassis, *chassis.position(), chassis.center_of_mass())
+                (
+                    Motion::of_body(chassis),
+                    *chassis.position(),
+                    chassis.center_of_mass(),
+                )
             }
             Parts::Joints(p) => {
                 for (h, part) in p.bodies() {
@@ -270,8 +271,9 @@ impl Vehicle {
                 s.steering = WheelAngles::new(r.steering[0], r.steering[1]);
                 s.suspension = r.suspension;
                 let pose = joints::car_pose(chassis, p);
-                motion = multibody::chassis_motion(world, p);
-                (chassis, pose, pose.transform_point(p.com))
+                // A multibody link's own velocities are those its last step started from.
+                let motion = multibody::chassis_motion(world, p).ok_or(fail(BodyPart::Chassis))?;
+                (motion, pose, pose.transform_point(p.com))
             }
         };
         for w in Wheel::ALL {
@@ -284,17 +286,15 @@ impl Vehicle {
         let origin = pose.translation;
         s.position = geom::to_point(origin);
         s.roll_pitch_yaw = geom::roll_pitch_yaw(q);
-        let (linvel, angvel) = motion.unwrap_or((chassis.linvel(), chassis.angvel()));
-        if !(linvel.is_finite() && angvel.is_finite()) {
+        if !(motion.linvel.is_finite() && motion.angvel.is_finite()) {
             return Err(fail(BodyPart::Chassis));
         }
-        let velocity_at = |p: Vector| linvel + angvel.cross(p - chassis.center_of_mass());
-        let v = velocity_at(origin);
+        let v = motion.velocity_at(origin);
         s.velocity = geom::to_vector(v);
         s.forward_speed = f64::from(v.dot(q * Vector::X));
-        s.yaw_rate = f64::from(angvel.z);
+        s.yaw_rate = f64::from(motion.angvel.z);
         // The whole car's centre of mass: the chassis body's, unless the wheels are bodies.
-        let v_com = velocity_at(com);
+        let v_com = motion.velocity_at(com);
         if let Some(prev) = self.previous_com_velocity {
             let a = (v_com - prev) / dt as f32;
             s.longitudinal_acceleration = f64::from(a.dot(q * Vector::X));
@@ -303,6 +303,32 @@ impl Vehicle {
         self.previous_com_velocity = Some(v_com);
         self.state = s;
         Ok(())
+    }
+}
+
+/// The chassis' motion: the velocity (m/s) of its centre of mass `centre` (m, world) and its
+/// angular velocity (rad/s), world axes.
+#[derive(Debug, Clone, Copy)]
+struct Motion {
+    linvel: Vector,
+    angvel: Vector,
+    centre: Vector,
+}
+
+impl Motion {
+    /// A rigid body's own velocities (those of a multibody link are a step old: see
+    /// `multibody::chassis_motion`).
+    fn of_body(b: &RigidBody) -> Motion {
+        Motion {
+            linvel: b.linvel(),
+            angvel: b.angvel(),
+            centre: b.center_of_mass(),
+        }
+    }
+
+    /// Velocity (m/s) of the body's point at `p` (m, world).
+    fn velocity_at(&self, p: Vector) -> Vector {
+        self.linvel + self.angvel.cross(p - self.centre)
     }
 }
 

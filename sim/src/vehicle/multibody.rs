@@ -30,6 +30,7 @@ use ackermann::{PerWheel, Wheel};
 use rapier3d::na;
 use rapier3d::prelude::{PhysicsWorld, RigidBodyHandle, Vector};
 
+use super::Motion;
 use super::joints::Parts;
 
 /// Share of each impulse handed to rapier as a change of the generalized velocity before the
@@ -39,14 +40,20 @@ const VELOCITY_SHARE: f32 = 0.5;
 /// Most DoFs of a car's multibody [`hand_over`] solves for on the stack (a joints car has 12).
 const MAX_DOFS: usize = 16;
 
-/// The chassis' velocity (m/s, of its centre of mass) and angular velocity (rad/s), world
-/// axes, from the multibody's root DoFs; `None` if the multibody is missing.
-pub(crate) fn chassis_motion(world: &PhysicsWorld, parts: &Parts) -> Option<(Vector, Vector)> {
+/// The chassis' motion from the multibody's root DoFs (its free joint: the world velocity of
+/// the chassis' centre of mass, then its angular velocity); `None` if the chassis or the
+/// multibody is missing.
+pub(super) fn chassis_motion(world: &PhysicsWorld, parts: &Parts) -> Option<Motion> {
+    let centre = world.bodies.get(parts.chassis)?.center_of_mass();
     let (mb, _) = world
         .multibody_joints
         .get(parts.joints[Wheel::FrontRight])?;
     let v = mb.generalized_velocity();
-    (v.len() >= 6).then(|| (Vector::new(v[0], v[1], v[2]), Vector::new(v[3], v[4], v[5])))
+    (v.len() >= 6).then(|| Motion {
+        linvel: Vector::new(v[0], v[1], v[2]),
+        angvel: Vector::new(v[3], v[4], v[5]),
+        centre,
+    })
 }
 
 /// What one wheel hands to rapier after the solve.
