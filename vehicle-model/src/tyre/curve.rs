@@ -131,6 +131,16 @@ fn sin_0_pi<T: Real>(x: T) -> T {
 mod tests {
     use super::*;
 
+    /// One shape of each kind `Shape::new` accepts: typical longitudinal and lateral, E near
+    /// 1, strongly negative E, E = 0 (closed-form peak).
+    const SHAPES: [(f64, f64); 5] = [
+        (1.65, 0.7),
+        (1.3, -0.5),
+        (1.9, 0.97),
+        (1.1, -3.0),
+        (1.5, 0.0),
+    ];
+
     /// Pacejka's form, for comparison.
     fn pacejka(x: f64, b: f64, c: f64, d: f64, e: f64) -> f64 {
         d * (c * (b * x - e * (b * x - (b * x).atan())).atan()).sin()
@@ -138,13 +148,7 @@ mod tests {
 
     #[test]
     fn peak_is_at_c_times_u_peak() {
-        for (c, e) in [
-            (1.65, 0.7),
-            (1.3, -0.5),
-            (1.9, 0.97),
-            (1.1, -3.0),
-            (1.5, 0.0),
-        ] {
+        for (c, e) in SHAPES {
             let s = Shape::<f64>::new(c, e).unwrap();
             let p = s.t_peak();
             assert!((s.at(p) - 1.0).abs() < 1e-12, "C {c} E {e}");
@@ -184,14 +188,8 @@ mod tests {
             (s.c * ((1.0 - s.e) * u + s.e * u.atan()).atan()).sin()
         };
         let (mut worst, mut worst32): (f64, f64) = (0.0, 0.0);
-        for (c, e) in [
-            (1.65, 0.7),
-            (1.3, -0.5),
-            (1.9, 0.97),
-            (1.1, -3.0),
-            (1.5, 0.0),
-            (1.99, -10.0),
-        ] {
+        // And a shape at the edge of the accepted range.
+        for (c, e) in SHAPES.into_iter().chain([(1.99, -10.0)]) {
             let s = Shape::<f64>::new(c, e).unwrap();
             let s32 = Shape::<f32>::new(c as f32, e as f32).unwrap();
             let r32 = Shape::<f64>::new(f64::from(s32.c), f64::from(s32.e)).unwrap();
