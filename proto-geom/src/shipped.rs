@@ -6,7 +6,7 @@ use nalgebra::Point3;
 
 use crate::layout::{VehicleDimensions, VehicleLayout};
 use crate::sensors::SensorSlots;
-use crate::wheel::{WheelParams, WheelPhysics, WheelPreset};
+use crate::wheel::{WheelParams, WheelPreset};
 
 /// A vehicle model shipped with Webots, for its geometry (the engine and driving parameters
 /// belong to `vehicle-model`).
@@ -46,8 +46,6 @@ struct Geometry {
     dimensions: [f64; 3],
     /// The wheel in each slot.
     wheels: PerWheel<WheelPreset>,
-    /// A slot whose wheel the car's `Physics` node gives another mass than the preset's (kg).
-    wheel_mass: Option<(Wheel, f64)>,
     /// Front, top and rear sensor-slot positions (m), `None` without the four slots. The
     /// figures of the Y-up PROTO revisions (x, y = up, z = forward) are converted with
     /// FLU = (z, x, y).
@@ -68,22 +66,20 @@ const SHIPPED: [&Geometry; 11] = {
             name: "BmwX5",
             dimensions: [2.995, 1.628, 1.628],
             wheels: same(W::BmwX5Wheel),
-            wheel_mass: None,
             sensor_slots: Some([[3.85, 0.0, 0.45], [1.0, 0.0, 1.45], [-1.0, 0.0, 0.3]]),
         },
         &Geometry {
             vehicle: V::CitroenCZero,
             name: "CitroenCZero",
             dimensions: [2.55, 1.31, 1.27],
-            // A quirk of the PROTO: the rear-right slot holds a *front* wheel (so the rear
-            // radius the car library reads is 0.28475 m) with the rear wheels' 6 kg.
+            // Webots' PROTO puts a front wheel in the rear-right slot (a bug, fixed here: see
+            // `ShippedVehicle::wheel_presets`).
             wheels: PerWheel::new(
                 W::CitroenCZeroFrontWheel,
                 W::CitroenCZeroFrontWheel,
-                W::CitroenCZeroFrontWheel,
+                W::CitroenCZeroRearWheel,
                 W::CitroenCZeroRearWheel,
             ),
-            wheel_mass: Some((Wheel::RearRight, 6.0)),
             sensor_slots: Some([[3.075, 0.0, 0.05], [1.075, 0.0, 1.35], [-0.425, 0.0, 0.3]]),
         },
         &Geometry {
@@ -91,7 +87,6 @@ const SHIPPED: [&Geometry; 11] = {
             name: "ToyotaPrius",
             dimensions: [2.8, 1.628, 1.628],
             wheels: same(W::ToyotaPriusWheel),
-            wheel_mass: None,
             sensor_slots: Some([[3.635, 0.0, 0.4], [1.1, 0.0, 1.3], [-0.85, 0.0, 0.3]]),
         },
         &Geometry {
@@ -99,7 +94,6 @@ const SHIPPED: [&Geometry; 11] = {
             name: "LincolnMKZ",
             dimensions: [2.94, 1.64, 1.64],
             wheels: same(W::LincolnMKZWheel),
-            wheel_mass: None,
             sensor_slots: Some([[3.944, 0.0, 0.142], [1.11, 0.0, 1.16], [-1.06, 0.0, 0.33]]),
         },
         &Geometry {
@@ -107,7 +101,6 @@ const SHIPPED: [&Geometry; 11] = {
             name: "RangeRoverSportSVR",
             dimensions: [2.71, 1.64, 1.64],
             wheels: same(W::RangeRoverSportSVRWheel),
-            wheel_mass: None,
             sensor_slots: Some([[3.5, 0.0, 0.5], [1.4, 0.0, 1.3], [-1.06, 0.0, 0.33]]),
         },
         &Geometry {
@@ -115,7 +108,6 @@ const SHIPPED: [&Geometry; 11] = {
             name: "TeslaModel3",
             dimensions: [2.94, 1.72, 1.72],
             wheels: same(W::TeslaModel3Wheel),
-            wheel_mass: None,
             sensor_slots: Some([[3.79, 0.0, 0.142], [1.11, 0.0, 1.16], [-1.05, 0.0, 0.2]]),
         },
         &Geometry {
@@ -123,7 +115,6 @@ const SHIPPED: [&Geometry; 11] = {
             name: "MercedesBenzSprinter",
             dimensions: [4.325, 1.7, 1.7],
             wheels: same(W::VehicleWheel),
-            wheel_mass: None,
             sensor_slots: Some([[5.31, 0.0, 0.47], [2.99, 0.0, 2.3], [-1.62, 0.0, 0.19]]),
         },
         &Geometry {
@@ -131,7 +122,6 @@ const SHIPPED: [&Geometry; 11] = {
             name: "GreenPowerEVStar",
             dimensions: [4.325, 1.7, 1.5],
             wheels: axles(W::GreenPowerEVStarFrontWheel, W::GreenPowerEVStarRearWheel),
-            wheel_mass: None,
             sensor_slots: None,
         },
         &Geometry {
@@ -139,7 +129,6 @@ const SHIPPED: [&Geometry; 11] = {
             name: "Bus",
             dimensions: [4.5, 2.5, 2.5],
             wheels: same(W::BusWheel),
-            wheel_mass: None,
             sensor_slots: Some([[11.5, 0.0, 0.2], [2.5, 0.0, 5.3], [-6.2, 0.0, 1.0]]),
         },
         &Geometry {
@@ -147,7 +136,6 @@ const SHIPPED: [&Geometry; 11] = {
             name: "Truck",
             dimensions: [5.25, 2.2, 2.2],
             wheels: same(W::TruckWheel),
-            wheel_mass: None,
             sensor_slots: Some([[6.75, 0.0, 1.1], [4.3, 0.0, 4.15], [-7.3, 0.0, 2.7]]),
         },
         &Geometry {
@@ -155,7 +143,6 @@ const SHIPPED: [&Geometry; 11] = {
             name: "Tractor",
             dimensions: [1.76, 1.4, 1.4],
             wheels: axles(W::TractorFrontWheel, W::TractorRearWheel),
-            wheel_mass: None,
             sensor_slots: None,
         },
     ]
@@ -218,27 +205,20 @@ impl ShippedVehicle {
 
     /// The wheel in each slot.
     ///
-    /// `CitroenCZero` reproduces a quirk of its PROTO: the rear-right slot holds a *front*
-    /// wheel (so the rear radius the car library reads is 0.28475 m), the rear-left a rear one
-    /// ([`ShippedVehicle::wheel_params`] gives that front wheel the rear wheels' 6 kg).
+    /// `CitroenCZero` has its rear wheel (0.28675 m) in both rear slots. Webots' PROTO puts a
+    /// *front* wheel (0.28475 m, with the rear wheels' 6 kg) in the rear-right slot, so that
+    /// car pulls to one side on mismatched tyres and its library reads a rear radius of
+    /// 0.28475 m: a bug, fixed here (`COMPATIBILITY.md`).
     pub const fn wheel_presets(self) -> PerWheel<WheelPreset> {
         self.geometry().wheels
     }
 
     /// The wheels' fields as placed in their slots (name and `wheelSide` set per slot, see
     /// [`WheelParams::in_slot`]).
-    ///
-    /// `CitroenCZero`'s rear-right front wheel gets the rear wheels' `Physics` node (6 kg), as in
-    /// its PROTO.
     pub fn wheel_params<T: Real>(self) -> PerWheel<WheelParams<T>> {
-        let geometry = self.geometry();
-        let mut wheels = geometry
+        self.geometry()
             .wheels
-            .map_with_wheel(|w: Wheel, p: WheelPreset| p.params().in_slot(w));
-        if let Some((slot, mass)) = geometry.wheel_mass {
-            wheels[slot].physics = WheelPhysics::Mass(T::from_f64(mass));
-        }
-        wheels
+            .map_with_wheel(|w: Wheel, p: WheelPreset| p.params().in_slot(w))
     }
 
     /// The wheel layout. Every shipped value is valid, so no warning is produced.

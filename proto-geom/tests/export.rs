@@ -168,8 +168,8 @@ fn every_shipped_vehicle_exports() {
         let chassis = ChassisBox::from_extents(-0.5, d.wheelbase + 0.5, d.track_front, 0.0, 1.0);
         let scene = Scene::vehicle(v.proto_name(), &layout, &chassis);
         if v == ShippedVehicle::CitroenCZero {
-            // Chassis, then front and rear wheel meshes: the rear-right front wheel (6 kg)
-            // shares the front wheels' meshes.
+            // Chassis, then the front wheels' meshes and the rear wheels' (both rear slots
+            // hold the rear wheel, whose tyre is wider).
             assert_eq!(scene.meshes.len(), 7);
         }
         let (_, meshes) = parse_glb(&scene.to_glb().unwrap());

@@ -130,14 +130,17 @@ fn geometry_for_the_car_library() {
         (g.wheelbase(), g.radius_front(), g.radius_rear()),
         (2.995, 0.374, 0.374)
     );
-    // C-Zero quirk: a front wheel sits in the rear-right slot, so the library's rear radius is
-    // the front one, 0.28475 m, although the rear-left wheel is 0.28675 m.
+    // The C-Zero's rear wheels (175/55 R15) are larger than its front ones (145/65 R15), in both
+    // rear slots (Webots' PROTO has a front wheel in the rear-right one: a bug, fixed).
     let czero = ShippedVehicle::CitroenCZero.layout::<f64>();
-    assert_eq!(czero.geometry().unwrap().radius_rear(), 0.28475);
-    assert_eq!(czero.wheel(Wheel::RearLeft).params().tire_radius, 0.28675);
+    let g = czero.geometry().unwrap();
+    assert_eq!((g.radius_front(), g.radius_rear()), (0.28475, 0.28675));
+    for rear in [Wheel::RearLeft, Wheel::RearRight] {
+        assert_eq!(czero.wheel(rear).params().tire_radius, 0.28675);
+        assert_eq!(czero.wheel(rear).params().thickness, 0.175);
+        assert_eq!(czero.wheel(rear).mass(), Some(6.0));
+    }
     assert_eq!(czero.dimensions().track_rear, 1.27);
-    // That front wheel carries the rear wheels' Physics node: 6 kg (the front ones 5 kg).
-    assert_eq!(czero.wheel(Wheel::RearRight).mass(), Some(6.0));
     assert_eq!(czero.wheel(Wheel::FrontRight).mass(), Some(5.0));
 }
 

@@ -233,11 +233,12 @@ def test_every_call_returns_the_c_api_s_value_for_the_same_state(webots, staged_
 
 
 # The shipped models' geometry (m), drive and engine types and gear counts, from Webots'
-# PROTOs (shared/spec webots-vehicle.md §5.1): wheelbase, front and rear track, front and rear
-# tyre radius, type, engine type, len(gearRatio).
+# PROTOs (shared/spec webots-vehicle.md §5.1; the C-Zero with its rear tyre in both rear
+# slots): wheelbase, front and rear track, front and rear tyre radius, type, engine type,
+# len(gearRatio).
 MODELS = {
     "BmwX5": (2.995, 1.628, 1.628, 0.374, 0.374, 0, 0, 6),
-    "CitroenCZero": (2.55, 1.31, 1.27, 0.28475, 0.28475, 1, 1, 2),
+    "CitroenCZero": (2.55, 1.31, 1.27, 0.28475, 0.28675, 1, 1, 2),
     "ToyotaPrius": (2.8, 1.628, 1.628, 0.317, 0.317, 0, 3, 2),
     "LincolnMKZ": (2.94, 1.64, 1.64, 0.358, 0.358, 2, 0, 7),
     "RangeRoverSportSVR": (2.71, 1.64, 1.64, 0.358, 0.358, 2, 0, 9),

@@ -184,6 +184,9 @@ pub enum SimError {
     /// car's tree of joints never does); nothing usable was created.
     #[error("rapier refused a joint of {0}")]
     JointRefused(BodyOwner),
+    /// A car's brake balance gives a front share outside [0, 1]; nothing was created.
+    #[error("{0}")]
+    BrakeBalance(vehicle_model::BrakeBalanceError),
 }
 impl SimError {
     /// The [`SimError::NonFinite`] of a part of `owner` in the step ending at `time_ms`.

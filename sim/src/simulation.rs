@@ -149,8 +149,8 @@ impl Simulation {
 
     /// Adds the car of a world file (or of [`CarDescription::of_model`]) at its `translation`
     /// and `rotation` ([`car_placement`]): its driver from `car.params` (validated already:
-    /// the report is empty unless they were changed since), its body the `car.spec` the
-    /// loader built.
+    /// the report is empty unless they were changed since) with `car.brake_balance`, its body
+    /// the `car.spec` the loader built.
     ///
     /// ```
     /// use sim::{Simulation, World, world_file};
@@ -166,7 +166,10 @@ impl Simulation {
         car: &CarDescription,
     ) -> Result<(VehicleId, ParamReport), SimError> {
         let step_ms = self.world.config().basic_time_step_ms;
-        let (driver, report) = Driver::new(car.params.clone(), step_ms);
+        let (mut driver, report) = Driver::new(car.params.clone(), step_ms);
+        driver
+            .set_brake_balance(car.brake_balance)
+            .map_err(SimError::BrakeBalance)?;
         let id = self.drive(driver, car.spec, car_placement(&car.params))?;
         Ok((id, report))
     }

@@ -12,7 +12,7 @@ use sim::{
     BodySpec, Mounting, Obstacle, Simulation, TyreChoice, VehicleId, VehiclePlacement, World,
     WorldConfig,
 };
-use vehicle_model::Model;
+use vehicle_model::{BrakeBalance, Model};
 
 mod common;
 
@@ -196,11 +196,20 @@ fn a_car_pushes_a_200_kg_box_with_its_front_wheels() {
     assert!(b.position.y.abs() < 0.2, "{b:?}");
 }
 
-/// Every numeric metric of `test-track` on one mounting, by scenario and name.
+/// Every numeric metric of `test-track` on one mounting, by scenario and name, the brake torque
+/// proportioned to the front.
+///
+/// With Webots' equal brakes the BmwX5 on friction 1 locks its rear wheels before its front ones
+/// in the `brake` stop, which is yaw-unstable: its heading change is the step's rounding
+/// amplified some 10⁵-fold (0.002 rad on the cast car, whose solve is mirror-exact; on joints
+/// anywhere between −0.12 and +0.04 rad as the tread's core went from 3 µm to 1 mm), a figure
+/// two models cannot agree on. Proportioned, neither axle locks and the stop is the physics'.
+/// No other scenario brakes.
 fn test_track(mounting: Mounting) -> Vec<(String, String, f64)> {
     let mut world = world_file::default_world();
     for car in &mut world.cars {
         car.spec.mounting = mounting;
+        car.brake_balance = BrakeBalance::Proportioned;
     }
     let report = scenario::run(&world, Scenario::TestTrack, &mut |_| {}).unwrap();
     report

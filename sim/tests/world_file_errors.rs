@@ -368,3 +368,42 @@ fn missing_file() {
             .starts_with("/nonexistent/dir/world.toml: cannot read the world file:")
     );
 }
+
+#[test]
+fn brake_balance_names_shares_and_refusals() {
+    use vehicle_model::BrakeBalance;
+    let read = |value: &str| {
+        let w = parse_str("w.toml", &format!("[vehicle]\nbrake_balance = {value}\n")).unwrap();
+        w.cars[0].brake_balance
+    };
+    assert_eq!(
+        parse_str("w.toml", "[vehicle]\n").unwrap().cars[0].brake_balance,
+        BrakeBalance::Equal
+    );
+    assert_eq!(read("\"equal\""), BrakeBalance::Equal);
+    assert_eq!(read("\"proportioned\""), BrakeBalance::Proportioned);
+    assert_eq!(read("0.65"), BrakeBalance::FrontShare(0.65));
+    assert_eq!(read("1"), BrakeBalance::FrontShare(1.0));
+    let e = err("[vehicle]\nbrake_balance = \"propotioned\"\n");
+    assert_eq!(
+        (e.location, e.key.as_deref()),
+        (at(2, 1), Some("vehicle.brake_balance"))
+    );
+    assert_eq!(e.suggestions(), ["proportioned"]);
+    let e = err("[vehicle]\nbrake_balance = 1.2\n");
+    assert_eq!(e.key.as_deref(), Some("vehicle.brake_balance"));
+    assert!(e.to_string().contains("in [0, 1], not 1.2"), "{e}");
+    let e = err("[vehicle]\nbrake_balance = true\n");
+    assert!(
+        matches!(e.kind, WorldFileErrorKind::WrongType { .. }),
+        "{e}"
+    );
+    // A misspelt key suggests it.
+    let e = err("[vehicle]\nbrake_balanc = 0.6\n");
+    assert_eq!(e.suggestions(), ["brake_balance"]);
+    // The simulator's driver brakes with it.
+    let w = parse_str("w.toml", "[vehicle]\nbrake_balance = 0.7\n").unwrap();
+    let mut sim = sim::Simulation::new(sim::World::new(w.config.clone()).unwrap());
+    let (id, _) = sim.add_described_car(&w.cars[0]).unwrap();
+    assert_eq!(sim.driver(id).unwrap().brake_front_share(), 0.7);
+}

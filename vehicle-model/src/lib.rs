@@ -129,7 +129,8 @@
 //! | `wbu_car_enable_indicator_auto_disabling` | [`Driver::enable_indicator_auto_disabling`] |
 //!
 //! Extensions (not in Webots): [`Driver::set_automatic_gearbox`], [`Driver::commanded_steering_angle`],
-//! [`Driver::commanded_wheel_angles`], [`Driver::limited_slip`], [`Driver::warning_count`].
+//! [`Driver::commanded_wheel_angles`], [`Driver::limited_slip`], [`Driver::warning_count`],
+//! [`Driver::set_brake_balance`] and [`Driver::brake_front_share`].
 //!
 //! # Differences from Webots
 //!
@@ -145,6 +146,7 @@
 struct ReadmeDoctests;
 
 pub mod actuator;
+mod brake_balance;
 mod driver;
 mod io;
 mod lights;
@@ -156,6 +158,9 @@ pub mod tyre;
 mod warning;
 mod wipers;
 
+pub use brake_balance::{
+    BrakeBalance, BrakeBalanceError, axle_brake_factor, proportioned_front_share,
+};
 pub use driver::{
     DEFAULT_BASIC_TIME_STEP_MS, Driver, INDICATOR_AUTO_DISABLING_THRESHOLD, wheel_from_webots_index,
 };

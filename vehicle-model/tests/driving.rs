@@ -378,10 +378,10 @@ fn car_library_getters() {
         (d.track_front(), d.track_rear(), d.wheelbase()),
         (1.31, 1.27, 2.55)
     );
-    // The C-Zero's rear-right slot holds a front wheel: both radii read 0.28475 m.
+    // 145/65 R15 front and 175/55 R15 rear tyres.
     assert_eq!(
         (d.front_wheel_radius(), d.rear_wheel_radius()),
-        (0.28475, 0.28475)
+        (0.28475, 0.28675)
     );
     assert_eq!(d.indicator_period(), 0.34);
     assert_eq!(d.basic_time_step_ms(), 10);

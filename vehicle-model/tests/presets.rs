@@ -35,7 +35,7 @@ fn table() -> Vec<Row> {
     use EngineType::{Combustion as C, Electric as E, PowerSplitHybrid as S};
     vec![
         Row { model: Model::BmwX5, drive: T, engine: C, time0to100: 7.0, torque: 250.0, power: 50_000.0, rpm: (1000.0, 6500.0), gears: &[-12.5, 12.5, 8.0, 5.35, 4.3, 4.0], brake: 1800.0, tracks: (1.628, 1.628), wheelbase: 2.995, steering: 1.0, wheels_damping: 2.0, max_velocity: 50.0, radii: (0.374, 0.374), body_mass: 2000.0, com: [1.2975, 0.0, 0.1], sound: true },
-        Row { model: Model::CitroenCZero, drive: P, engine: E, time0to100: 17.5, torque: 150.0, power: 75_000.0, rpm: (1000.0, 8000.0), gears: &[-6.2329, 6.2329], brake: 580.0, tracks: (1.31, 1.27), wheelbase: 2.55, steering: 0.631, wheels_damping: 1.55, max_velocity: 50.0, radii: (0.28475, 0.28475), body_mass: 1200.0, com: [1.180, -0.002, 0.248], sound: false },
+        Row { model: Model::CitroenCZero, drive: P, engine: E, time0to100: 17.5, torque: 150.0, power: 75_000.0, rpm: (1000.0, 8000.0), gears: &[-6.2329, 6.2329], brake: 580.0, tracks: (1.31, 1.27), wheelbase: 2.55, steering: 0.631, wheels_damping: 1.55, max_velocity: 50.0, radii: (0.28475, 0.28675), body_mass: 1200.0, com: [1.180, -0.002, 0.248], sound: false },
         Row { model: Model::ToyotaPrius, drive: T, engine: S, time0to100: 10.7, torque: 350.0, power: 33_000.0, rpm: (1200.0, 6500.0), gears: &[-6.0, 6.0], brake: 700.0, tracks: (1.628, 1.628), wheelbase: 2.8, steering: 1.0, wheels_damping: 1.0, max_velocity: 50.0, radii: (0.317, 0.317), body_mass: 1805.0, com: [1.2975, 0.0, 0.1], sound: true },
         Row { model: Model::LincolnMKZ, drive: X4, engine: C, time0to100: 4.97, torque: 250.0, power: 298_000.0, rpm: (1000.0, 5500.0), gears: &[-2.94, 4.58, 2.96, 1.91, 1.45, 1.00, 0.75], brake: 1400.0, tracks: (1.64, 1.64), wheelbase: 2.94, steering: 1.0, wheels_damping: 2.0, max_velocity: 50.0, radii: (0.358, 0.358), body_mass: 1950.0, com: [1.6, 0.0, 0.2], sound: true },
         Row { model: Model::RangeRoverSportSVR, drive: X4, engine: C, time0to100: 4.7, torque: 680.0, power: 50_000.0, rpm: (1000.0, 5500.0), gears: &[-3.0, 4.696, 3.130, 2.104, 1.667, 1.285, 1.000, 0.839, 0.667], brake: 1000.0, tracks: (1.64, 1.64), wheelbase: 2.71, steering: 1.0, wheels_damping: 5.0, max_velocity: 50.0, radii: (0.358, 0.358), body_mass: 2700.0, com: [1.6, 0.0, 0.2], sound: true },
@@ -97,10 +97,12 @@ fn models_match_the_spec_tables() {
 
 #[test]
 fn derived_wheel_motor_values() {
-    // Spec §5 "derived acc / vmax": (1000/36)/time0To100/r and maxVelocity/r.
+    // Spec §5 "derived acc / vmax": (1000/36)/time0To100/r and maxVelocity/r. The C-Zero's use
+    // its rear tyre's r = 0.28675 m (the spec's 5.574 and 175.59 are for Webots' front
+    // tyre in the rear-right slot, a bug fixed here).
     for (model, acc, vmax) in [
         (Model::BmwX5, 10.61, 133.69),
-        (Model::CitroenCZero, 5.574, 175.59),
+        (Model::CitroenCZero, 5.5355, 174.37),
         (Model::ToyotaPrius, 8.189, 157.73),
         (Model::LincolnMKZ, 15.61, 139.66),
         (Model::RangeRoverSportSVR, 16.51, 139.66),
@@ -179,13 +181,11 @@ fn engines_curves_and_inertias() {
         ),
         (30_000.0, 5000.0)
     );
-    // The rear-right slot holds a front wheel (radius 0.28475) with the rear wheels' 6 kg.
-    assert_eq!(czero.wheels[Wheel::RearRight].tire_radius, 0.28475);
-    assert_eq!(
-        czero.wheels[Wheel::RearRight].physics,
-        WheelPhysics::Mass(6.0)
-    );
-    assert_eq!(czero.wheels[Wheel::RearLeft].tire_radius, 0.28675);
+    // Both rear slots hold the rear wheel (Webots' PROTO: a front wheel in the rear-right one).
+    for rear in [Wheel::RearLeft, Wheel::RearRight] {
+        assert_eq!(czero.wheels[rear].tire_radius, 0.28675);
+        assert_eq!(czero.wheels[rear].physics, WheelPhysics::Mass(6.0));
+    }
 
     let tesla = Model::TeslaModel3.params::<f64>();
     assert_eq!(tesla.body.inertia.unwrap()[4], -3204.91);

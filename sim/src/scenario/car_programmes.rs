@@ -1,7 +1,7 @@
 //! The car scenarios: each drives a fresh car through the driver library and measures it.
 
 use proto_geom::nalgebra::Point3;
-use vehicle_model::{AutoShiftParams, IndicatorState, TyreModel, Wheel};
+use vehicle_model::{AutoShiftParams, IndicatorState, TyreModel, Wheel, axle_brake_factor};
 
 use crate::world_file::{CarDescription, WorldDescription};
 
@@ -157,15 +157,18 @@ fn accel_torque(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResul
 }
 
 /// The deceleration (m/s²) the brakes alone give the car, limited by the grip:
-/// `min(4·brakeCoefficient/r / m, μ·g)` with `m` the whole car's mass and μ the ground's
-/// friction times the slip-based tyre's longitudinal peak friction (1 for Webots' contact).
+/// `min(Σ T_w/r_w / m, μ·g)` with `T_w` each wheel's brake torque at intensity 1
+/// (`brakeCoefficient`, times its axle's factor under a brake balance other than Webots'), `m`
+/// the whole car's mass and μ the ground's friction times the slip-based tyre's longitudinal
+/// peak friction (1 for Webots' contact).
 fn expected_deceleration(rig: &CarRig) -> Result<f64, ScenarioError> {
     let spec = rig.spec();
     let mass = spec.chassis.mass + Wheel::ALL.iter().map(|&w| spec.wheels[w].mass).sum::<f64>();
-    let p = rig.driver()?.params();
+    let driver = rig.driver()?;
+    let (p, share) = (driver.params(), driver.brake_front_share());
     let force: f64 = Wheel::ALL
         .iter()
-        .map(|&w| p.brake_coefficient / p.axle_radius(w))
+        .map(|&w| p.brake_coefficient * axle_brake_factor(share, w) / p.axle_radius(w))
         .sum();
     let (friction, gravity) = rig.ground();
     let tyre = match spec.tyres.of(Wheel::FrontRight) {

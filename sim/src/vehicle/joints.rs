@@ -71,7 +71,15 @@ use crate::motor;
 
 /// Half height (m) of the flat core of a wheel's rounded tread: rapier's round cylinder needs
 /// one; the rest of the half width is the rounded border.
-const ROUND_TREAD_CORE: f64 = 1e-3;
+///
+/// As thin as can be (10 µm): rapier puts the ground's normal force at one end of the core,
+/// while the tyre's force acts on its mid-plane ([`Tread::contact_point`]), so the core's half
+/// width is a lever on which a wheel carries roll moment in its tread, not its spring, and
+/// on which its braking force turns the car. With a 1 mm core, the C-Zero (centre of mass
+/// 2 mm off the centre line) took half its static roll moment in the treads and, braking on
+/// four locked wheels, yawed under 4 N·m instead of the 1 N·m its tyres' load sensitivity
+/// gives (0.0125 rad over the stop; the cast car and now this: 0.003).
+const ROUND_TREAD_CORE: f64 = 1e-5;
 
 /// A wheel's tread as its rapier collider has it.
 #[derive(Debug, Clone, Copy)]
@@ -92,7 +100,7 @@ impl Tread {
 
     /// Where the tread of a wheel centred at `centre` (m, world) on the spin `axis` touches
     /// ground of unit `normal`: one border radius along `−normal` from the border's centre
-    /// line nearest the ground (the tread's mid-plane taken for the 2 mm core, as for both
+    /// line nearest the ground (on the tread's mid-plane, across the 20 µm core, for both
     /// wheels of an axle alike). As the wheel leans, this moves across the tread by
     /// `(radius − border)·sin(lean)`, and there the ground's normal force acts in rapier: the
     /// tyre force goes there too, so that the solve's roll and pitch moments are rapier's

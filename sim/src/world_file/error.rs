@@ -93,6 +93,8 @@ pub enum NameSet {
     TyreClass,
     /// `[vehicle] mounting`: `cast`, `joints`.
     Mounting,
+    /// `[vehicle] brake_balance`: `equal`, `proportioned` (or a number).
+    BrakeBalance,
     /// A programme's `indicator`: `off`, `right`, `left`.
     Indicator,
     /// A programme's `wiper_mode`: `down`, `slow`, `normal`, `fast`.
@@ -109,6 +111,7 @@ impl fmt::Display for NameSet {
             NameSet::TyreModel => "tyre model",
             NameSet::TyreClass => "tyre class",
             NameSet::Mounting => "wheel mounting",
+            NameSet::BrakeBalance => "brake balance",
             NameSet::Indicator => "indicator state",
             NameSet::WiperMode => "wiper mode",
             NameSet::Scenario => "scenario",

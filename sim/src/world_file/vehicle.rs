@@ -7,8 +7,8 @@ use proto_geom::WheelField;
 use proto_geom::plausible::Compact;
 use toml::de::DeValue;
 use vehicle_model::{
-    CarParams, FieldError, FieldKind, FieldPath, FieldValue, Model, ParamWarning, Wheel,
-    WheelSetting, WheelSlot,
+    BrakeBalance, CarParams, FieldError, FieldKind, FieldPath, FieldValue, Model, ParamWarning,
+    Wheel, WheelSetting, WheelSlot,
 };
 
 use super::error::{NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, closest};
@@ -25,6 +25,16 @@ pub(crate) const NAME: &str = "name";
 /// The key of the wheel mounting in `[vehicle]`, and its names.
 const MOUNTING: &str = "mounting";
 const MOUNTINGS: [(&str, Mounting); 2] = [("cast", Mounting::Cast), ("joints", Mounting::Joints)];
+
+/// The key of the brake balance in `[vehicle]`, and its names (a number is a front share).
+const BRAKE_BALANCE: &str = "brake_balance";
+const BRAKE_BALANCES: [(&str, BrakeBalance<f64>); 2] = [
+    ("equal", BrakeBalance::Equal),
+    ("proportioned", BrakeBalance::Proportioned),
+];
+
+/// The keys of `[vehicle]` that are neither Webots fields nor wheel slots.
+const OWN_KEYS: [&str; 6] = ["model", "tyre", MOUNTING, BRAKE_BALANCE, NAME, PROGRAMME];
 
 /// A car as a world file describes it.
 #[derive(Debug, Clone, PartialEq)]
@@ -46,6 +56,11 @@ pub struct CarDescription {
     /// world by [`Simulation::add_described_car`](crate::Simulation::add_described_car); after
     /// changing `params` or `tyre`, build it again.
     pub spec: VehicleSpec,
+    /// How the brake torque is shared between the axles (`brake_balance`: `"equal"`, Webots'
+    /// and the default; `"proportioned"`; or the front axle's share, a number in [0, 1]),
+    /// given to the driver by
+    /// [`Simulation::add_described_car`](crate::Simulation::add_described_car).
+    pub brake_balance: BrakeBalance<f64>,
     /// The car's name in telemetry, plots and metrics (`name`; by default the model's name,
     /// numbered `-1`, `-2`… when several cars share a model).
     pub name: String,
@@ -70,6 +85,7 @@ impl CarDescription {
                 params,
                 tyre,
                 spec,
+                brake_balance: BrakeBalance::Equal,
                 name: model.webots_name().to_string(),
                 programme: Programme::default(),
             },
@@ -91,9 +107,7 @@ pub(crate) fn model_names() -> impl Iterator<Item = &'static str> {
 
 /// Every key of `[vehicle]` that is not a wheel slot.
 fn top_keys() -> impl Iterator<Item = &'static str> {
-    ["model", "tyre", MOUNTING, NAME, PROGRAMME]
-        .into_iter()
-        .chain(CarParams::<f64>::FIELD_NAMES)
+    OWN_KEYS.into_iter().chain(CarParams::<f64>::FIELD_NAMES)
 }
 
 /// Reads `[vehicle]`, appending the validation warnings to `warnings`.
@@ -126,8 +140,9 @@ pub(crate) fn read_vehicle(
             })?,
     };
     let mut params = model.params::<f64>();
+    let brake_balance = read_brake_balance(s)?;
     for (key, value, key_span, _) in s.entries() {
-        if ["model", "tyre", MOUNTING, NAME, PROGRAMME].contains(&key) {
+        if OWN_KEYS.contains(&key) {
             continue;
         }
         if let Some(slot) = WheelSlot::from_webots_name(key) {
@@ -208,9 +223,46 @@ pub(crate) fn read_vehicle(
         params,
         tyre,
         spec,
+        brake_balance,
         name,
         programme,
     })
+}
+
+/// Reads `brake_balance`: a name of [`BRAKE_BALANCES`] or a front share in [0, 1].
+fn read_brake_balance(s: &Section<'_, '_>) -> Result<BrakeBalance<f64>, WorldFileError> {
+    let Some(value) = s.value(BRAKE_BALANCE) else {
+        return Ok(BrakeBalance::Equal);
+    };
+    if let DeValue::String(name) = value {
+        return BRAKE_BALANCES
+            .iter()
+            .find(|(n, _)| *n == name.as_ref() as &str)
+            .map(|&(_, b)| b)
+            .ok_or_else(|| {
+                let names = BRAKE_BALANCES.map(|(n, _)| n);
+                s.unknown_name(BRAKE_BALANCE, NameSet::BrakeBalance, name, &names)
+            });
+    }
+    let Some(share) = as_f64(value) else {
+        return Err(s.error(
+            BRAKE_BALANCE,
+            WorldFileErrorKind::WrongType {
+                expected: "\"equal\", \"proportioned\" or a front share in [0, 1]".to_string(),
+                found: describe(value),
+            },
+        ));
+    };
+    if (0.0..=1.0).contains(&share) {
+        Ok(BrakeBalance::FrontShare(share))
+    } else {
+        Err(s.error(
+            BRAKE_BALANCE,
+            WorldFileErrorKind::InvalidValue(format!(
+                "the front axle's share of the brake torque must be in [0, 1], not {share}"
+            )),
+        ))
+    }
 }
 
 /// Reads the `VehicleWheel` fields of the sub-table `[vehicle.<slot>]`.

@@ -129,19 +129,12 @@ fn check(model: Model, webots: bool) {
     if webots {
         // Webots' contact (as before the slip-based tyre): within 0.5 % of the distance; the
         // Tractor's axles, velocity-locked on tyres of 0.38 and 0.6 m, wind up against each
-        // other through the rigid contact and it wanders by about 1°, hence 2.5 %; the
-        // C-Zero's mismatched rear wheels scrub, 1 %.
+        // other through the rigid contact and it wanders by about 1°, hence 2.5 %.
         let tolerance = match model {
             Model::Tractor => 0.025,
-            Model::CitroenCZero => 0.01,
             _ => 0.005,
         };
         assert!(y.abs() < tolerance * x, "{model:?} drifted {y} m in {x} m");
-    } else if model == Model::CitroenCZero {
-        // Webots' C-Zero has a front wheel (r 0.28475 m) in its rear-right slot and a rear one
-        // (0.28675 m) in the rear-left: driven at one speed, the left wheel's rim runs 0.7 %
-        // faster, and the car pulls to the right like any car on mismatched tyres.
-        assert!(y < -0.01 * x, "C-Zero: y {y} m after {x} m");
     } else {
         // Straight ahead: within 0.2 % of the distance sideways.
         assert!(y.abs() < 0.002 * x, "{model:?} drifted {y} m in {x} m");

@@ -5,6 +5,7 @@ use powertrain::{AutoShift, AutoShiftParams, Gear, GearWarning, PowertrainError}
 
 use super::Driver;
 use crate::KMH_PER_MS;
+use crate::brake_balance::{BrakeBalance, BrakeBalanceError};
 use crate::mode::{ControlMode, IndicatorState, WiperMode};
 use crate::warning::Warning;
 
@@ -365,5 +366,31 @@ impl<T: Real> Driver<T> {
     /// The automatic gearbox tuning, `None` while it is off. Not in Webots.
     pub fn automatic_gearbox(&self) -> Option<&AutoShiftParams<T>> {
         self.auto_shift.as_ref().map(AutoShift::params)
+    }
+
+    /// Shares the brake torque between the axles as `balance` says, from the next
+    /// [`Driver::step`] (or brake change) on; [`BrakeBalance::Equal`], Webots' brakes, by
+    /// default. The total at intensity `i` stays `4·i·brakeCoefficient` (N·m). Not in Webots.
+    ///
+    /// # Errors
+    /// [`BrakeBalanceError`] for a [`BrakeBalance::FrontShare`] outside [0, 1] or NaN; the
+    /// balance is unchanged.
+    pub fn set_brake_balance(&mut self, balance: BrakeBalance<T>) -> Result<(), BrakeBalanceError> {
+        self.car.brake_front_share = balance.front_share(&self.params)?;
+        self.brake_balance = balance;
+        Ok(())
+    }
+
+    /// How the brake torque is shared between the axles. Not in Webots.
+    pub fn brake_balance(&self) -> BrakeBalance<T> {
+        self.brake_balance
+    }
+
+    /// The front axle's share of the brake torque (dimensionless, in [0, 1]): 0.5 with
+    /// [`BrakeBalance::Equal`]. Each front wheel brakes with `2·share·i·brakeCoefficient` and
+    /// each rear one with `2·(1 − share)·i·brakeCoefficient` (N·m) at intensity `i`. Not in
+    /// Webots.
+    pub fn brake_front_share(&self) -> T {
+        self.car.brake_front_share
     }
 }

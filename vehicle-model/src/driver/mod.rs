@@ -10,6 +10,7 @@ use core::cell::Cell;
 use ackermann::{DifferentialRatios, DriveType, Geometry, PerWheel, Real, Wheel, WheelAngles};
 use powertrain::{AutoShift, Brake, Engine, Gear, Gearbox, LimitedSlip, Powertrain};
 
+use crate::brake_balance::{BrakeBalance, axle_brake_factor};
 use crate::io::{Cockpit, Commands, WheelDrive};
 use crate::lights::{DEFAULT_INDICATOR_PERIOD, Lights};
 use crate::mode::{ControlMode, IndicatorState};
@@ -31,6 +32,8 @@ struct Car<T: Real> {
     drive: DriveType,
     powertrain: Powertrain<T>,
     brake: Brake<T>,
+    /// The front axle's share of the brake torque (dimensionless, in [0, 1]).
+    brake_front_share: T,
     /// Speed-mode motor limits per wheel (all four, driven or not).
     motors: PerWheel<WheelMotor<T>>,
     engine_sound: bool,
@@ -49,6 +52,7 @@ impl<T: Real> Car<T> {
             drive: p.drive_type,
             powertrain: Powertrain::new(engine, gearbox),
             brake: p.brake().unwrap_or_default(),
+            brake_front_share: T::HALF,
             motors: PerWheel::from_fn(|w| p.wheel_motor(w)),
             engine_sound: !p.engine_sound.is_none(),
             sound_rpm_reference: p.engine_sound_rpm_reference,
@@ -101,6 +105,7 @@ pub struct Driver<T: Real> {
     indicator_auto_disabling: bool,
     limited_slip: LimitedSlip<T>,
     auto_shift: Option<AutoShift<T>>,
+    brake_balance: BrakeBalance<T>,
 
     time: T,
     wheel_speeds: WheelSpeedEstimator<T>,
@@ -156,6 +161,7 @@ impl<T: Real> Driver<T> {
             indicator_auto_disabling: true,
             limited_slip: LimitedSlip::new(),
             auto_shift: None,
+            brake_balance: BrakeBalance::Equal,
             time: T::ZERO,
             wheel_speeds: WheelSpeedEstimator::new(),
             measured_steering: WheelAngles::STRAIGHT,
@@ -251,7 +257,8 @@ impl<T: Real> Driver<T> {
     /// (N·m) and the estimated vehicle speed `speed_kmh` ([`Driver::current_speed`], km/h).
     fn assemble_commands(&self, torques: &PerWheel<T>, speed_kmh: T) -> Commands<T> {
         let brake_torque = if self.brake > T::ZERO {
-            PerWheel::splat(self.car.brake.torque(self.brake))
+            let torque = self.car.brake.torque(self.brake);
+            PerWheel::from_fn(|w| torque * axle_brake_factor(self.car.brake_front_share, w))
         } else {
             PerWheel::splat(T::ZERO)
         };
