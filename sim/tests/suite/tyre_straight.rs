@@ -14,11 +14,12 @@
 //! whose load moves far enough forward locks its rear wheels while the front ones still roll:
 //! yaw-unstable, the yaw growing about five-fold every half second, so its heading at the end is
 //! whatever asymmetry the step's rounding left, amplified some 10⁵-fold. The cast car's solve is
-//! mirror-exact and keeps it within a few mrad; on joints, as the tread's core went from 3 µm
-//! to 1 mm, the RangeRover's stop on friction 0.5 ended anywhere between −0.03 and +0.38 rad.
-//! Those stops are not held to a heading; instead, the same stop with the brake torque
-//! proportioned to the front (`BrakeBalance::Proportioned`, as real cars share it for this
-//! reason) must stop straight, on every model and ground.
+//! mirror-exact and keeps such stops straight, held to the bounds above; on joints, rapier's f32
+//! multibody is not, and as the tread's core went from 3 µm to 1 mm the RangeRover's stop on
+//! friction 0.5 ended anywhere between −0.03 and +0.38 rad, so there those stops are held to no
+//! heading. On both mountings, the same stop with the brake torque proportioned to the front
+//! (`BrakeBalance::Proportioned`, as real cars share it for this reason) must stop straight, on
+//! every model and ground.
 //!
 //! Some launches are held to another check, for reasons outside the plant. In torque mode, a car
 //! whose first-gear torque at standstill exceeds its driven tyres' grip spins them at launch,
@@ -151,7 +152,12 @@ fn check(model: Model) {
             );
             assert!(x > 10.0, "{model:?} {d:?} mu {mu}: moved only {x} m");
             let proportioned = matches!(d, Drive::Brake(BrakeBalance::Proportioned));
-            if unstable == Unstable::RearLockedFirst && !proportioned {
+            // A stop on locked rear wheels: amplified rounding, held straight only by a
+            // mirror-exact solve.
+            if unstable == Unstable::RearLockedFirst
+                && !proportioned
+                && crate::MOUNTING == sim::Mounting::Joints
+            {
                 continue;
             }
             if unstable == Unstable::Launch
