@@ -3,12 +3,12 @@
 //! * The Webots C API's entry points under their C names (`wbu_driver_*`, `wbu_car_*`,
 //!   `wb_robot_*`), forwarded to the `capi` crate's Rust functions: the pure-Python `controller`
 //!   and `vehicle` modules call them as Webots' own binding calls `libdriver`/`libcar` through
-//!   ctypes, so every warning, clamp and returned value is the C API's ([`webots`]).
+//!   ctypes, so every warning, clamp and returned value is the C API's (module `webots`).
 //! * `Simulation`, the core of the Pythonic `webots_vehicle.Simulation`: a world of
 //!   `sim::Simulation`, cars added at will, per-step telemetry, the `vehicle-sim` scenarios
-//!   ([`simulation`]).
+//!   (module `simulation`).
 //! * `Sweep`, the core of `webots_vehicle.Sweep`: a sweep file's cases by index, each run into
-//!   the row `vehicle-sim sweep` writes for it ([`sweep`]).
+//!   the row `vehicle-sim sweep` writes for it (module `sweep`).
 //!
 //! Units: m, rad (positive steers right), rad/s, s; km/h and ms where the Webots API uses them.
 

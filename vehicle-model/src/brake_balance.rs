@@ -93,7 +93,8 @@ pub fn axle_brake_factor<T: Real>(front_share: T, wheel: Wheel) -> T {
 /// centre of mass' distance ahead of the rear axle (m), `h` its height over the ground (m),
 /// `L` the wheelbase (m) and `z` the deceleration in g of the full brake torque shared so,
 /// `z = 4·brakeCoefficient·(φ/r_f + (1 − φ)/r_r)/(M·g)` (linear in φ, solved exactly), at most
-/// 1 g ([`DESIGN_DECELERATION`]).
+/// 1 g (a road tyre's peak friction on a dry road: brakes able to stop the car harder lock
+/// its wheels there).
 ///
 /// The mass `M` and centre of mass are the body's and the wheels' (each wheel at its axle,
 /// with the mass its `physics` gives; none for `physics NULL`). At any lower deceleration the

@@ -48,7 +48,7 @@ fn positive(text: &str) -> Result<usize, String> {
 #[derive(Debug, Clone, PartialEq, Eq, Args)]
 #[command(after_help = SWEEP_HELP)]
 pub struct SweepOptions {
-    /// The sweep file (TOML: world, scenario, [set], [axes]; see sim/README.md)
+    /// The sweep file (TOML: world, scenario, the set and axes tables; see sim/README.md)
     #[arg(value_name = "FILE")]
     pub file: PathBuf,
     /// Output directory: results.csv, timings.csv, sweep.json, plots/
