@@ -125,8 +125,12 @@ pub fn proportioned_front_share<T: Real>(params: &CarParams<T>) -> T {
     // z = a + b·φ
     let k = T::from_f64(4.0) * params.brake_coefficient / (mass * T::from_f64(GRAVITY));
     let (a, b) = (k / rr, k * (T::ONE / rf - T::ONE / rr));
-    let mut share = (l_rear + height * a) / (length - height * b);
-    if a + b * share > design {
+    let denominator = length - height * b;
+    let mut share = (l_rear + height * a) / denominator;
+    // No share that is its own load share (a tall car on small front tyres with strong
+    // brakes: the denominator is not positive), or one beyond the design deceleration: the
+    // share at the design deceleration.
+    if denominator <= T::ZERO || !share.is_finite() || a + b * share > design {
         share = (l_rear + height * design) / length;
     }
     if share.is_finite() {

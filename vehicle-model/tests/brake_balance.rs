@@ -80,6 +80,21 @@ fn brakes_beyond_a_dry_road_are_shared_for_1_g() {
 }
 
 #[test]
+fn a_share_that_is_not_its_own_load_share_falls_back_to_1_g() {
+    // The Tractor (r_f 0.38 m, r_r 0.6 m) with its centre of mass 20 m up: L − h·b ≤ 0, so no
+    // share is the load share at its own deceleration; the 1 g share (l_r + h)/L is beyond 1
+    // (it would tip over first), so all the torque goes to the front.
+    let mut p = Model::Tractor.params::<f64>();
+    p.body.center_of_mass[2] = 20.0;
+    let (_, x, h) = mass_and_centre(&p);
+    let k = 4.0 * p.brake_coefficient / (mass_and_centre(&p).0 * 9.81);
+    let b = k * (1.0 / p.radius_front() - 1.0 / p.radius_rear());
+    assert!(p.wheelbase - h * b <= 0.0, "{}", p.wheelbase - h * b);
+    assert!((x + h) / p.wheelbase > 1.0);
+    assert_eq!(proportioned_front_share(&p), 1.0);
+}
+
+#[test]
 fn every_shipped_model_brakes_harder_in_front_than_its_static_load_share() {
     for model in Model::ALL {
         let p = model.params::<f64>();
