@@ -67,8 +67,13 @@ impl<T: Real> Geometry<T> {
     ///   for a straight wheel.
     /// * rear: `Rr / (Rl + Rr)` with `Rr = L/tan δ − Tr/2`, `Rl = L/tan δ + Tr/2`, evaluated as
     ///   `1/2 − Tr·sin δ / (4L·cos δ)`.
-    /// * central: `q·Rf / (Rf + Rb)` with `Rf = L / sin δ`, `Rb = L / tan δ`, `q = rr / rf`,
-    ///   evaluated as `q / (1 + cos δ)`. As in Webots it tends to `q/2`, not 0.5, as δ → 0.
+    /// * central: `Rf / (Rf + Rb)` with `Rf = L / sin δ`, `Rb = L / tan δ` (the front axle's
+    ///   share of the distance the two axle centres travel), evaluated as `1 / (1 + cos δ)`;
+    ///   it tends to 0.5 as δ → 0. Webots multiplies it by `q = rr / rf`, which jumps to `q/2`
+    ///   as soon as δ ≠ 0 and, on a 4x4 car with unequal tyres, drives one axle against the
+    ///   other; the split is fixed here (see `COMPATIBILITY.md`). The tyre radii do not belong
+    ///   in a speed split: each axle's ground speed is turned into a wheel speed by its own
+    ///   radius afterwards ([`Geometry::wheel_speed_targets`]).
     ///
     /// `delta` goes through [`crate::effective_steering_angle`] (clamp to ±π/2).
     ///
@@ -78,8 +83,6 @@ impl<T: Real> Geometry<T> {
     ///   wheels toed by opposite angles), or when the quotient is not finite (non-finite angles,
     ///   or a denominator so small that it overflows);
     /// * rear, at δ = ±π/2, where the car pivots about the rear-axle centre and `Rl + Rr = 0`.
-    ///
-    /// The central ratio is capped at `T::MAX` should `rr / rf` overflow.
     ///
     /// Near those points the ratios are finite but can be far outside [0, 1], as in Webots.
     ///
@@ -117,9 +120,8 @@ impl<T: Real> Geometry<T> {
             (T::HALF - self.track_rear() * s / (four_l * c)).finite_or(T::HALF)
         };
 
-        // `min` only matters for absurd radius ratios (rr/rf overflowing `T`).
-        let q = self.radius_rear() / self.radius_front();
-        let central = (q / (T::ONE + c)).min(T::MAX);
+        // cos δ ≥ 0 for every effective δ (|δ| ≤ π/2): the share lies in [0.5, 1].
+        let central = T::ONE / (T::ONE + c);
 
         DifferentialRatios {
             front,

@@ -11,7 +11,7 @@
 //! * wheel radii: L/sin δR = 14.278442828148012, L/sin δL = 15.873899163723122,
 //!   R ∓ 0.814 = 13.960798852382747, 15.588798852382747.
 //! * ratios: front = 14.278…/(15.873… + 14.278…) = 0.473543409397432; rear = 13.960…/(2R)
-//!   = 0.472453093672110; central = Rf/(Rf + R) = 0.505033523211247 (q = 1).
+//!   = 0.472453093672110; central = Rf/(Rf + R) = 0.505033523211247.
 //! * 20 km/h = 5.5̅ m/s; traction ωFR = 2·5.5̅·0.473543409397432/0.374 = 14.068431651735947 rad/s.
 
 #![allow(clippy::unwrap_used, clippy::excessive_precision)] // test helpers; digits as computed
@@ -281,14 +281,18 @@ fn straight_ahead_is_exact() {
 }
 
 #[test]
-fn central_ratio_uses_rear_over_front_radius() {
-    // rf = 0.35 m, rr = 0.4 m, δ = 0.2 rad: q = 8/7, central = q·Rf/(Rf + R)
-    // = 1.142857142857143 · 15.075301195278671 / 29.850100047661418 = 0.57718116938428279;
-    // as δ → 0 it tends to q/2 = 0.571428…, not 0.5, yet δ = 0 gives 0.5 (Webots' jump).
-    let g = Geometry::new(2.995, 1.628, 1.628, 0.35, 0.4).unwrap();
-    close(g.ackermann_ratios(0.2).central, 0.57718116938428279, 1e-15);
-    close(g.ackermann_ratios(1e-9).central, 4.0 / 7.0, 1e-15);
-    assert_eq!(g.ackermann_ratios(0.0).central, 0.5);
+fn central_ratio_is_the_front_axle_share_of_the_path_whatever_the_tyres() {
+    // rf = 0.35 m, rr = 0.4 m, δ = 0.2 rad: Rf/(Rf + R) = 0.50503352321124744 (Webots'
+    // q·Rf/(Rf + R) would be 0.57718…, and q/2 = 0.5714… for any δ ≠ 0, however small; fixed,
+    // COMPATIBILITY.md). It is the same for equal tyres and tends to 0.5 as δ → 0.
+    let unequal = Geometry::new(2.995, 1.628, 1.628, 0.35, 0.4).unwrap();
+    let equal = Geometry::new(2.995, 1.628, 1.628, 0.35, 0.35).unwrap();
+    for g in [unequal, equal] {
+        close(g.ackermann_ratios(0.2).central, 0.50503352321124744, 1e-15);
+        close(g.ackermann_ratios(-0.2).central, 0.50503352321124744, 1e-15);
+        close(g.ackermann_ratios(1e-9).central, 0.5, 1e-15);
+        assert_eq!(g.ackermann_ratios(0.0).central, 0.5);
+    }
 }
 
 #[test]

@@ -25,7 +25,8 @@ for d in ["0.1", "-0.1", "0.2", "-0.2", "0.5", "-0.5"]:
     wheels = [L / sin(right), L / sin(left), R - Tr / 2, R + Tr / 2]
     front = wheels[0] / (wheels[1] + wheels[0])
     rear = wheels[2] / (wheels[3] + wheels[2])
-    central = (rr / rf) * Rf / (Rf + R)
+    # Webots multiplies this by rr/rf, a bug this project fixes (COMPATIBILITY.md).
+    central = Rf / (Rf + R)
     print(f"delta {s(d)}")
     print("  angles R, L      ", s(right), s(left))
     print("  radii R, Rf      ", s(R), s(Rf))
@@ -38,6 +39,9 @@ for d in ["0.1", "-0.1", "0.2", "-0.2", "0.5", "-0.5"]:
           s(2 * v * rear * 2 * (1 - central) / rr),
           s(2 * v * (1 - rear) * 2 * (1 - central) / rr))
 
-# Central ratio with unequal tyres (rf = 0.35 m, rr = 0.4 m) at δ = 0.2 rad.
+# Central ratio with unequal tyres (rf = 0.35 m, rr = 0.4 m) at δ = 0.2 rad: the front axle's
+# share of the path, Rf/(Rf + R), whatever the radii; Webots' q·Rf/(Rf + R) for comparison.
 q = mpf("0.4") / mpf("0.35")
-print("central q=0.4/0.35 at 0.2:", s(q * (L / sin(mpf("0.2"))) / (L / sin(mpf("0.2")) + L / tan(mpf("0.2")))))
+d = mpf("0.2")
+share = (L / sin(d)) / (L / sin(d) + L / tan(d))
+print("central at 0.2:", s(share), "; Webots with q = 0.4/0.35:", s(q * share))

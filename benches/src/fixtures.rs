@@ -142,7 +142,7 @@ mod tests {
         let r = turning_ratios::<f64>().unwrap();
         // Turning right: the right (inner) wheels get less than half of each axle's torque.
         assert!(r.front < 0.5 && r.rear < 0.5);
-        // Equal tyre radii: central ratio = 1 / (1 + cos 0.2) = 0.502 498.
+        // Central ratio: 1 / (1 + cos 0.2) = 0.505 034, whatever the tyre radii.
         assert!((r.central - 1.0 / (1.0 + 0.2_f64.cos())).abs() < 1e-12);
         let w = turning_wheel_speeds::<f32>();
         assert!(w.iter().zip(w.iter().skip(1)).all(|(a, b)| a != b));

@@ -1,6 +1,6 @@
 //! Webots' limited-slip differential: saturated integrators of the wheel-speed imbalance.
 
-use ackermann::{DifferentialRatios, DriveType, PerWheel, Real};
+use ackermann::{DifferentialRatios, DriveType, Geometry, PerWheel, Real};
 
 /// The limited-slip differential of the Webots car library (spec §2.4): three slip states
 /// (dimensionless, always in [−1, 1]) that integrate the right/left (and front/rear) wheel
@@ -11,6 +11,13 @@ use ackermann::{DifferentialRatios, DriveType, PerWheel, Real};
 /// torque to the other wheel. Enabled by default, as in Webots
 /// (`wbu_car_enable_limited_slip_differential`). The states are kept, neither updated nor
 /// used, while disabled.
+///
+/// The central state compares the two axles' ground speeds, `ω·r`, so a 4x4 car whose front
+/// and rear tyres differ ([`LimitedSlip::for_geometry`]) reads rolling straight as no slip.
+/// Webots compares their angular speeds, which on the Tractor's 0.38 m and 0.6 m tyres reads
+/// straight rolling as the front axle slipping by 22 % per step, saturates the state within
+/// five steps and moves all the torque to the rear axle; that is fixed here (see
+/// `COMPATIBILITY.md`). With equal tyres the two are the same to the last bit.
 ///
 /// ```
 /// use ackermann::{DifferentialRatios, DriveType, PerWheel};
@@ -28,10 +35,14 @@ pub struct LimitedSlip<T: Real> {
     rear: T,
     central: T,
     enabled: bool,
+    /// Rear over front tyre radius (dimensionless, positive): turns the rear axle's angular
+    /// speed into the front's scale before the central comparison.
+    rear_over_front: T,
 }
 
 impl<T: Real> LimitedSlip<T> {
-    /// Enabled, all states 0 (Webots' state after `wbu_driver_init`).
+    /// Enabled, all states 0 (Webots' state after `wbu_driver_init`), for a car with the same
+    /// tyre radius front and rear.
     #[inline]
     pub const fn new() -> Self {
         LimitedSlip {
@@ -39,6 +50,29 @@ impl<T: Real> LimitedSlip<T> {
             rear: T::ZERO,
             central: T::ZERO,
             enabled: true,
+            rear_over_front: T::ONE,
+        }
+    }
+
+    /// Like [`LimitedSlip::new`], for a car with `geometry`'s front and rear tyre radii: the
+    /// central state compares the axles' ground speeds.
+    ///
+    /// ```
+    /// use ackermann::{DriveType, Geometry, PerWheel};
+    /// use powertrain::LimitedSlip;
+    /// // The Tractor's tyres: rolling straight at 5 m/s, ω = v/r.
+    /// let g = Geometry::new(2.0_f64, 1.5, 1.5, 0.38, 0.6).unwrap();
+    /// let rolling = PerWheel::new(5.0 / 0.38, 5.0 / 0.38, 5.0 / 0.6, 5.0 / 0.6);
+    /// let mut lsd = LimitedSlip::for_geometry(&g);
+    /// lsd.update(DriveType::FourByFour, &rolling);
+    /// assert!(lsd.central().abs() < 1e-15);
+    /// ```
+    #[inline]
+    pub fn for_geometry(geometry: &Geometry<T>) -> Self {
+        LimitedSlip {
+            // Both radii are positive and finite; only absurd ones overflow the quotient.
+            rear_over_front: (geometry.radius_rear() / geometry.radius_front()).min(T::MAX),
+            ..Self::new()
         }
     }
 
@@ -89,8 +123,9 @@ impl<T: Real> LimitedSlip<T> {
     ///
     /// * front (traction, 4x4): `front += 2·ω_FR/(ω_FR + ω_FL) − 1`;
     /// * rear (propulsion, 4x4): `rear += 2·ω_RR/(ω_RR + ω_RL) − 1`;
-    /// * central (4x4): `central += 2·S_f/(S_f + S_r) − 1` with `S_f = ω_FR + ω_FL`,
-    ///   `S_r = ω_RR + ω_RL`.
+    /// * central (4x4): `central += 2·S_f/(S_f + q·S_r) − 1` with `S_f = ω_FR + ω_FL`,
+    ///   `S_r = ω_RR + ω_RL` and `q` the rear over front tyre radius (1 from
+    ///   [`LimitedSlip::new`]; Webots: always 1).
     ///
     /// Each state is then reset to 0 if NaN (e.g. both wheels stopped: 0/0) and clamped to
     /// [−1, 1], exactly as in Webots.
@@ -106,7 +141,10 @@ impl<T: Real> LimitedSlip<T> {
             self.rear = integrate(self.rear, imbalance(rr, rl));
         }
         if drive == DriveType::FourByFour {
-            self.central = integrate(self.central, imbalance(fr + fl, rr + rl));
+            self.central = integrate(
+                self.central,
+                imbalance(fr + fl, self.rear_over_front * (rr + rl)),
+            );
         }
     }
 
@@ -185,6 +223,39 @@ mod tests {
         // central: S_f = 30, S_r = 10 → 2·30/40 − 1 = 0.5.
         lsd.update(DriveType::FourByFour, &PerWheel::new(15.0, 15.0, 5.0, 5.0));
         assert!((lsd.central() - 0.5).abs() < 1e-15);
+    }
+
+    #[test]
+    fn central_state_compares_ground_speeds() {
+        // Front 0.38 m, rear 0.6 m, rolling straight at 5 m/s: ω_f = 13.16, ω_r = 8.33 rad/s.
+        let g = Geometry::new(2.0, 1.5, 1.5, 0.38, 0.6).unwrap();
+        let rolling = PerWheel::new(5.0 / 0.38, 5.0 / 0.38, 5.0 / 0.6, 5.0 / 0.6);
+        let mut lsd = LimitedSlip::<f64>::for_geometry(&g);
+        for _ in 0..10 {
+            lsd.update(DriveType::FourByFour, &rolling);
+        }
+        assert!(lsd.central().abs() < 1e-14, "{}", lsd.central());
+        // The front axle really slipping 10 % faster over the ground:
+        // 2·1.1/(1.1 + 1) − 1 = 0.047619… per step.
+        let slipping = PerWheel::new(5.5 / 0.38, 5.5 / 0.38, 5.0 / 0.6, 5.0 / 0.6);
+        lsd.update(DriveType::FourByFour, &slipping);
+        assert!(
+            (lsd.central() - 1.0 / 21.0).abs() < 1e-14,
+            "{}",
+            lsd.central()
+        );
+        // Webots' angular comparison reads the straight rolling as 2·0.6/0.98 − 1 = 0.2245 per
+        // step and saturates in five: all the torque to the rear axle.
+        let mut webots = LimitedSlip::<f64>::new();
+        for _ in 0..5 {
+            webots.update(DriveType::FourByFour, &rolling);
+        }
+        assert_eq!(webots.central(), 1.0);
+        assert_eq!(webots.apply(&DifferentialRatios::EVEN).central, 0.0);
+        // Resetting keeps the radii.
+        lsd.reset();
+        lsd.update(DriveType::FourByFour, &rolling);
+        assert!(lsd.central().abs() < 1e-14);
     }
 
     #[test]

@@ -26,10 +26,7 @@
 //! and the Webots driver library's wheel-acceleration limiter and limited-slip integrator then
 //! switch the torque on and off every few steps: a limit cycle that amplifies round-off between
 //! the left and right wheels. Those launches are held to a heading within 0.05 rad only, and
-//! the cases that miss even that are listed in `UNSTABLE_LAUNCHES`. The Tractor's torque-mode
-//! runs are held to the same bound: the driver library's central limited-slip integrator reads
-//! its unequal tyres (0.38 and 0.6 m) as a permanent front–rear slip and moves the torque to
-//! one axle.
+//! the cases that miss even that are listed in `UNSTABLE_LAUNCHES`.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
@@ -40,7 +37,7 @@ use vehicle_model::{AutoShiftParams, BrakeBalance, Model, TyreModel, Wheel, Whee
 
 /// Torque-mode launches that leave even the 0.05 rad bound (see the module docs), with the
 /// ground friction: the driver library's limit cycle grows into a turn.
-const UNSTABLE_LAUNCHES: [(Model, f64); 2] = [(Model::Bus, 1.5), (Model::Tractor, 0.5)];
+const UNSTABLE_LAUNCHES: [(Model, f64); 1] = [(Model::Bus, 1.5)];
 
 /// How a run drives.
 #[derive(Debug, Clone, Copy)]
@@ -160,9 +157,7 @@ fn check(model: Model) {
             {
                 continue;
             }
-            if unstable == Unstable::Launch
-                || (model == Model::Tractor && matches!(d, Drive::Torque))
-            {
+            if unstable == Unstable::Launch {
                 if UNSTABLE_LAUNCHES.contains(&(model, mu)) {
                     continue;
                 }

@@ -136,6 +136,7 @@ impl<T: Real> Driver<T> {
             basic_time_step_ms
         };
         let car = Car::new(&params);
+        let limited_slip = LimitedSlip::for_geometry(&car.geometry);
         let wipers = params.wipers.map(Wipers::new);
         let mut driver = Driver {
             car,
@@ -159,7 +160,7 @@ impl<T: Real> Driver<T> {
             wipers,
             indicator_period: T::from_f64(DEFAULT_INDICATOR_PERIOD),
             indicator_auto_disabling: true,
-            limited_slip: LimitedSlip::new(),
+            limited_slip,
             auto_shift: None,
             brake_balance: BrakeBalance::Equal,
             time: T::ZERO,
