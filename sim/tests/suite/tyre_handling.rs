@@ -399,35 +399,43 @@ fn stopping_distance_does_not_depend_on_the_time_step() {
     }
 }
 
-/// The largest body slip angle (rad) of `model` on its tyres over 5 s after a step steer of
-/// `delta` (rad) at 20 m/s.
+/// The largest body slip angle (rad) of `model` on its tyres over 15 s after a step steer of
+/// `delta` (rad) at 20 m/s in speed mode: long enough for the slow divergence of a car that is
+/// only just stable to show.
 fn step_steer_body_slip(model: Model, delta: f64) -> f64 {
     let (mut sim, id) = car_on(model.params(), &TyreChoice::of_model(model), 1.0, 10);
     sim.driver_mut(id).unwrap().set_cruising_speed(72.0);
-    common::run(&mut sim, 15.0);
+    // The Bus and the Truck take about 30 s to reach it.
+    // Within 1 %: the driven tyres slip by a few per mille to hold the speed.
+    let reached = common::run_until(&mut sim, 60.0, |s| s.telemetry(id).unwrap().speed >= 19.8);
+    let v = sim.telemetry(id).unwrap().speed;
+    assert!(reached.is_some(), "{model:?} cruises at {v} m/s");
+    common::run(&mut sim, 2.0);
     sim.driver_mut(id).unwrap().set_steering_angle(delta);
     let mut worst: f64 = 0.0;
-    for _ in 0..500 {
+    for _ in 0..1500 {
         sim.step().unwrap();
         worst = worst.max(body_slip(&sim.telemetry(id).unwrap().state).abs());
     }
     worst
 }
 
+/// Rear-heavy, rear-driven models that oversteer on their equal tyres (next tests).
+const OVERSTEERING: [Model; 2] = [Model::CitroenCZero, Model::TeslaModel3];
+
 #[test]
 fn step_steers_do_not_spin_any_shipped_model() {
     // 0.05 rad at 20 m/s with the models' own wheelsDampingConstant. A car that spins turns
-    // past 45° of body slip (π rad within the 5 s). The passenger cars stay under 0.1 rad; the
-    // van and the minibus on their commercial tyres (0.8 μ, 10 F_z per rad) slide to about
-    // 0.2 rad and recover.
+    // past 45° of body slip (π rad within the 15 s). The passenger cars settle under 0.1 rad;
+    // the van on its commercial tyres (0.8 μ, 10 F_z per rad) at 0.15 rad, and the minibus
+    // keeps sliding between about 0.12 and 0.23 rad.
     for model in Model::ALL {
-        // The C-Zero: see the next test.
-        if model == Model::CitroenCZero {
+        if OVERSTEERING.contains(&model) {
             continue;
         }
         // The Tractor (1.76 m wheelbase) is asked for v²·δ/L = 11.4 m/s² on tyres whose side
         // friction gives at most 0.7·g = 6.9 m/s²: driven beyond its grip, held at its
-        // cruising speed, it slides (0.45 rad within the 5 s) and goes on to spin.
+        // cruising speed, it slides and spins.
         if model == Model::Tractor {
             let asked = 20.0 * 20.0 * 0.05 / model.params::<f64>().wheelbase;
             let grip = model.tyre_class().params(0.6, 5000.0).lateral.peak_friction * 9.81;
@@ -444,18 +452,25 @@ fn step_steers_do_not_spin_any_shipped_model() {
 }
 
 #[test]
-fn the_c_zero_spins_only_beyond_its_grip() {
-    // The C-Zero (2.55 m wheelbase, 54 % of its weight and the drive on the rear axle) asked for
-    // v²·δ/L = 7.8 m/s² by a 0.05 rad step at 20 m/s runs out of rear grip, its speed-mode
-    // motors holding the rear wheels at the cruising speed as the car scrubs speed: it spins,
-    // as a rear-engined car driven through the limit does. Half the step, 3.9 m/s², is well
-    // within its grip and it settles.
-    let half = step_steer_body_slip(Model::CitroenCZero, 0.025);
-    println!("C-Zero, 0.025 rad: largest body slip angle {half:.4} rad");
-    assert!(half < 0.1, "{half}");
-    let full = step_steer_body_slip(Model::CitroenCZero, 0.05);
-    println!("C-Zero, 0.05 rad: largest body slip angle {full:.4} rad");
-    assert!(full > std::f64::consts::FRAC_PI_4, "{full}");
+fn rear_heavy_rear_driven_cars_spin_only_near_their_grip() {
+    // The C-Zero (2.55 m wheelbase) and the TeslaModel3 (2.875 m) carry 54 % and 56 % of their
+    // weight on the driven rear axle, on the same tyre front and rear and (as in Webots) with
+    // no anti-roll bars. Load sensitivity then gives the heavier axle less grip per newton:
+    // they oversteer (the Tesla turns 5.6 % tighter than L/tan δ at 3.6 m/s²), and the rear
+    // tyres also carry the drive that holds the cruising speed against the wheel damping (the
+    // Tesla's 3 N·m·s/rad costs 480 N per wheel at 20 m/s). Asked for v²·δ/L = 7.8 and
+    // 7.0 m/s² by a 0.05 rad step at 20 m/s, their rear tyres run out of grip and they spin:
+    // the C-Zero within 5 s, the Tesla after about 12 s of slow divergence. Real cars avoid it
+    // with wider rear tyres and stiffer front roll; neither is in the Webots models. Half the
+    // step is well within their grip and they settle.
+    for model in OVERSTEERING {
+        let half = step_steer_body_slip(model, 0.025);
+        println!("{model:?}, 0.025 rad: largest body slip angle {half:.4} rad");
+        assert!(half < 0.1, "{model:?}: {half}");
+        let full = step_steer_body_slip(model, 0.05);
+        println!("{model:?}, 0.05 rad: largest body slip angle {full:.4} rad");
+        assert!(full > std::f64::consts::FRAC_PI_4, "{model:?}: {full}");
+    }
 }
 
 #[test]
