@@ -176,8 +176,8 @@ pub use params::{
 };
 pub use sound::{BLINKER_SOUND_FILE, SoundCommand, Sounds};
 pub use tyre::{
-    ContactVelocity, Direction, Linearised, MagicFormula, SlipCurve, TransientSlip, TyreClass,
-    TyreError, TyreField, TyreModel, TyreParams, WebotsContact,
+    ContactVelocity, Direction, FreeSpin, Linearised, MagicFormula, SlipCurve, SpinPrediction,
+    SpinStep, TransientSlip, TyreClass, TyreError, TyreField, TyreModel, TyreParams, WebotsContact,
 };
 pub use warning::{EnumKind, Warning};
 pub use wipers::{

@@ -25,7 +25,10 @@
 //!   started from the last step's forces; each force is kept within the tyre's friction
 //!   ellipse. The step is solved in the axes the body has at its end, so that each tyre meets
 //!   its end-of-step slip in its own axes. After the step each tyre's transient slip relaxes
-//!   with the end-of-step velocities ([`MagicFormula::relax`]).
+//!   with the end-of-step velocities ([`MagicFormula::relax`]). A braked wheel's spin and
+//!   transient slip advance in sub-steps of at most 1 ms within the step, the body held
+//!   ([`MagicFormula::linearise_spun`], [`MagicFormula::relax_spinning`]), as in the sim
+//!   crate, so that its dive toward lock does not shrink with the step.
 //! * **Loads:** the static loads of the sim crate (the body's weight shared between the axles
 //!   by its centre of mass, plus each wheel's weight), plus a quasi-static load transfer from
 //!   the last step's acceleration: `m·a_x·h/L` from the front to the rear axle, and
@@ -155,6 +158,7 @@ impl Plant {
             inverse: [1.0 / forward_mass, 1.0 / self.mass, 1.0 / self.yaw_inertia],
         };
         let mut rows = PerWheel::from_fn(|w| self.row(w, commands, dt));
+        self.divide_axles(&mut rows);
         for row in rows.iter_mut() {
             row.warm_start(&mut body);
         }
@@ -174,9 +178,13 @@ impl Plant {
                 slip: [forward - omega * corner.radius, lateral],
             };
             let road = self.environment.road_friction;
-            corner
-                .tyre
-                .relax(&mut self.slips[w], &contact, row.load, road, dt);
+            let slip = &mut self.slips[w];
+            match &row.prediction {
+                Some(p) => corner
+                    .tyre
+                    .relax_spinning(slip, p, &contact, row.load, road, dt),
+                None => corner.tyre.relax(slip, &contact, row.load, road, dt),
+            }
             self.forces[w] = row.impulse.map(|p| p / dt);
             self.wheel_angle[w] += 0.5 * (spin_before[w] + omega) * dt;
             self.wheel_speed[w] = omega;

@@ -169,6 +169,7 @@ impl Vehicle {
                 self.set_up_contact(w, &mut rows[i], contact, &body, footing, dt);
             }
         }
+        self.divide_axles(&mut rows);
         contact::solve(&mut body, &mut rows, dt as f32);
         // Each wheel's record is taken on the chassis with the spin reactions of the wheels
         // before it: the order of the two calls is part of the results.

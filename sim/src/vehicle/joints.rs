@@ -479,6 +479,7 @@ impl Vehicle {
             };
             self.set_up_contact(w, &mut rows[i], contact, &body, footing, dt);
         }
+        self.divide_axles(&mut rows);
         for row in &mut rows {
             row.cold_start_rigid_forward();
         }

@@ -69,7 +69,7 @@ use ackermann::{PerWheel, Wheel, WheelAngles};
 use proto_geom::nalgebra::Point3;
 use proto_geom::plausible;
 use rapier3d::prelude::{PhysicsWorld, Pose, RigidBody, RigidBodyHandle, Vector};
-use vehicle_model::{Commands, Sensors, TransientSlip};
+use vehicle_model::{Commands, Sensors, SpinPrediction, SpinStep, TransientSlip};
 
 pub use spec::{
     ChassisSpec, Mounting, SpringDamper, SteeringSpec, TyreChoice, TyreSpec, VehicleSpec, WheelSpec,
@@ -108,6 +108,12 @@ pub struct Vehicle {
     impulses: PerWheel<Impulses>,
     /// Transient slip of each slip-based tyre.
     slips: PerWheel<TransientSlip<f64>>,
+    /// What the step's sub-stepped tyre of each free wheel on the ground predicted for the end
+    /// of the step (set up before the solve, used after it).
+    predictions: PerWheel<Option<SpinPrediction<f64>>>,
+    /// The sub-stepped tyre's step of each free wheel on the ground, begun before the solve
+    /// and finished per axle ([`Vehicle::divide_axles`]).
+    spin_steps: PerWheel<Option<SpinStep<f64>>>,
     previous_com_velocity: Option<Vector>,
     /// A car on joints: rapier has built its multibody's joint-space mass (at its first step),
     /// so impulses may go to it as velocity changes (`multibody`).
@@ -153,6 +159,8 @@ impl Vehicle {
             steering_rates: [0.0; 2],
             impulses: PerWheel::splat(Impulses::default()),
             slips: PerWheel::splat(TransientSlip::default()),
+            predictions: PerWheel::splat(None),
+            spin_steps: PerWheel::splat(None),
             previous_com_velocity: None,
             joint_space_mass_ready: false,
             state: VehicleState {

@@ -5,7 +5,9 @@
 use ackermann::Wheel;
 use rapier3d::prelude::Vector;
 use vehicle_model::tyre::LOW_SPEED;
-use vehicle_model::{ContactVelocity, Linearised, Real, TransientSlip, TyreModel};
+use vehicle_model::{
+    ContactVelocity, FreeSpin, Linearised, Real, SpinStep, TransientSlip, TyreModel,
+};
 
 use super::contact::{Body, Contact, Grip, Spin, Support, WheelRow};
 use super::{TyreTelemetry, Vehicle};
@@ -25,7 +27,7 @@ impl Vehicle {
     /// the slip-based tyre linearised at the velocities before the solve, with its rolling
     /// resistance added to the wheel's brake, or Webots' contact.
     pub(super) fn set_up_contact(
-        &self,
+        &mut self,
         w: Wheel,
         row: &mut WheelRow,
         contact: Contact,
@@ -34,36 +36,83 @@ impl Vehicle {
         dt: f64,
     ) {
         let Footing { road, load } = footing;
-        row.grip = match self.spec.tyres.of(w) {
+        self.predictions[w] = None;
+        self.spin_steps[w] = None;
+        row.grip = match *self.spec.tyres.of(w) {
             TyreModel::Webots(c) => Grip::Coulomb {
                 compliance: c.force_dependent_slip.map(|fds| (fds / dt) as f32),
                 friction: road as f32,
             },
             TyreModel::MagicFormula(tyre) => {
-                // Linearised at the spin the wheel starts the step with: the drive torque's
-                // spin-up is part of the solve (a free spin is a row coordinate), and a
-                // point near the step's solution keeps the linearisation accurate when a
-                // large torque would spin the wheel far into sliding before the tyre acts.
-                let omega = match row.spin {
-                    Spin::Imposed => row.omega,
-                    Spin::Free { .. } => self.state.wheel_speeds[w] as f32,
+                let lin = match &mut row.spin {
+                    Spin::Imposed => {
+                        let v = contact_velocity(&contact, body, row.omega);
+                        tyre.linearise(&self.slips[w], &v, load, road, dt)
+                    }
+                    Spin::Free { brake_impulse, .. } => {
+                        // Only a braked wheel is sub-stepped: its spin changes faster than its
+                        // tyre relaxes, the case the sub-steps are for. A driven wheel takes
+                        // the whole step: the driver library's wheel-acceleration limiter
+                        // switches the torque of a wheel spinning past its grip on and off
+                        // every step, and a sub-stepped wheel rings under that switching.
+                        let braked = *brake_impulse > 0.0;
+                        let rolling =
+                            tyre.rolling_resistance_torque(load, f64::from(contact.radius));
+                        *brake_impulse += (rolling * dt) as f32;
+                        // The spin the wheel starts the step with; the drive torque's spin-up
+                        // (already in `row.omega`) and the brake act within the sub-steps.
+                        let spin = self.state.wheel_speeds[w];
+                        let v = contact_velocity(&contact, body, spin as f32);
+                        let wheel = FreeSpin {
+                            inertia: self.spec.wheels[w].spin_inertia(),
+                            radius: f64::from(contact.radius),
+                            spin,
+                            drive: f64::from(row.omega) - spin,
+                            brake: f64::from(*brake_impulse),
+                        };
+                        let slip = &self.slips[w];
+                        let step = braked
+                            .then(|| tyre.begin_spinning(slip, &v, &wheel, load, road, dt))
+                            .flatten();
+                        match step {
+                            // Taken whole for now: `divide_axles` divides it if its axle needs.
+                            Some(step) => {
+                                let (lin, prediction) = tyre.linearise_spun(&step, false);
+                                self.spin_steps[w] = Some(step);
+                                self.predictions[w] = prediction;
+                                lin
+                            }
+                            None => tyre.linearise(slip, &v, load, road, dt),
+                        }
+                    }
                 };
-                let v = contact_velocity(&contact, body, omega);
-                let lin = tyre.linearise(&self.slips[w], &v, load, road, dt);
-                if let Spin::Free { brake_impulse, .. } = &mut row.spin {
-                    let rolling = tyre.rolling_resistance_torque(load, f64::from(contact.radius));
-                    *brake_impulse += (rolling * dt) as f32;
-                }
-                let f32s = |v: [f64; 2]| v.map(|x| x as f32);
-                Grip::Slip(Linearised {
-                    force: f32s(lin.force),
-                    damping: f32s(lin.damping),
-                    slip_velocity: f32s(lin.slip_velocity),
-                    friction: f32s(lin.friction),
-                })
+                Grip::Slip(f32_line(&lin))
             }
         };
         row.contact = Some(contact);
+    }
+
+    /// Divides the step of the sub-stepped tyres (set up by
+    /// [`set_up_contact`](Self::set_up_contact)) of every axle on which one is not steady
+    /// over the step taken whole: both wheels of an axle take the same path, so that a
+    /// mirror-image pair gets mirror-image forces.
+    pub(super) fn divide_axles(&mut self, rows: &mut [WheelRow; 4]) {
+        for (i, w) in Wheel::ALL.into_iter().enumerate() {
+            let (Some(step), TyreModel::MagicFormula(tyre)) =
+                (self.spin_steps[w], self.spec.tyres.of(w))
+            else {
+                continue;
+            };
+            let steady = |s: Option<SpinStep<f64>>| s.is_none_or(|s| s.is_steady());
+            if steady(Some(step)) && steady(self.spin_steps[w.mirror()]) {
+                continue;
+            }
+            let (lin, prediction) = tyre.linearise_spun(&step, true);
+            self.predictions[w] = prediction;
+            if let Grip::Slip(line) = &mut rows[i].grip {
+                *line = f32_line(&lin);
+            }
+        }
     }
 
     /// The reaction of wheel `w`'s angular acceleration on the chassis. The solve puts the
@@ -90,6 +139,7 @@ impl Vehicle {
     ) {
         self.impulses[w] = row.impulses;
         self.state.wheel_speeds[w] = omega;
+        let prediction = self.predictions[w].take();
         let Some(contact) = row.contact else {
             self.state.suspension[w] = 0.0;
             self.state.tyres[w] = TyreTelemetry::default();
@@ -104,7 +154,10 @@ impl Vehicle {
         let [fx, fy, fz] = [i.forward, i.lateral, i.normal].map(|p| f64::from(p) / dt);
         let v = contact_velocity(&contact, body, omega as f32);
         if let TyreModel::MagicFormula(tyre) = self.spec.tyres.of(w) {
-            tyre.relax(&mut self.slips[w], &v, fz, road, dt);
+            match prediction {
+                Some(p) => tyre.relax_spinning(&mut self.slips[w], &p, &v, fz, road, dt),
+                None => tyre.relax(&mut self.slips[w], &v, fz, road, dt),
+            }
         }
         let reference = v.forward.abs().max(LOW_SPEED);
         let friction_use = match row.grip {
@@ -135,6 +188,17 @@ pub(super) struct Footing {
     pub(super) road: f64,
     /// The tyre's load (N).
     pub(super) load: f64,
+}
+
+/// `lin` in the solve's precision.
+fn f32_line(lin: &Linearised<f64>) -> Linearised<f32> {
+    let f32s = |v: [f64; 2]| v.map(|x| x as f32);
+    Linearised {
+        force: f32s(lin.force),
+        damping: f32s(lin.damping),
+        slip_velocity: f32s(lin.slip_velocity),
+        friction: f32s(lin.friction),
+    }
 }
 
 /// The velocities of `contact` (m/s) on `body` for a wheel spinning at `omega` (rad/s).

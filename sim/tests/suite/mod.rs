@@ -8,4 +8,5 @@ mod test_track;
 mod tyre_handling;
 mod tyre_straight;
 mod wheel_contact;
+mod wheel_transient;
 mod world;

@@ -49,11 +49,13 @@
 
 mod curve;
 mod params;
+mod spin;
 
 use ackermann::Real;
 
 use curve::Shape;
 pub use params::{Direction, SlipCurve, TyreClass, TyreError, TyreField, TyreParams};
+pub use spin::{FreeSpin, SpinPrediction, SpinStep};
 
 /// Speed below which the tyre is at "walking pace" (m/s): its carcass damping
 /// ([`TyreParams::low_speed_damping`]) fades in, and slip ratios are measured against this
@@ -284,8 +286,11 @@ impl<T: Real> MagicFormula<T> {
     /// toward `(κ, tan α)`, against the sliding velocity, which it reaches at twice the peak.
     // Inlined into `force` and `linearise` (with `at_load`): as a call, its inputs and results
     // went through the stack, and the benches took 63 instead of 36 ns (`force`, f32) and 98
-    // instead of 67 ns (`linearise`, f64).
-    #[inline(always)]
+    // instead of 67 ns (`linearise`, f64). On bare metal (`target_os = "none"`, the firmware)
+    // flash is the budget instead: one copy serves every caller, where each inlined one costs
+    // about 1.4 KiB on a Cortex-M4.
+    #[cfg_attr(not(target_os = "none"), inline(always))]
+    #[cfg_attr(target_os = "none", inline(never))]
     fn force_and_secant(&self, slip: [T; 2], c: &AtLoad<T>) -> ([T; 2], [T; 2]) {
         // The evaluation is one chain of dependent operations (square root, arc tangent, arc
         // tangent, sine), so it is written for latency: t = (a, b)/divisor, and the square root
@@ -417,36 +422,42 @@ impl<T: Real> MagicFormula<T> {
     ) -> ([T; 2], [T; 2]) {
         let dt = if dt > T::ZERO { dt } else { T::ZERO };
         let speed = v.forward.abs();
-        let reference = speed.max(T::from_f64(LOW_SPEED));
-        let curves = self.curves();
         let peaks = self.peaks(c);
         let mut next = [T::ZERO; 2];
         let mut rate = [T::ZERO; 2];
         for i in 0..2 {
-            let sigma = curves[i].relaxation_length;
-            let denominator = sigma + dt * speed;
-            let x = (sigma * slip[i] - dt * v.slip[i]) / denominator;
-            let kinematic = v.slip[i].abs() / reference;
-            let cap = kinematic.max(peaks[i]);
-            if x.abs() <= cap {
-                next[i] = x;
-                rate[i] = dt / denominator;
-            } else if kinematic > peaks[i] {
-                // Sliding: the slip is the kinematic one, −v_s/reference, which vanishes
-                // with the slip velocity.
-                next[i] = cap * x.sign();
-                rate[i] = T::ONE / reference;
-            } else {
-                // Held at the peak slip: the deflection unwinds as in the free case.
-                next[i] = cap * x.sign();
-                rate[i] = dt / denominator * cap / x.abs();
-            }
-            if !next[i].is_finite() {
-                next[i] = T::ZERO;
-                rate[i] = T::ZERO;
-            }
+            (next[i], rate[i]) = self.advance_axis(i, slip[i], speed, v.slip[i], peaks[i], dt);
         }
         (next, rate)
+    }
+
+    /// [`advance`](Self::advance) along axis `i` (0: x, 1: y) alone: the transient slip `x`
+    /// after `dt` (s, ≥ 0) at wheel-centre speed `speed` (m/s, ≥ 0) and slip velocity `v_slip`
+    /// (m/s), with `peak` the axis' peak slip; and the new slip per change of slip velocity
+    /// (s/m).
+    #[inline(always)]
+    fn advance_axis(&self, i: usize, x: T, speed: T, v_slip: T, peak: T, dt: T) -> (T, T) {
+        let reference = speed.max(T::from_f64(LOW_SPEED));
+        let sigma = self.curves()[i].relaxation_length;
+        let denominator = sigma + dt * speed;
+        let free = (sigma * x - dt * v_slip) / denominator;
+        let kinematic = v_slip.abs() / reference;
+        let cap = kinematic.max(peak);
+        let (next, rate) = if free.abs() <= cap {
+            (free, dt / denominator)
+        } else if kinematic > peak {
+            // Sliding: the slip is the kinematic one, −v_s/reference, which vanishes
+            // with the slip velocity.
+            (cap * free.sign(), T::ONE / reference)
+        } else {
+            // Held at the peak slip: the deflection unwinds as in the free case.
+            (cap * free.sign(), dt / denominator * cap / free.abs())
+        };
+        if next.is_finite() {
+            (next, rate)
+        } else {
+            (T::ZERO, T::ZERO)
+        }
     }
 
     /// The force per unit load over a step of `dt` (s) as an affine function of the slip

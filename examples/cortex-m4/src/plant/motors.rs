@@ -1,10 +1,10 @@
 //! The Webots motors of the plant (steering servos, wheel velocity motors, drive torques and
 //! brakes) and each wheel's set-up for the solve of a step: its spin, its load and its tyre's
-//! linearised force law.
+//! linearised force law (sub-stepped over the step for a braked wheel, as in the sim crate).
 
-use ackermann::{Real, Wheel, WheelAngles};
+use ackermann::{PerWheel, Real, Wheel, WheelAngles};
 use vehicle_model::actuator::{SteeringState, VelocityRamp};
-use vehicle_model::{Commands, ContactVelocity, WheelDrive};
+use vehicle_model::{Commands, ContactVelocity, FreeSpin, WheelDrive};
 
 use super::Plant;
 use super::solve::{Row, Spin, point_velocity, to_wheel};
@@ -68,12 +68,30 @@ impl Plant {
             slip: [forward - omega * corner.radius, lateral],
         };
         let road = self.environment.road_friction;
-        let law = corner
-            .tyre
-            .linearise(&self.slips[w], &contact, load, road, dt);
-        if let Spin::Free { capacity, .. } = &mut spin {
-            *capacity += corner.tyre.rolling_resistance_torque(load, corner.radius) * dt;
+        let tyre = &corner.tyre;
+        let slip = &self.slips[w];
+        let mut spun = None;
+        if let Spin::Free { inertia, capacity } = &mut spin {
+            // A braked wheel's spin and slip advance in sub-steps, as in the sim crate (its
+            // `vehicle::wheels` says why only a braked one).
+            let braked = *capacity > 0.0;
+            *capacity += tyre.rolling_resistance_torque(load, corner.radius) * dt;
+            let wheel = FreeSpin {
+                inertia: *inertia,
+                radius: corner.radius,
+                spin: omega,
+                drive: spin_rate - omega,
+                brake: *capacity,
+            };
+            if braked {
+                spun = tyre.begin_spinning(slip, &contact, &wheel, load, road, dt);
+            }
         }
+        // Taken whole for now: `divide_axles` divides it if its axle needs.
+        let (law, prediction) = match &spun {
+            Some(step) => tyre.linearise_spun(step, false),
+            None => (tyre.linearise(slip, &contact, load, road, dt), None),
+        };
         Row {
             heading,
             arm: corner.arm,
@@ -84,7 +102,27 @@ impl Plant {
             load,
             normal: load * dt,
             law,
+            spun,
+            prediction,
             impulse: self.forces[w].map(|f| f * dt),
+        }
+    }
+
+    /// Divides the step of the sub-stepped tyres of every axle on which one is not steady
+    /// over the step taken whole: both wheels of an axle take the same path, so that a
+    /// mirror-image pair gets mirror-image forces.
+    pub(super) fn divide_axles(&self, rows: &mut PerWheel<Row>) {
+        for w in Wheel::ALL {
+            let Some(step) = rows[w].spun else {
+                continue;
+            };
+            let steady = |row: &Row| row.spun.is_none_or(|s| s.is_steady());
+            if steady(&rows[w]) && steady(&rows[w.mirror()]) {
+                continue;
+            }
+            let (law, prediction) = self.corners[w].tyre.linearise_spun(&step, true);
+            rows[w].law = law;
+            rows[w].prediction = prediction;
         }
     }
 

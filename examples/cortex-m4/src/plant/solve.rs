@@ -1,8 +1,8 @@
 //! The implicit solve of one step: the four tyres' force laws at the end-of-step slip
 //! velocities, the free wheels' spins and brakes, and the planar body they push.
 
-use vehicle_model::Linearised;
 use vehicle_model::actuator::coulomb_torque;
+use vehicle_model::{Linearised, SpinPrediction, SpinStep};
 
 /// How a wheel's spin takes part in the solve.
 #[derive(Debug, Clone, Copy)]
@@ -74,6 +74,10 @@ pub(super) struct Row {
     pub(super) normal: f32,
     /// The tyre's force law per unit load over the step.
     pub(super) law: Linearised<f32>,
+    /// A braked wheel's sub-stepped tyre step (`None` for the others).
+    pub(super) spun: Option<SpinStep<f32>>,
+    /// What the sub-stepped tyre predicted for the end of the step, for its relaxation.
+    pub(super) prediction: Option<SpinPrediction<f32>>,
     /// Tyre impulse along the heading and the axis (N·s).
     pub(super) impulse: [f32; 2],
 }
