@@ -62,7 +62,7 @@ fn a_sudden_full_brake_locks_the_front_wheels_at_every_step() {
     // and the fronts lock, 0.43 s after the brake at 1 ms (0.51 s on joints). How deep that
     // dip goes decides it, and the stop takes about 2 s: a wheel that rides the dip out locks
     // only as the car comes to rest (1.8 s). Before the sub-steps that happened from 3 ms up,
-    // and the car stopped 12 % shorter at 10 ms, on rolling wheels (14.9 m against 16.9 m).
+    // and the car stopped 11 % shorter at 10 ms, on rolling wheels (14.9 m against 16.9 m).
     let (reference, reference_lock) = sudden_brake(1);
     for dt in [1, 5, 10, 32] {
         let (d, lock) = if dt == 1 {
