@@ -6,7 +6,8 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use vehicle_model::{
-    ContactVelocity, FreeSpin, Linearised, MagicFormula, TransientSlip, TyreClass,
+    ContactVelocity, FreeSpin, Linearised, MagicFormula, PerWheel, SpinStep, TransientSlip,
+    TyreClass,
 };
 
 /// Wheel radius (m), spin inertia (kg·m²), load (N), chassis speed (m/s), brake torque (N·m).
@@ -237,4 +238,27 @@ fn invalid_wheels_and_steps_are_refused() {
             "{dt}"
         );
     }
+}
+
+#[test]
+fn both_wheels_of_an_axle_are_divided_alike() {
+    let t = tyre();
+    let slip = TransientSlip::default();
+    let omega = SPEED / RADIUS;
+    let wheel = |brake: f64| FreeSpin {
+        inertia: INERTIA,
+        radius: RADIUS,
+        spin: omega,
+        drive: 0.0,
+        brake: brake * 0.01,
+    };
+    let begin =
+        |brake: f64| t.begin_spinning(&slip, &velocity(omega), &wheel(brake), LOAD, 1.0, 0.01);
+    let (rolling, braked) = (begin(0.0).unwrap(), begin(BRAKE).unwrap());
+    assert!(rolling.is_steady() && !braked.is_steady());
+    // Front right braked hard, front left rolling: both divided. Rear: one rolling, one
+    // without a sub-stepped tyre: neither.
+    let steps = PerWheel::new(Some(braked), Some(rolling), None, Some(rolling));
+    let divide = SpinStep::to_divide(&steps);
+    assert_eq!(*divide.as_array(), [true, true, false, false]);
 }

@@ -97,16 +97,13 @@ impl Vehicle {
     /// over the step taken whole: both wheels of an axle take the same path, so that a
     /// mirror-image pair gets mirror-image forces.
     pub(super) fn divide_axles(&mut self, rows: &mut [WheelRow; 4]) {
+        let divide = SpinStep::to_divide(&self.spin_steps);
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
-            let (Some(step), TyreModel::MagicFormula(tyre)) =
-                (self.spin_steps[w], self.spec.tyres.of(w))
+            let (Some(step), TyreModel::MagicFormula(tyre), true) =
+                (self.spin_steps[w], self.spec.tyres.of(w), divide[w])
             else {
                 continue;
             };
-            let steady = |s: Option<SpinStep<f64>>| s.is_none_or(|s| s.is_steady());
-            if steady(Some(step)) && steady(self.spin_steps[w.mirror()]) {
-                continue;
-            }
             let (lin, prediction) = tyre.linearise_spun(&step, true);
             self.predictions[w] = prediction;
             if let Grip::Slip(line) = &mut rows[i].grip {

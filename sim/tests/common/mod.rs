@@ -24,8 +24,19 @@ pub fn settled(model: Model, mu: f64) -> (Simulation, VehicleId) {
 
 /// A simulation with one `model` on `tyre` on flat ground of friction `mu`, settled for 1 s.
 pub fn settled_on(model: Model, mu: f64, tyre: &TyreChoice) -> (Simulation, VehicleId) {
+    settled_with_step(model, mu, tyre, WorldConfig::default().basic_time_step_ms)
+}
+
+/// As [`settled_on`], with a `dt_ms` step (ms).
+pub fn settled_with_step(
+    model: Model,
+    mu: f64,
+    tyre: &TyreChoice,
+    dt_ms: u32,
+) -> (Simulation, VehicleId) {
     let world = World::new(WorldConfig {
         ground_friction: mu,
+        basic_time_step_ms: dt_ms,
         ..WorldConfig::default()
     })
     .unwrap();

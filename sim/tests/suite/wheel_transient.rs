@@ -9,28 +9,14 @@
 use crate::common;
 
 use sim::TyreChoice;
-
-use sim::{Simulation, VehiclePlacement, World, WorldConfig};
 use vehicle_model::{BrakeBalance, Model, Wheel};
 
 /// A BmwX5 with proportioned brakes on friction 1 braking at intensity 1 from 60 km/h with a
 /// `dt_ms` step: its stopping distance (m) and when its front-left wheel locks (s after the
 /// brake, `None` if it never does).
 fn sudden_brake(dt_ms: u32) -> (f64, Option<f64>) {
-    let world = World::new(WorldConfig {
-        basic_time_step_ms: dt_ms,
-        ..WorldConfig::default()
-    })
-    .unwrap();
-    let mut sim = Simulation::new(world);
-    let (id, _) = sim
-        .add_car_with(
-            Model::BmwX5.params(),
-            &TyreChoice::of_model(Model::BmwX5),
-            crate::MOUNTING,
-            VehiclePlacement::default(),
-        )
-        .unwrap();
+    let tyre = TyreChoice::of_model(Model::BmwX5);
+    let (mut sim, id) = common::settled_with_step(Model::BmwX5, 1.0, &tyre, dt_ms);
     let d = sim.driver_mut(id).unwrap();
     d.set_brake_balance(BrakeBalance::Proportioned).unwrap();
     d.set_cruising_speed(60.0);

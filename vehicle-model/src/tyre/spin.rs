@@ -27,7 +27,7 @@
 //! at 32 ms against 0.43 s at 1 ms). `tests/free_spin.rs` checks one braked wheel against a
 //! fine solution.
 
-use ackermann::Real;
+use ackermann::{PerWheel, Real, Wheel};
 
 use super::{AtLoad, ContactVelocity, LOW_SPEED, Linearised, MagicFormula, TransientSlip};
 
@@ -97,6 +97,15 @@ impl<T> SpinStep<T> {
     /// gets mirror-image forces.
     pub fn is_steady(&self) -> bool {
         self.steady
+    }
+
+    /// Which of the four wheels' steps to divide into sub-steps
+    /// ([`MagicFormula::linearise_spun`] with `divide`): each begun step whose axle holds one
+    /// that is not steady ([`SpinStep::is_steady`]). Both wheels of an axle take the same
+    /// path, so that a mirror-image pair gets mirror-image forces.
+    pub fn to_divide(steps: &PerWheel<Option<Self>>) -> PerWheel<bool> {
+        let steady = |w: Wheel| steps[w].as_ref().is_none_or(SpinStep::is_steady);
+        PerWheel::from_fn(|w| steps[w].is_some() && !(steady(w) && steady(w.mirror())))
     }
 }
 

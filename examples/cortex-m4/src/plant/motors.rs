@@ -4,7 +4,7 @@
 
 use ackermann::{PerWheel, Real, Wheel, WheelAngles};
 use vehicle_model::actuator::{SteeringState, VelocityRamp};
-use vehicle_model::{Commands, ContactVelocity, FreeSpin, WheelDrive};
+use vehicle_model::{Commands, ContactVelocity, FreeSpin, SpinStep, WheelDrive};
 
 use super::Plant;
 use super::solve::{Row, Spin, point_velocity, to_wheel};
@@ -112,14 +112,11 @@ impl Plant {
     /// over the step taken whole: both wheels of an axle take the same path, so that a
     /// mirror-image pair gets mirror-image forces.
     pub(super) fn divide_axles(&self, rows: &mut PerWheel<Row>) {
+        let divide = SpinStep::to_divide(&PerWheel::from_fn(|w| rows[w].spun));
         for w in Wheel::ALL {
-            let Some(step) = rows[w].spun else {
+            let (Some(step), true) = (rows[w].spun, divide[w]) else {
                 continue;
             };
-            let steady = |row: &Row| row.spun.is_none_or(|s| s.is_steady());
-            if steady(&rows[w]) && steady(&rows[w.mirror()]) {
-                continue;
-            }
             let (law, prediction) = self.corners[w].tyre.linearise_spun(&step, true);
             rows[w].law = law;
             rows[w].prediction = prediction;
