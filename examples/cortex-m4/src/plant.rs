@@ -61,9 +61,9 @@ mod tests;
 // Transcendental maths goes through `Real` (libm), so that the host tests compute what the
 // firmware does rather than std's versions.
 use ackermann::{PerWheel, Pose, Real, WheelAngles};
-use solve::{Body, point_velocity};
+use solve::{Body, point_velocity, solve_step};
 use vehicle_model::actuator::{SteeringMotor, VelocityRamp};
-use vehicle_model::{Commands, ContactVelocity, Sensors, TransientSlip};
+use vehicle_model::{Commands, ContactVelocity, Sensors, SpinStep, TransientSlip};
 
 use build::Corner;
 pub use build::Environment;
@@ -110,6 +110,9 @@ pub struct Plant {
     wheel_motors: PerWheel<Option<VelocityRamp<f32>>>,
     /// Each tyre's transient slip.
     slips: PerWheel<TransientSlip<f32>>,
+    /// Each braked wheel's sub-stepped tyre step of the step being solved (`None` for the
+    /// others).
+    spin_steps: PerWheel<Option<SpinStep<f32>>>,
     /// Each tyre's force over the last step along its heading and its axis (N): the warm
     /// start of the next solve.
     forces: PerWheel<[f32; 2]>,
@@ -158,14 +161,12 @@ impl Plant {
             inverse: [1.0 / forward_mass, 1.0 / self.mass, 1.0 / self.yaw_inertia],
         };
         let mut rows = PerWheel::from_fn(|w| self.row(w, commands, dt));
+        let (start_body, mut again) = (body, rows);
         self.divide_axles(&mut rows);
-        for row in rows.iter_mut() {
-            row.warm_start(&mut body);
-        }
-        for _ in 0..SWEEPS {
-            for row in rows.iter_mut() {
-                row.solve(&mut body);
-            }
+        solve_step(&mut body, &mut rows);
+        if self.respin_braked(&mut again, &start_body, &body, dt) {
+            (body, rows) = (start_body, again);
+            solve_step(&mut body, &mut rows);
         }
 
         self.velocity = body.velocity;

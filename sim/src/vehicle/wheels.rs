@@ -69,6 +69,7 @@ impl Vehicle {
                             spin,
                             drive: f64::from(row.omega) - spin,
                             brake: f64::from(*brake_impulse),
+                            chassis: 0.0,
                         };
                         let slip = &self.slips[w];
                         let step = braked
@@ -110,6 +111,56 @@ impl Vehicle {
                 *line = f32_line(&lin);
             }
         }
+    }
+
+    /// Begins the braked wheels' sub-stepped tyres again with what the first solve of the step
+    /// found, and sets up their lines in `rows` (the rows as they were before that solve): the
+    /// chassis' change of forward speed at each contact over the step (`start` before the
+    /// solve, `end` after it), and, where the solve carries the load (`end_loads`, its normal
+    /// impulses, N·s; `None` on joints, where rapier carries it), the mean of the step's start
+    /// and end loads. The sub-steps held both at the step's start; under a sudden brake the
+    /// load moving to the front within a 32 ms step is a tenth of the wheel's. Returns whether
+    /// any wheel was begun again (then the step is solved again); none is while every braked
+    /// wheel is steady ([`SpinStep::is_steady`]).
+    pub(super) fn respin_braked(
+        &mut self,
+        rows: &mut [WheelRow; 4],
+        start: &Body,
+        end: &Body,
+        end_loads: Option<[f32; 4]>,
+        dt: f64,
+    ) -> bool {
+        // Wheels their brakes hold still (a parked car, a locked stop) are steady: nothing to
+        // correct.
+        if !SpinStep::to_divide(&self.spin_steps).iter().any(|&d| d) {
+            return false;
+        }
+        let mut any = false;
+        for (i, w) in Wheel::ALL.into_iter().enumerate() {
+            let (Some(step), TyreModel::MagicFormula(tyre), Some(contact)) =
+                (self.spin_steps[w], self.spec.tyres.of(w), rows[i].contact)
+            else {
+                continue;
+            };
+            let forward = |body: &Body| contact.forward.dot(body.velocity_at(contact.contact_arm));
+            let change = f64::from(forward(end) - forward(start));
+            let load =
+                end_loads.map_or(step.load(), |n| 0.5 * (step.load() + f64::from(n[i]) / dt));
+            self.spin_steps[w] = tyre.respin(&step, change, load);
+            self.predictions[w] = None;
+            if let Some(step) = self.spin_steps[w] {
+                let (lin, prediction) = tyre.linearise_spun(&step, false);
+                self.predictions[w] = prediction;
+                if let Grip::Slip(line) = &mut rows[i].grip {
+                    *line = f32_line(&lin);
+                }
+            }
+            any = true;
+        }
+        if any {
+            self.divide_axles(rows);
+        }
+        any
     }
 
     /// The reaction of wheel `w`'s angular acceleration on the chassis. The solve puts the

@@ -17,15 +17,20 @@
 //! the spin still meet the tyre's force at the end of the step, which keeps the step stable.
 //! The slip angle is as in [`MagicFormula::linearise`] (its slip velocity is the chassis').
 //!
-//! The `sim` crate and the firmware example's plant sub-step braked wheels only, the case this
-//! is for: the Webots driver library's wheel-acceleration limiter switches the torque of a
-//! driven wheel spinning past its grip on and off every step, and a sub-stepped wheel rings
-//! under that switching. The two wheels of an axle are divided alike
-//! ([`SpinStep::is_steady`]). Holding the chassis is the limit of the method: over a long
-//! step the load that braking moves to the front and the chassis' own deceleration are missed
-//! within the step, so at 16–32 ms a wheel dives toward lock early (a BmwX5's fronts at 0.26 s
-//! at 32 ms against 0.43 s at 1 ms). `tests/free_spin.rs` checks one braked wheel against a
-//! fine solution.
+//! The chassis' own change of speed at the wheel over the step ([`FreeSpin::chassis`]) is ramped
+//! in over the sub-steps, and the load is the caller's: over a long step, holding both at the
+//! step's start misses the load that braking moves to the front and the chassis' slowing, and
+//! a wheel dives toward lock early (a BmwX5's fronts at 0.26 s at 32 ms against 0.43 s at
+//! 1 ms). The `sim` crate and the firmware example's plant solve a braking step once with them
+//! held, then begin the steps again ([`MagicFormula::respin`]) with the chassis' change and the
+//! mean load that solve found, and solve again.
+//!
+//! Both sub-step braked wheels only, the case this is for: the Webots driver library's
+//! wheel-acceleration limiter switches the torque of a driven wheel spinning past its grip on
+//! and off every step, and a sub-stepped wheel rings under that switching. The two wheels of an
+//! axle are divided alike ([`SpinStep::to_divide`]); only a wheel its brake holds still is
+//! taken whole ([`SpinStep::is_steady`]). `tests/free_spin.rs` checks one braked wheel against
+//! a fine solution.
 
 use ackermann::{PerWheel, Real, Wheel};
 
@@ -55,6 +60,9 @@ pub struct FreeSpin<T> {
     /// Most the brake can deliver over the step, brake and rolling-resistance torque × dt
     /// (N·m·s, ≥ 0): it turns against the spin and cannot reverse it.
     pub brake: T,
+    /// Change of the wheel centre's forward speed over the step (m/s): the chassis' own
+    /// motion, which the sub-steps ramp in.
+    pub chassis: T,
 }
 
 /// What [`MagicFormula::linearise_spun`] predicted for the end of the step, for
@@ -90,11 +98,20 @@ pub struct SpinStep<T> {
     steady: bool,
 }
 
+impl<T: Copy> SpinStep<T> {
+    /// The load the step was begun with (N).
+    pub fn load(&self) -> T {
+        self.run.load
+    }
+}
+
 impl<T> SpinStep<T> {
-    /// True if the longitudinal force per unit load changes by at most 0.01 over the step
-    /// taken whole: dividing it would not change the mean force (it lies between the two
-    /// ends). The two wheels of an axle should be divided alike, so that a mirror-image pair
-    /// gets mirror-image forces.
+    /// True if the wheel's brake holds it still over the step taken whole and its
+    /// longitudinal force per unit load changes by at most 0.01: dividing it would not change
+    /// the mean force (it lies between the two ends). A rolling wheel is never steady: near the
+    /// curve's peak its force can stay flat while its slip runs through the peak. The two
+    /// wheels of an axle should be divided alike, so that a mirror-image pair gets mirror-image
+    /// forces.
     pub fn is_steady(&self) -> bool {
         self.steady
     }
@@ -175,6 +192,7 @@ impl<T: Real> MagicFormula<T> {
             spin,
             drive,
             brake,
+            chassis,
         } = *wheel;
         let valid = inertia > T::ZERO
             && radius > T::ZERO
@@ -183,6 +201,7 @@ impl<T: Real> MagicFormula<T> {
             && spin.is_finite()
             && drive.is_finite()
             && brake.is_finite()
+            && chassis.is_finite()
             && dt > T::ZERO
             && dt.is_finite()
             && load.is_finite()
@@ -222,7 +241,11 @@ impl<T: Real> MagicFormula<T> {
             v: *v,
             road,
             one,
-            steady: (last[0] - first[0]).abs() <= T::from_f64(STEADY),
+            // Only a wheel its brake holds still is left whole: a rolling one can have a flat
+            // force near the curve's peak while its slip runs through it.
+            steady: spin == T::ZERO
+                && one.v_slip == v.slip[0] + chassis
+                && (last[0] - first[0]).abs() <= T::from_f64(STEADY),
         })
     }
 
@@ -279,6 +302,17 @@ impl<T: Real> MagicFormula<T> {
         (out, Some(prediction))
     }
 
+    /// `step` begun again ([`begin_spinning`](Self::begin_spinning)) with the chassis' change
+    /// of forward speed at the wheel over the step `chassis` (m/s) and the load `load` (N),
+    /// e.g. what a first solve of the step found.
+    pub fn respin(&self, step: &SpinStep<T>, chassis: T, load: T) -> Option<SpinStep<T>> {
+        let wheel = FreeSpin {
+            chassis,
+            ..step.run.wheel
+        };
+        self.begin_spinning(&step.slip, &step.v, &wheel, load, step.road, step.run.dt)
+    }
+
     /// The spin and slip ratio of `run` advanced from `(ratio, slip velocity)` over its step
     /// in `n` sub-steps.
     fn spin_pass(&self, run: &Run<T>, (ratio, v_slip): (T, T), n: i32) -> Pass<T> {
@@ -288,6 +322,7 @@ impl<T: Real> MagicFormula<T> {
             spin,
             drive,
             brake,
+            ..
         } = run.wheel;
         let (c, speed, peak, carcass, angle) =
             (&run.c, run.speed, run.peak, run.carcass, run.angle);
@@ -324,7 +359,7 @@ impl<T: Real> MagicFormula<T> {
                 let free = omega + drive - gain * f;
                 next = free + stop(free, inertia, brake);
             }
-            let v_next = v_slip - radius * (next - omega);
+            let v_next = v_slip - radius * (next - omega) + run.wheel.chassis / count;
             ratio = self.advance_axis(0, ratio, speed, v_next, peak, h).0;
             sum[0] += f;
             sum[1] += fy;

@@ -213,6 +213,7 @@ impl Plant {
             steering_rate: WheelAngles::new(0.0, 0.0),
             wheel_motors: PerWheel::splat(None),
             slips: PerWheel::splat(TransientSlip::default()),
+            spin_steps: PerWheel::splat(None),
             forces: PerWheel::splat([0.0; 2]),
             pose: Pose::ORIGIN,
             distance: 0.0,

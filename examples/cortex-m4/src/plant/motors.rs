@@ -7,7 +7,7 @@ use vehicle_model::actuator::{SteeringState, VelocityRamp};
 use vehicle_model::{Commands, ContactVelocity, FreeSpin, SpinStep, WheelDrive};
 
 use super::Plant;
-use super::solve::{Row, Spin, point_velocity, to_wheel};
+use super::solve::{Body, Row, Spin, point_velocity, to_wheel};
 
 impl Plant {
     /// The Webots steering motors: a P controller capped in speed, targets clamped to the
@@ -70,7 +70,7 @@ impl Plant {
         let road = self.environment.road_friction;
         let tyre = &corner.tyre;
         let slip = &self.slips[w];
-        let mut spun = None;
+        self.spin_steps[w] = None;
         if let Spin::Free { inertia, capacity } = &mut spin {
             // A braked wheel's spin and slip advance in sub-steps, as in the sim crate (its
             // `vehicle::wheels` says why only a braked one).
@@ -82,13 +82,14 @@ impl Plant {
                 spin: omega,
                 drive: spin_rate - omega,
                 brake: *capacity,
+                chassis: 0.0,
             };
             if braked {
-                spun = tyre.begin_spinning(slip, &contact, &wheel, load, road, dt);
+                self.spin_steps[w] = tyre.begin_spinning(slip, &contact, &wheel, load, road, dt);
             }
         }
         // Taken whole for now: `divide_axles` divides it if its axle needs.
-        let (law, prediction) = match &spun {
+        let (law, prediction) = match &self.spin_steps[w] {
             Some(step) => tyre.linearise_spun(step, false),
             None => (tyre.linearise(slip, &contact, load, road, dt), None),
         };
@@ -102,19 +103,62 @@ impl Plant {
             load,
             normal: load * dt,
             law,
-            spun,
             prediction,
             impulse: self.forces[w].map(|f| f * dt),
         }
     }
 
+    /// Begins the braked wheels' sub-stepped tyres again with what the first solve of the step
+    /// found (`start` the body before it, `end` after it), as the sim crate does: the
+    /// chassis' change of forward speed at each contact, and the mean of the step's start and
+    /// end loads (the end's from the body's acceleration over the step). `rows` are the rows
+    /// as they were before that solve. Returns whether any wheel was begun again (then the
+    /// step is solved again); none is while every braked wheel is steady.
+    pub(super) fn respin_braked(
+        &mut self,
+        rows: &mut PerWheel<Row>,
+        start: &Body,
+        end: &Body,
+        dt: f32,
+    ) -> bool {
+        if !SpinStep::to_divide(&self.spin_steps).iter().any(|&d| d) {
+            return false;
+        }
+        let acceleration = [0, 1].map(|i| (end.velocity[i] - start.velocity[i]) / dt);
+        for w in Wheel::ALL {
+            let row = &mut rows[w];
+            let Some(step) = self.spin_steps[w] else {
+                continue;
+            };
+            let corner = &self.corners[w];
+            let change = row.contact(end)[0] - row.contact(start)[0];
+            let [forward_transfer, lateral_transfer] = corner.transfer;
+            let end_load = (corner.static_load
+                + forward_transfer * acceleration[0]
+                + lateral_transfer * acceleration[1])
+                .max(0.0);
+            let load = 0.5 * (row.load + end_load);
+            self.spin_steps[w] = corner.tyre.respin(&step, change, load);
+            row.prediction = None;
+            if let Some(step) = &self.spin_steps[w] {
+                (row.law, row.prediction) = corner.tyre.linearise_spun(step, false);
+                row.load = load;
+                row.normal = load * dt;
+            }
+        }
+        self.divide_axles(rows);
+        true
+    }
+
     /// Divides the step of the sub-stepped tyres of every axle on which one is not steady
     /// over the step taken whole: both wheels of an axle take the same path, so that a
     /// mirror-image pair gets mirror-image forces.
+    // Called twice a step (before each solve): one copy.
+    #[inline(never)]
     pub(super) fn divide_axles(&self, rows: &mut PerWheel<Row>) {
-        let divide = SpinStep::to_divide(&PerWheel::from_fn(|w| rows[w].spun));
+        let divide = SpinStep::to_divide(&self.spin_steps);
         for w in Wheel::ALL {
-            let (Some(step), true) = (rows[w].spun, divide[w]) else {
+            let (Some(step), true) = (self.spin_steps[w], divide[w]) else {
                 continue;
             };
             let (law, prediction) = self.corners[w].tyre.linearise_spun(&step, true);

@@ -1,8 +1,11 @@
 //! The implicit solve of one step: the four tyres' force laws at the end-of-step slip
 //! velocities, the free wheels' spins and brakes, and the planar body they push.
 
+use ackermann::PerWheel;
 use vehicle_model::actuator::coulomb_torque;
-use vehicle_model::{Linearised, SpinPrediction, SpinStep};
+
+use super::SWEEPS;
+use vehicle_model::{Linearised, SpinPrediction};
 
 /// How a wheel's spin takes part in the solve.
 #[derive(Debug, Clone, Copy)]
@@ -74,8 +77,6 @@ pub(super) struct Row {
     pub(super) normal: f32,
     /// The tyre's force law per unit load over the step.
     pub(super) law: Linearised<f32>,
-    /// A braked wheel's sub-stepped tyre step (`None` for the others).
-    pub(super) spun: Option<SpinStep<f32>>,
     /// What the sub-stepped tyre predicted for the end of the step, for its relaxation.
     pub(super) prediction: Option<SpinPrediction<f32>>,
     /// Tyre impulse along the heading and the axis (N·s).
@@ -169,4 +170,17 @@ pub(super) fn point_velocity([u, v, r]: [f32; 3], [x, y]: [f32; 2]) -> [f32; 2] 
 /// `velocity` (body axes) along a wheel's `heading` and its axis to the left.
 pub(super) fn to_wheel([hx, hy]: [f32; 2], [x, y]: [f32; 2]) -> [f32; 2] {
     [hx * x + hy * y, hx * y - hy * x]
+}
+
+/// The implicit solve of a step: the last step's tyre forces as a warm start, then block
+/// Gauss–Seidel sweeps over the wheels.
+pub(super) fn solve_step(body: &mut Body, rows: &mut PerWheel<Row>) {
+    for row in rows.iter_mut() {
+        row.warm_start(body);
+    }
+    for _ in 0..SWEEPS {
+        for row in rows.iter_mut() {
+            row.solve(body);
+        }
+    }
 }
