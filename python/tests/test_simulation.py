@@ -68,16 +68,16 @@ def test_a_world_from_a_file_a_model_or_keywords():
 def test_the_brake_balance_is_a_vehicle_key():
     # The default world's stop from 100 km/h (figures of `vehicle-sim --scenario brake`, whose
     # metrics the binding returns unrounded): with Webots' equal brakes the BmwX5 locks its rear
-    # wheels and slides 47.03 m; proportioned (front share 0.58) no wheel locks and the brakes
-    # stop it in 40.86 m, under the 42.14 m of the brake torque alone (rolling resistance and
+    # wheels and slides 47.00 m; proportioned (front share 0.58) no wheel locks and the brakes
+    # stop it in 40.81 m, under the 42.14 m of the brake torque alone (rolling resistance and
     # wheel damping help). A share of 0.5 is Webots' split exactly.
     def stop(**vehicle):
         sim = wv.Simulation(vehicle={"model": "BmwX5", **vehicle})
         return sim.run("brake").metrics["brake"]["stop_distance_m"]
 
     equal = stop()
-    assert equal == pytest.approx(47.034, abs=1e-3)
-    assert stop(brake_balance="proportioned") == pytest.approx(40.8611, abs=1e-3)
+    assert equal == pytest.approx(47.0009, abs=1e-3)
+    assert stop(brake_balance="proportioned") == pytest.approx(40.8103, abs=1e-3)
     assert stop(brake_balance=0.5) == equal
     with pytest.raises(wv.WorldError) as e:
         stop(brake_balance=1.5)
