@@ -167,9 +167,9 @@ fn a_braked_wheel_follows_the_fine_solution_at_10_ms() {
     assert!(plain[6] - fine[6] > 0.2 * rolling);
 }
 
-/// A wheel locked by a brake that holds it, sliding at the chassis speed, with its transient
-/// slip settled at −1 (the kinematic slip of a locked wheel).
-fn locked() -> (TransientSlip<f64>, FreeSpin<f64>) {
+/// A 10 ms step of a wheel locked by a brake that holds it, sliding at the chassis speed,
+/// with its transient slip settled at −1 (the kinematic slip of a locked wheel).
+fn held(t: &MagicFormula<f64>) -> SpinStep<f64> {
     let slip = TransientSlip {
         ratio: -1.0,
         angle_tan: 0.0,
@@ -182,7 +182,25 @@ fn locked() -> (TransientSlip<f64>, FreeSpin<f64>) {
         brake: BRAKE * 0.01,
         chassis: 0.0,
     };
-    (slip, wheel)
+    t.begin_spinning(&slip, &velocity(0.0), &wheel, LOAD, 1.0, 0.01)
+        .unwrap()
+}
+
+/// A 10 ms step of a wheel rolling at the chassis speed with no transient slip, under a brake
+/// torque `brake` (N·m).
+fn rolling(t: &MagicFormula<f64>, brake: f64) -> SpinStep<f64> {
+    let omega = SPEED / RADIUS;
+    let wheel = FreeSpin {
+        inertia: INERTIA,
+        radius: RADIUS,
+        spin: omega,
+        drive: 0.0,
+        brake: brake * 0.01,
+        chassis: 0.0,
+    };
+    let slip = TransientSlip::default();
+    t.begin_spinning(&slip, &velocity(omega), &wheel, LOAD, 1.0, 0.01)
+        .unwrap()
 }
 
 #[test]
@@ -190,31 +208,11 @@ fn only_a_wheel_its_brake_holds_still_is_steady() {
     let t = tyre();
     // Locked and sliding: the brake (2600 N·m) holds it against the tyre's μ·F_z·r, the slip
     // stays −1 and the force with it; the step is taken whole.
-    let (slip, wheel) = locked();
-    let step = t
-        .begin_spinning(&slip, &velocity(0.0), &wheel, LOAD, 1.0, 0.01)
-        .unwrap();
-    assert!(step.is_steady());
+    assert!(held(&t).is_steady());
     // Rolling freely at the chassis speed, no brake: its force stays at 0 over the step, yet
     // it is divided, because near the curve's peak a flat force can hide a slip that runs
     // through it.
-    let omega = SPEED / RADIUS;
-    let rolling = FreeSpin {
-        spin: omega,
-        brake: 0.0,
-        ..wheel
-    };
-    let step = t
-        .begin_spinning(
-            &TransientSlip::default(),
-            &velocity(omega),
-            &rolling,
-            LOAD,
-            1.0,
-            0.01,
-        )
-        .unwrap();
-    assert!(!step.is_steady());
+    assert!(!rolling(&t, 0.0).is_steady());
 }
 
 #[test]
@@ -255,6 +253,10 @@ fn invalid_wheels_and_steps_are_refused() {
             brake: f64::NAN,
             ..good
         },
+        FreeSpin {
+            chassis: f64::NAN,
+            ..good
+        },
     ] {
         assert!(
             t.begin_spinning(&slip, &v, &bad, LOAD, 1.0, 0.01).is_none(),
@@ -272,29 +274,7 @@ fn invalid_wheels_and_steps_are_refused() {
 #[test]
 fn both_wheels_of_an_axle_are_divided_alike() {
     let t = tyre();
-    let omega = SPEED / RADIUS;
-    let rolling = FreeSpin {
-        inertia: INERTIA,
-        radius: RADIUS,
-        spin: omega,
-        drive: 0.0,
-        brake: BRAKE * 0.01,
-        chassis: 0.0,
-    };
-    let braked = t
-        .begin_spinning(
-            &TransientSlip::default(),
-            &velocity(omega),
-            &rolling,
-            LOAD,
-            1.0,
-            0.01,
-        )
-        .unwrap();
-    let (slip, wheel) = locked();
-    let held = t
-        .begin_spinning(&slip, &velocity(0.0), &wheel, LOAD, 1.0, 0.01)
-        .unwrap();
+    let (braked, held) = (rolling(&t, BRAKE), held(&t));
     assert!(held.is_steady() && !braked.is_steady());
     // Front right braked while rolling, front left held: both divided. Rear: one held, one
     // without a sub-stepped tyre: neither.

@@ -8,7 +8,7 @@ use rapier3d::prelude::{
     QueryFilter, RigidBodyBuilder, RigidBodyHandle, Rotation, Vector,
 };
 
-use super::contact::{self, Body, Contact, Spring, Support, WheelRow};
+use super::contact::{Body, Contact, Spring, Support, WheelRow};
 use super::spec::{ChassisSpec, VehicleSpec};
 use super::wheels::Footing;
 use super::{Frame, MIN_GROUND_COSINE, Vehicle};
@@ -169,15 +169,9 @@ impl Vehicle {
                 self.set_up_contact(w, &mut rows[i], contact, &body, footing, dt);
             }
         }
-        let (start_body, mut again) = (body, rows);
         self.divide_axles(&mut rows);
-        contact::solve(&mut body, &mut rows, dt as f32);
         // The solve carries the load here: the braked wheels' sub-steps take its mean too.
-        let loads = rows.map(|r| r.impulses.normal);
-        if self.respin_braked(&mut again, &start_body, &body, Some(loads), dt) {
-            (body, rows) = (start_body, again);
-            contact::solve(&mut body, &mut rows, dt as f32);
-        }
+        self.solve_contacts(&mut body, &mut rows, true, dt);
         // Each wheel's record is taken on the chassis with the spin reactions of the wheels
         // before it: the order of the two calls is part of the results.
         for (i, w) in Wheel::ALL.into_iter().enumerate() {

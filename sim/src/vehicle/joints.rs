@@ -60,7 +60,7 @@ use rapier3d::prelude::{
 };
 
 use super::cast::{body_inertia, mass_properties};
-use super::contact::{self, Body, Contact, Support, WheelRow};
+use super::contact::{Body, Contact, Support, WheelRow};
 use super::multibody::{self, WheelImpulse};
 use super::spec::{SpringDamper, VehicleSpec, WheelSpec};
 use super::tread::WHEEL_HOOKS;
@@ -483,13 +483,8 @@ impl Vehicle {
         for row in &mut rows {
             row.cold_start_rigid_forward();
         }
-        let (start_body, mut again) = (body, rows);
-        contact::solve(&mut body, &mut rows, dt as f32);
         // rapier carries the load: only the chassis' motion is corrected.
-        if self.respin_braked(&mut again, &start_body, &body, None, dt) {
-            (body, rows) = (start_body, again);
-            contact::solve(&mut body, &mut rows, dt as f32);
-        }
+        self.solve_contacts(&mut body, &mut rows, false, dt);
         let mut handed = PerWheel::splat(WheelImpulse::default());
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
             let omega = rows[i].solved_spin(imposed[i]);

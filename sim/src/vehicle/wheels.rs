@@ -9,7 +9,7 @@ use vehicle_model::{
     ContactVelocity, FreeSpin, Linearised, Real, SpinStep, TransientSlip, TyreModel,
 };
 
-use super::contact::{Body, Contact, Grip, Spin, Support, WheelRow};
+use super::contact::{self, Body, Contact, Grip, Spin, Support, WheelRow};
 use super::{TyreTelemetry, Vehicle};
 
 impl Vehicle {
@@ -98,18 +98,49 @@ impl Vehicle {
     /// over the step taken whole: both wheels of an axle take the same path, so that a
     /// mirror-image pair gets mirror-image forces.
     pub(super) fn divide_axles(&mut self, rows: &mut [WheelRow; 4]) {
+        self.set_spun_lines(rows, false);
+    }
+
+    /// Sets the line and the prediction of the sub-stepped tyres in `rows`, divided as
+    /// [`SpinStep::to_divide`] says: of those it divides, or, with `every`, of all of them.
+    fn set_spun_lines(&mut self, rows: &mut [WheelRow; 4], every: bool) {
         let divide = SpinStep::to_divide(&self.spin_steps);
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
-            let (Some(step), TyreModel::MagicFormula(tyre), true) =
-                (self.spin_steps[w], self.spec.tyres.of(w), divide[w])
+            let (Some(step), TyreModel::MagicFormula(tyre)) =
+                (self.spin_steps[w], self.spec.tyres.of(w))
             else {
                 continue;
             };
-            let (lin, prediction) = tyre.linearise_spun(&step, true);
+            if !(every || divide[w]) {
+                continue;
+            }
+            let (lin, prediction) = tyre.linearise_spun(&step, divide[w]);
             self.predictions[w] = prediction;
             if let Grip::Slip(line) = &mut rows[i].grip {
                 *line = f32_line(&lin);
             }
+        }
+    }
+
+    /// Solves the step's contacts (`rows`, set up and divided, on `body`). A braking step is
+    /// solved twice: its braked wheels' sub-stepped tyres held the chassis and the load at the
+    /// step's start, so they are begun again with what the first solve found
+    /// ([`respin_braked`](Self::respin_braked)) and the step is solved again from where it
+    /// started. `carries_load`: the solve carries the wheels' loads (the cast car; on joints
+    /// rapier does).
+    pub(super) fn solve_contacts(
+        &mut self,
+        body: &mut Body,
+        rows: &mut [WheelRow; 4],
+        carries_load: bool,
+        dt: f64,
+    ) {
+        let (start_body, mut again) = (*body, *rows);
+        contact::solve(body, rows, dt as f32);
+        let loads = carries_load.then(|| rows.map(|r| r.impulses.normal));
+        if self.respin_braked(&mut again, &start_body, body, loads, dt) {
+            (*body, *rows) = (start_body, again);
+            contact::solve(body, rows, dt as f32);
         }
     }
 
@@ -120,9 +151,9 @@ impl Vehicle {
     /// impulses, N·s; `None` on joints, where rapier carries it), the mean of the step's start
     /// and end loads. The sub-steps held both at the step's start; under a sudden brake the
     /// load moving to the front within a 32 ms step is a tenth of the wheel's. Returns whether
-    /// any wheel was begun again (then the step is solved again); none is while every braked
-    /// wheel is steady ([`SpinStep::is_steady`]).
-    pub(super) fn respin_braked(
+    /// the step is to be solved again: not while every braked wheel is steady
+    /// ([`SpinStep::is_steady`]).
+    fn respin_braked(
         &mut self,
         rows: &mut [WheelRow; 4],
         start: &Body,
@@ -135,7 +166,6 @@ impl Vehicle {
         if !SpinStep::to_divide(&self.spin_steps).iter().any(|&d| d) {
             return false;
         }
-        let mut any = false;
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
             let (Some(step), TyreModel::MagicFormula(tyre), Some(contact)) =
                 (self.spin_steps[w], self.spec.tyres.of(w), rows[i].contact)
@@ -146,21 +176,17 @@ impl Vehicle {
             let change = f64::from(forward(end) - forward(start));
             let load =
                 end_loads.map_or(step.load(), |n| 0.5 * (step.load() + f64::from(n[i]) / dt));
-            self.spin_steps[w] = tyre.respin(&step, change, load);
-            self.predictions[w] = None;
-            if let Some(step) = self.spin_steps[w] {
-                let (lin, prediction) = tyre.linearise_spun(&step, false);
-                self.predictions[w] = prediction;
-                if let Grip::Slip(line) = &mut rows[i].grip {
-                    *line = f32_line(&lin);
+            // A step that cannot be begun again keeps the first one's line (taken whole).
+            match tyre.respin(&step, change, load) {
+                Some(again) => self.spin_steps[w] = Some(again),
+                None => {
+                    self.spin_steps[w] = None;
+                    self.predictions[w] = None;
                 }
             }
-            any = true;
         }
-        if any {
-            self.divide_axles(rows);
-        }
-        any
+        self.set_spun_lines(rows, true);
+        true
     }
 
     /// The reaction of wheel `w`'s angular acceleration on the chassis. The solve puts the

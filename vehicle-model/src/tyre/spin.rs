@@ -8,11 +8,11 @@
 //! BmwX5 at 60 km/h, 10 ms step: about 40 N·s where the build-up gives 25), so the wheel's
 //! slip excursion shrank with the step (first order in the step).
 //!
-//! Here the chassis is held over the step (the wheel centre's speed and the lateral slip
-//! velocity stay those at its start) and the spin and the slip ratio are advanced in
-//! sub-steps of at most [`MAX_SUBSTEP`], each the step's own scheme in miniature (the chord law
-//! in the sub-step's end slip velocity, the brake as Coulomb friction on the spin), so each is
-//! stable however stiff the tyre. The solver gets the mean force over the sub-steps at the
+//! Here the spin and the slip ratio are advanced in sub-steps of at most [`MAX_SUBSTEP`] (the
+//! load and the lateral slip velocity stay those given for the step, the chassis' change of
+//! speed is ramped in, below), each the step's own scheme in miniature (the chord law in the sub-step's end slip
+//! velocity, the brake as Coulomb friction on the spin), so each is stable however stiff the
+//! tyre. The solver gets the mean force over the sub-steps at the
 //! slip velocity they end with, with the chord's slope over the whole step: the chassis and
 //! the spin still meet the tyre's force at the end of the step, which keeps the step stable.
 //! The slip angle is as in [`MagicFormula::linearise`] (its slip velocity is the chassis').
@@ -77,8 +77,9 @@ pub struct SpinPrediction<T> {
     rate: T,
 }
 
-/// The change of the longitudinal force per unit load over one step below which the step is
-/// not divided: the mean force then lies within this of the end-of-step force.
+/// The change of the longitudinal force per unit load over one step below which the step of a
+/// wheel its brake holds still is not divided: the mean force then lies within this of the
+/// end-of-step force.
 const STEADY: f64 = 0.01;
 
 /// A free wheel's step begun by [`MagicFormula::begin_spinning`], for
@@ -94,7 +95,8 @@ pub struct SpinStep<T> {
     road: T,
     /// The step advanced in one sub-step.
     one: Pass<T>,
-    /// The longitudinal force per unit load changed by at most [`STEADY`] over `one`.
+    /// The brake held the wheel still over `one`, and its longitudinal force per unit load
+    /// changed by at most [`STEADY`] ([`SpinStep::is_steady`]).
     steady: bool,
 }
 
@@ -173,9 +175,9 @@ fn substeps<T: Real>(dt: T) -> i32 {
 impl<T: Real> MagicFormula<T> {
     /// Begins a step of [`linearise_spun`](Self::linearise_spun) for a tyre on the free wheel
     /// `wheel`: the step's fixed inputs, with the spin and the transient slip ratio advanced
-    /// over it in one sub-step (see the module docs), and whether the force is steady over it
+    /// over it in one sub-step (see the module docs), and whether it is steady
     /// ([`SpinStep::is_steady`]). `None` for a wheel without a positive finite inertia and
-    /// radius, finite spin, drive and brake, or a step that is not positive: such a tyre takes
+    /// radius, finite spin, drive, brake and chassis change, or a step that is not positive: such a tyre takes
     /// [`linearise`](Self::linearise).
     pub fn begin_spinning(
         &self,
@@ -230,8 +232,8 @@ impl<T: Real> MagicFormula<T> {
             load,
             dt,
         };
-        // One sub-step first: if the force changes little over it, more would not change the
-        // mean (it lies between the two ends).
+        // One sub-step first: for a wheel its brake holds still whose force changes little
+        // over it, more would not change the mean (it lies between the two ends).
         let one = self.spin_pass(&run, (slip.ratio, v.slip[0]), 1);
         let (first, _) = self.force_and_secant([slip.ratio, run.angle], &c);
         let (last, _) = self.force_and_secant([one.ratio, run.angle], &c);

@@ -45,10 +45,7 @@ impl Plant {
     pub(super) fn row(&mut self, w: Wheel, commands: &Commands<f32>, dt: f32) -> Row {
         let corner = self.corners[w];
         let (mut spin, spin_rate) = self.spin(w, commands, dt);
-        let [ax, ay] = self.acceleration;
-        let [forward_transfer, lateral_transfer] = corner.transfer;
-        // A wheel cannot pull the road: it lifts off instead.
-        let load = (corner.static_load + forward_transfer * ax + lateral_transfer * ay).max(0.0);
+        let load = self.load(w, self.acceleration);
         let steer = match w {
             Wheel::FrontRight => self.steering.right,
             Wheel::FrontLeft => self.steering.left,
@@ -126,44 +123,57 @@ impl Plant {
         }
         let acceleration = [0, 1].map(|i| (end.velocity[i] - start.velocity[i]) / dt);
         for w in Wheel::ALL {
-            let row = &mut rows[w];
             let Some(step) = self.spin_steps[w] else {
                 continue;
             };
-            let corner = &self.corners[w];
+            let row = &mut rows[w];
             let change = row.contact(end)[0] - row.contact(start)[0];
-            let [forward_transfer, lateral_transfer] = corner.transfer;
-            let end_load = (corner.static_load
-                + forward_transfer * acceleration[0]
-                + lateral_transfer * acceleration[1])
-                .max(0.0);
-            let load = 0.5 * (row.load + end_load);
-            self.spin_steps[w] = corner.tyre.respin(&step, change, load);
-            row.prediction = None;
-            if let Some(step) = &self.spin_steps[w] {
-                (row.law, row.prediction) = corner.tyre.linearise_spun(step, false);
+            let load = 0.5 * (row.load + self.load(w, acceleration));
+            self.spin_steps[w] = self.corners[w].tyre.respin(&step, change, load);
+            // A step that cannot be begun again keeps the first one's law (taken whole).
+            if self.spin_steps[w].is_some() {
                 row.load = load;
                 row.normal = load * dt;
+            } else {
+                row.prediction = None;
             }
         }
-        self.divide_axles(rows);
+        self.set_spun_laws(rows, true);
         true
+    }
+
+    /// Wheel `w`'s load (N) with the body at `acceleration` (forward and leftward, m/s²): its
+    /// static load plus the quasi-static transfer. A wheel cannot pull the road: it lifts off
+    /// instead.
+    // Called from each wheel's set-up and from its second solve: one copy.
+    #[inline(never)]
+    fn load(&self, w: Wheel, [ax, ay]: [f32; 2]) -> f32 {
+        let corner = &self.corners[w];
+        let [forward_transfer, lateral_transfer] = corner.transfer;
+        (corner.static_load + forward_transfer * ax + lateral_transfer * ay).max(0.0)
     }
 
     /// Divides the step of the sub-stepped tyres of every axle on which one is not steady
     /// over the step taken whole: both wheels of an axle take the same path, so that a
     /// mirror-image pair gets mirror-image forces.
-    // Called twice a step (before each solve): one copy.
-    #[inline(never)]
     pub(super) fn divide_axles(&self, rows: &mut PerWheel<Row>) {
+        self.set_spun_laws(rows, false);
+    }
+
+    /// Sets the law and the prediction of the sub-stepped tyres in `rows`, divided as
+    /// [`SpinStep::to_divide`] says: of those it divides, or, with `every`, of all of them.
+    // Called before each solve of a step: one copy.
+    #[inline(never)]
+    fn set_spun_laws(&self, rows: &mut PerWheel<Row>, every: bool) {
         let divide = SpinStep::to_divide(&self.spin_steps);
         for w in Wheel::ALL {
-            let (Some(step), true) = (self.spin_steps[w], divide[w]) else {
+            let Some(step) = self.spin_steps[w] else {
                 continue;
             };
-            let (law, prediction) = self.corners[w].tyre.linearise_spun(&step, true);
-            rows[w].law = law;
-            rows[w].prediction = prediction;
+            if every || divide[w] {
+                (rows[w].law, rows[w].prediction) =
+                    self.corners[w].tyre.linearise_spun(&step, divide[w]);
+            }
         }
     }
 
