@@ -150,6 +150,15 @@ pub const ENGINE_SPEED: Plausible = Plausible {
     unit: "rpm",
 };
 
+/// An engine's minimum speed (rpm): a fifth of [`ENGINE_SPEED`]'s limit, so that
+/// `5·engineMinRPM`, the value an `engineMaxRPM` not above the minimum falls back to, is
+/// itself plausible.
+pub const ENGINE_MIN_SPEED: Plausible = Plausible {
+    min: 0.0,
+    max: 2e4,
+    unit: "rpm",
+};
+
 /// A vehicle or wheel-surface speed (m/s): a little under Mach 3.
 pub const SPEED: Plausible = Plausible {
     min: 0.0,

@@ -57,6 +57,35 @@ fn each_scalar_rule_falls_back_with_a_warning() {
     assert!(p.validate().is_empty());
 }
 
+/// Found by the fuzzer: a plausible minimum whose fivefold, the fallback for a maximum not
+/// above it, was not plausible, so a second validation refused what the first had set.
+#[test]
+fn engine_max_rpm_fallback_is_plausible() {
+    let mut p = CarParams::<f64>::default();
+    p.engine.min_rpm = 20_000.0; // the plausible limit: 5 × 20,000 rpm is the maximum's
+    p.engine.max_rpm = 10.0;
+    let report = p.validate();
+    assert_eq!(
+        report.as_slice(),
+        &[value(CarField::EngineMaxRpm, 10.0, 100_000.0)]
+    );
+    assert!(p.validate().is_empty());
+
+    let mut p = CarParams::<f32>::default();
+    p.engine.min_rpm = 52_790.39;
+    p.engine.max_rpm = 10.0;
+    let report = p.validate();
+    let r = report.as_slice();
+    assert_eq!(r.len(), 2);
+    assert!(matches!(
+        r[0],
+        ParamWarning::Implausible { field: CarField::EngineMinRpm, used, .. } if used == 1000.0
+    ));
+    // The default minimum is above 10 rpm, so the older rule gives 5 × 1000.
+    assert_eq!(r[1], value(CarField::EngineMaxRpm, 10.0, 5000.0));
+    assert!(p.validate().is_empty());
+}
+
 #[test]
 fn engine_rpm_range_and_lists() {
     let mut p = CarParams::<f64>::default();

@@ -278,11 +278,11 @@ impl CarField {
             | CarField::BrakeCoefficient
             | CarField::EngineMaxTorque => plausible::TORQUE,
             CarField::EngineSoundRpmReference
-            | CarField::EngineMinRpm
             | CarField::EngineMaxRpm
             | CarField::HybridPowerSplitRpm => plausible::ENGINE_SPEED,
             CarField::Time0To100 => plausible::TIME_0_TO_100,
             CarField::MaxVelocity => plausible::SPEED,
+            CarField::EngineMinRpm => plausible::ENGINE_MIN_SPEED,
             CarField::EngineMaxPower => plausible::POWER,
             CarField::EngineFunctionCoefficients => plausible::COEFFICIENT,
             CarField::GearRatio => plausible::GEAR_RATIO,
