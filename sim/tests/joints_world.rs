@@ -201,7 +201,7 @@ fn a_car_pushes_a_200_kg_box_with_its_front_wheels() {
 ///
 /// With Webots' equal brakes the BmwX5 on friction 1 locks its rear wheels before its front ones
 /// in the `brake` stop, which is yaw-unstable: its heading change is the step's rounding
-/// amplified some 10⁵-fold (0.0002 rad on the cast car, whose solve is mirror-exact; on joints
+/// amplified some 10⁵-fold (exactly 0 on the cast car, whose solve is mirror-exact; on joints
 /// anywhere between −0.12 and +0.04 rad as the tread's core went from 3 µm to 1 mm), a figure
 /// two models cannot agree on. Proportioned, neither axle locks and the stop is the physics'.
 /// No other scenario brakes.

@@ -11,7 +11,7 @@ index alone (random axes too), so any scheduler can run any case anywhere::
     len(sweep)                      # 84 cases
     sweep.case(5)                   # {"ground.friction": 0.6, "vehicle.brakeCoefficient": 750,
                                     #  "vehicle.mass": 2002.3}
-    row = sweep.run_case(5)         # {"case": 5, ..., "stop_distance_m": 89.9124, ..., "error": None}
+    row = sweep.run_case(5)         # {"case": 5, ..., "stop_distance_m": 89.9126, ..., "error": None}
     sweep.run_case_csv(5)           # its line of results.csv, byte for byte
 
 ``examples/sweeps/ray_sweep.py`` spreads a sweep over a Ray cluster this way and writes the

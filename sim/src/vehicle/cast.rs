@@ -9,7 +9,8 @@ use rapier3d::prelude::{
 };
 
 use super::contact::{Body, Contact, Spring, Support, WheelRow};
-use super::spec::{ChassisSpec, VehicleSpec};
+use super::inertia::Inertia;
+use super::spec::{ChassisSpec, VehicleSpec, WheelSpec};
 use super::wheels::Footing;
 use super::{Frame, MIN_GROUND_COSINE, Vehicle};
 use crate::geom::{self, G_CAR_BODY};
@@ -28,32 +29,34 @@ pub(crate) struct Parts {
 /// Mass properties of the whole car in the car frame: the body (`Physics` of the Car: mass,
 /// centre of mass, inertia tensor) plus the four wheels as solid cylinders at their unloaded
 /// positions (axis along y). The wheels ride with the chassis, so they add to its mass and to
-/// its inertia (their spin is a separate coordinate, see the tyre solve).
+/// its inertia (their spin is a separate coordinate, see the tyre solve). Summed in f64 an axle
+/// at a time, so that a mirror-symmetric car's centre of mass lies exactly on its centre line
+/// ([`Inertia::sum`]).
 pub(crate) fn mass_properties(spec: &VehicleSpec) -> MassProperties {
-    let c = &spec.chassis;
-    let inertia = body_inertia(c);
-    let mut total =
-        MassProperties::with_inertia_matrix(geom::point(&c.center_of_mass), c.mass as f32, inertia);
-    for s in spec.wheels.iter() {
+    let wheel = |s: &WheelSpec| {
         let transverse = s.transverse_inertia();
-        let spin = s.spin_inertia();
-        total += MassProperties::new(
-            geom::point(&s.position),
-            s.mass as f32,
-            Vector::new(transverse as f32, spin as f32, transverse as f32),
-        );
-    }
-    total
+        let p = s.position;
+        Inertia::principal(
+            s.mass,
+            [p.x, p.y, p.z],
+            [transverse, s.spin_inertia(), transverse],
+        )
+    };
+    let w = &spec.wheels;
+    let parts = [
+        body_inertia(&spec.chassis),
+        wheel(&w[Wheel::FrontRight]),
+        wheel(&w[Wheel::FrontLeft]),
+        wheel(&w[Wheel::RearRight]),
+        wheel(&w[Wheel::RearLeft]),
+    ];
+    Inertia::sum(&parts).map_or(MassProperties::default(), |car| car.mass_properties())
 }
 
-/// The inertia tensor of the car body about its centre of mass (kg·m², car frame).
-pub(crate) fn body_inertia(c: &ChassisSpec) -> Mat3 {
-    let [xx, yy, zz, xy, xz, yz] = c.inertia.map(|v| v as f32);
-    Mat3::from_cols(
-        Vector::new(xx, xy, xz),
-        Vector::new(xy, yy, yz),
-        Vector::new(xz, yz, zz),
-    )
+/// The car body's mass, centre of mass and inertia tensor (car frame).
+pub(crate) fn body_inertia(c: &ChassisSpec) -> Inertia {
+    let com = c.center_of_mass;
+    Inertia::from_webots(c.mass, [com.x, com.y, com.z], c.inertia)
 }
 
 /// Creates the chassis of `spec` with the car origin at `origin`: one dynamic body with the
@@ -172,12 +175,15 @@ impl Vehicle {
         self.divide_axles(&mut rows);
         // The solve carries the load here: the braked wheels' sub-steps take its mean too.
         self.solve_contacts(&mut body, &mut rows, true, dt);
-        // Each wheel's record is taken on the chassis with the spin reactions of the wheels
-        // before it: the order of the two calls is part of the results.
+        // Every wheel's record is taken on the chassis with all four spin reactions: taken
+        // wheel by wheel between them, the second wheel of an axle would see another chassis
+        // than the first, and a straight car would start to turn on round-off.
+        let omegas: [f64; 4] = core::array::from_fn(|i| rows[i].solved_spin(imposed[i]));
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
-            let omega = rows[i].solved_spin(imposed[i]);
-            self.react_to_spin(&mut body, w, axes[i], omega);
-            self.finish_wheel(w, &rows[i], &body, f64::from(roads[i]), omega, dt);
+            self.react_to_spin(&mut body, w, axes[i], omegas[i]);
+        }
+        for (i, w) in Wheel::ALL.into_iter().enumerate() {
+            self.finish_wheel(w, &rows[i], &body, f64::from(roads[i]), omegas[i], dt);
         }
         if let Some(chassis) = world.bodies.get_mut(parts.chassis) {
             chassis.set_linvel(body.linvel, true);

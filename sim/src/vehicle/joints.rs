@@ -61,6 +61,7 @@ use rapier3d::prelude::{
 
 use super::cast::{body_inertia, mass_properties};
 use super::contact::{Body, Contact, Support, WheelRow};
+use super::inertia::Inertia;
 use super::multibody::{self, WheelImpulse};
 use super::spec::{SpringDamper, VehicleSpec, WheelSpec};
 use super::tread::WHEEL_HOOKS;
@@ -167,8 +168,12 @@ impl Parts {
 
 /// The chassis body's mass properties about its own centre of mass.
 fn chassis_mass_properties(spec: &VehicleSpec) -> MassProperties {
-    let c = &spec.chassis;
-    MassProperties::with_inertia_matrix(Vector::ZERO, c.mass as f32, body_inertia(c))
+    let body = body_inertia(&spec.chassis);
+    Inertia {
+        com: Default::default(),
+        ..body
+    }
+    .mass_properties()
 }
 
 /// A joint whose frame on the first body sits at `anchor` (m, first body's frame), axes
@@ -486,9 +491,10 @@ impl Vehicle {
         // rapier carries the load: only the chassis' motion is corrected.
         self.solve_contacts(&mut body, &mut rows, false, dt);
         let mut handed = PerWheel::splat(WheelImpulse::default());
+        // All four spin reactions before any wheel's record, as on the cast car.
+        let omegas: [f64; 4] = core::array::from_fn(|i| rows[i].solved_spin(imposed[i]));
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
-            let omega = rows[i].solved_spin(imposed[i]);
-            let spin_change = self.react_to_spin(&mut body, w, axes[i], omega);
+            let spin_change = self.react_to_spin(&mut body, w, axes[i], omegas[i]);
             handed[w] = WheelImpulse {
                 tyre: rows[i].contact.map(|c| {
                     (
@@ -499,7 +505,9 @@ impl Vehicle {
                 spin: axes[i] * -spin_change as f32,
                 ground: grounds[i],
             };
-            self.finish_wheel(w, &rows[i], &body, f64::from(roads[i]), omega, dt);
+        }
+        for (i, w) in Wheel::ALL.into_iter().enumerate() {
+            self.finish_wheel(w, &rows[i], &body, f64::from(roads[i]), omegas[i], dt);
         }
         if !self.joint_space_mass_ready {
             self.joint_space_mass_ready = multibody::joint_space_mass_ready(world, parts);

@@ -56,6 +56,7 @@
 mod actuators;
 mod cast;
 mod contact;
+mod inertia;
 mod joints;
 mod multibody;
 mod spec;

@@ -34,6 +34,17 @@ pub fn settled_with_step(
     tyre: &TyreChoice,
     dt_ms: u32,
 ) -> (Simulation, VehicleId) {
+    settled_car(model.params(), mu, tyre, dt_ms)
+}
+
+/// The car of `params` on `tyre` on flat ground of friction `mu`, stepped at `dt_ms` (ms),
+/// settled for 1 s.
+pub fn settled_car(
+    params: CarParams<f64>,
+    mu: f64,
+    tyre: &TyreChoice,
+    dt_ms: u32,
+) -> (Simulation, VehicleId) {
     let world = World::new(WorldConfig {
         ground_friction: mu,
         basic_time_step_ms: dt_ms,
@@ -42,12 +53,7 @@ pub fn settled_with_step(
     .unwrap();
     let mut sim = Simulation::new(world);
     let (id, report) = sim
-        .add_car_with(
-            model.params(),
-            tyre,
-            crate::MOUNTING,
-            VehiclePlacement::default(),
-        )
+        .add_car_with(params, tyre, crate::MOUNTING, VehiclePlacement::default())
         .unwrap();
     assert!(report.is_empty(), "{report:?}");
     run(&mut sim, 1.0);

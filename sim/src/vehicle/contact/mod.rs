@@ -115,8 +115,13 @@ fn warm_start(body: &mut Body, wheels: &mut [WheelRow; 4]) {
         let i = &mut w.impulses;
         i.normal = i.normal.max(0.0);
         [i.forward, i.lateral] = w.grip.clamp(i.forward, i.lateral, i.normal);
-        c.apply_normal(body, i.normal);
-        body.apply(c.contact_arm, c.forward * i.forward + c.lateral * i.lateral);
+        // One impulse per wheel: applied as two, the second wheel of an axle would not undo
+        // the first's roll and yaw exactly (((−a − b) + a) + b ≠ 0 in floating point), and a
+        // straight car would start to turn on round-off.
+        body.apply(
+            c.contact_arm,
+            c.normal * i.normal + c.forward * i.forward + c.lateral * i.lateral,
+        );
         w.omega -= c.radius * i.forward * w.spin.inv_inertia();
     }
     for w in wheels.iter_mut() {
