@@ -8,9 +8,9 @@ use rapier3d::prelude::{
 };
 
 use crate::attitude::RollPitchYaw;
-use crate::config::{DEFAULT_FRICTION, ground_rectangle};
 use crate::error::ParamError;
 use crate::geom::{self, G_DYNAMIC};
+use crate::geom::{DEFAULT_FRICTION, ground_rectangle};
 
 /// A dynamic box: a cuboid of uniform density free under gravity.
 ///

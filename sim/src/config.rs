@@ -3,14 +3,12 @@
 
 use crate::body::BodySpec;
 use crate::error::ParamError;
+use crate::geom::{DEFAULT_FRICTION, ground_rectangle};
 use proto_geom::nalgebra::{Point2, Point3, Vector3};
 use proto_geom::plausible;
 
 /// Webots default `WorldInfo.basicTimeStep` used by the car worlds (ms).
 pub const DEFAULT_BASIC_TIME_STEP_MS: u32 = 10;
-
-/// Webots default Coulomb friction of a `ContactProperties` node.
-pub const DEFAULT_FRICTION: f64 = 1.0;
 
 /// Largest gravity a world may have (m/s²): ten times the Earth's, beyond which no car model
 /// of this crate is meaningful.
@@ -65,25 +63,6 @@ pub(crate) fn ramp_corners(length: f64, width: f64, height: f64) -> [[f64; 3]; 6
         [l, -w, h],
         [l, w, h],
     ]
-}
-
-/// The corners of a rectangle on the ground (m, world x and y), counter-clockwise: from `x0`
-/// to `x1` along the heading `yaw` (rad) and `±half_width` across it, in a frame at `origin`.
-/// The footprint of the boxes and ramps, for the plots and the replay's ground.
-pub(crate) fn ground_rectangle(
-    origin: Point2<f64>,
-    yaw: f64,
-    [x0, x1]: [f64; 2],
-    half_width: f64,
-) -> [Point2<f64>; 4] {
-    let (s, c) = yaw.sin_cos();
-    [
-        [x0, -half_width],
-        [x1, -half_width],
-        [x1, half_width],
-        [x0, half_width],
-    ]
-    .map(|[x, y]| Point2::new(origin.x + c * x - s * y, origin.y + s * x + c * y))
 }
 
 impl Obstacle {

@@ -1,6 +1,6 @@
 //! The rapier boundary: conversions between the public API's f64 nalgebra geometry and
-//! rapier's f32 glam types, angle helpers and the collision groups shared by everything in a
-//! world.
+//! rapier's f32 glam types, angle helpers, and what everything in a world shares: the
+//! collision groups, the default friction and the footprint of a rectangle on the ground.
 //!
 //! The public API is f64 nalgebra (`Point3`, `Vector3`, `UnitQuaternion`), as `proto-geom`'s;
 //! rapier runs in f32 glam inside, and its types never leave the crate. Every conversion goes
@@ -10,10 +10,32 @@
 
 use core::f64::consts::{PI, TAU};
 
-use proto_geom::nalgebra::{Point3, Quaternion, UnitQuaternion, Vector3};
+use proto_geom::nalgebra::{Point2, Point3, Quaternion, UnitQuaternion, Vector3};
 use rapier3d::prelude::{Group, InteractionGroups, InteractionTestMode, Pose, Rotation, Vector};
 
 use crate::attitude::RollPitchYaw;
+
+/// Webots default Coulomb friction of a `ContactProperties` node.
+pub const DEFAULT_FRICTION: f64 = 1.0;
+
+/// The corners of a rectangle on the ground (m, world x and y), counter-clockwise: from `x0`
+/// to `x1` along the heading `yaw` (rad) and `±half_width` across it, in a frame at `origin`.
+/// The footprint of the boxes and ramps, for the plots and the replay's ground.
+pub(crate) fn ground_rectangle(
+    origin: Point2<f64>,
+    yaw: f64,
+    [x0, x1]: [f64; 2],
+    half_width: f64,
+) -> [Point2<f64>; 4] {
+    let (s, c) = yaw.sin_cos();
+    [
+        [x0, -half_width],
+        [x1, -half_width],
+        [x1, half_width],
+        [x0, half_width],
+    ]
+    .map(|[x, y]| Point2::new(origin.x + c * x - s * y, origin.y + s * x + c * y))
+}
 
 /// A vector (m, m/s, m/s², …) as a rapier vector.
 pub(crate) fn vector(v: &Vector3<f64>) -> Vector {

@@ -97,14 +97,14 @@ pub use proto_geom::nalgebra;
 pub use attitude::RollPitchYaw;
 pub use body::{BodyPose, BodySpec};
 pub use config::{
-    DEFAULT_BASIC_TIME_STEP_MS, DEFAULT_FRICTION, DEFAULT_FRICTION_ITERATIONS, Obstacle,
-    SolverSettings, WorldConfig,
+    DEFAULT_BASIC_TIME_STEP_MS, DEFAULT_FRICTION_ITERATIONS, Obstacle, SolverSettings, WorldConfig,
 };
 pub use diff_wheels::{
     DifferentialWheels, DifferentialWheelsParams, RobotBody, RobotId, RobotMode, RobotPlacement,
     RobotPose, RobotWarning,
 };
 pub use error::{BodyOwner, BodyPart, ParamError, Rule, SimError};
+pub use geom::DEFAULT_FRICTION;
 pub use simulation::{CarTelemetry, Simulation};
 pub use vehicle::{
     ChassisSpec, Mounting, SpringDamper, SteeringSpec, TyreChoice, TyreSpec, TyreTelemetry,

@@ -1,6 +1,12 @@
-//! Why a sweep cannot be loaded, or a case asked for does not exist.
+//! Why a sweep cannot be loaded, a case asked for does not exist, or the outputs cannot be
+//! written.
 
+use std::path::{Path, PathBuf};
+
+use crate::report::PlotError;
 use crate::world_file::WorldFileError;
+
+use super::runner::RunError;
 
 /// A sweep file that cannot be loaded, or a case index past the last.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -49,5 +55,49 @@ impl SweepError {
             SweepError::File(e) | SweepError::World(e) => Some(e.as_ref()),
             _ => None,
         }
+    }
+}
+
+/// Why a sweep's outputs could not be written.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum OutputError {
+    /// A file or directory could not be written or read.
+    #[error("{}: {source}", path.display())]
+    Io {
+        /// The path concerned.
+        path: PathBuf,
+        /// What the system reported.
+        source: std::io::Error,
+    },
+    /// A CSV file could not be written or read.
+    #[error("{}: {source}", path.display())]
+    Csv {
+        /// The file.
+        path: PathBuf,
+        /// What the CSV library reported.
+        source: csv::Error,
+    },
+    /// The run could not start its threads.
+    #[error(transparent)]
+    Run(RunError),
+    /// A plot could not be drawn.
+    #[error(transparent)]
+    Plot(#[from] PlotError),
+}
+
+/// A closure turning an I/O error into an [`OutputError`] about `path`.
+pub(crate) fn io_at(path: &Path) -> impl FnOnce(std::io::Error) -> OutputError + '_ {
+    move |source| OutputError::Io {
+        path: path.to_path_buf(),
+        source,
+    }
+}
+
+/// A closure turning a CSV error into an [`OutputError`] about `path`.
+pub(crate) fn csv_at(path: &Path) -> impl Fn(csv::Error) -> OutputError + '_ {
+    move |source| OutputError::Csv {
+        path: path.to_path_buf(),
+        source,
     }
 }

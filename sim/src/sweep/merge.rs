@@ -9,8 +9,9 @@ use std::fs::File;
 use std::io::BufWriter;
 use std::path::{Path, PathBuf};
 
+use super::error::{OutputError, csv_at, io_at};
 use super::manifest::{MANIFEST_JSON, Manifest};
-use super::output::{OutputError, PLOTS_DIR, RESULTS_CSV, TIMINGS_CSV, csv_at, finish, io_at};
+use super::output::{PLOTS_DIR, RESULTS_CSV, TIMINGS_CSV, finish};
 use super::plots::write_plots;
 use super::row::csv_writer;
 use super::shard::Shard;

@@ -70,10 +70,10 @@ use crate::world_file::{
 
 pub use axis::{Axis, AxisValues};
 pub use cases::Combine;
-pub use error::SweepError;
+pub use error::{OutputError, SweepError};
 pub use manifest::{Fingerprint, MANIFEST_JSON, Manifest};
 pub use merge::{MergeError, MergeSummary, merge};
-pub use output::{OutputError, PLOTS_DIR, RESULTS_CSV, RunSummary, TIMINGS_CSV, write_sweep};
+pub use output::{PLOTS_DIR, RESULTS_CSV, RunSummary, TIMINGS_CSV, write_sweep};
 pub use plots::write_plots;
 pub use row::{CASE_COLUMN, CaseError, Cell, Columns, ERROR_COLUMN, NOTES_COLUMN, Row};
 pub use runner::{RunError, run};

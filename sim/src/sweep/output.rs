@@ -7,9 +7,10 @@ use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-use crate::report::{PlotError, TIMING_DIGITS, significant};
+use crate::report::{TIMING_DIGITS, significant};
 
 use super::Sweep;
+use super::error::{OutputError, csv_at, io_at};
 use super::manifest::Manifest;
 use super::plots::write_plots;
 use super::row::{CASE_COLUMN, csv_writer};
@@ -24,50 +25,6 @@ pub const TIMINGS_CSV: &str = "timings.csv";
 pub const PLOTS_DIR: &str = "plots";
 /// The column of `timings.csv` after `case`.
 pub(crate) const WALL_COLUMN: &str = "wall_seconds";
-
-/// Why a sweep's outputs could not be written.
-#[derive(Debug, thiserror::Error)]
-#[non_exhaustive]
-pub enum OutputError {
-    /// A file or directory could not be written or read.
-    #[error("{}: {source}", path.display())]
-    Io {
-        /// The path concerned.
-        path: PathBuf,
-        /// What the system reported.
-        source: std::io::Error,
-    },
-    /// A CSV file could not be written or read.
-    #[error("{}: {source}", path.display())]
-    Csv {
-        /// The file.
-        path: PathBuf,
-        /// What the CSV library reported.
-        source: csv::Error,
-    },
-    /// The run could not start its threads.
-    #[error(transparent)]
-    Run(RunError),
-    /// A plot could not be drawn.
-    #[error(transparent)]
-    Plot(#[from] PlotError),
-}
-
-/// A closure turning an I/O error into an [`OutputError`] about `path`.
-pub(crate) fn io_at(path: &Path) -> impl FnOnce(std::io::Error) -> OutputError + '_ {
-    move |source| OutputError::Io {
-        path: path.to_path_buf(),
-        source,
-    }
-}
-
-/// A closure turning a CSV error into an [`OutputError`] about `path`.
-pub(crate) fn csv_at(path: &Path) -> impl Fn(csv::Error) -> OutputError + '_ {
-    move |source| OutputError::Csv {
-        path: path.to_path_buf(),
-        source,
-    }
-}
 
 /// What a sweep run did.
 #[derive(Debug, Clone, PartialEq)]

@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 
 use crate::report::{Figure, Panel, Series, SeriesKind};
 
-use super::output::{OutputError, csv_at, io_at};
+use super::error::{OutputError, csv_at, io_at};
 
 /// Most dots kept per panel: the plots draw 1000 at most anyway.
 pub const MAX_POINTS: usize = 1000;

@@ -4,13 +4,13 @@
 use ackermann::Wheel;
 use rapier3d::parry::query::ShapeCastOptions;
 use rapier3d::prelude::{
-    CoefficientCombineRule, ColliderBuilder, Cylinder, MassProperties, Mat3, PhysicsWorld, Pose,
-    QueryFilter, RigidBodyBuilder, RigidBodyHandle, Rotation, Vector,
+    CoefficientCombineRule, ColliderBuilder, Cylinder, Mat3, PhysicsWorld, Pose, QueryFilter,
+    RigidBodyBuilder, RigidBodyHandle, Rotation, Vector,
 };
 
 use super::contact::{Body, Contact, Spring, Support, WheelRow};
-use super::inertia::Inertia;
-use super::spec::{ChassisSpec, VehicleSpec, WheelSpec};
+use super::inertia::mass_properties;
+use super::spec::VehicleSpec;
 use super::wheels::Footing;
 use super::{Frame, MIN_GROUND_COSINE, Vehicle};
 use crate::geom::{self, G_CAR_BODY};
@@ -24,39 +24,6 @@ pub(crate) struct Parts {
     /// Inverse inertia tensor of the whole car about its centre of mass, in the car frame
     /// (1/(kg·m²)).
     pub inv_inertia: Mat3,
-}
-
-/// Mass properties of the whole car in the car frame: the body (`Physics` of the Car: mass,
-/// centre of mass, inertia tensor) plus the four wheels as solid cylinders at their unloaded
-/// positions (axis along y). The wheels ride with the chassis, so they add to its mass and to
-/// its inertia (their spin is a separate coordinate, see the tyre solve). Summed in f64 an axle
-/// at a time, so that a mirror-symmetric car's centre of mass lies exactly on its centre line
-/// ([`Inertia::sum`]).
-pub(crate) fn mass_properties(spec: &VehicleSpec) -> MassProperties {
-    let wheel = |s: &WheelSpec| {
-        let transverse = s.transverse_inertia();
-        let p = s.position;
-        Inertia::principal(
-            s.mass,
-            [p.x, p.y, p.z],
-            [transverse, s.spin_inertia(), transverse],
-        )
-    };
-    let w = &spec.wheels;
-    let parts = [
-        body_inertia(&spec.chassis),
-        wheel(&w[Wheel::FrontRight]),
-        wheel(&w[Wheel::FrontLeft]),
-        wheel(&w[Wheel::RearRight]),
-        wheel(&w[Wheel::RearLeft]),
-    ];
-    Inertia::sum(&parts).map_or(MassProperties::default(), |car| car.mass_properties())
-}
-
-/// The car body's mass, centre of mass and inertia tensor (car frame).
-pub(crate) fn body_inertia(c: &ChassisSpec) -> Inertia {
-    let com = c.center_of_mass;
-    Inertia::from_webots(c.mass, [com.x, com.y, com.z], c.inertia)
 }
 
 /// Creates the chassis of `spec` with the car origin at `origin`: one dynamic body with the
@@ -212,27 +179,5 @@ impl Vehicle {
             Support::Spring(s) if previous <= 0.0 => f64::from(s.stiffness * s.compression),
             _ => previous,
         }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::vehicle::VehicleSpec;
-    use vehicle_model::Model;
-
-    #[test]
-    fn wheels_add_their_mass_and_move_the_centre_of_mass() {
-        let spec = VehicleSpec::from_car(&Model::BmwX5.params()).unwrap_or_else(|e| panic!("{e}"));
-        let mp = mass_properties(&spec);
-        // 2000 kg body + 4 × 30 kg wheels.
-        assert!((mp.mass() - 2120.0).abs() < 1e-3);
-        // x: (2000·x_body + 60·L + 60·0)/2120.
-        let x = (2000.0 * spec.chassis.center_of_mass.x + 60.0 * 2.995) / 2120.0;
-        assert!(
-            (f64::from(mp.local_com.x) - x).abs() < 1e-4,
-            "{}",
-            mp.local_com.x
-        );
     }
 }

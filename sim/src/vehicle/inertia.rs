@@ -9,8 +9,11 @@
 //! of inertia across the plane of symmetry (`Ixy = Iyz = 0`) is diagonalised by a rotation
 //! about y alone, whose quaternion has exact zeros where rapier would need them.
 
+use ackermann::Wheel;
 use proto_geom::nalgebra::{Matrix3, Rotation3, SymmetricEigen, UnitQuaternion, Vector3};
 use rapier3d::prelude::{MassProperties, Rotation, Vector};
+
+use super::spec::{ChassisSpec, VehicleSpec, WheelSpec};
 
 /// A rigid body's mass (kg), centre of mass and inertia tensor about that centre (kg·m²), in
 /// one frame.
@@ -104,11 +107,45 @@ fn principal_axes(t: &Matrix3<f64>) -> (Vector3<f64>, UnitQuaternion<f64>) {
     (moments, UnitQuaternion::from_rotation_matrix(&rotation))
 }
 
+/// Mass properties of the whole car in the car frame: the body (`Physics` of the Car: mass,
+/// centre of mass, inertia tensor) plus the four wheels as solid cylinders at their unloaded
+/// positions (axis along y). The wheels ride with the chassis, so they add to its mass and to
+/// its inertia (their spin is a separate coordinate, see the tyre solve). Summed in f64 an axle
+/// at a time, so that a mirror-symmetric car's centre of mass lies exactly on its centre line
+/// ([`Inertia::sum`]).
+pub(crate) fn mass_properties(spec: &VehicleSpec) -> MassProperties {
+    let wheel = |s: &WheelSpec| {
+        let transverse = s.transverse_inertia();
+        let p = s.position;
+        Inertia::principal(
+            s.mass,
+            [p.x, p.y, p.z],
+            [transverse, s.spin_inertia(), transverse],
+        )
+    };
+    let w = &spec.wheels;
+    let parts = [
+        body_inertia(&spec.chassis),
+        wheel(&w[Wheel::FrontRight]),
+        wheel(&w[Wheel::FrontLeft]),
+        wheel(&w[Wheel::RearRight]),
+        wheel(&w[Wheel::RearLeft]),
+    ];
+    Inertia::sum(&parts).map_or(MassProperties::default(), |car| car.mass_properties())
+}
+
+/// The car body's mass, centre of mass and inertia tensor (car frame).
+pub(crate) fn body_inertia(c: &ChassisSpec) -> Inertia {
+    let com = c.center_of_mass;
+    Inertia::from_webots(c.mass, [com.x, com.y, com.z], c.inertia)
+}
+
 #[cfg(test)]
 mod tests {
     #![allow(clippy::unwrap_used)]
 
     use super::*;
+    use vehicle_model::Model;
 
     fn rebuilt(p: &MassProperties) -> Matrix3<f64> {
         let m = p.reconstruct_inertia_matrix();
@@ -167,5 +204,20 @@ mod tests {
                 .map(|x| 0.67 + 10.4 * ((x - com.x).powi(2) + (0.36 - com.z).powi(2)))
                 .sum::<f64>();
         assert!((car.tensor[(1, 1)] - expected_yy).abs() < 1e-9);
+    }
+
+    #[test]
+    fn wheels_add_their_mass_and_move_the_centre_of_mass() {
+        let spec = VehicleSpec::from_car(&Model::BmwX5.params()).unwrap_or_else(|e| panic!("{e}"));
+        let mp = mass_properties(&spec);
+        // 2000 kg body + 4 × 30 kg wheels.
+        assert!((mp.mass() - 2120.0).abs() < 1e-3);
+        // x: (2000·x_body + 60·L + 60·0)/2120.
+        let x = (2000.0 * spec.chassis.center_of_mass.x + 60.0 * 2.995) / 2120.0;
+        assert!(
+            (f64::from(mp.local_com.x) - x).abs() < 1e-4,
+            "{}",
+            mp.local_com.x
+        );
     }
 }

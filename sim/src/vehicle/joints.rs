@@ -55,14 +55,13 @@
 use ackermann::{PerWheel, Wheel};
 use rapier3d::prelude::{
     CoefficientCombineRule, ColliderBuilder, ColliderHandle, GenericJoint, GenericJointBuilder,
-    JointAxesMask, JointAxis, MassProperties, Mat3, Multibody, MultibodyJointHandle, PhysicsWorld,
-    Pose, RigidBody, RigidBodyBuilder, RigidBodyHandle, Vector,
+    JointAxesMask, JointAxis, MassProperties, Multibody, MultibodyJointHandle, PhysicsWorld, Pose,
+    RigidBody, RigidBodyBuilder, RigidBodyHandle, Vector,
 };
 
-use super::cast::{body_inertia, mass_properties};
 use super::contact::{Body, Contact, Support, WheelRow};
-use super::inertia::Inertia;
-use super::multibody::{self, WheelImpulse};
+use super::inertia::{Inertia, body_inertia, mass_properties};
+use super::multibody::{self, Parts, WheelImpulse};
 use super::spec::{SpringDamper, VehicleSpec, WheelSpec};
 use super::tread::WHEEL_HOOKS;
 use super::wheels::Footing;
@@ -127,26 +126,6 @@ const TREAD_GROUND_COSINE: f32 = core::f32::consts::FRAC_1_SQRT_2;
 const LIN_Z: usize = 2;
 /// Index of AngZ in rapier's 6-DoF spatial layout.
 const ANG_Z: usize = 5;
-
-/// The rapier handles of one car on joints and the whole car's mass properties.
-#[derive(Debug, Clone)]
-pub(crate) struct Parts {
-    pub chassis: RigidBodyHandle,
-    /// The chassis body's frame in the car frame: its own centre of mass (m).
-    pub chassis_offset: Vector,
-    pub wheels: PerWheel<RigidBodyHandle>,
-    pub colliders: PerWheel<ColliderHandle>,
-    /// chassis → wheel joints: the suspension (LinZ, DoF 0) and, at the front, the steering
-    /// (AngZ, DoF 1).
-    pub joints: PerWheel<MultibodyJointHandle>,
-    /// The whole car's centre of mass in the car frame (m).
-    pub com: Vector,
-    /// 1/total mass (1/kg).
-    pub inv_mass: f32,
-    /// Inverse inertia tensor of the whole car about its centre of mass, car frame
-    /// (1/(kg·m²)).
-    pub inv_inertia: Mat3,
-}
 
 impl Parts {
     /// The steering joints, `[FR, FL]`.

@@ -87,7 +87,7 @@ use contact::Impulses;
 #[derive(Debug, Clone)]
 enum Parts {
     Cast(cast::Parts),
-    Joints(joints::Parts),
+    Joints(multibody::Parts),
 }
 
 /// Smallest cosine between the ground normal under a wheel and the chassis' up axis for the

@@ -1,5 +1,5 @@
-//! The joints car's motion as rapier's multibody holds it, and how the tyre solve's impulses
-//! reach it.
+//! The joints car's rapier multibody: its handles, its motion as rapier holds it, and how the
+//! tyre solve's impulses reach it.
 //!
 //! # Reading the motion
 //!
@@ -28,10 +28,31 @@
 
 use ackermann::{PerWheel, Wheel};
 use rapier3d::na;
-use rapier3d::prelude::{PhysicsWorld, RigidBodyHandle, Vector};
+use rapier3d::prelude::{
+    ColliderHandle, Mat3, MultibodyJointHandle, PhysicsWorld, RigidBodyHandle, Vector,
+};
 
 use super::Motion;
-use super::joints::Parts;
+
+/// The rapier handles of one car on joints and the whole car's mass properties.
+#[derive(Debug, Clone)]
+pub(crate) struct Parts {
+    pub chassis: RigidBodyHandle,
+    /// The chassis body's frame in the car frame: its own centre of mass (m).
+    pub chassis_offset: Vector,
+    pub wheels: PerWheel<RigidBodyHandle>,
+    pub colliders: PerWheel<ColliderHandle>,
+    /// chassis → wheel joints: the suspension (LinZ, DoF 0) and, at the front, the steering
+    /// (AngZ, DoF 1).
+    pub joints: PerWheel<MultibodyJointHandle>,
+    /// The whole car's centre of mass in the car frame (m).
+    pub com: Vector,
+    /// 1/total mass (1/kg).
+    pub inv_mass: f32,
+    /// Inverse inertia tensor of the whole car about its centre of mass, car frame
+    /// (1/(kg·m²)).
+    pub inv_inertia: Mat3,
+}
 
 /// Share of each impulse handed to rapier as a change of the generalized velocity before the
 /// step; the rest acts as a force over the step (see the module documentation).

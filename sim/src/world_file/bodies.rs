@@ -8,7 +8,7 @@ use proto_geom::plausible::Compact;
 
 use super::error::{WorldFileError, WorldFileErrorKind};
 use super::read::Section;
-use super::statics::{missing, yaw_of};
+use super::read::{missing, yaw_of};
 
 /// Keys of each `[[body]]`.
 pub(crate) const BODY_KEYS: [&str; 5] = ["translation", "size", "mass", "rotation", "friction"];

@@ -2,6 +2,8 @@
 
 use core::fmt;
 
+use vehicle_model::Model;
+
 /// A position in a world file (1-based line and column, counted in characters).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Location {
@@ -220,7 +222,7 @@ impl fmt::Display for Message<'_> {
             WorldFileErrorKind::NeitherFileNorModel { name, suggestions } => {
                 write!(f, "'{name}' is neither a world file nor a vehicle model")?;
                 write_suggestions(f, suggestions)?;
-                let models: Vec<&str> = super::vehicle::model_names().collect();
+                let models: Vec<&str> = model_names().collect();
                 write!(f, " (models: {})", models.join(", "))
             }
             WorldFileErrorKind::InvalidValue(m) => {
@@ -294,6 +296,11 @@ pub(crate) fn closest<'a>(
         .take(3)
         .map(|(_, c)| c.to_string())
         .collect()
+}
+
+/// The names of every shipped model, for suggestions.
+pub(crate) fn model_names() -> impl Iterator<Item = &'static str> {
+    Model::ALL.into_iter().map(Model::webots_name)
 }
 
 #[cfg(test)]

@@ -220,7 +220,7 @@ pub fn load(spec: &str) -> Result<WorldDescription, WorldFileError> {
                 key: None,
                 kind: WorldFileErrorKind::NeitherFileNorModel {
                     name: spec.to_string(),
-                    suggestions: closest(spec, vehicle::model_names()),
+                    suggestions: closest(spec, error::model_names()),
                 },
             });
         }

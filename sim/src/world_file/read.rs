@@ -3,6 +3,7 @@
 
 use core::ops::{Range, RangeInclusive};
 
+use proto_geom::plausible::Compact;
 use toml::de::{DeTable, DeValue};
 
 use super::error::{Location, NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, closest};
@@ -368,6 +369,39 @@ impl<'a, 'i> Section<'a, 'i> {
         }
         Ok(out)
     }
+}
+
+/// The error of a required `key` absent from `section`.
+pub(crate) fn missing(section: &Section<'_, '_>, key: &str) -> WorldFileError {
+    section.src.error(
+        section.span(),
+        Some(section.key_path(key)),
+        WorldFileErrorKind::Structure(format!("missing key '{}'", section.key_path(key))),
+    )
+}
+
+/// The heading (rad) of a Webots `rotation` (axis x, y, z, angle) about the vertical axis;
+/// 0 when absent.
+pub(crate) fn yaw_of(section: &Section<'_, '_>) -> Result<f64, WorldFileError> {
+    let Some([x, y, z, angle]) = section.array::<4>("rotation")? else {
+        return Ok(0.0);
+    };
+    let norm = (x * x + y * y + z * z).sqrt();
+    let vertical = norm.is_finite() && norm > 0.0 && (x * x + y * y).sqrt() <= 1e-9 * norm;
+    if !vertical || !angle.is_finite() {
+        return Err(section.error(
+            "rotation",
+            WorldFileErrorKind::InvalidValue(format!(
+                "[{}, {}, {}, {}]: only finite rotations about the vertical axis \
+                 ([0, 0, 1, angle]) are supported here",
+                Compact(x),
+                Compact(y),
+                Compact(z),
+                Compact(angle)
+            )),
+        ));
+    }
+    Ok(angle * z.signum())
 }
 
 #[cfg(test)]

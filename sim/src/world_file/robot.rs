@@ -6,7 +6,7 @@ use proto_geom::plausible::{Compact, POSITION};
 use super::error::{WorldFileError, WorldFileErrorKind};
 use super::programme::{PROGRAMME, read_robot_programme};
 use super::read::Section;
-use super::statics::yaw_of;
+use super::read::yaw_of;
 use super::vehicle::NAME;
 use crate::programme::{Programme, WheelSpeeds};
 

@@ -6,7 +6,7 @@ use proto_geom::nalgebra::{Point2, Point3, Vector3};
 use proto_geom::plausible::Compact;
 
 use super::error::{WorldFileError, WorldFileErrorKind};
-use super::read::Section;
+use super::read::{Section, missing, yaw_of};
 
 /// Keys of `[ground]`.
 pub(crate) const GROUND_KEYS: [&str; 1] = ["friction"];
@@ -143,14 +143,6 @@ fn validate_last_obstacle(
     })
 }
 
-pub(crate) fn missing(section: &Section<'_, '_>, key: &str) -> WorldFileError {
-    section.src.error(
-        section.span(),
-        Some(section.key_path(key)),
-        WorldFileErrorKind::Structure(format!("missing key '{}'", section.key_path(key))),
-    )
-}
-
 fn required_array<const N: usize>(
     section: &Section<'_, '_>,
     key: &str,
@@ -158,28 +150,4 @@ fn required_array<const N: usize>(
     section
         .array::<N>(key)?
         .ok_or_else(|| missing(section, key))
-}
-
-/// The heading (rad) of a Webots `rotation` (axis x, y, z, angle) about the vertical axis;
-/// 0 when absent.
-pub(crate) fn yaw_of(section: &Section<'_, '_>) -> Result<f64, WorldFileError> {
-    let Some([x, y, z, angle]) = section.array::<4>("rotation")? else {
-        return Ok(0.0);
-    };
-    let norm = (x * x + y * y + z * z).sqrt();
-    let vertical = norm.is_finite() && norm > 0.0 && (x * x + y * y).sqrt() <= 1e-9 * norm;
-    if !vertical || !angle.is_finite() {
-        return Err(section.error(
-            "rotation",
-            WorldFileErrorKind::InvalidValue(format!(
-                "[{}, {}, {}, {}]: only finite rotations about the vertical axis \
-                 ([0, 0, 1, angle]) are supported here",
-                Compact(x),
-                Compact(y),
-                Compact(z),
-                Compact(angle)
-            )),
-        ));
-    }
-    Ok(angle * z.signum())
 }

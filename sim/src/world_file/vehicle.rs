@@ -11,7 +11,9 @@ use vehicle_model::{
     Wheel, WheelSetting, WheelSlot,
 };
 
-use super::error::{NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, closest};
+use super::error::{
+    NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, closest, model_names,
+};
 use super::programme::{PROGRAMME, read_car_programme};
 use super::read::{Section, as_f64, describe};
 use super::tyre;
@@ -98,11 +100,6 @@ impl CarDescription {
 fn message(w: &ParamWarning) -> String {
     let text = w.to_string();
     text.strip_prefix("Warning: ").unwrap_or(&text).to_string()
-}
-
-/// The names of every shipped model, for suggestions.
-pub(crate) fn model_names() -> impl Iterator<Item = &'static str> {
-    Model::ALL.into_iter().map(Model::webots_name)
 }
 
 /// Every key of `[vehicle]` that is not a wheel slot.
