@@ -65,7 +65,7 @@ fn bench(c: &mut Criterion) {
     });
     let report = default_run();
     g.bench_function(BenchmarkId::new("write", "test-track"), |b| {
-        b.iter(|| replay::to_glb(black_box(&report)).unwrap())
+        b.iter(|| replay::to_glb(black_box(&report.replay_parts())).unwrap())
     });
     g.finish();
 }
@@ -89,7 +89,7 @@ fn summary(medians: &Medians) {
     };
     let report = default_run();
     let frames: usize = report.results.iter().map(|r| r.replay.frames.len()).sum();
-    let bytes = replay::to_glb(&report).unwrap().len();
+    let bytes = replay::to_glb(&report.replay_parts()).unwrap().len();
     let recording = frames as f64 * frame;
     let bare = run - recording;
     println!("\nreplay summary (criterion medians, test-track on the default world):");

@@ -1,5 +1,5 @@
 //! The world description: gravity, time step, ground, static obstacles, dynamic boxes and
-//! solver settings.
+//! solver settings, and the outlines of the obstacles and boxes seen from above.
 
 use crate::body::BodySpec;
 use crate::error::ParamError;
@@ -278,9 +278,63 @@ impl WorldConfig {
     }
 }
 
+/// What an [`Outline`] is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OutlineKind {
+    /// A static `[[box]]`.
+    Box,
+    /// A `[[ramp]]`.
+    Ramp,
+    /// A dynamic `[[body]]` box, where it starts.
+    Body,
+}
+
+impl OutlineKind {
+    /// The legend text.
+    pub const fn legend(self) -> &'static str {
+        match self {
+            OutlineKind::Box => "boxes",
+            OutlineKind::Ramp => "ramps",
+            OutlineKind::Body => "dynamic boxes (start)",
+        }
+    }
+}
+
+/// An obstacle's footprint seen from above (m, world frame): a closed polygon.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Outline {
+    /// What it is.
+    pub kind: OutlineKind,
+    /// The corners, in order.
+    pub points: Vec<[f64; 2]>,
+}
+
+impl Outline {
+    /// The footprints of the boxes, ramps and dynamic boxes (at their start) of `config`.
+    pub fn of_world(config: &WorldConfig) -> Vec<Outline> {
+        let outline = |kind, corners: [Point2<f64>; 4]| Outline {
+            kind,
+            points: corners.iter().map(|p| [p.x, p.y]).collect(),
+        };
+        let obstacles = config.obstacles.iter().map(|o| {
+            let kind = match o {
+                Obstacle::Box { .. } => OutlineKind::Box,
+                Obstacle::Ramp { .. } => OutlineKind::Ramp,
+            };
+            outline(kind, o.footprint())
+        });
+        let bodies = config
+            .bodies
+            .iter()
+            .map(|b| outline(OutlineKind::Body, b.footprint()));
+        obstacles.chain(bodies).collect()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::BodySpec;
 
     #[test]
     fn rejects_bad_fields() {
@@ -351,5 +405,50 @@ mod tests {
         assert_eq!(wall.friction(), None);
         let xy = wall.footprint().map(|p| [p.x, p.y]);
         assert_eq!(xy, [[0.5, 1.0], [1.5, 1.0], [1.5, 3.0], [0.5, 3.0]]);
+    }
+
+    #[test]
+    fn outlines_of_boxes_ramps_and_bodies() {
+        let config = WorldConfig {
+            obstacles: vec![
+                Obstacle::Box {
+                    center: Point3::new(10.0, 5.0, 0.5),
+                    half_extents: Vector3::new(1.0, 2.0, 0.5),
+                    yaw: core::f64::consts::FRAC_PI_2,
+                    friction: None,
+                },
+                Obstacle::Ramp {
+                    start: Point2::origin(),
+                    yaw: 0.0,
+                    length: 10.0,
+                    width: 4.0,
+                    height: 1.0,
+                    friction: None,
+                },
+            ],
+            bodies: vec![BodySpec {
+                center: Point3::new(3.0, 0.0, 0.5),
+                size: Vector3::repeat(1.0),
+                yaw: 0.0,
+                mass: 10.0,
+                friction: None,
+            }],
+            ..WorldConfig::default()
+        };
+        let o = Outline::of_world(&config);
+        let kinds: Vec<OutlineKind> = o.iter().map(|o| o.kind).collect();
+        assert_eq!(
+            kinds,
+            [OutlineKind::Box, OutlineKind::Ramp, OutlineKind::Body]
+        );
+        // The box turned a quarter turn: its 2 m (x) by 4 m (y) footprint spans 4 m in x.
+        let xs: Vec<f64> = o[0].points.iter().map(|p| p[0]).collect();
+        let span = xs.iter().copied().fold(f64::MIN, f64::max)
+            - xs.iter().copied().fold(f64::MAX, f64::min);
+        assert!((span - 4.0).abs() < 1e-12, "{xs:?}");
+        assert_eq!(
+            o[1].points,
+            [[0.0, -2.0], [10.0, -2.0], [10.0, 2.0], [0.0, 2.0]]
+        );
     }
 }

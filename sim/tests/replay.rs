@@ -78,7 +78,7 @@ fn run(world: &WorldDescription, scenario: Scenario) -> RunReport {
 /// strictly increasing, at most `MAX_KEYFRAME_RATE` per second, ending at the scenario's
 /// simulated duration, and the vehicle's last translation at the telemetry's last position.
 fn check_run(report: &RunReport, vehicle_node: &str, step_s: f64) {
-    let glb = replay::to_glb(report).unwrap();
+    let glb = replay::to_glb(&report.replay_parts()).unwrap();
     let anims = animations(&glb);
     let names: Vec<&str> = anims.iter().map(|a| a.0.as_str()).collect();
     let expected: Vec<&str> = report.results.iter().map(|r| r.name.as_str()).collect();
@@ -119,7 +119,7 @@ fn test_track_replay_has_one_animation_per_scenario_ending_at_the_telemetry() {
     let report = run(&w, Scenario::TestTrack);
     check_run(&report, "car_0", w.config.dt());
 
-    let glb = replay::to_glb(&report).unwrap();
+    let glb = replay::to_glb(&report.replay_parts()).unwrap();
     let anims = animations(&glb);
     // Brake lights: off at the start of the brake scenario, on once it brakes.
     let (_, brake) = anims.iter().find(|a| a.0 == "brake").unwrap();
@@ -158,7 +158,7 @@ fn steering_turns_the_front_wheels_in_the_replay() {
     let w = world("bmw-x5.toml");
     let report = run(&w, Scenario::Circle);
     check_run(&report, "car_0", w.config.dt());
-    let glb = replay::to_glb(&report).unwrap();
+    let glb = replay::to_glb(&report.replay_parts()).unwrap();
     let anims = animations(&glb);
     let (_, circle) = &anims[0];
     // The wheel rotation is the steering about −z after the spin about the axle (y) after
@@ -202,7 +202,7 @@ fn robot_replay_moves_the_robot_and_turns_its_wheels() {
     let w = world("e-puck.toml");
     let report = run(&w, Scenario::Square);
     check_run(&report, "robot_0", w.config.dt());
-    let glb = replay::to_glb(&report).unwrap();
+    let glb = replay::to_glb(&report.replay_parts()).unwrap();
     let anims = animations(&glb);
     assert_eq!(anims.len(), 1);
     let wheel = track(&anims[0].1, "left_wheel", "rotation");

@@ -16,8 +16,8 @@
 //!   time from the part's start. Lights and the part groups show and hide through step-
 //!   interpolated scale keyframes: while a part plays, only its own trajectories and cones
 //!   show.
-//! * [`to_glb`] writes a [`RunReport`]'s replay; [`crate::report::write_outputs`] puts it in
-//!   `replay.glb` beside the CSV and plots.
+//! * [`to_glb`] writes the parts' scene as binary glTF; [`crate::report::write_outputs`] puts
+//!   a run's in `replay.glb` beside the CSV and plots.
 //!
 //! Frames: the scene is built in this crate's z-up world frame (m) and `proto-geom`'s writer
 //! turns it into glTF's y-up frame once, at its root node (`webots_to_gltf`).
@@ -34,8 +34,6 @@ use proto_geom::export::{AnimationError, Scene};
 pub use recorder::{
     CarFrame, CarModel, Frame, MAX_KEYFRAME_RATE, Recorder, Recording, RobotFrame, RobotModel,
 };
-
-use crate::scenario::RunReport;
 
 /// One part of a run: a recording, its name and the lines of its course.
 #[derive(Debug, Clone, Copy)]
@@ -66,22 +64,14 @@ pub fn scene(parts: &[Part<'_>]) -> Result<Scene, AnimationError> {
     Ok(scene)
 }
 
-/// The replay of `report` as a binary glTF file: one part per scenario run.
+/// The replay of `parts` (a run's, [`RunReport::replay_parts`](crate::scenario::RunReport::replay_parts))
+/// as a binary glTF file.
 ///
 /// # Errors
 /// [`io::ErrorKind::InvalidData`] for the [`AnimationError`] of [`scene`], or an [`io::Error`]
 /// if the file cannot be serialised (a buffer beyond 4 GiB).
-pub fn to_glb(report: &RunReport) -> io::Result<Vec<u8>> {
-    let parts: Vec<Part<'_>> = report
-        .results
-        .iter()
-        .map(|r| Part {
-            name: &r.name,
-            recording: &r.replay,
-            guides: &r.guides,
-        })
-        .collect();
-    scene(&parts)
+pub fn to_glb(parts: &[Part<'_>]) -> io::Result<Vec<u8>> {
+    scene(parts)
         .map_err(|e| io::Error::new(io::ErrorKind::InvalidData, e))?
         .to_glb()
 }

@@ -13,7 +13,8 @@ use std::fmt::Write as _;
 
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
-pub use figures::{Outline, OutlineKind, figures};
+pub use crate::config::{Outline, OutlineKind};
+pub use figures::figures;
 pub use plot::{Figure, Panel, PlotError, Series, SeriesKind};
 
 use crate::scenario::{Metric, RunReport, ScenarioResult, Value};
@@ -391,7 +392,7 @@ pub fn write_outputs(
     for (name, svg) in &plots {
         write(name, svg.as_bytes())?;
     }
-    let glb = crate::replay::to_glb(report).map_err(io(&dir.join(REPLAY_GLB)))?;
+    let glb = crate::replay::to_glb(&report.replay_parts()).map_err(io(&dir.join(REPLAY_GLB)))?;
     write(REPLAY_GLB, &glb)?;
     Ok(written)
 }

@@ -38,9 +38,9 @@ pub use lane::{LaneSection, double_lane_change};
 pub use metrics::motion_metrics;
 pub use programme::PROGRAMME_TAIL;
 
+use crate::config::Outline;
 use crate::error::SimError;
-use crate::replay::Recording;
-use crate::report::Outline;
+use crate::replay::{Part, Recording};
 use crate::telemetry::Telemetry;
 use crate::world_file::WorldDescription;
 
@@ -369,6 +369,19 @@ pub struct RunReport {
 }
 
 impl RunReport {
+    /// The replay's parts: one per scenario run, named after it, with its course's guides
+    /// ([`replay::to_glb`](crate::replay::to_glb) writes them).
+    pub fn replay_parts(&self) -> Vec<Part<'_>> {
+        self.results
+            .iter()
+            .map(|r| Part {
+                name: &r.name,
+                recording: &r.replay,
+                guides: &r.guides,
+            })
+            .collect()
+    }
+
     /// Simulated seconds per wall-clock second (∞ for an instantaneous run).
     pub fn realtime_factor(&self) -> f64 {
         if self.wall_seconds > 0.0 {
