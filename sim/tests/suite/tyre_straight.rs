@@ -161,12 +161,12 @@ fn launch_exceeds_grip(sim: &Simulation, id: sim::VehicleId, mu: f64) -> bool {
     })
 }
 
-/// The models whose Webots data are not mirror-symmetric across the car's centre line (see
-/// the module docs).
-const ASYMMETRIC: [Model; 2] = [Model::CitroenCZero, Model::ToyotaPrius];
+/// The model whose Webots data turn it sideways beyond the bounds through an unstable phase
+/// (see the module docs; the C-Zero's asymmetry stays within them).
+const ASYMMETRIC: Model = Model::ToyotaPrius;
 
 fn check(model: Model) {
-    check_params(model, model.params(), ASYMMETRIC.contains(&model));
+    check_params(model, model.params(), model == ASYMMETRIC);
 }
 
 /// Drives `model` with `params` (`asymmetric`: not mirror-symmetric) and checks each run.
