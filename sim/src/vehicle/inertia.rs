@@ -64,9 +64,11 @@ impl Inertia {
         (!parts.is_empty()).then_some(Inertia { mass, com, tensor })
     }
 
-    /// rapier's mass properties: the principal moments and their frame, worked out in f64.
+    /// rapier's mass properties: the principal moments and their frame, worked out in f64. A
+    /// moment that round-off leaves below 0 is 0, as rapier's own diagonalisation has it.
     pub fn mass_properties(&self) -> MassProperties {
         let (moments, frame) = principal_axes(&self.tensor);
+        let moments = moments.map(|m| m.max(0.0));
         let q = frame.quaternion().coords;
         MassProperties::with_principal_inertia_frame(
             Vector::new(self.com.x as f32, self.com.y as f32, self.com.z as f32),
