@@ -98,7 +98,16 @@ fn principal_axes(t: &Matrix3<f64>) -> (Vector3<f64>, UnitQuaternion<f64>) {
             UnitQuaternion::from_axis_angle(&Vector3::y_axis(), -theta),
         );
     }
-    let eigen = SymmetricEigen::new(*t);
+    // The car's data are validated finite; a tensor that is not keeps the frame's axes, and
+    // the solve is bounded all the same.
+    let eigen = t
+        .iter()
+        .all(|v| v.is_finite())
+        .then(|| SymmetricEigen::try_new(*t, f64::EPSILON, 1000))
+        .flatten();
+    let Some(eigen) = eigen else {
+        return (t.diagonal(), UnitQuaternion::identity());
+    };
     let mut axes = eigen.eigenvectors;
     let mut moments = eigen.eigenvalues;
     if axes.determinant() < 0.0 {
@@ -169,6 +178,14 @@ mod tests {
         assert_eq!((back[(0, 1)], back[(1, 2)]), (0.0, 0.0));
         // Within f32 round-off of the moments (≈ 26,000 kg·m² × 2⁻²³ ≈ 0.003 kg·m²).
         assert!((back - body.tensor).abs().max() < 0.01, "{back}");
+    }
+
+    #[test]
+    fn a_tensor_that_cannot_be_diagonalised_keeps_its_axes() {
+        let body = Inertia::from_webots(1.0, [0.0; 3], [1.0, 2.0, 3.0, f64::NAN, 0.5, 0.1]);
+        let (moments, frame) = principal_axes(&body.tensor);
+        assert_eq!(moments, Vector3::new(1.0, 2.0, 3.0));
+        assert_eq!(frame, UnitQuaternion::identity());
     }
 
     #[test]
