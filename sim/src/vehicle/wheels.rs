@@ -135,13 +135,18 @@ impl Vehicle {
         carries_load: bool,
         dt: f64,
     ) {
+        // Wheels their brakes hold still (a parked car, a locked stop) are steady: nothing to
+        // correct, and nothing to keep for a second solve.
+        if !SpinStep::to_divide(&self.spin_steps).iter().any(|&d| d) {
+            contact::solve(body, rows, dt as f32);
+            return;
+        }
         let (start_body, mut again) = (*body, *rows);
         contact::solve(body, rows, dt as f32);
         let loads = carries_load.then(|| rows.map(|r| r.impulses.normal));
-        if self.respin_braked(&mut again, &start_body, body, loads, dt) {
-            (*body, *rows) = (start_body, again);
-            contact::solve(body, rows, dt as f32);
-        }
+        self.respin_braked(&mut again, &start_body, body, loads, dt);
+        (*body, *rows) = (start_body, again);
+        contact::solve(body, rows, dt as f32);
     }
 
     /// Begins the braked wheels' sub-stepped tyres again with what the first solve of the step
@@ -150,9 +155,8 @@ impl Vehicle {
     /// solve, `end` after it), and, where the solve carries the load (`end_loads`, its normal
     /// impulses, N·s; `None` on joints, where rapier carries it), the mean of the step's start
     /// and end loads. The sub-steps held both at the step's start; under a sudden brake the
-    /// load moving to the front within a 32 ms step is a tenth of the wheel's. Returns whether
-    /// the step is to be solved again: not while every braked wheel is steady
-    /// ([`SpinStep::is_steady`]).
+    /// load moving to the front within a 32 ms step is a tenth of the wheel's. Called only when
+    /// a braked wheel is not steady ([`SpinStep::is_steady`]).
     fn respin_braked(
         &mut self,
         rows: &mut [WheelRow; 4],
@@ -160,12 +164,7 @@ impl Vehicle {
         end: &Body,
         end_loads: Option<[f32; 4]>,
         dt: f64,
-    ) -> bool {
-        // Wheels their brakes hold still (a parked car, a locked stop) are steady: nothing to
-        // correct.
-        if !SpinStep::to_divide(&self.spin_steps).iter().any(|&d| d) {
-            return false;
-        }
+    ) {
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
             let (Some(step), TyreModel::MagicFormula(tyre), Some(contact)) =
                 (self.spin_steps[w], self.spec.tyres.of(w), rows[i].contact)
@@ -186,7 +185,6 @@ impl Vehicle {
             }
         }
         self.set_spun_lines(rows, true);
-        true
     }
 
     /// The reaction of wheel `w`'s angular acceleration on the chassis. The solve puts the
