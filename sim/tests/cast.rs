@@ -16,37 +16,19 @@ const MOUNTING: sim::Mounting = sim::Mounting::Cast;
 /// rear wheels first: both yaw-unstable, so any left-right round-off would show.
 #[test]
 fn a_mirror_symmetric_car_stays_exactly_on_its_line() {
-    use vehicle_model::{Model, Wheel};
+    use vehicle_model::Model;
     let (mut sim, id) = common::settled(Model::BmwX5, 0.5);
     sim.driver_mut(id).unwrap().set_cruising_speed(100.0);
-    let mut spun = false;
-    common::run_until(&mut sim, 30.0, |s| {
-        let t = s.telemetry(id).unwrap();
-        spun |= t.state.tyres[Wheel::FrontLeft].slip_ratio > 1.0;
-        t.speed * 3.6 >= 99.0
-    })
-    .unwrap();
-    assert!(spun);
+    let (reached, spun) = common::accelerate(&mut sim, id, 99.0, 30.0);
+    assert!(reached.is_some() && spun);
     let s = sim.telemetry(id).unwrap().state;
     assert_eq!((s.position.y, s.roll_pitch_yaw.yaw), (0.0, 0.0));
 
     let (mut sim, id) = common::settled(Model::BmwX5, 1.0);
     sim.driver_mut(id).unwrap().set_cruising_speed(60.0);
     common::run(&mut sim, 10.0);
-    let d = sim.driver_mut(id).unwrap();
-    d.set_cruising_speed(0.0);
-    // Torque mode: the speed-mode motors would overpower the brakes.
-    d.set_throttle(0.0);
-    d.set_brake_intensity(1.0);
-    let mut rear_first = false;
-    common::run_until(&mut sim, 10.0, |s| {
-        let t = s.telemetry(id).unwrap();
-        let locked = |w: Wheel| t.state.tyres[w].slip_ratio < -0.5;
-        rear_first |= locked(Wheel::RearLeft) && !locked(Wheel::FrontLeft);
-        t.speed < 0.01
-    })
-    .unwrap();
-    assert!(rear_first);
+    let (stopped, rear_first) = common::brake_to_rest(&mut sim, id, 10.0);
+    assert!(stopped.is_some() && rear_first);
     let s = sim.telemetry(id).unwrap().state;
     assert!(s.position.x > 20.0);
     assert_eq!((s.position.y, s.roll_pitch_yaw.yaw), (0.0, 0.0));

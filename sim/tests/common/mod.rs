@@ -3,7 +3,7 @@
 
 use sim::{Simulation, TyreChoice, VehicleId, VehiclePlacement, VehicleSpec, World, WorldConfig};
 use vehicle_model::CarParams;
-use vehicle_model::{Model, WebotsContact};
+use vehicle_model::{Model, WebotsContact, Wheel};
 
 /// Tyre–ground friction of the speed tests. With Webots' default 1, the front-driven BmwX5
 /// (3.97 m/s² needs 8.4 kN of traction from about 8.0 kN of front-axle load) and the
@@ -89,4 +89,45 @@ pub fn run_until(
         }
     }
     None
+}
+
+/// Runs until 1 s after the speed reaches `target_kmh` (or for `limit` s); returns when it
+/// reached it (s; `None` if it did not) and whether a wheel spun at more than twice the ground
+/// speed meanwhile.
+pub fn accelerate(
+    sim: &mut Simulation,
+    id: VehicleId,
+    target_kmh: f64,
+    limit: f64,
+) -> (Option<f64>, bool) {
+    let mut spun = false;
+    let reached = run_until(sim, limit, |s| {
+        let t = s.telemetry(id).unwrap();
+        spun |= Wheel::ALL
+            .into_iter()
+            .any(|w| t.state.tyres[w].slip_ratio > 1.0);
+        t.speed * 3.6 >= target_kmh
+    });
+    if reached.is_some() {
+        run(sim, 1.0);
+    }
+    (reached, spun)
+}
+
+/// Brakes at intensity 1 in torque mode (throttle 0: the speed-mode motors would overpower the
+/// brakes) until the car stops, its speed first below 1 cm/s (or for `limit` s); returns when
+/// it stopped (s; `None` if it did not) and whether its rear wheels locked while the front
+/// ones still rolled.
+pub fn brake_to_rest(sim: &mut Simulation, id: VehicleId, limit: f64) -> (Option<f64>, bool) {
+    let d = sim.driver_mut(id).unwrap();
+    d.set_throttle(0.0);
+    d.set_brake_intensity(1.0);
+    let mut rear_first = false;
+    let stopped = run_until(sim, limit, |s| {
+        let t = s.telemetry(id).unwrap();
+        let locked = |w: Wheel| t.state.tyres[w].slip_ratio < -0.5;
+        rear_first |= locked(Wheel::RearRight) && !locked(Wheel::FrontRight);
+        t.speed < 0.01
+    });
+    (stopped, rear_first)
 }

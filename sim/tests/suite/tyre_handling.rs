@@ -389,11 +389,7 @@ fn stopping_distance(model: Model, balance: BrakeBalance<f64>, dt_ms: u32) -> f6
     .unwrap();
     common::run(&mut sim, 3.0);
     let x0 = sim.telemetry(id).unwrap().state.position.x;
-    let d = sim.driver_mut(id).unwrap();
-    d.set_cruising_speed(0.0);
-    d.set_throttle(0.0);
-    d.set_brake_intensity(1.0);
-    common::run_until(&mut sim, 10.0, |s| s.telemetry(id).unwrap().speed < 0.01).unwrap();
+    common::brake_to_rest(&mut sim, id, 10.0).0.unwrap();
     sim.telemetry(id).unwrap().state.position.x - x0
 }
 

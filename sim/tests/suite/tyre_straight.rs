@@ -66,23 +66,6 @@ enum Unstable {
     Spinning,
 }
 
-/// Runs until 1 s after the speed reaches `target_kmh`, or for `limit` seconds; returns
-/// whether a driven wheel spun at more than twice the ground speed meanwhile.
-fn accelerate(sim: &mut Simulation, id: sim::VehicleId, target_kmh: f64, limit: f64) -> bool {
-    let mut spun = false;
-    let reached = common::run_until(sim, limit, |s| {
-        let t = s.telemetry(id).unwrap();
-        spun |= Wheel::ALL
-            .into_iter()
-            .any(|w| t.state.tyres[w].slip_ratio > 1.0);
-        t.speed * 3.6 >= target_kmh
-    });
-    if reached.is_some() {
-        common::run(sim, 1.0);
-    }
-    spun
-}
-
 /// Drives `model` with `params` on ground friction `mu` and returns (distance along x, y, yaw,
 /// the unstable phase it went through).
 fn drive(model: Model, params: CarParams<f64>, mu: f64, drive: Drive) -> (f64, f64, f64, Unstable) {
@@ -94,7 +77,7 @@ fn drive(model: Model, params: CarParams<f64>, mu: f64, drive: Drive) -> (f64, f
     let unstable = match drive {
         Drive::Speed => {
             sim.driver_mut(id).unwrap().set_cruising_speed(100.0);
-            if accelerate(&mut sim, id, 99.0, limit) {
+            if common::accelerate(&mut sim, id, 99.0, limit).1 {
                 Unstable::Spinning
             } else {
                 Unstable::No
@@ -109,7 +92,7 @@ fn drive(model: Model, params: CarParams<f64>, mu: f64, drive: Drive) -> (f64, f
             d.set_throttle(1.0);
             sim.step().unwrap();
             let spins = launch_exceeds_grip(&sim, id, mu);
-            let spun = accelerate(&mut sim, id, 100.0, limit);
+            let (_, spun) = common::accelerate(&mut sim, id, 100.0, limit);
             match (spins, spun) {
                 (true, _) => Unstable::Launch,
                 (false, true) => Unstable::Spinning,
@@ -121,15 +104,7 @@ fn drive(model: Model, params: CarParams<f64>, mu: f64, drive: Drive) -> (f64, f
             common::run(&mut sim, 0.6 * t0100 + 3.0);
             let d = sim.driver_mut(id).unwrap();
             d.set_brake_balance(balance).unwrap();
-            d.set_throttle(0.0);
-            d.set_brake_intensity(1.0);
-            let mut rear_first = false;
-            common::run_until(&mut sim, 20.0, |s| {
-                let t = s.telemetry(id).unwrap();
-                let locked = |w: Wheel| t.state.tyres[w].slip_ratio < -0.5;
-                rear_first |= locked(Wheel::RearRight) && !locked(Wheel::FrontRight);
-                t.speed.abs() < 0.01
-            });
+            let (_, rear_first) = common::brake_to_rest(&mut sim, id, 20.0);
             common::run(&mut sim, 1.0);
             if rear_first {
                 Unstable::RearLockedFirst
