@@ -48,20 +48,19 @@ impl Inertia {
         }
     }
 
-    /// The bodies as one: the masses and first moments add, and each tensor moves to the
-    /// common centre of mass by the parallel-axis theorem. The sums run in the parts' order,
-    /// so mirror-image parts listed in pairs cancel exactly. `None` for no parts.
-    pub fn sum(parts: &[Inertia]) -> Option<Inertia> {
-        let mass: f64 = parts.iter().map(|b| b.mass).sum();
-        let first = parts
-            .iter()
-            .fold(Vector3::zeros(), |sum, b| sum + b.com * b.mass);
+    /// This body and `others` as one: the masses and first moments add, and each tensor moves
+    /// to the common centre of mass by the parallel-axis theorem. The sums run in order, this
+    /// body first, so mirror-image parts listed in pairs cancel exactly.
+    pub fn with(&self, others: &[Inertia]) -> Inertia {
+        let parts = || core::iter::once(self).chain(others);
+        let mass: f64 = parts().map(|b| b.mass).sum();
+        let first = parts().fold(Vector3::zeros(), |sum, b| sum + b.com * b.mass);
         let com = first / mass;
-        let tensor = parts.iter().fold(Matrix3::zeros(), |sum, b| {
+        let tensor = parts().fold(Matrix3::zeros(), |sum, b| {
             let d = b.com - com;
             sum + b.tensor + (Matrix3::identity() * d.norm_squared() - d * d.transpose()) * b.mass
         });
-        (!parts.is_empty()).then_some(Inertia { mass, com, tensor })
+        Inertia { mass, com, tensor }
     }
 
     /// rapier's mass properties: the principal moments and their frame, worked out in f64. A
@@ -123,7 +122,7 @@ fn principal_axes(t: &Matrix3<f64>) -> (Vector3<f64>, UnitQuaternion<f64>) {
 /// positions (axis along y). The wheels ride with the chassis, so they add to its mass and to
 /// its inertia (their spin is a separate coordinate, see the tyre solve). Summed in f64 an axle
 /// at a time, so that a mirror-symmetric car's centre of mass lies exactly on its centre line
-/// ([`Inertia::sum`]).
+/// ([`Inertia::with`]).
 pub(crate) fn mass_properties(spec: &VehicleSpec) -> MassProperties {
     let wheel = |s: &WheelSpec| {
         let transverse = s.transverse_inertia();
@@ -135,14 +134,14 @@ pub(crate) fn mass_properties(spec: &VehicleSpec) -> MassProperties {
         )
     };
     let w = &spec.wheels;
-    let parts = [
-        body_inertia(&spec.chassis),
-        wheel(&w[Wheel::FrontRight]),
-        wheel(&w[Wheel::FrontLeft]),
-        wheel(&w[Wheel::RearRight]),
-        wheel(&w[Wheel::RearLeft]),
-    ];
-    Inertia::sum(&parts).map_or(MassProperties::default(), |car| car.mass_properties())
+    body_inertia(&spec.chassis)
+        .with(&[
+            wheel(&w[Wheel::FrontRight]),
+            wheel(&w[Wheel::FrontLeft]),
+            wheel(&w[Wheel::RearRight]),
+            wheel(&w[Wheel::RearLeft]),
+        ])
+        .mass_properties()
 }
 
 /// The car body's mass, centre of mass and inertia tensor (car frame).
@@ -203,14 +202,12 @@ mod tests {
             [4466.54, 26_116.9, 25_854.0, 0.0, -3204.91, 0.0],
         );
         let wheel = |x: f64, y: f64| Inertia::principal(10.4, [x, y, 0.36], [0.4, 0.67, 0.4]);
-        let car = Inertia::sum(&[
-            body,
+        let car = body.with(&[
             wheel(2.94, 0.86),
             wheel(2.94, -0.86),
             wheel(0.0, 0.86),
             wheel(0.0, -0.86),
-        ])
-        .unwrap();
+        ]);
         assert_eq!(car.com.y, 0.0);
         assert_eq!((car.tensor[(0, 1)], car.tensor[(1, 2)]), (0.0, 0.0));
         assert!((car.mass - (1847.0 + 4.0 * 10.4)).abs() < 1e-9);
