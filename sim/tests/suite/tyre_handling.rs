@@ -16,29 +16,7 @@ const G: f64 = 9.81;
 /// A simulation of `params` on passenger-car tyres on flat ground of friction `mu` with a
 /// `dt_ms` step, settled 1 s.
 fn car(params: CarParams<f64>, mu: f64, dt_ms: u32) -> (Simulation, VehicleId) {
-    car_on(params, &TyreChoice::of_model(Model::Car), mu, dt_ms)
-}
-
-/// As [`car`], on `tyre`.
-fn car_on(
-    params: CarParams<f64>,
-    tyre: &TyreChoice,
-    mu: f64,
-    dt_ms: u32,
-) -> (Simulation, VehicleId) {
-    let world = World::new(WorldConfig {
-        ground_friction: mu,
-        basic_time_step_ms: dt_ms,
-        ..WorldConfig::default()
-    })
-    .unwrap();
-    let mut sim = Simulation::new(world);
-    let (id, report) = sim
-        .add_car_with(params, tyre, crate::MOUNTING, VehiclePlacement::default())
-        .unwrap();
-    assert!(report.is_empty(), "{report:?}");
-    common::run(&mut sim, 1.0);
-    (sim, id)
+    common::settled_car(params, mu, &TyreChoice::of_model(Model::Car), dt_ms)
 }
 
 /// The single-track model of a car: mass (kg), yaw inertia (kg·m²), CoM to front and rear
@@ -479,7 +457,7 @@ impl ThrottleDriver {
 /// `delta` (rad) at 20 m/s, the speed held by `hold`: long enough for the slow divergence of a
 /// car that is only just stable to show.
 fn step_steer_body_slip(model: Model, delta: f64, hold: Hold) -> f64 {
-    let (mut sim, id) = car_on(model.params(), &TyreChoice::of_model(model), 1.0, 10);
+    let (mut sim, id) = common::settled_car(model.params(), 1.0, &TyreChoice::of_model(model), 10);
     let mut driver = ThrottleDriver::default();
     let mut throttle = |sim: &mut Simulation, stepped: bool| {
         if hold == Hold::Throttle || (hold == Hold::OpenLoop && !stepped) {
@@ -636,7 +614,7 @@ fn braking_within_the_grip_follows_the_brake_torque() {
     // spin inertia I/r²: a = (A + B·v)/M, and the car stops in
     // d = v₀/B' − (A'/B'²)·ln(1 + B'·v₀/A') with A' = A/M, B' = B/M.
     for tyre in [TyreChoice::of_model(Model::BmwX5), common::webots_tyre()] {
-        let (mut sim, id) = car_on(Model::BmwX5.params(), &tyre, common::GRIPPY, 10);
+        let (mut sim, id) = common::settled_car(Model::BmwX5.params(), common::GRIPPY, &tyre, 10);
         sim.driver_mut(id).unwrap().set_cruising_speed(100.0);
         common::run_until(&mut sim, 20.0, |s| {
             s.telemetry(id).unwrap().speed >= 99.0 / 3.6
