@@ -142,16 +142,7 @@ impl Vehicle {
         self.divide_axles(&mut rows);
         // The solve carries the load here: the braked wheels' sub-steps take its mean too.
         self.solve_contacts(&mut body, &mut rows, true, dt);
-        // Every wheel's record is taken on the chassis with all four spin reactions: taken
-        // wheel by wheel between them, the second wheel of an axle would see another chassis
-        // than the first, and a straight car would start to turn on round-off.
-        let omegas: [f64; 4] = core::array::from_fn(|i| rows[i].solved_spin(imposed[i]));
-        for (i, w) in Wheel::ALL.into_iter().enumerate() {
-            self.react_to_spin(&mut body, w, axes[i], omegas[i]);
-        }
-        for (i, w) in Wheel::ALL.into_iter().enumerate() {
-            self.finish_wheel(w, &rows[i], &body, f64::from(roads[i]), omegas[i], dt);
-        }
+        self.finish_wheels(&mut body, &rows, imposed, axes, roads, dt);
         if let Some(chassis) = world.bodies.get_mut(parts.chassis) {
             chassis.set_linvel(body.linvel, true);
             chassis.set_angvel(body.angvel, true);

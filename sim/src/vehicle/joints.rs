@@ -469,11 +469,9 @@ impl Vehicle {
         }
         // rapier carries the load: only the chassis' motion is corrected.
         self.solve_contacts(&mut body, &mut rows, false, dt);
+        let spin_changes = self.finish_wheels(&mut body, &rows, imposed, axes, roads, dt);
         let mut handed = PerWheel::splat(WheelImpulse::default());
-        // All four spin reactions before any wheel's record, as on the cast car.
-        let omegas: [f64; 4] = core::array::from_fn(|i| rows[i].solved_spin(imposed[i]));
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
-            let spin_change = self.react_to_spin(&mut body, w, axes[i], omegas[i]);
             handed[w] = WheelImpulse {
                 tyre: rows[i].contact.map(|c| {
                     (
@@ -481,12 +479,9 @@ impl Vehicle {
                         frame.com + c.contact_arm,
                     )
                 }),
-                spin: axes[i] * -spin_change as f32,
+                spin: axes[i] * -spin_changes[i] as f32,
                 ground: grounds[i],
             };
-        }
-        for (i, w) in Wheel::ALL.into_iter().enumerate() {
-            self.finish_wheel(w, &rows[i], &body, f64::from(roads[i]), omegas[i], dt);
         }
         if !self.joint_space_mass_ready {
             self.joint_space_mass_ready = multibody::joint_space_mass_ready(world, parts);

@@ -187,12 +187,38 @@ impl Vehicle {
         self.set_spun_lines(rows, true);
     }
 
+    /// The end of a step's solve: each wheel's spin (`imposed` for a velocity-controlled one),
+    /// the reactions of all four spin changes on `body` (each about its wheel's spin `axes`),
+    /// then each wheel's record on the chassis with all four reactions. Taken wheel by wheel
+    /// between the reactions, the second wheel of an axle would see another chassis than the
+    /// first, and a straight car would start to turn on round-off. Returns each wheel's change
+    /// of angular momentum about its axis (N·m·s).
+    pub(super) fn finish_wheels(
+        &mut self,
+        body: &mut Body,
+        rows: &[WheelRow; 4],
+        imposed: [f64; 4],
+        axes: [Vector; 4],
+        roads: [f32; 4],
+        dt: f64,
+    ) -> [f64; 4] {
+        let omegas: [f64; 4] = core::array::from_fn(|i| rows[i].solved_spin(imposed[i]));
+        let mut spin_changes = [0.0; 4];
+        for (i, w) in Wheel::ALL.into_iter().enumerate() {
+            spin_changes[i] = self.react_to_spin(body, w, axes[i], omegas[i]);
+        }
+        for (i, w) in Wheel::ALL.into_iter().enumerate() {
+            self.finish_wheel(w, &rows[i], body, f64::from(roads[i]), omegas[i], dt);
+        }
+        spin_changes
+    }
+
     /// The reaction of wheel `w`'s angular acceleration on the chassis. The solve puts the
     /// tyre force at the contact point, which carries the reaction of the torque that the tyre
     /// balances; this adds the part that spun the wheel up or down (I·Δω), so a motor, brake
     /// or damper turning a wheel in the air, or a speed ramp, also turns the chassis the other
     /// way. Returns that change of the wheel's angular momentum about `axis` (N·m·s).
-    pub(super) fn react_to_spin(&self, body: &mut Body, w: Wheel, axis: Vector, omega: f64) -> f64 {
+    fn react_to_spin(&self, body: &mut Body, w: Wheel, axis: Vector, omega: f64) -> f64 {
         let spin_change = self.spec.wheels[w].spin_inertia() * (omega - self.state.wheel_speeds[w]);
         body.angvel -= body.inv_inertia * (axis * spin_change as f32);
         spin_change
@@ -200,7 +226,7 @@ impl Vehicle {
 
     /// Records wheel `w`'s end of step (spin `omega`, rad/s) and advances its tyre's transient
     /// slip.
-    pub(super) fn finish_wheel(
+    fn finish_wheel(
         &mut self,
         w: Wheel,
         row: &WheelRow,
