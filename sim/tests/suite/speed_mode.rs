@@ -162,35 +162,36 @@ fn check(model: Model, webots: bool) {
     }
 }
 
-macro_rules! speed_tests {
-    ($($name:ident, $webots:ident => $model:ident),* $(,)?) => {
-        $(
-            #[test]
-            fn $name() {
-                check(Model::$model, false);
-            }
-
-            #[test]
-            fn $webots() {
-                check(Model::$model, true);
-            }
-        )*
-    };
+model_tests! {
+    |model| check(model, false);
+    car_reaches_100 => Car,
+    bmw_x5_reaches_100 => BmwX5,
+    citroen_c_zero_reaches_100 => CitroenCZero,
+    toyota_prius_reaches_100 => ToyotaPrius,
+    lincoln_mkz_reaches_100 => LincolnMKZ,
+    range_rover_reaches_100 => RangeRoverSportSVR,
+    tesla_model_3_reaches_100 => TeslaModel3,
+    sprinter_reaches_100 => MercedesBenzSprinter,
+    ev_star_reaches_100 => GreenPowerEVStar,
+    bus_reaches_100 => Bus,
+    truck_reaches_100 => Truck,
+    tractor_reaches_100 => Tractor,
 }
 
-speed_tests! {
-    car_reaches_100, car_reaches_100_on_webots_contact => Car,
-    bmw_x5_reaches_100, bmw_x5_reaches_100_on_webots_contact => BmwX5,
-    citroen_c_zero_reaches_100, citroen_c_zero_reaches_100_on_webots_contact => CitroenCZero,
-    toyota_prius_reaches_100, toyota_prius_reaches_100_on_webots_contact => ToyotaPrius,
-    lincoln_mkz_reaches_100, lincoln_mkz_reaches_100_on_webots_contact => LincolnMKZ,
-    range_rover_reaches_100, range_rover_reaches_100_on_webots_contact => RangeRoverSportSVR,
-    tesla_model_3_reaches_100, tesla_model_3_reaches_100_on_webots_contact => TeslaModel3,
-    sprinter_reaches_100, sprinter_reaches_100_on_webots_contact => MercedesBenzSprinter,
-    ev_star_reaches_100, ev_star_reaches_100_on_webots_contact => GreenPowerEVStar,
-    bus_reaches_100, bus_reaches_100_on_webots_contact => Bus,
-    truck_reaches_100, truck_reaches_100_on_webots_contact => Truck,
-    tractor_reaches_100, tractor_reaches_100_on_webots_contact => Tractor,
+model_tests! {
+    |model| check(model, true);
+    car_reaches_100_on_webots_contact => Car,
+    bmw_x5_reaches_100_on_webots_contact => BmwX5,
+    citroen_c_zero_reaches_100_on_webots_contact => CitroenCZero,
+    toyota_prius_reaches_100_on_webots_contact => ToyotaPrius,
+    lincoln_mkz_reaches_100_on_webots_contact => LincolnMKZ,
+    range_rover_reaches_100_on_webots_contact => RangeRoverSportSVR,
+    tesla_model_3_reaches_100_on_webots_contact => TeslaModel3,
+    sprinter_reaches_100_on_webots_contact => MercedesBenzSprinter,
+    ev_star_reaches_100_on_webots_contact => GreenPowerEVStar,
+    bus_reaches_100_on_webots_contact => Bus,
+    truck_reaches_100_on_webots_contact => Truck,
+    tractor_reaches_100_on_webots_contact => Tractor,
 }
 
 #[test]

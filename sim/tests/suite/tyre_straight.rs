@@ -196,18 +196,8 @@ fn mirrored_prius_drives_straight() {
     check_params(Model::ToyotaPrius, params, false);
 }
 
-macro_rules! straight_tests {
-    ($($name:ident => $model:ident),* $(,)?) => {
-        $(
-            #[test]
-            fn $name() {
-                check(Model::$model);
-            }
-        )*
-    };
-}
-
-straight_tests! {
+model_tests! {
+    check;
     car_drives_straight => Car,
     bmw_x5_drives_straight => BmwX5,
     citroen_c_zero_drives_straight => CitroenCZero,
