@@ -32,7 +32,7 @@ fn default_run() -> RunReport {
 fn due_recorder() -> (Simulation, Recorder) {
     let mut sim = Simulation::new(World::new(WorldConfig::default()).unwrap());
     let (car, _) = sim
-        .add_car(Model::BmwX5.params(), VehiclePlacement::default())
+        .add_car(sim::CarBuilder::new(Model::BmwX5.params()).placement(VehiclePlacement::default()))
         .unwrap();
     sim.driver_mut(car).unwrap().set_cruising_speed(30.0);
     for _ in 0..100 {

@@ -117,7 +117,12 @@ impl CarScene {
                 y: (i / GRID_COLUMNS) as f64 * CAR_SPACING,
                 ..VehiclePlacement::default()
             };
-            let (id, report) = sim.add_car_with(CAR_MODEL.params(), tyre, mounting, placement)?;
+            let (id, report) = sim.add_car(
+                sim::CarBuilder::new(CAR_MODEL.params())
+                    .tyre(tyre.clone())
+                    .mounting(mounting)
+                    .placement(placement),
+            )?;
             if !report.is_empty() {
                 return Err(SceneError::Model(InvalidModel {
                     total: report.total(),

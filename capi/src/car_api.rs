@@ -130,7 +130,6 @@ entry_points! {
             if let Ok(d) = robot.simulation.driver_mut(id) {
                 report(d.set_left_steering_angle(angle));
             }
-            robot.apply_steering(id);
         })
     }
 
@@ -141,7 +140,6 @@ entry_points! {
             if let Ok(d) = robot.simulation.driver_mut(id) {
                 report(d.set_right_steering_angle(angle));
             }
-            robot.apply_steering(id);
         })
     }
 

@@ -49,7 +49,6 @@ entry_points! {
             if let Ok(d) = robot.simulation.driver_mut(id) {
                 report(d.set_steering_angle(steering_angle));
             }
-            robot.apply_steering(id);
         })
     }
 

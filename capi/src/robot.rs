@@ -3,16 +3,23 @@
 
 use std::env::{self, VarError};
 use std::ffi::c_int;
+use std::path::PathBuf;
 
 use sim::world_file::{self, WorldDescription};
-use sim::{RobotId, SimError, Simulation, VehicleId, World};
-use vehicle_model::Driver;
+use sim::{RobotId, SimError, Simulation, VehicleId};
 
 use crate::abi::WbDeviceTag;
 use crate::devices;
 
 /// The environment variable that selects the world: a world file path or a shipped model name.
 pub const WORLD_VARIABLE: &str = "VEHICLE_WORLD";
+
+/// The environment variable naming the directory a controller run writes its outputs into
+/// (`telemetry.csv`, `metrics.json`, `replay.glb`), when the run ends or at cleanup.
+pub const OUTPUT_VARIABLE: &str = "VEHICLE_OUT";
+
+/// The name of a controller's run in its outputs (the `scenario` column of `telemetry.csv`).
+pub const CONTROLLER_RUN: &str = "controller";
 
 /// Which of the two libraries a controller has initialised on a car, in initialisation order
 /// (the driver library includes the car library).
@@ -42,19 +49,22 @@ pub(crate) enum Body {
 
 /// The robot a controller talks to (Webots: the controller's connection to its `Robot`).
 pub(crate) struct Robot {
-    /// The world and, for a car, its `vehicle_model::Driver`.
+    /// The world and, for a car, its `vehicle_model::Driver`; it owns the `duration`, the
+    /// failure state and the recording.
     pub(crate) simulation: Simulation,
     /// The car or robot.
     pub(crate) body: Body,
-    /// The world's `duration` (s): stepping reports the end of the simulation from then on.
-    duration: Option<f64>,
-    /// Set when the physics failed: stepping reports the end of the simulation.
-    stopped: bool,
+    /// Where the world came from, and its warnings, for `metrics.json`.
+    source: String,
+    warnings: Vec<String>,
+    /// `VEHICLE_OUT`: where the run's outputs go, until they are written.
+    outputs: Option<PathBuf>,
 }
 
 impl Robot {
     /// Loads the world named by `VEHICLE_WORLD` (unset or empty: the default world, a BmwX5)
-    /// and prints its warnings (fields replaced by their defaults) on stderr.
+    /// and prints its warnings (fields replaced by their defaults) on stderr. With
+    /// `VEHICLE_OUT` set, the run is recorded for its outputs.
     ///
     /// # Errors
     /// What is wrong with the world, in one line naming the file, line, key and value.
@@ -73,47 +83,53 @@ impl Robot {
         for w in &description.warnings {
             eprintln!("Warning: {w}");
         }
-        Robot::build(&description)
+        let outputs = env::var_os(OUTPUT_VARIABLE)
+            .filter(|dir| !dir.is_empty())
+            .map(PathBuf::from);
+        Robot::build(&description, outputs)
     }
 
-    /// Builds the world of `description` with its car (on the world's tyres) or robot: one
-    /// vehicle, the one the controller drives.
-    fn build(description: &WorldDescription) -> Result<Robot, String> {
-        let failed = |e: SimError| format!("cannot build the world {}: {e}", description.source);
-        let mut simulation =
-            Simulation::new(World::new(description.config.clone()).map_err(failed)?);
-        let body = match (description.cars.as_slice(), &description.robot) {
-            ([], Some(r)) => Body::DifferentialWheels(
-                simulation
-                    .world_mut()
-                    .add_differential_wheels(r.params, r.mode, r.placement)
-                    .map_err(failed)?,
-            ),
-            ([car], None) => {
-                let (id, report) = simulation.add_described_car(car).map_err(failed)?;
-                // The loader validated the fields already; anything left is still reported.
-                for w in &report {
-                    eprintln!("Warning: {}: {w}", description.source);
-                }
-                Body::Car {
-                    id,
-                    libraries: Libraries::None,
-                }
-            }
-            _ => {
-                return Err(format!(
-                    "cannot drive the world {}: it holds {}, and a controller drives exactly \
-                     one car or robot",
-                    description.source,
-                    description.vehicles_label()
-                ));
+    /// Builds the world of `description` with its car or robot: one vehicle, the one the
+    /// controller drives; records it if `outputs` names a directory.
+    fn build(description: &WorldDescription, outputs: Option<PathBuf>) -> Result<Robot, String> {
+        let vehicles = (description.cars.len(), description.robot.is_some());
+        if !matches!(vehicles, (1, false) | (0, true)) {
+            return Err(format!(
+                "cannot drive the world {}: it holds {}, and a controller drives exactly \
+                 one car or robot",
+                description.source,
+                description.vehicles_label()
+            ));
+        }
+        let (mut simulation, reports) = Simulation::from_description(description)
+            .map_err(|e| format!("cannot build the world {}: {e}", description.source))?;
+        // The loader validated the fields already; anything left is still reported.
+        for w in reports.iter().flatten() {
+            eprintln!("Warning: {}: {w}", description.source);
+        }
+        let body = match (simulation.car_ids().next(), simulation.robot_ids().next()) {
+            (Some(id), _) => Body::Car {
+                id,
+                libraries: Libraries::None,
+            },
+            (None, Some(id)) => Body::DifferentialWheels(id),
+            (None, None) => {
+                return Err(format!("the world {} holds no vehicle", description.source));
             }
         };
+        if outputs.is_some() {
+            simulation.record(CONTROLLER_RUN);
+        }
         Ok(Robot {
             simulation,
             body,
-            duration: description.duration,
-            stopped: false,
+            source: description.source.clone(),
+            warnings: description
+                .warnings
+                .iter()
+                .map(ToString::to_string)
+                .collect(),
+            outputs,
         })
     }
 
@@ -127,39 +143,31 @@ impl Robot {
         self.simulation.world().time()
     }
 
-    /// True once the world's `duration` has elapsed or the physics has failed.
-    pub(crate) fn is_over(&self) -> bool {
-        let elapsed_ms = self.simulation.world().time_ms() as f64;
-        // The duration is compared in ms with a margin far below one step, so that a duration
-        // that is a whole number of steps ends exactly on that step.
-        self.stopped
-            || self
-                .duration
-                .is_some_and(|d| elapsed_ms >= d * 1000.0 - 1e-6)
-    }
-
-    /// The C return value of a step: -1 once the simulation is over, else 0.
-    fn status(&self) -> c_int {
-        if self.is_over() { -1 } else { 0 }
-    }
-
-    /// Records a physics failure: prints it once and ends the simulation.
-    fn fail(&mut self, error: &SimError) {
-        if !self.stopped {
-            crate::message::error(format_args!("the simulation stopped: {error}."));
-            self.stopped = true;
+    /// The C return value of a step: -1 once the simulation is over, else 0. The run's
+    /// outputs are written when it ends.
+    fn status(&mut self) -> c_int {
+        if self.simulation.is_over() {
+            self.write_outputs();
+            -1
+        } else {
+            0
         }
+    }
+
+    /// Prints a physics failure (once: the simulation is over from then on).
+    fn fail(error: &SimError) {
+        crate::message::error(format_args!("the simulation stopped: {error}."));
     }
 
     /// Advances `steps` basic time steps with the commands in force (Webots: `wb_robot_step`),
     /// stopping early at the end of the simulation. Returns 0, or -1 once it is over.
     pub(crate) fn advance(&mut self, steps: u64) -> c_int {
         for _ in 0..steps {
-            if self.is_over() {
+            if self.simulation.is_over() {
                 break;
             }
-            if let Err(e) = self.simulation.world_mut().step() {
-                self.fail(&e);
+            if let Err(e) = self.simulation.step_physics() {
+                Robot::fail(&e);
             }
         }
         self.status()
@@ -169,12 +177,27 @@ impl Robot {
     /// readings into commands, then the world advances one basic time step. Returns 0, or -1
     /// once the simulation is over (the driver does not run then).
     pub(crate) fn driver_step(&mut self) -> c_int {
-        if !self.is_over()
+        if !self.simulation.is_over()
             && let Err(e) = self.simulation.step()
         {
-            self.fail(&e);
+            Robot::fail(&e);
         }
         self.status()
+    }
+
+    /// Writes the recorded run into the `VEHICLE_OUT` directory, once: when the run ends, or
+    /// at cleanup ([`Drop`]). A failure is printed, as Webots prints a controller's errors.
+    fn write_outputs(&mut self) {
+        let Some(dir) = self.outputs.take() else {
+            return;
+        };
+        match self.simulation.save(&self.source, &self.warnings, &dir) {
+            Ok(_) => {}
+            Err(e) => crate::message::error(format_args!(
+                "cannot write the run's outputs into {OUTPUT_VARIABLE}={}: {e}.",
+                dir.display()
+            )),
+        }
     }
 
     /// The tag of the device `name`, 0 if the robot has none.
@@ -188,28 +211,17 @@ impl Robot {
         }
     }
 
-    /// Sends the driver's commanded front-wheel angles to the steering motors at once, as
-    /// Webots' libraries do (`wb_motor_set_position` in the setters), so that a steering
-    /// command also acts when the controller steps with `wb_robot_step`.
-    pub(crate) fn apply_steering(&mut self, id: VehicleId) {
-        let Ok(angles) = self
-            .simulation
-            .driver(id)
-            .map(Driver::commanded_wheel_angles)
-        else {
-            return;
-        };
-        if let Ok(vehicle) = self.simulation.world_mut().vehicle_mut(id)
-            && let Some(mut commands) = vehicle.commands().copied()
-        {
-            commands.steering = angles;
-            vehicle.set_commands(&commands);
-        }
-    }
-
     /// True if the robot is a car (Webots: its `customData` has the Car PROTO's fields).
     pub(crate) fn is_car(&self) -> bool {
         matches!(self.body, Body::Car { .. })
+    }
+}
+
+impl Drop for Robot {
+    /// `wb_robot_cleanup` (and the end of the process' robot): the outputs of a run that did
+    /// not reach its end are written now.
+    fn drop(&mut self) {
+        self.write_outputs();
     }
 }
 
@@ -221,7 +233,7 @@ mod tests {
     /// The front tyre of the car that `Robot::build` puts in the world of `text`.
     fn front_tyre(text: &str) -> TyreModel<f64> {
         let description = world_file::parse_str("w.toml", text).unwrap();
-        let robot = Robot::build(&description).unwrap();
+        let robot = Robot::build(&description, None).unwrap();
         let Body::Car { id, .. } = robot.body else {
             panic!("expected a car");
         };
@@ -260,7 +272,7 @@ mod tests {
             "[[vehicle]]\n[[vehicle]]\ntranslation = [0, 10, 0]\n",
         )
         .unwrap();
-        let Err(e) = Robot::build(&description) else {
+        let Err(e) = Robot::build(&description, None) else {
             panic!("a world of two cars was accepted");
         };
         assert_eq!(

@@ -84,13 +84,9 @@ fn init_car_of(robot: &mut Robot) -> VehicleId {
             if *libraries == Libraries::None {
                 *libraries = Libraries::Car;
                 // Webots' car library puts the driven wheels in velocity mode at 0 rad/s: the
-                // car stands as if parked until a control mode is chosen. The driver's initial
-                // commands are exactly that.
-                if let Ok(commands) = robot.simulation.driver(id).map(|d| *d.commands())
-                    && let Ok(vehicle) = robot.simulation.world_mut().vehicle_mut(id)
-                {
-                    vehicle.set_commands(&commands);
-                }
+                // car stands as if parked until a control mode is chosen. The id is the
+                // simulation's own, so this cannot fail.
+                let _ = robot.simulation.start_car_library(id);
             }
             id
         }

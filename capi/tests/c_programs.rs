@@ -137,3 +137,65 @@ fn announced_stderr_checker() {
     let stray = "p: start\nstray\n";
     assert!(check_announced_stderr("p", stray).is_err());
 }
+
+/// A controller run with `VEHICLE_OUT` writes `telemetry.csv`, `metrics.json` and
+/// `replay.glb`; its telemetry rows equal those of the same commands given to `vehicle-sim` as
+/// a programme (`--scenario programme`, whose code this runs), value for value, but for the
+/// run's name in the first column. The world puts the car on joints with Webots' tyre and
+/// proportioned brakes, so that nothing of it may be dropped on either way.
+#[test]
+fn a_controller_run_writes_the_outputs_of_the_same_programme() {
+    let world = tests_dir().join("worlds/outputs.toml");
+    let out = scratch().join("outputs-controller");
+    let _ = std::fs::remove_dir_all(&out);
+    let exe = compile(
+        "cc",
+        "c99",
+        &tests_dir().join("outputs.c"),
+        "outputs",
+        &shared_link_flags(),
+    );
+    let mut cmd = Command::new(&exe);
+    cmd.env("VEHICLE_OUT", &out);
+    let r = run_command(cmd, Some(&world.display().to_string()));
+    assert!(r.status.success(), "outputs: {}{}", r.stdout, r.stderr);
+    assert_eq!(r.stderr, "", "outputs: stderr");
+
+    let description = sim::world_file::load_file(&world).unwrap();
+    let report = sim::scenario::run(
+        &description,
+        sim::scenario::Scenario::Programme,
+        &mut |_| {},
+    )
+    .unwrap();
+    let expected = scratch().join("outputs-programme");
+    let _ = std::fs::remove_dir_all(&expected);
+    sim::report::write_data(&report, &[], &expected).unwrap();
+
+    let rows = |dir: &std::path::Path| -> Vec<String> {
+        std::fs::read_to_string(dir.join("telemetry.csv"))
+            .unwrap()
+            .lines()
+            .skip(1)
+            .map(|l| l.split_once(',').unwrap().1.to_string())
+            .collect()
+    };
+    let (controller, programme) = (rows(&out), rows(&expected));
+    // 4 s of 10 ms steps and the state at the start.
+    assert_eq!(controller.len(), 401);
+    assert_eq!(controller, programme);
+    let first = std::fs::read_to_string(out.join("telemetry.csv")).unwrap();
+    assert!(
+        first
+            .lines()
+            .nth(1)
+            .unwrap()
+            .starts_with("controller,BmwX5,0,")
+    );
+
+    let metrics: String = std::fs::read_to_string(out.join("metrics.json")).unwrap();
+    assert!(metrics.contains("\"scenario\":\"controller\""), "{metrics}");
+    assert!(metrics.contains("\"distance_m\""), "{metrics}");
+    let glb = std::fs::read(out.join("replay.glb")).unwrap();
+    assert_eq!(&glb[..4], b"glTF");
+}

@@ -82,7 +82,7 @@ fuzz_target!(|data: &[u8]| {
         let mut world = world_file::with_model(model);
         world.config.basic_time_step_ms = step;
         for car in &mut world.cars {
-            car.spec.mounting = if joints { Mounting::Joints } else { Mounting::Cast };
+            car.mounting = if joints { Mounting::Joints } else { Mounting::Cast };
         }
         run(&world, &calls(&mut u, op), &[])
     };

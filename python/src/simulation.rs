@@ -6,24 +6,26 @@
 //! per car and step (the columns of `vehicle-sim`'s CSV), and the `vehicle-sim` scenarios run
 //! on a fresh copy of the world.
 
-use pyo3::exceptions::{PyIndexError, PyRuntimeError, PyValueError};
+use pyo3::exceptions::{PyIndexError, PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 
 use sim::scenario::{self, Scenario};
-use sim::telemetry::{CSV_HEADER, SAMPLE_COLUMNS, Sample};
+use sim::telemetry::{CSV_HEADER, SAMPLE_COLUMNS, Sample, TelemetryLog};
 use sim::world_file::{self, WorldDescription, WorldFileError};
-use sim::{SimError, VehicleId, World};
+use sim::{CarBuilder, SimError, VehicleId};
 use vehicle_model::Warning;
 
 use crate::WorldError;
 
-/// One driven car and what it recorded.
+/// One driven car.
 struct Car {
     id: VehicleId,
     model: &'static str,
-    samples: Vec<Sample>,
 }
+
+/// The name of a `webots_vehicle.Simulation` run in its outputs (the `scenario` column).
+const RUN: &str = "simulation";
 
 /// A simulation of one world: see the module docs. It belongs to the thread that created it
 /// (`unsendable`: the driver library keeps per-car state in cells, which are not `Sync`);
@@ -34,8 +36,6 @@ pub(crate) struct Simulation {
     simulation: sim::Simulation,
     cars: Vec<Car>,
     warnings: Vec<String>,
-    /// Set when the physics failed; stepping is over.
-    failure: Option<String>,
 }
 
 /// `WorldError` with the error's message and its `file`, `line`, `column` and `key`
@@ -64,46 +64,32 @@ fn warning_text(w: Option<Warning>) -> Option<String> {
 }
 
 impl Simulation {
-    /// Builds the world of `description` with its car (car 0) or DifferentialWheels robot.
+    /// Builds the world of `description` with its cars (car 0 first) and robot.
     fn build(description: WorldDescription) -> PyResult<Simulation> {
-        let world = World::new(description.config.clone()).map_err(|e| sim_error(&e))?;
-        let mut this = Simulation {
-            warnings: description
-                .warnings
-                .iter()
-                .map(ToString::to_string)
-                .collect(),
-            simulation: sim::Simulation::new(world),
-            cars: Vec::new(),
-            failure: None,
+        let (simulation, reports) =
+            sim::Simulation::from_description(&description).map_err(|e| sim_error(&e))?;
+        let source = description.source.clone();
+        let mut warnings: Vec<String> = description
+            .warnings
+            .iter()
+            .map(ToString::to_string)
+            .collect();
+        warnings.extend(reports.iter().flatten().map(|w| format!("{source}: {w}")));
+        let cars = description
+            .cars
+            .iter()
+            .zip(simulation.car_ids())
+            .map(|(c, id)| Car {
+                id,
+                model: c.model.webots_name(),
+            })
+            .collect();
+        Ok(Simulation {
             description,
-        };
-        let source = this.description.source.clone();
-        for car in this.description.cars.clone() {
-            let report = this.add(&car, &source)?;
-            this.warnings.extend(report);
-        }
-        if let Some(r) = this.description.robot.clone() {
-            this.simulation
-                .world_mut()
-                .add_differential_wheels(r.params, r.mode, r.placement)
-                .map_err(|e| sim_error(&e))?;
-        }
-        Ok(this)
-    }
-
-    /// Adds the car of `car` at its `translation`/`rotation`; returns the parameter report.
-    fn add(&mut self, car: &world_file::CarDescription, source: &str) -> PyResult<Vec<String>> {
-        let (id, report) = self
-            .simulation
-            .add_described_car(car)
-            .map_err(|e| sim_error(&e))?;
-        self.cars.push(Car {
-            id,
-            model: car.model.webots_name(),
-            samples: Vec::new(),
-        });
-        Ok(report.iter().map(|w| format!("{source}: {w}")).collect())
+            simulation,
+            cars,
+            warnings,
+        })
     }
 
     fn car(&self, car: usize) -> PyResult<&Car> {
@@ -122,15 +108,10 @@ impl Simulation {
         self.simulation.driver(id).map_err(|e| sim_error(&e))
     }
 
-    /// True once the world's `duration` has elapsed or the physics failed (as the C API's
-    /// `wbu_driver_step` decides -1).
-    fn over(&self) -> bool {
-        let elapsed_ms = self.simulation.world().time_ms() as f64;
-        self.failure.is_some()
-            || self
-                .description
-                .duration
-                .is_some_and(|d| elapsed_ms >= d * 1000.0 - 1e-6)
+    /// Car `car`'s log, empty before the first step.
+    fn log(&self, car: usize) -> PyResult<Option<&TelemetryLog>> {
+        let id = self.car(car)?.id;
+        Ok(self.simulation.car_log(id))
     }
 }
 
@@ -201,7 +182,7 @@ impl Simulation {
     /// True once the world's duration has elapsed (or the physics failed).
     #[getter]
     fn is_over(&self) -> bool {
-        self.over()
+        self.simulation.is_over()
     }
 
     /// Adds the car of the `[vehicle]` table of world-file `text` (named `name` in messages);
@@ -223,7 +204,15 @@ impl Simulation {
             .iter()
             .map(ToString::to_string)
             .collect();
-        warnings.extend(self.add(car, name)?);
+        let (id, report) = self
+            .simulation
+            .add_car(CarBuilder::from(car))
+            .map_err(|e| sim_error(&e))?;
+        self.cars.push(Car {
+            id,
+            model: car.model.webots_name(),
+        });
+        warnings.extend(report.iter().map(|w| format!("{name}: {w}")));
         self.warnings.extend(warnings.iter().cloned());
         Ok((self.cars.len() - 1, warnings))
     }
@@ -246,24 +235,39 @@ impl Simulation {
     }
 
     /// Advances up to `steps` basic time steps (each: every driver steps, then the physics),
-    /// recording one sample per car; stops at the world's duration. Returns False once the
-    /// simulation is over. A physics failure raises RuntimeError (and ends the simulation).
-    fn step(&mut self, steps: u64) -> PyResult<bool> {
+    /// recording every car from the first step on (its state then, and one sample per step);
+    /// stops at the world's duration. Returns False once the simulation is over. A physics
+    /// failure raises RuntimeError (and ends the simulation).
+    ///
+    /// With `drivers` false the drivers do not run: the physics advances with the commands in
+    /// force (a Webots controller's `wb_robot_step` without `wbu_driver_step`); the steering a
+    /// setter commanded since still acts, as in Webots.
+    #[pyo3(signature = (steps, drivers = true))]
+    fn step(&mut self, steps: u64, drivers: bool) -> PyResult<bool> {
+        if steps > 0 && !self.simulation.is_recording() {
+            self.simulation.record(RUN);
+        }
         for _ in 0..steps {
-            if self.over() {
+            if self.simulation.is_over() {
                 break;
             }
-            if let Err(e) = self.simulation.step() {
-                let err = sim_error(&e);
-                self.failure = Some(e.to_string());
-                return Err(err);
-            }
-            for car in &mut self.cars {
-                let sample = Sample::of_car(&self.simulation, car.id).map_err(|e| sim_error(&e))?;
-                car.samples.push(sample);
-            }
+            let stepped = if drivers {
+                self.simulation.step()
+            } else {
+                self.simulation.step_physics()
+            };
+            stepped.map_err(|e| sim_error(&e))?;
         }
-        Ok(!self.over())
+        Ok(!self.simulation.is_over())
+    }
+
+    /// Writes the run recorded so far into `dir` (`telemetry.csv`, `metrics.json`,
+    /// `replay.glb`); returns the paths written (none before the first step).
+    fn save(&self, dir: std::path::PathBuf) -> PyResult<Vec<std::path::PathBuf>> {
+        let warnings: Vec<String> = self.warnings.clone();
+        self.simulation
+            .save(&self.description.source, &warnings, &dir)
+            .map_err(|e| PyOSError::new_err(e.to_string()))
     }
 
     /// Cruise control to `speed` km/h (SPEED mode); returns the driver's warning, if any.
@@ -299,18 +303,31 @@ impl Simulation {
 
     /// The number of samples car `car` has recorded.
     fn sample_count(&self, car: usize) -> PyResult<usize> {
-        Ok(self.car(car)?.samples.len())
+        Ok(self.log(car)?.map_or(0, TelemetryLog::len))
     }
 
     /// The last sample of car `car` (NaN where a quantity does not exist), None before the
     /// first step.
     fn last_sample(&self, car: usize) -> PyResult<Option<Vec<f64>>> {
-        Ok(self.car(car)?.samples.last().map(row))
+        Ok(self
+            .log(car)?
+            .and_then(TelemetryLog::last)
+            .map(|r| r.to_vec()))
     }
 
     /// Every sample of car `car` as native-endian f64 bytes, row-major (rows × columns).
     fn telemetry<'py>(&self, py: Python<'py>, car: usize) -> PyResult<Bound<'py, PyBytes>> {
-        Ok(table(py, &self.car(car)?.samples))
+        let Some(log) = self.log(car)? else {
+            return Ok(PyBytes::new(py, &[]));
+        };
+        let mut bytes = Vec::with_capacity(log.len() * SAMPLE_COLUMNS * 8);
+        log.for_each(|row| {
+            for v in row {
+                bytes.extend_from_slice(&v.to_ne_bytes());
+            }
+        })
+        .map_err(|e| PyOSError::new_err(e.to_string()))?;
+        Ok(PyBytes::new(py, &bytes))
     }
 
     /// Runs the `vehicle-sim` scenario `name` on a fresh copy of this simulation's world file
@@ -338,7 +355,7 @@ impl Simulation {
             .iter()
             .map(ToString::to_string)
             .collect();
-        let files = sim::report::output_names(&report);
+        let files = sim::report::DATA_OUTPUTS;
         let json = sim::report::to_json(&report, &world_warnings, &files);
         let tables = report
             .results
@@ -351,11 +368,6 @@ impl Simulation {
             .collect();
         Ok((json, tables))
     }
-}
-
-/// One sample's values, NaN where a quantity does not exist.
-fn row(s: &Sample) -> Vec<f64> {
-    s.values().iter().map(|v| v.unwrap_or(f64::NAN)).collect()
 }
 
 /// `samples` as native-endian f64 bytes, row-major.

@@ -6,6 +6,7 @@ import os
 import subprocess
 import sys
 from pathlib import Path
+from typing import Optional
 
 import pytest
 
@@ -31,10 +32,15 @@ def webots(monkeypatch):
     reset()
 
 
-def run_controller(script: Path, world: str, timeout: float = 120.0) -> subprocess.CompletedProcess:
+def run_controller(
+    script: Path, world: str, timeout: float = 120.0, out: Optional[Path] = None
+) -> subprocess.CompletedProcess:
     """Runs the controller ``script`` as Webots would start it, in its own process with
-    ``VEHICLE_WORLD=world``."""
+    ``VEHICLE_WORLD=world`` (and ``VEHICLE_OUT=out`` if given)."""
     env = dict(os.environ, VEHICLE_WORLD=world)
+    env.pop("VEHICLE_OUT", None)
+    if out is not None:
+        env["VEHICLE_OUT"] = str(out)
     return subprocess.run(
         [sys.executable, str(script)], env=env, capture_output=True, text=True, timeout=timeout
     )

@@ -1,6 +1,10 @@
 """Webots controller scripts run unchanged, each in its own process with VEHICLE_WORLD, as
 Webots starts a controller."""
 
+import csv
+import json
+import subprocess
+
 from conftest import TESTS, WORLDS, run_controller
 
 
@@ -49,3 +53,48 @@ def test_a_broken_world_ends_the_controller_with_the_world_file_error(tmp_path):
         f"webots_vehicle.WorldError: cannot load the world VEHICLE_WORLD={world}: "
         f"{world}:5:1: unknown key 'vehicle.wheelbse'; did you mean 'wheelbase' or 'wheels'?"
     )
+
+
+def _rows(directory):
+    """The telemetry rows of a run's ``telemetry.csv`` without the run's name."""
+    with open(directory / "telemetry.csv", newline="") as f:
+        return [row[1:] for row in csv.reader(f)][1:]
+
+
+def test_a_driver_controller_with_vehicle_out_writes_the_outputs_of_its_programme(
+    tmp_path, vehicle_sim
+):
+    # The commands of the world's programme, given through the driver library at the same
+    # instants (before the step that starts there).
+    script = tmp_path / "programme_controller.py"
+    script.write_text(
+        "from vehicle import Driver\n"
+        "driver = Driver()\n"
+        "done = set()\n"
+        "while True:\n"
+        "    t = driver.getTime()\n"
+        "    if 'speed' not in done:\n"
+        "        driver.setCruisingSpeed(40.0); done.add('speed')\n"
+        "    if t >= 1.5 - 1e-9 and 'steer' not in done:\n"
+        "        driver.setSteeringAngle(0.1); done.add('steer')\n"
+        "    if t >= 3.0 - 1e-9 and 'brake' not in done:\n"
+        "        driver.setBrakeIntensity(0.6); done.add('brake')\n"
+        "    if driver.step() == -1:\n"
+        "        break\n"
+    )
+    world = WORLDS / "outputs.toml"
+    out = run_controller(script, str(world), out=tmp_path / "controller")
+    assert out.returncode == 0, out.stderr
+    assert out.stderr == ""
+    programme = subprocess.run(
+        [str(vehicle_sim), "--world", str(world), "--out", str(tmp_path / "programme")],
+        capture_output=True,
+        text=True,
+    )
+    assert programme.returncode == 0, programme.stderr
+    controller_rows, programme_rows = _rows(tmp_path / "controller"), _rows(tmp_path / "programme")
+    assert len(controller_rows) == 401  # 4 s of 10 ms steps, and the start
+    assert controller_rows == programme_rows
+    metrics = json.loads((tmp_path / "controller" / "metrics.json").read_text())
+    assert metrics["scenario"] == "controller"
+    assert (tmp_path / "controller" / "replay.glb").read_bytes()[:4] == b"glTF"

@@ -3,6 +3,7 @@
 import csv
 import json
 import math
+import os
 import subprocess
 
 import numpy as np
@@ -118,10 +119,11 @@ def test_cars_step_and_record_telemetry_as_numpy_arrays():
     assert sim.run_for(2.0) is False  # the world ends at 3 s
     assert sim.is_over and sim.step() is False and sim.time == pytest.approx(3.0)
 
+    # The state at the start, then one sample per step.
     t1, t2 = first.telemetry, second.telemetry
-    assert len(t1) == len(t2) == 300
+    assert len(t1) == len(t2) == 301
     assert list(t1.columns) == list(wv.COLUMNS) and len(wv.COLUMNS) == 38
-    np.testing.assert_allclose(t1.time_s, np.arange(1, 301) * 0.01, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(t1.time_s, np.arange(0, 301) * 0.01, rtol=0, atol=1e-12)
     # Speed mode: no engine model, so no rpm or gear (NaN); torque mode has both.
     assert np.isnan(t1["rpm"]).all() and np.isnan(t1["gear"]).all()
     assert (t2.gear[-50:] == 1).all() and (t2.rpm[-50:] > 0).all()
@@ -135,7 +137,7 @@ def test_cars_step_and_record_telemetry_as_numpy_arrays():
     pandas = pytest.importorskip("pandas")
     frame = t1.to_pandas()
     assert isinstance(frame, pandas.DataFrame)
-    assert list(frame.columns) == list(wv.COLUMNS) and len(frame) == 300
+    assert list(frame.columns) == list(wv.COLUMNS) and len(frame) == 301
     assert frame["speed_kmh"].iloc[-1] == t1.speed_kmh[-1]
 
 
@@ -165,3 +167,33 @@ def test_unknown_scenarios_and_wrong_vehicles_are_errors():
     spin = robot.run("spin")
     assert spin.metrics["spin"]["turns"] > 0
     assert set(wv.SCENARIOS) >= {"lane-change", "test-track", "square", "spin"}
+
+
+def test_save_writes_the_run_as_vehicle_sim_writes_one(tmp_path):
+    sim = wv.Simulation(model="ToyotaPrius", duration=1.0)
+    assert sim.save(tmp_path / "empty") == []  # nothing recorded before the first step
+    sim.car.set_cruising_speed(20)
+    sim.run_for(1.0)
+    written = sim.save(tmp_path / "run")
+    assert [os.path.basename(p) for p in written] == [
+        "telemetry.csv",
+        "metrics.json",
+        "replay.glb",
+    ]
+    with open(tmp_path / "run" / "telemetry.csv", newline="") as f:
+        rows = list(csv.reader(f))
+    # The header, the start and 100 steps; the values are the telemetry's, rounded to 1e-6.
+    assert len(rows) == 102 and rows[1][:2] == ["simulation", "ToyotaPrius"]
+    np.testing.assert_allclose(
+        [float(r[2]) for r in rows[1:]], sim.car.telemetry.time_s, rtol=0, atol=1e-6
+    )
+    metrics = json.loads((tmp_path / "run" / "metrics.json").read_text())
+    assert metrics["scenario"] == "simulation"
+    assert metrics["scenarios"]["simulation"]["vehicles"]["ToyotaPrius"]["distance_m"] > 1.0
+
+
+def test_cars_are_added_before_the_first_step():
+    sim = wv.Simulation(model="BmwX5")
+    sim.step()
+    with pytest.raises(RuntimeError, match="add every vehicle before recording starts"):
+        sim.add_car("ToyotaPrius", translation=[0, 10, 0.4])

@@ -232,6 +232,42 @@ def test_every_call_returns_the_c_api_s_value_for_the_same_state(webots, staged_
         c.function("wbu_driver_cleanup")()
 
 
+def test_steering_acts_on_physics_only_steps_alike_in_c_python_and_simulation(
+    webots, staged_capi
+):
+    # Webots' steering setters move the steering motors at once: a controller that then steps
+    # with wb_robot_step (no driver step) steers. The rule lives in the engine, so the C API,
+    # the Python controller and webots_vehicle.Simulation (drivers=False) agree bit for bit.
+    webots.setenv("VEHICLE_WORLD", "BmwX5")
+    c = CApi(staged_capi)
+    try:
+        driver = Driver()
+        c.function("wbu_driver_init")()
+        assert driver.step() == c.function("wbu_driver_step", ctypes.c_int)() == 0
+        driver.setSteeringAngle(0.2)
+        c.function("wbu_driver_set_steering_angle", None, [ctypes.c_double])(0.2)
+        robot_step = c.function("wb_robot_step", ctypes.c_int, [ctypes.c_int])
+        for _ in range(50):
+            assert Robot.step(driver, 10) == robot_step(10) == 0
+        steering = driver.getSteeringAngle()
+        c_steering = c.function("wbu_driver_get_steering_angle", ctypes.c_double)()
+        assert steering == c_steering
+        # The mean of the Ackermann angles of 0.2 rad (0.2006 on the BmwX5), reached.
+        assert abs(steering - 0.2006) < 0.002
+    finally:
+        c.function("wbu_driver_cleanup")()
+    import webots_vehicle as wv
+
+    # The Simulation's telemetry reads the steering as its driver does, at a driver step: one
+    # more (driver) step reads the sensors after the same 51 steps.
+    sim = wv.Simulation("BmwX5")
+    sim.step(1)
+    sim.car.set_steering_angle(0.2)
+    sim.step(50, drivers=False)
+    sim.step(1)
+    assert sim.car.state["steering_rad"] == pytest.approx(steering, rel=0, abs=1e-12)
+
+
 # The shipped models' geometry (m), drive and engine types and gear counts, from Webots'
 # PROTOs (shared/spec webots-vehicle.md §5.1; the C-Zero with its rear tyre in both rear
 # slots): wheelbase, front and rear track, front and rear tyre radius, type, engine type,

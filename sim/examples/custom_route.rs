@@ -8,20 +8,19 @@
 //! A ToyotaPrius laps a 60 m × 30 m rounded rectangle of waypoints (bends of 10 m radius)
 //! with a pure-pursuit steering controller and a speed controller that slows for the bends,
 //! driving only through the Webots driver API (`set_steering_angle`,
-//! `set_cruising_speed`). Each step is recorded with `Sample::of_car`; the run becomes a
-//! `ScenarioResult` (the waypoints drawn as cones, the standard motion metrics and a
-//! cross-track error of its own) in a `RunReport`, which `report::write_outputs` writes as
-//! `telemetry.csv`, `metrics.json` and the SVG plots into OUT_DIR (default
-//! `custom-route-out`).
+//! `set_cruising_speed`). The simulation records the run (`Simulation::record`); its report
+//! (`Simulation::report`: the telemetry, the standard motion metrics, the replay) gets a
+//! cross-track error of its own and the waypoints drawn as cones, and `report::write_outputs`
+//! writes it as `telemetry.csv`, `metrics.json`, the SVG plots and `replay.glb` into OUT_DIR
+//! (default `custom-route-out`).
 
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 use std::path::PathBuf;
-use std::time::Instant;
 
-use sim::report::{self, Outline};
-use sim::scenario::{Metric, RunReport, ScenarioResult, motion_metrics};
-use sim::telemetry::{Sample, Telemetry, VehicleKind};
-use sim::{Simulation, TyreChoice, VehiclePlacement, World, WorldConfig};
+use sim::report;
+use sim::scenario::Metric;
+use sim::telemetry::Sample;
+use sim::{CarBuilder, Simulation, World, WorldConfig};
 use vehicle_model::Model;
 
 /// Straight lengths of the route (m) and the radius of its four bends (m).
@@ -121,24 +120,19 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .nth(1)
             .unwrap_or_else(|| "custom-route-out".into()),
     );
-    let config = WorldConfig::default();
-    let mut sim = Simulation::new(World::new(config.clone())?);
+    let mut sim = Simulation::new(World::new(WorldConfig::default())?);
     let model = Model::ToyotaPrius;
-    let (car, _) = sim.add_car_on(
-        model.params(),
-        &TyreChoice::of_model(model),
-        VehiclePlacement::default(),
-    )?;
+    let (car, _) = sim.add_car(CarBuilder::of_model(model))?;
     let wheelbase = sim.driver(car)?.params().wheelbase;
     let route = route();
     let n = route.len();
     let lap_length = route.len() as f64 * SPACING;
 
-    let start = Instant::now();
-    let mut samples = vec![Sample::of_car(&sim, car)?];
+    // Every step of every vehicle is recorded (in bounded memory) for the report.
+    sim.record("custom-route");
     let (mut index, mut laps, mut max_error) = (0, 0, 0.0_f64);
     while laps < LAPS && sim.world().time() < 120.0 {
-        let s = samples.last().copied().unwrap_or_default();
+        let s = Sample::of_car(&sim, car)?;
         let previous = index;
         index = nearest(&route, index, s.x, s.y);
         if index < previous {
@@ -159,40 +153,25 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         driver.set_steering_angle(steering);
         driver.set_cruising_speed(if bend_ahead { BEND_KMH } else { STRAIGHT_KMH });
         sim.step()?;
-        samples.push(Sample::of_car(&sim, car)?);
     }
 
-    let telemetry = Telemetry {
-        scenario: "custom-route".into(),
-        vehicle: model.webots_name().into(),
-        kind: VehicleKind::Car,
-        samples,
-    };
-    let mut metrics = motion_metrics(&telemetry);
-    metrics.push(Metric::number(
+    // The recorded run (telemetry, motion metrics, replay), with this route's own metrics and
+    // its waypoints drawn as cones.
+    let mut report = sim.report("custom route").ok_or("not recording")??;
+    let result = &mut report.results[0];
+    result.metrics.push(Metric::number(
         "max_route_error_m",
         "largest distance from the route",
         "m",
         max_error,
     ));
-    metrics.push(Metric::number(
+    result.metrics.push(Metric::number(
         "lap_length_m",
         "route length",
         "m",
         lap_length,
     ));
-    let mut result = ScenarioResult::new("custom-route", vec![telemetry]);
-    result.metrics = metrics;
     result.cones = route.iter().map(|(p, _)| *p).collect();
-    let report = RunReport {
-        world: "custom route".into(),
-        vehicle: model.webots_name().into(),
-        scenario: "custom-route".into(),
-        sim_seconds: result.sim_seconds,
-        results: vec![result],
-        wall_seconds: start.elapsed().as_secs_f64(),
-        obstacles: Outline::of_world(&config),
-    };
     let written = report::write_outputs(&report, &[], &out)?;
     print!("{}", report::summary_table(&report));
     let names: Vec<String> = written

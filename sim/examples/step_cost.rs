@@ -27,7 +27,8 @@ fn scene(cars: usize, kmh: f64) -> Result<(Simulation, Vec<VehicleId>), sim::Sim
             y: 20.0 * i as f64,
             ..VehiclePlacement::default()
         };
-        let (id, _) = sim.add_car(Model::BmwX5.params(), placement)?;
+        let (id, _) =
+            sim.add_car(sim::CarBuilder::new(Model::BmwX5.params()).placement(placement))?;
         ids.push(id);
     }
     for _ in 0..100 {

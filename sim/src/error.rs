@@ -187,6 +187,16 @@ pub enum SimError {
     /// A car's brake balance gives a front share outside [0, 1]; nothing was created.
     #[error("{0}")]
     BrakeBalance(vehicle_model::BrakeBalanceError),
+    /// A vehicle was added under a name another vehicle of the simulation has; nothing was
+    /// created.
+    #[error("a vehicle named '{0}' is already in this simulation: names must be unique")]
+    DuplicateName(String),
+    /// A vehicle was added while the simulation records (a recording follows the vehicles it
+    /// started with); nothing was created.
+    #[error(
+        "cannot add '{0}' while the simulation records: add every vehicle before recording starts"
+    )]
+    Recording(String),
 }
 impl SimError {
     /// The [`SimError::NonFinite`] of a part of `owner` in the step ending at `time_ms`.

@@ -51,11 +51,11 @@
 //! (`cargo run --release -p sim --example step_cost` times it on your machine).
 //!
 //! ```
-//! use sim::{Simulation, VehiclePlacement, World, WorldConfig};
+//! use sim::{CarBuilder, Simulation, World, WorldConfig};
 //! use vehicle_model::Model;
 //!
 //! let mut sim = Simulation::new(World::new(WorldConfig::default())?);
-//! let (car, _report) = sim.add_car(Model::ToyotaPrius.params(), VehiclePlacement::default())?;
+//! let (car, _report) = sim.add_car(CarBuilder::of_model(Model::ToyotaPrius))?;
 //! sim.driver_mut(car)?.set_cruising_speed(30.0); // km/h, the Webots driver API
 //! for _ in 0..200 {
 //!     sim.step()?;
@@ -71,6 +71,8 @@ struct ReadmeDoctests;
 
 mod attitude;
 mod body;
+mod car_builder;
+#[cfg(feature = "app")]
 pub mod cli;
 pub mod motor;
 pub mod placement;
@@ -96,6 +98,7 @@ pub use proto_geom::nalgebra;
 
 pub use attitude::RollPitchYaw;
 pub use body::{BodyPose, BodySpec};
+pub use car_builder::CarBuilder;
 pub use config::{
     DEFAULT_BASIC_TIME_STEP_MS, DEFAULT_FRICTION_ITERATIONS, Obstacle, SolverSettings, WorldConfig,
 };

@@ -16,7 +16,7 @@
 //!     Step { at: 0.5, commands: vec![DriverCommand::SteeringAngle(0.1)] },
 //! ]);
 //! let mut sim = Simulation::new(World::new(WorldConfig::default())?);
-//! let (car, _) = sim.add_car(Model::BmwX5.params(), VehiclePlacement::default())?;
+//! let (car, _) = sim.add_car(sim::CarBuilder::new(Model::BmwX5.params()).placement(VehiclePlacement::default()))?;
 //! let mut cursor = programme.cursor();
 //! for _ in 0..100 {
 //!     let t = sim.world().time();

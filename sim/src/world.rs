@@ -295,6 +295,11 @@ impl World {
         }
     }
 
+    /// Why the world stopped stepping, if a step failed ([`World::step`]).
+    pub fn failure(&self) -> Option<&SimError> {
+        self.failure.as_ref()
+    }
+
     /// The number of rapier steps the last `basicTimeStep` took (1 to [`MAX_SUBSTEPS`]).
     pub fn last_substeps(&self) -> usize {
         self.last_substeps

@@ -169,7 +169,7 @@ fn car_pushes_a_box_ahead_of_it() {
     .unwrap();
     let mut sim = Simulation::new(world);
     let (id, _) = sim
-        .add_car(Model::BmwX5.params(), VehiclePlacement::default())
+        .add_car(sim::CarBuilder::new(Model::BmwX5.params()).placement(VehiclePlacement::default()))
         .unwrap();
     let chassis = sim.world().vehicle(id).unwrap().spec().chassis;
     // The front face of the chassis box, ahead of the car origin (rear axle).

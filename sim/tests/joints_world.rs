@@ -23,7 +23,12 @@ const MOUNTING: Mounting = Mounting::Joints;
 fn add_x5(sim: &mut Simulation, placement: VehiclePlacement) -> VehicleId {
     let tyre = TyreChoice::of_model(Model::BmwX5);
     let (id, _) = sim
-        .add_car_with(Model::BmwX5.params(), &tyre, MOUNTING, placement)
+        .add_car(
+            sim::CarBuilder::new(Model::BmwX5.params())
+                .tyre(tyre.clone())
+                .mounting(MOUNTING)
+                .placement(placement),
+        )
         .unwrap();
     id
 }
@@ -208,7 +213,7 @@ fn a_car_pushes_a_200_kg_box_with_its_front_wheels() {
 fn test_track(mounting: Mounting) -> Vec<(String, String, f64)> {
     let mut world = world_file::default_world();
     for car in &mut world.cars {
-        car.spec.mounting = mounting;
+        car.mounting = mounting;
         car.brake_balance = BrakeBalance::Proportioned;
     }
     let report = scenario::run(&world, Scenario::TestTrack, &mut |_| {}).unwrap();

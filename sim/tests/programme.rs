@@ -58,11 +58,11 @@ fn a_programme_drives_as_the_same_driver_calls() {
     let car = &w.cars[0];
     let mut sim = Simulation::new(World::new(w.config.clone()).unwrap());
     let (id, _) = sim
-        .add_car_with(
-            car.params.clone(),
-            &car.tyre,
-            car.spec.mounting,
-            car_placement(&car.params),
+        .add_car(
+            sim::CarBuilder::new(car.params.clone())
+                .tyre(car.tyre.clone())
+                .mounting(car.mounting)
+                .placement(car_placement(&car.params)),
         )
         .unwrap();
     let mut samples = vec![Sample::of_car(&sim, id).unwrap()];

@@ -218,13 +218,15 @@ fn robot_replay_moves_the_robot_and_turns_its_wheels() {
 fn two_cars_and_their_indicators_in_one_replay() {
     let mut sim = Simulation::new(World::new(WorldConfig::default()).unwrap());
     let (a, _) = sim
-        .add_car(Model::BmwX5.params(), VehiclePlacement::default())
+        .add_car(sim::CarBuilder::new(Model::BmwX5.params()).placement(VehiclePlacement::default()))
         .unwrap();
     let beside = VehiclePlacement {
         y: 5.0,
         ..VehiclePlacement::default()
     };
-    let (b, _) = sim.add_car(Model::ToyotaPrius.params(), beside).unwrap();
+    let (b, _) = sim
+        .add_car(sim::CarBuilder::new(Model::ToyotaPrius.params()).placement(beside))
+        .unwrap();
     sim.driver_mut(a).unwrap().set_cruising_speed(20.0);
     sim.driver_mut(b).unwrap().set_cruising_speed(10.0);
     sim.driver_mut(b)
@@ -276,7 +278,7 @@ fn a_minute_of_driving_at_the_highest_keyframe_rate_stays_under_2_mb() {
     };
     let mut sim = Simulation::new(World::new(config).unwrap());
     let (car, _) = sim
-        .add_car(Model::BmwX5.params(), VehiclePlacement::default())
+        .add_car(sim::CarBuilder::new(Model::BmwX5.params()).placement(VehiclePlacement::default()))
         .unwrap();
     sim.driver_mut(car).unwrap().set_cruising_speed(50.0);
     sim.driver_mut(car).unwrap().set_steering_angle(0.1);

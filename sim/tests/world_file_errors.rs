@@ -404,6 +404,6 @@ fn brake_balance_names_shares_and_refusals() {
     // The simulator's driver brakes with it.
     let w = parse_str("w.toml", "[vehicle]\nbrake_balance = 0.7\n").unwrap();
     let mut sim = sim::Simulation::new(sim::World::new(w.config.clone()).unwrap());
-    let (id, _) = sim.add_described_car(&w.cars[0]).unwrap();
+    let (id, _) = sim.add_car(sim::CarBuilder::from(&w.cars[0])).unwrap();
     assert_eq!(sim.driver(id).unwrap().brake_front_share(), 0.7);
 }

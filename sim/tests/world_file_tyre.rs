@@ -184,7 +184,11 @@ fn the_world_s_tyres_reach_a_simulated_car() {
     let car = w.car().unwrap();
     let mut sim = Simulation::new(World::new(w.config.clone()).unwrap());
     let (id, _) = sim
-        .add_car_on(car.params.clone(), &car.tyre, VehiclePlacement::default())
+        .add_car(
+            sim::CarBuilder::new(car.params.clone())
+                .tyre(car.tyre.clone())
+                .placement(VehiclePlacement::default()),
+        )
         .unwrap();
     let contact = TyreModel::Webots(WebotsContact {
         force_dependent_slip: [0.001, 0.002],
@@ -193,7 +197,7 @@ fn the_world_s_tyres_reach_a_simulated_car() {
     assert_eq!((spec.tyres.front, spec.tyres.rear), (contact, contact));
     // `add_car` keeps the passenger-car slip-based tyre.
     let (id, _) = sim
-        .add_car(Model::Truck.params(), VehiclePlacement::default())
+        .add_car(sim::CarBuilder::new(Model::Truck.params()).placement(VehiclePlacement::default()))
         .unwrap();
     let TyreModel::MagicFormula(front) = sim.world().vehicle(id).unwrap().spec().tyres.front else {
         panic!("expected the slip-based tyre");

@@ -13,7 +13,8 @@ world file or a shipped car model name; unset: a BmwX5 on flat ground, ``basicTi
 10 ms), loaded when the first ``Robot`` (or ``Supervisor``, ``Driver``, ``Car``) is created,
 as the C API loads it in ``wb_robot_init``. A world that cannot be loaded raises
 :class:`WorldError`, whose message names the file, line and key. The world's ``duration``
-makes ``step`` return -1.
+makes ``step`` return -1. With ``VEHICLE_OUT=DIR`` the run is recorded and written into
+``DIR`` (``telemetry.csv``, ``metrics.json``, ``replay.glb``) when it ends or the process exits.
 
 Only the calls a vehicle controller uses exist: ``step``, ``getTime``, ``getBasicTimeStep``,
 ``getDevice`` and ``getName``. Devices are names only (there is no device API, as in the C
@@ -21,6 +22,7 @@ API of this simulator): ``getDevice`` returns a :class:`Device` for the car's de
 ``None`` for names the robot does not have. Warnings go to stderr with Webots' texts.
 """
 
+import atexit
 import numbers
 import operator
 import sys
@@ -86,6 +88,10 @@ class Robot:
                 file=sys.stderr,
             )
         _native.wb_robot_init()
+        if Robot.created is None:
+            # The process ends with wb_robot_cleanup, as a Webots controller's does: a run
+            # recorded under VEHICLE_OUT writes its outputs then if it has not ended before.
+            atexit.register(_native.wb_robot_cleanup)
         Robot.created = self
         self._devices: Dict[str, Device] = {}
 

@@ -118,8 +118,9 @@ class Simulation:
     def model(self, car: int) -> str: ...
     def geometry(self, car: int) -> Tuple[float, float, float, float, float]:
         """Wheelbase, front track, rear track, front and rear tyre radius (m)."""
-    def step(self, steps: int) -> bool:
-        """Up to ``steps`` steps; False once the duration has elapsed."""
+    def step(self, steps: int, drivers: bool = True) -> bool:
+        """Up to ``steps`` steps (physics only if not ``drivers``); False once the duration has
+        elapsed."""
     def set_cruising_speed(self, car: int, speed: float) -> Optional[str]:
         """km/h; the driver's warning, if any."""
     def set_steering_angle(self, car: int, angle: float) -> Optional[str]:
@@ -127,6 +128,8 @@ class Simulation:
     def set_throttle(self, car: int, throttle: float) -> Optional[str]: ...
     def set_brake_intensity(self, car: int, intensity: float) -> Optional[str]: ...
     def set_gear(self, car: int, gear: int) -> Optional[str]: ...
+    def save(self, directory: str) -> List[str]:
+        """telemetry.csv, metrics.json and replay.glb of the run so far."""
     def sample_count(self, car: int) -> int: ...
     def last_sample(self, car: int) -> Optional[List[float]]: ...
     def telemetry(self, car: int) -> bytes:

@@ -111,7 +111,9 @@ class SimCar:
 
     @property
     def telemetry(self) -> Telemetry:
-        """Every sample recorded since the car was added, one per step."""
+        """Every sample of the run: the car's state at the first step's start, then one per
+        step (the rows of ``telemetry.csv``, as ``vehicle-sim`` records them). Long runs stay
+        bounded in memory: older samples wait in a temporary file until asked for."""
         return Telemetry(self._core.telemetry(self._index), f"car {self._index} ({self.model})")
 
     def __repr__(self) -> str:
@@ -252,8 +254,8 @@ class Simulation:
     def add_car(self, model: str = "Car", **fields: Any) -> SimCar:
         """Adds a car of the shipped ``model`` with ``fields`` overriding its ``Car`` fields in
         world-file vocabulary, e.g. ``add_car("ToyotaPrius", translation=[0, 5, 0.4],
-        rotation=[0, 0, 1, 0.5], mounting="joints")`` (m, rad). It starts at rest at the
-        current time; its telemetry starts with the next step."""
+        rotation=[0, 0, 1, 0.5], mounting="joints")`` (m, rad). Cars are added before the
+        first step (the run is recorded from then on): afterwards this raises RuntimeError."""
         text = "[vehicle]\n" + document({"model": model, **fields})
         index, car_warnings = self._core.add_car("<add_car keyword arguments>", text)
         for w in car_warnings:
@@ -262,11 +264,20 @@ class Simulation:
         self._cars.append(car)
         return car
 
-    def step(self, steps: int = 1) -> bool:
+    def step(self, steps: int = 1, drivers: bool = True) -> bool:
         """Advances ``steps`` basic time steps: each runs every car's driver library, then the
         physics, then records a sample per car. Returns False once the world's duration has
-        elapsed (the steps past it are not run), True otherwise."""
-        return self._core.step(max(0, int(steps)))
+        elapsed (the steps past it are not run), True otherwise. With ``drivers=False`` only
+        the physics runs, with the commands in force (Webots' ``wb_robot_step`` without
+        ``wbu_driver_step``); a steering angle set since still acts, as in Webots."""
+        return self._core.step(max(0, int(steps)), bool(drivers))
+
+    def save(self, directory: Union[str, "os.PathLike[str]"]) -> List[str]:
+        """Writes the run so far into ``directory`` (created if needed) as ``vehicle-sim``
+        writes a run: ``telemetry.csv``, ``metrics.json`` and ``replay.glb`` (the SVG plots
+        are drawn from them by ``vehicle-sim plot DIRECTORY``). Returns the paths written;
+        none before the first step."""
+        return [str(p) for p in self._core.save(os.fspath(directory))]
 
     def run_for(self, seconds: float) -> bool:
         """Steps for ``seconds`` of simulated time (rounded up to whole steps); as

@@ -5,6 +5,7 @@
 //! [`main`] is the whole program with its streams and exit code passed in, so tests run it
 //! in-process.
 
+mod plot;
 mod sweep;
 
 use std::io::{IsTerminal, Write};
@@ -21,6 +22,7 @@ use crate::report;
 use crate::scenario::{self, Progress, Scenario};
 use crate::world_file::{self, WorldDescription};
 
+pub use plot::PlotOptions;
 pub use sweep::{DEFAULT_SWEEP_DIR, MergeOptions, ShardChoice, SweepOptions};
 
 /// Exit code of a successful run.
@@ -120,7 +122,7 @@ pub struct Options {
     pub seed: Option<u64>,
 }
 
-/// The subcommands: sweeps.
+/// The subcommands: sweeps, and plots of a run written elsewhere.
 #[derive(Debug, Clone, PartialEq, Eq, Subcommand)]
 pub enum Command {
     /// Run one scenario on every case of a sweep file (axes over world-file keys) on every
@@ -128,6 +130,9 @@ pub enum Command {
     Sweep(SweepOptions),
     /// Merge the output directories of a sweep's shards into one results.csv in case order
     SweepMerge(MergeOptions),
+    /// Draw the SVG plots of a run from its telemetry.csv (a controller run under
+    /// VEHICLE_OUT, a Python Simulation.save, ...), into the same directory
+    Plot(PlotOptions),
 }
 
 fn after_help() -> String {
@@ -227,6 +232,7 @@ pub fn main(
     match &options.command {
         Some(Command::Sweep(o)) => return sweep::sweep_main(o, out, err, err_is_terminal),
         Some(Command::SweepMerge(o)) => return sweep::merge_main(o, out, err),
+        Some(Command::Plot(o)) => return plot::plot_main(o, out, err),
         None => {}
     }
     let world = match load_world(&options) {

@@ -32,7 +32,8 @@ use std::io;
 use proto_geom::export::{AnimationError, Scene};
 
 pub use recorder::{
-    CarFrame, CarModel, Frame, MAX_KEYFRAME_RATE, Recorder, Recording, RobotFrame, RobotModel,
+    CarFrame, CarModel, Frame, MAX_FRAMES, MAX_KEYFRAME_RATE, Recorder, Recording, RobotFrame,
+    RobotModel,
 };
 
 /// One part of a run: a recording, its name and the lines of its course.

@@ -19,6 +19,11 @@ use crate::world::World;
 /// only grow the file.
 pub const MAX_KEYFRAME_RATE: f64 = 60.0;
 
+/// The most keyframes a recording holds (10 minutes at [`MAX_KEYFRAME_RATE`]): a longer run
+/// halves its keyframe rate each time it reaches this, so that its replay stays bounded in
+/// memory (a few kB a frame) and in file size.
+pub const MAX_FRAMES: usize = 36_000;
+
 /// How a car is drawn: its `proto-geom` wheel layout (the Webots `VehicleWheel` meshes of its
 /// own wheels at its own wheelbase and tracks) and its body box.
 #[derive(Debug, Clone, PartialEq)]
@@ -209,7 +214,7 @@ impl Recording {
 /// use vehicle_model::Model;
 ///
 /// let mut sim = Simulation::new(World::new(WorldConfig::default())?); // 10 ms steps
-/// sim.add_car(Model::BmwX5.params(), VehiclePlacement::default())?;
+/// sim.add_car(sim::CarBuilder::new(Model::BmwX5.params()).placement(VehiclePlacement::default()))?;
 /// let mut recorder = Recorder::for_simulation(&sim);
 /// for _ in 0..101 {
 ///     sim.step()?;
@@ -290,6 +295,18 @@ impl Recorder {
     fn push(&mut self, world: &World) {
         self.recording.frames.push(Frame::of(world));
         self.last_ms = world.time_ms();
+        if self.recording.frames.len() > MAX_FRAMES {
+            // Every other frame goes, the first and the newest stay (MAX_FRAMES is even), and
+            // the keyframes come half as often from now on: a run of any length keeps at most
+            // MAX_FRAMES + 1 frames, evenly spaced.
+            let mut index = 0;
+            self.recording.frames.retain(|_| {
+                index += 1;
+                index % 2 == 1
+            });
+            self.period_ms *= 2;
+            self.next_ms = self.last_ms + self.period_ms;
+        }
     }
 
     /// Ends the recording with the present state of `world` (unless the last frame is already
@@ -299,5 +316,38 @@ impl Recorder {
             self.push(world);
         }
         self.recording
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::config::WorldConfig;
+
+    #[test]
+    fn a_long_run_keeps_at_most_max_frames_evenly_spaced() {
+        // 100 ms steps: a keyframe every step (60 per second would be every 16.7 ms).
+        let config = WorldConfig {
+            basic_time_step_ms: 100,
+            ..WorldConfig::default()
+        };
+        let mut world = World::new(config).unwrap();
+        let mut recorder = Recorder::for_world(&world);
+        let steps = 3 * MAX_FRAMES;
+        for _ in 0..steps {
+            world.step().unwrap();
+            recorder.sample(&world);
+        }
+        let recording = recorder.finish(&world);
+        let frames = &recording.frames;
+        assert!(frames.len() <= MAX_FRAMES + 1, "{} frames", frames.len());
+        // Halved twice: the first frame, then one every 4 steps (0.4 s) to the end.
+        assert_eq!(frames.first().map(|f| f.time), Some(0.0));
+        let end = steps as f64 * 0.1;
+        assert!((frames.last().map_or(0.0, |f| f.time) - end).abs() < 1e-9);
+        for pair in frames.windows(2) {
+            let dt = pair[1].time - pair[0].time;
+            assert!((dt - 0.4).abs() < 1e-9, "{dt}");
+        }
     }
 }

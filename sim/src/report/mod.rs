@@ -1,8 +1,15 @@
 //! What a run leaves behind: the summary table, the metrics as JSON, and the output directory
-//! (telemetry CSV, SVG plots, JSON). Every function takes any [`RunReport`]: a built-in
-//! scenario's, a programme's, or one put together from a run driven through the public API.
+//! (telemetry CSV, JSON, the 3D replay and, with the `app` feature, the SVG plots). Every
+//! function takes any [`RunReport`]: a built-in scenario's, a programme's, or one put together
+//! from a run driven through the public API ([`Simulation::report`](crate::Simulation::report)).
+//!
+//! The data files ([`write_data`]: `telemetry.csv`, `metrics.json`, `replay.glb`) are the
+//! engine's and every front-end writes them (the C API and Python under `VEHICLE_OUT`); the
+//! plots need plotters and are the application's ([`write_outputs`], `vehicle-sim plot`).
 
+#[cfg(feature = "app")]
 mod figures;
+#[cfg(feature = "app")]
 mod plot;
 
 use std::fs::File;
@@ -14,7 +21,9 @@ use std::fmt::Write as _;
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
 pub use crate::config::{Outline, OutlineKind};
+#[cfg(feature = "app")]
 pub use figures::figures;
+#[cfg(feature = "app")]
 pub use plot::{Figure, Panel, PlotError, Series, SeriesKind};
 
 use crate::scenario::{Metric, RunReport, ScenarioResult, Value};
@@ -324,12 +333,17 @@ pub enum OutputError {
         source: csv::Error,
     },
     /// A plot could not be drawn.
+    #[cfg(feature = "app")]
     #[error(transparent)]
     Plot(#[from] PlotError),
 }
 
+/// The data files every run writes ([`write_data`]), in order.
+pub const DATA_OUTPUTS: [&str; 3] = [TELEMETRY_CSV, METRICS_JSON, REPLAY_GLB];
+
 /// The names of the files [`write_outputs`] writes for `report`: `telemetry.csv`,
 /// `metrics.json`, the plots of [`figures`] and `replay.glb`, in that order.
+#[cfg(feature = "app")]
 pub fn output_names(report: &RunReport) -> Vec<&'static str> {
     [TELEMETRY_CSV, METRICS_JSON]
         .into_iter()
@@ -338,63 +352,103 @@ pub fn output_names(report: &RunReport) -> Vec<&'static str> {
         .collect()
 }
 
-/// Writes `telemetry.csv`, `metrics.json`, the plots of [`figures`] and `replay.glb` into `dir` (created
-/// if needed), removes the [`KNOWN_OUTPUTS`] of an earlier run that this one does not write,
-/// and returns the paths written.
+/// Writes `telemetry.csv`, `metrics.json`, the plots of [`figures`] and `replay.glb` into
+/// `dir` (created if needed), removes the [`KNOWN_OUTPUTS`] of an earlier run that this one
+/// does not write, and returns the paths written.
 ///
 /// # Errors
 /// The first error, with the path it concerns.
+#[cfg(feature = "app")]
 pub fn write_outputs(
     report: &RunReport,
     world_warnings: &[String],
     dir: &Path,
 ) -> Result<Vec<PathBuf>, OutputError> {
-    let io = |path: &Path| {
-        let path = path.to_path_buf();
-        move |source| OutputError::Io { path, source }
-    };
     let plots = figures(report)
         .into_iter()
         .map(|(name, f)| f.to_svg().map(|svg| (name, svg)))
         .collect::<Result<Vec<_>, _>>()?;
     let names = output_names(report);
-    std::fs::create_dir_all(dir).map_err(io(dir))?;
+    let telemetry = |out: &mut dyn std::io::Write| {
+        write_csv(out, report.results.iter().flat_map(|r| &r.telemetry))
+    };
+    let mut written = write_files(report, world_warnings, dir, &names, &telemetry)?;
+    for (name, svg) in &plots {
+        written.push(write_file(dir, name, svg.as_bytes())?);
+    }
+    // The replay last, as the list of names says.
+    let glb = written.remove(2);
+    written.push(glb);
+    Ok(written)
+}
+
+/// Writes the data files of `report` into `dir` (created if needed): `telemetry.csv`,
+/// `metrics.json` and `replay.glb` ([`DATA_OUTPUTS`]); removes the [`KNOWN_OUTPUTS`] of an
+/// earlier run (its plots included) so that the directory never mixes two runs; returns the
+/// paths written. This is what a controller run writes under `VEHICLE_OUT`; `vehicle-sim plot
+/// DIR` draws the plots from them.
+///
+/// # Errors
+/// The first error, with the path it concerns.
+pub fn write_data(
+    report: &RunReport,
+    world_warnings: &[String],
+    dir: &Path,
+) -> Result<Vec<PathBuf>, OutputError> {
+    let telemetry = |out: &mut dyn std::io::Write| {
+        write_csv(out, report.results.iter().flat_map(|r| &r.telemetry))
+    };
+    write_files(report, world_warnings, dir, &DATA_OUTPUTS, &telemetry)
+}
+
+/// The I/O error of `path`.
+fn io_error(path: &Path) -> impl FnOnce(std::io::Error) -> OutputError {
+    let path = path.to_path_buf();
+    move |source| OutputError::Io { path, source }
+}
+
+/// Writes `bytes` into `dir/name`; returns the path.
+fn write_file(dir: &Path, name: &str, bytes: &[u8]) -> Result<PathBuf, OutputError> {
+    let path = dir.join(name);
+    let mut file = File::create(&path).map_err(io_error(&path))?;
+    file.write_all(bytes).map_err(io_error(&path))?;
+    Ok(path)
+}
+
+/// Writes a run's telemetry as CSV into the writer it is given.
+pub(crate) type TelemetryWriter<'a> =
+    dyn Fn(&mut dyn std::io::Write) -> Result<(), csv::Error> + 'a;
+
+/// Creates `dir`, removes the known outputs not in `names`, and writes the telemetry (by
+/// `telemetry`), the metrics of `report` (listing `names`) and its replay; returns their paths
+/// in that order.
+pub(crate) fn write_files(
+    report: &RunReport,
+    world_warnings: &[String],
+    dir: &Path,
+    names: &[&str],
+    telemetry: &TelemetryWriter<'_>,
+) -> Result<Vec<PathBuf>, OutputError> {
+    std::fs::create_dir_all(dir).map_err(io_error(dir))?;
     for stale in KNOWN_OUTPUTS.iter().filter(|n| !names.contains(n)) {
         let path = dir.join(stale);
         match std::fs::remove_file(&path) {
-            Err(e) if e.kind() != std::io::ErrorKind::NotFound => return Err(io(&path)(e)),
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => return Err(io_error(&path)(e)),
             _ => {}
         }
     }
-    let mut written = Vec::with_capacity(names.len());
     let path = dir.join(TELEMETRY_CSV);
-    let file = File::create(&path).map_err(io(&path))?;
-    write_csv(
-        BufWriter::new(file),
-        report.results.iter().flat_map(|r| &r.telemetry),
-    )
-    .map_err(|source| OutputError::Csv {
+    let file = File::create(&path).map_err(io_error(&path))?;
+    telemetry(&mut BufWriter::new(file)).map_err(|source| OutputError::Csv {
         path: path.clone(),
         source,
     })?;
-    written.push(path);
-    let mut write = |name: &str, bytes: &[u8]| -> Result<(), OutputError> {
-        let path = dir.join(name);
-        let mut file = File::create(&path).map_err(io(&path))?;
-        file.write_all(bytes).map_err(io(&path))?;
-        written.push(path);
-        Ok(())
-    };
-    write(
-        METRICS_JSON,
-        (to_json(report, world_warnings, &names) + "\n").as_bytes(),
-    )?;
-    for (name, svg) in &plots {
-        write(name, svg.as_bytes())?;
-    }
-    let glb = crate::replay::to_glb(&report.replay_parts()).map_err(io(&dir.join(REPLAY_GLB)))?;
-    write(REPLAY_GLB, &glb)?;
-    Ok(written)
+    let metrics = to_json(report, world_warnings, names) + "\n";
+    let json = write_file(dir, METRICS_JSON, metrics.as_bytes())?;
+    let glb =
+        crate::replay::to_glb(&report.replay_parts()).map_err(io_error(&dir.join(REPLAY_GLB)))?;
+    let glb = write_file(dir, REPLAY_GLB, &glb)?;
+    Ok(vec![path, json, glb])
 }
 
 #[cfg(test)]
@@ -485,6 +539,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "app")]
     fn a_run_replaces_the_known_outputs_of_an_earlier_one() {
         let dir = std::env::temp_dir().join(format!("sim-report-stale-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);

@@ -4,6 +4,7 @@
 
 use vehicle_model::Driver;
 
+use crate::car_builder::CarBuilder;
 use crate::replay::Recorder;
 use crate::simulation::Simulation;
 use crate::telemetry::{Sample, Telemetry, VehicleKind};
@@ -49,7 +50,7 @@ impl CarRig {
     ) -> Result<Self, ScenarioError> {
         let mut sim = Simulation::new(World::new(desc.config.clone())?);
         // The world file validated the params already: the report is empty.
-        let (id, _) = sim.add_described_car(car)?;
+        let (id, _) = sim.add_car(CarBuilder::from(car))?;
         let vehicle = sim.world().vehicle(id)?;
         let (state, spec) = (*vehicle.state(), *vehicle.spec());
         let samples = vec![Sample::of_car(&sim, id)?];

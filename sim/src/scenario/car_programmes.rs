@@ -139,7 +139,8 @@ fn accel_speed(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
 
 fn accel_torque(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult, ScenarioError> {
     let auto = AutoShiftParams::for_engine(rig.driver()?.powertrain().engine());
-    if let Err(e) = rig.driver_mut()?.set_automatic_gearbox(Some(auto)) {
+    let refused = rig.driver_mut()?.set_automatic_gearbox(Some(auto));
+    if let Err(e) = refused {
         rig.note(format!("automatic gearbox refused ({e}): first gear only"));
     }
     rig.driver_mut()?.set_gear(1);

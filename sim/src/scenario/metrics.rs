@@ -1,6 +1,7 @@
 //! Metrics of any vehicle's motion, from its telemetry alone.
 
 use core::f64::consts::{PI, TAU};
+use std::collections::VecDeque;
 
 use crate::telemetry::{Sample, Telemetry};
 
@@ -11,30 +12,104 @@ use super::Metric;
 /// behaviour.
 pub(crate) const ACCEL_WINDOW: f64 = 0.1;
 
-/// The largest and smallest 0.1 s moving average of `f` over `samples`; `None` when no sample
-/// has a value.
-fn smoothed_extremes(samples: &[Sample], f: impl Fn(&Sample) -> Option<f64>) -> Option<[f64; 2]> {
-    let values: Vec<(f64, f64)> = samples
-        .iter()
-        .filter_map(|s| f(s).filter(|v| v.is_finite()).map(|v| (s.time, v)))
-        .collect();
-    let mut out: Option<[f64; 2]> = None;
-    let (mut start, mut sum) = (0, 0.0);
-    for (end, &(t, v)) in values.iter().enumerate() {
-        sum += v;
-        while values
-            .get(start)
-            .is_some_and(|&(t0, _)| t - t0 >= ACCEL_WINDOW - 1e-9)
+/// The largest and smallest 0.1 s moving average of a quantity, fed one value at a time
+/// (a run of any length in the memory of one window).
+#[derive(Debug, Clone, Default)]
+struct SmoothedExtremes {
+    /// The values of the current window: time (s) and value.
+    window: VecDeque<(f64, f64)>,
+    sum: f64,
+    extremes: Option<[f64; 2]>,
+}
+
+impl SmoothedExtremes {
+    /// Adds the value `v` at time `t` (s); a missing or non-finite value is skipped.
+    fn push(&mut self, t: f64, v: Option<f64>) {
+        let Some(v) = v.filter(|v| v.is_finite()) else {
+            return;
+        };
+        self.window.push_back((t, v));
+        self.sum += v;
+        // The same arithmetic, in the same order, as a sum over a slice with a moving start.
+        while let Some(&(t0, v0)) = self.window.front()
+            && t - t0 >= ACCEL_WINDOW - 1e-9
         {
-            sum -= values.get(start).map_or(0.0, |&(_, v0)| v0);
-            start += 1;
+            self.sum -= v0;
+            self.window.pop_front();
         }
-        let mean = sum / (end + 1 - start) as f64;
-        let [lo, hi] = out.get_or_insert([mean, mean]);
+        // The value just pushed is never evicted (t − t = 0): the window holds at least it.
+        let mean = self.sum / self.window.len() as f64;
+        let [lo, hi] = self.extremes.get_or_insert([mean, mean]);
         *lo = lo.min(mean);
         *hi = hi.max(mean);
     }
-    out
+}
+
+/// What [`motion_metrics`] measures, fed one sample at a time: a run of any length is
+/// measured in constant memory ([`Simulation::report`](crate::Simulation::report) feeds it
+/// from a [`TelemetryLog`](crate::telemetry::TelemetryLog)).
+#[derive(Debug, Clone, Default)]
+pub struct MotionMeter {
+    last: Option<Sample>,
+    distance: f64,
+    lateral: SmoothedExtremes,
+    longitudinal: SmoothedExtremes,
+}
+
+impl MotionMeter {
+    /// A meter that has seen nothing.
+    pub fn new() -> Self {
+        MotionMeter::default()
+    }
+
+    /// Takes the next sample (in time order).
+    pub fn push(&mut self, s: &Sample) {
+        if let Some(a) = &self.last {
+            self.distance += (s.x - a.x).hypot(s.y - a.y);
+        }
+        self.lateral.push(s.time, s.lateral_accel);
+        self.longitudinal.push(s.time, s.longitudinal_accel);
+        self.last = Some(*s);
+    }
+
+    /// The metrics of the samples so far ([`motion_metrics`]).
+    pub fn metrics(&self) -> Vec<Metric> {
+        let Some(last) = &self.last else {
+            return Vec::new();
+        };
+        let heading = (last.yaw + PI).rem_euclid(TAU) - PI;
+        let mut metrics = vec![
+            Metric::number("distance_m", "distance travelled", "m", self.distance),
+            Metric::number("final_x_m", "final x", "m", last.x),
+            Metric::number("final_y_m", "final y", "m", last.y),
+            Metric::number("final_heading_rad", "final heading", "rad", heading),
+        ];
+        if let Some([lo, hi]) = self.lateral.extremes {
+            metrics.push(Metric::number(
+                "max_lateral_accel_mps2",
+                "peak lateral acceleration (0.1 s mean)",
+                "m/s^2",
+                lo.abs().max(hi.abs()),
+            ));
+        }
+        if let Some([lo, hi]) = self.longitudinal.extremes {
+            metrics.extend([
+                Metric::number(
+                    "max_accel_mps2",
+                    "peak acceleration (0.1 s mean)",
+                    "m/s^2",
+                    hi.max(0.0),
+                ),
+                Metric::number(
+                    "max_decel_mps2",
+                    "peak deceleration (0.1 s mean)",
+                    "m/s^2",
+                    (-lo).max(0.0),
+                ),
+            ]);
+        }
+        metrics
+    }
 }
 
 /// What any vehicle's telemetry tells: `distance_m` (path length of the origin),
@@ -43,48 +118,11 @@ fn smoothed_extremes(samples: &[Sample], f: impl Fn(&Sample) -> Option<f64>) -> 
 /// forward acceleration) and `max_decel_mps2` (largest deceleration, positive), each a 0.1 s
 /// moving average. Empty telemetry gives no metrics.
 pub fn motion_metrics(t: &Telemetry) -> Vec<Metric> {
-    let (Some(last), samples) = (t.samples.last(), &t.samples) else {
-        return Vec::new();
-    };
-    let distance: f64 = samples
-        .windows(2)
-        .map(|w| match w {
-            [a, b] => (b.x - a.x).hypot(b.y - a.y),
-            _ => 0.0,
-        })
-        .sum();
-    let heading = (last.yaw + PI).rem_euclid(TAU) - PI;
-    let mut metrics = vec![
-        Metric::number("distance_m", "distance travelled", "m", distance),
-        Metric::number("final_x_m", "final x", "m", last.x),
-        Metric::number("final_y_m", "final y", "m", last.y),
-        Metric::number("final_heading_rad", "final heading", "rad", heading),
-    ];
-    if let Some([lo, hi]) = smoothed_extremes(samples, |s| s.lateral_accel) {
-        metrics.push(Metric::number(
-            "max_lateral_accel_mps2",
-            "peak lateral acceleration (0.1 s mean)",
-            "m/s^2",
-            lo.abs().max(hi.abs()),
-        ));
+    let mut meter = MotionMeter::new();
+    for s in &t.samples {
+        meter.push(s);
     }
-    if let Some([lo, hi]) = smoothed_extremes(samples, |s| s.longitudinal_accel) {
-        metrics.extend([
-            Metric::number(
-                "max_accel_mps2",
-                "peak acceleration (0.1 s mean)",
-                "m/s^2",
-                hi.max(0.0),
-            ),
-            Metric::number(
-                "max_decel_mps2",
-                "peak deceleration (0.1 s mean)",
-                "m/s^2",
-                (-lo).max(0.0),
-            ),
-        ]);
-    }
-    metrics
+    meter.metrics()
 }
 
 #[cfg(test)]

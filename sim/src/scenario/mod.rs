@@ -35,7 +35,7 @@ use std::time::Instant;
 
 pub use fit::{Circle, fit_circle};
 pub use lane::{LaneSection, double_lane_change};
-pub use metrics::motion_metrics;
+pub use metrics::{MotionMeter, motion_metrics};
 pub use programme::PROGRAMME_TAIL;
 
 use crate::config::Outline;
@@ -416,6 +416,9 @@ pub enum ScenarioError {
     /// The simulator refused the world or diverged.
     #[error("simulation failed: {0}")]
     Sim(#[from] SimError),
+    /// The run's recording could not be read back (its temporary file failed).
+    #[error("the run's recording could not be read back: {0}")]
+    Record(String),
 }
 
 /// Where a run is, for a progress display.

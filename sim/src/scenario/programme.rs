@@ -5,12 +5,10 @@
 use crate::diff_wheels::RobotId;
 use crate::programme::{Cursor, DriverCommand, WheelSpeeds};
 use crate::simulation::Simulation;
-use crate::telemetry::{Sample, Telemetry, VehicleKind};
 use crate::vehicle::VehicleId;
-use crate::world::World;
 use crate::world_file::WorldDescription;
 
-use super::{Metric, Scenario, ScenarioError, ScenarioResult, motion_metrics};
+use super::{RunReport, Scenario, ScenarioError, ScenarioResult};
 
 /// How long a programme runs past its last step when the world sets no `duration` (s): long
 /// enough for a command to play out (a car braking from 100 km/h stops within 4 s, a cruise
@@ -20,20 +18,11 @@ pub const PROGRAMME_TAIL: f64 = 10.0;
 /// Simulated time between two progress reports (s).
 const PROGRESS_PERIOD: f64 = 0.5;
 
-/// A car and where it is in its programme.
-struct Car<'w> {
-    id: VehicleId,
+/// A car or robot and where it is in its programme.
+struct Follower<'w, C, I> {
+    id: I,
     name: &'w str,
-    cursor: Cursor<'w, DriverCommand>,
-    samples: Vec<Sample>,
-}
-
-/// The robot and where it is in its programme.
-struct Robot<'w> {
-    id: RobotId,
-    name: &'w str,
-    cursor: Cursor<'w, WheelSpeeds>,
-    samples: Vec<Sample>,
+    cursor: Cursor<'w, C>,
 }
 
 /// The simulated time the programme of `world` runs (s): the world's `duration`, else the
@@ -50,46 +39,44 @@ pub(crate) fn duration(world: &WorldDescription) -> f64 {
     })
 }
 
-/// Runs the programmes of `world`.
+/// Runs the programmes of `world`: the simulation of the world as described
+/// ([`Simulation::from_description`]), recorded ([`Simulation::record`]), each car's
+/// commands given to its driver and the robot's wheel speeds to the robot when they fall due.
 pub(crate) fn run(
     world: &WorldDescription,
     progress: &mut dyn FnMut(f64, f64),
 ) -> Result<ScenarioResult, ScenarioError> {
-    let mut sim = Simulation::new(World::new(world.config.clone())?);
-    let mut cars = Vec::with_capacity(world.cars.len());
-    for c in &world.cars {
-        let (id, _) = sim.add_described_car(c)?;
-        cars.push(Car {
+    let (mut sim, _) = Simulation::from_description(world)?;
+    let name = Scenario::Programme.name();
+    let mut cars: Vec<Follower<'_, DriverCommand, VehicleId>> = world
+        .cars
+        .iter()
+        .zip(sim.car_ids())
+        .map(|(c, id)| Follower {
             id,
             name: &c.name,
             cursor: c.programme.cursor(),
-            samples: vec![Sample::of_car(&sim, id)?],
+        })
+        .collect();
+    let mut robot: Option<Follower<'_, WheelSpeeds, RobotId>> = world
+        .robot
+        .as_ref()
+        .zip(sim.robot_ids().next())
+        .map(|(r, id)| Follower {
+            id,
+            name: &r.name,
+            cursor: r.programme.cursor(),
         });
-    }
-    let mut robot = match &world.robot {
-        Some(r) => {
-            let id = sim
-                .world_mut()
-                .add_differential_wheels(r.params, r.mode, r.placement)?;
-            Some(Robot {
-                id,
-                name: &r.name,
-                cursor: r.programme.cursor(),
-                samples: vec![Sample::of_robot(sim.world(), id)?],
-            })
-        }
-        None => None,
-    };
+    sim.record(name);
     let end = duration(world);
     let steps = (end / sim.world().dt()).round() as u64;
     let mut notes = Vec::new();
-    let mut min_gap = f64::INFINITY;
-    let mut first_touch: Option<f64> = None;
     let mut next_progress = 0.0;
     for _ in 0..steps {
         let t = sim.world().time();
         for car in &mut cars {
-            for (command, warning) in car.cursor.apply_due(t, sim.driver_mut(car.id)?) {
+            let due = car.cursor.apply_due(t, sim.driver_mut(car.id)?);
+            for (command, warning) in due {
                 notes.push(format!(
                     "{} at {t} s, {}: {warning}",
                     car.name,
@@ -107,60 +94,18 @@ pub(crate) fn run(
             }
         }
         sim.step()?;
-        for car in &mut cars {
-            car.samples.push(Sample::of_car(&sim, car.id)?);
-        }
-        if let Some(r) = &mut robot {
-            r.samples.push(Sample::of_robot(sim.world(), r.id)?);
-        }
-        for (i, a) in cars.iter().enumerate() {
-            for b in cars.iter().skip(i + 1) {
-                min_gap = min_gap.min(sim.world().vehicle_gap(a.id, b.id)?);
-                if first_touch.is_none() && sim.world().vehicles_in_contact(a.id, b.id)? {
-                    first_touch = Some(sim.world().time());
-                }
-            }
-        }
         let now = sim.world().time();
         if now >= next_progress {
             progress(now, end);
             next_progress = now + PROGRESS_PERIOD;
         }
     }
-    let name = Scenario::Programme.name();
-    let telemetry: Vec<Telemetry> = cars
-        .into_iter()
-        .map(|c| (c.name, VehicleKind::Car, c.samples))
-        .chain(robot.map(|r| (r.name, VehicleKind::Robot, r.samples)))
-        .map(|(vehicle, kind, samples)| Telemetry {
-            scenario: name.to_string(),
-            vehicle: vehicle.to_string(),
-            kind,
-            samples,
-        })
-        .collect();
-    let mut metrics: Vec<Metric> = telemetry
-        .iter()
-        .flat_map(|t| motion_metrics(t).into_iter().map(|m| m.of(&t.vehicle)))
-        .collect();
-    if world.cars.len() > 1 {
-        metrics.extend([
-            Metric::maybe(
-                "min_gap_m",
-                "smallest gap between two cars",
-                "m",
-                Some(min_gap),
-            ),
-            Metric::flag("touched", "two cars touched", first_touch.is_some()),
-            Metric::maybe("first_touch_s", "first touch", "s", first_touch),
-        ]);
-    }
-    Ok(ScenarioResult {
-        name: name.to_string(),
-        metrics,
-        sim_seconds: sim.world().time(),
-        telemetry,
-        notes,
-        ..ScenarioResult::default()
-    })
+    let report = match sim.report(&world.source) {
+        Some(r) => r.map_err(|e| ScenarioError::Record(e.to_string()))?,
+        None => RunReport::default(),
+    };
+    let mut result = report.results.into_iter().next().unwrap_or_default();
+    notes.append(&mut result.notes);
+    result.notes = notes;
+    Ok(result)
 }

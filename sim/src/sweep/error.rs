@@ -1,11 +1,14 @@
 //! Why a sweep cannot be loaded, a case asked for does not exist, or the outputs cannot be
 //! written.
 
+#[cfg(feature = "app")]
 use std::path::{Path, PathBuf};
 
+#[cfg(feature = "app")]
 use crate::report::PlotError;
 use crate::world_file::WorldFileError;
 
+#[cfg(feature = "app")]
 use super::runner::RunError;
 
 /// A sweep file that cannot be loaded, or a case index past the last.
@@ -59,6 +62,7 @@ impl SweepError {
 }
 
 /// Why a sweep's outputs could not be written.
+#[cfg(feature = "app")]
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
 pub enum OutputError {
@@ -87,6 +91,7 @@ pub enum OutputError {
 }
 
 /// A closure turning an I/O error into an [`OutputError`] about `path`.
+#[cfg(feature = "app")]
 pub(crate) fn io_at(path: &Path) -> impl FnOnce(std::io::Error) -> OutputError + '_ {
     move |source| OutputError::Io {
         path: path.to_path_buf(),
@@ -95,6 +100,7 @@ pub(crate) fn io_at(path: &Path) -> impl FnOnce(std::io::Error) -> OutputError +
 }
 
 /// A closure turning a CSV error into an [`OutputError`] about `path`.
+#[cfg(feature = "app")]
 pub(crate) fn csv_at(path: &Path) -> impl Fn(csv::Error) -> OutputError + '_ {
     move |source| OutputError::Csv {
         path: path.to_path_buf(),

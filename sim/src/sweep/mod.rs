@@ -47,10 +47,14 @@ mod draw;
 mod error;
 mod file;
 mod manifest;
+#[cfg(feature = "app")]
 mod merge;
+#[cfg(feature = "app")]
 mod output;
+#[cfg(feature = "app")]
 mod plots;
 mod row;
+#[cfg(feature = "app")]
 mod runner;
 mod shard;
 mod value;
@@ -70,12 +74,18 @@ use crate::world_file::{
 
 pub use axis::{Axis, AxisValues};
 pub use cases::Combine;
-pub use error::{OutputError, SweepError};
+#[cfg(feature = "app")]
+pub use error::OutputError;
+pub use error::SweepError;
 pub use manifest::{Fingerprint, MANIFEST_JSON, Manifest};
+#[cfg(feature = "app")]
 pub use merge::{MergeError, MergeSummary, merge};
+#[cfg(feature = "app")]
 pub use output::{PLOTS_DIR, RESULTS_CSV, RunSummary, TIMINGS_CSV, write_sweep};
+#[cfg(feature = "app")]
 pub use plots::write_plots;
 pub use row::{CASE_COLUMN, CaseError, Cell, Columns, ERROR_COLUMN, NOTES_COLUMN, Row};
+#[cfg(feature = "app")]
 pub use runner::{RunError, run};
 pub use shard::{Shard, ShardError};
 pub use value::AxisValue;

@@ -415,8 +415,8 @@ mod tests {
             assert_eq!(world.cars.len(), 1, "{model:?}: {:?}", world.warnings);
             assert!(world.warnings.is_empty(), "{model:?}: {:?}", world.warnings);
             let car = &world.cars[0];
-            let rebuilt = crate::VehicleSpec::from_car_with(&car.params, &car.tyre);
-            assert_eq!(Ok(car.spec), rebuilt, "{model:?}");
+            assert!(crate::VehicleSpec::from_car_with(&car.params, &car.tyre).is_ok());
+            assert_eq!(car.mounting, crate::Mounting::Cast, "{model:?}");
         }
     }
 }

@@ -38,7 +38,10 @@ const BRAKE_BALANCES: [(&str, BrakeBalance<f64>); 2] = [
 /// The keys of `[vehicle]` that are neither Webots fields nor wheel slots.
 const OWN_KEYS: [&str; 6] = ["model", "tyre", MOUNTING, BRAKE_BALANCE, NAME, PROGRAMME];
 
-/// A car as a world file describes it.
+/// A car as a world file describes it: inputs only. [`CarBuilder::from`](crate::CarBuilder)
+/// takes all of it to [`Simulation::add_car`](crate::Simulation::add_car), which builds the
+/// car (the loader built it once already, so that a car that cannot be built is an error of
+/// the file).
 #[derive(Debug, Clone, PartialEq)]
 pub struct CarDescription {
     /// The model the parameters start from (`model`; the plain `Car` when absent).
@@ -49,19 +52,12 @@ pub struct CarDescription {
     pub params: CarParams<f64>,
     /// The tyres (`tyre`, `[vehicle.tyre]`): by default the slip-based tyre of the model's
     /// class ([`Model::tyre_class`]) without overrides, fitted to each axle's radius and load
-    /// in [`CarDescription::spec`].
+    /// when the car is built.
     pub tyre: TyreChoice,
-    /// The car as the simulator builds it: from `params` on `tyre`
-    /// ([`VehicleSpec::from_car_with`](crate::VehicleSpec::from_car_with)), with the wheels
-    /// mounted as `mounting` says (`"cast"`, the default, or `"joints"`). Built once, when the
-    /// description is made (a car that cannot be built is an error of the file), and put in a
-    /// world by [`Simulation::add_described_car`](crate::Simulation::add_described_car); after
-    /// changing `params` or `tyre`, build it again.
-    pub spec: VehicleSpec,
+    /// How the wheels hang on the chassis (`mounting`: `"cast"`, the default, or `"joints"`).
+    pub mounting: Mounting,
     /// How the brake torque is shared between the axles (`brake_balance`: `"equal"`, Webots'
-    /// and the default; `"proportioned"`; or the front axle's share, a number in [0, 1]),
-    /// given to the driver by
-    /// [`Simulation::add_described_car`](crate::Simulation::add_described_car).
+    /// and the default; `"proportioned"`; or the front axle's share, a number in [0, 1]).
     pub brake_balance: BrakeBalance<f64>,
     /// The car's name in telemetry, plots and metrics (`name`; by default the model's name,
     /// numbered `-1`, `-2`… when several cars share a model).
@@ -80,13 +76,13 @@ impl CarDescription {
         let (params, report) = model.params::<f64>().validated();
         let messages = report.iter().map(message).collect();
         let tyre = TyreChoice::of_model(model);
-        let spec = VehicleSpec::from_car_with(&params, &tyre)?;
+        VehicleSpec::from_car_with(&params, &tyre)?;
         Ok((
             CarDescription {
                 model,
                 params,
                 tyre,
-                spec,
+                mounting: Mounting::default(),
                 brake_balance: BrakeBalance::Equal,
                 name: model.webots_name().to_string(),
                 programme: Programme::default(),
@@ -204,14 +200,13 @@ pub(crate) fn read_vehicle(
     }
     // Fields that are each plausible may still make a car that cannot be built (a 33 m tyre
     // of the default density weighs more than 1e6 kg): a world that loads must build.
-    let mut spec = VehicleSpec::from_car_with(&params, &tyre).map_err(|e| {
+    VehicleSpec::from_car_with(&params, &tyre).map_err(|e| {
         s.src.error(
             s.span(),
             Some("vehicle".to_string()),
             WorldFileErrorKind::InvalidValue(format!("this car cannot be built: {e}")),
         )
     })?;
-    spec.mounting = mounting;
     let name = s.string(NAME)?.unwrap_or("").to_string();
     let gears = i32::try_from(params.gear_ratios.len().saturating_sub(1)).unwrap_or(i32::MAX);
     let programme = read_car_programme(s, gears)?;
@@ -219,7 +214,7 @@ pub(crate) fn read_vehicle(
         model,
         params,
         tyre,
-        spec,
+        mounting,
         brake_balance,
         name,
         programme,

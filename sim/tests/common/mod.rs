@@ -53,7 +53,12 @@ pub fn settled_car(
     .unwrap();
     let mut sim = Simulation::new(world);
     let (id, report) = sim
-        .add_car_with(params, tyre, crate::MOUNTING, VehiclePlacement::default())
+        .add_car(
+            sim::CarBuilder::new(params)
+                .tyre(tyre.clone())
+                .mounting(crate::MOUNTING)
+                .placement(VehiclePlacement::default()),
+        )
         .unwrap();
     assert!(report.is_empty(), "{report:?}");
     run(&mut sim, 1.0);

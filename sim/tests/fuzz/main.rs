@@ -49,7 +49,7 @@ fn car_world(model: Model, mounting: Mounting, basic_time_step_ms: u32) -> wf::W
     let mut world = wf::with_model(model);
     world.config.basic_time_step_ms = basic_time_step_ms;
     for car in &mut world.cars {
-        car.spec.mounting = mounting;
+        car.mounting = mounting;
     }
     world
 }

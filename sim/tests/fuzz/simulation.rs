@@ -47,7 +47,7 @@ pub fn build(description: &WorldDescription) -> Result<Built, SimError> {
     let mut sim = Simulation::new(World::new(description.config.clone())?);
     let mut car = None;
     for c in &description.cars {
-        let (id, _) = sim.add_described_car(c)?;
+        let (id, _) = sim.add_car(sim::CarBuilder::from(c))?;
         car = car.or(Some(id));
     }
     let robot = match &description.robot {

@@ -38,6 +38,17 @@ sim="$root/target/debug/vehicle-sim"
 
 node "$here/validate.mjs" "$out/test-track/replay.glb" "$out/obstacles/replay.glb" \
   "$out/e-puck/replay.glb"
+# A C controller's run under VEHICLE_OUT (written by capi's test
+# a_controller_run_writes_the_outputs_of_the_same_programme, which `cargo test` runs first).
+controller_glb="$root/target/tmp/capi-c_programs/outputs-controller/replay.glb"
+if [ -f "$controller_glb" ]; then
+  node "$here/validate.mjs" "$controller_glb"
+elif [ "${CI:-}" = "true" ]; then
+  echo "replay check: no $controller_glb: the C API tests did not run first" >&2
+  exit 1
+else
+  echo "replay check: skipping the controller run's replay (run cargo test -p capi first)"
+fi
 
 # The point between the positions of a scenario's vehicle at two times (s), from the
 # telemetry CSV: "x,y" in m.

@@ -22,11 +22,11 @@ fn settled(model: Model, dt_ms: u32) -> (Simulation, sim::VehicleId, f64) {
     .unwrap();
     let mut sim = Simulation::new(world);
     let (id, _) = sim
-        .add_car_with(
-            model.params(),
-            &TyreChoice::of_model(model),
-            crate::MOUNTING,
-            VehiclePlacement::default(),
+        .add_car(
+            sim::CarBuilder::new(model.params())
+                .tyre(TyreChoice::of_model(model).clone())
+                .mounting(crate::MOUNTING)
+                .placement(VehiclePlacement::default()),
         )
         .unwrap();
     common::run(&mut sim, 3.0);

@@ -8,7 +8,7 @@ use sim::world_file::{self, parse_str};
 fn run(world: &world_file::WorldDescription, scenario: Scenario) -> RunReport {
     let mut world = world.clone();
     for car in &mut world.cars {
-        car.spec.mounting = crate::MOUNTING;
+        car.mounting = crate::MOUNTING;
     }
     scenario::run(&world, scenario, &mut |_| {}).unwrap()
 }

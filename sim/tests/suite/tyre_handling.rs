@@ -336,11 +336,11 @@ fn parked_on_a_ten_percent_slope_with_the_brake_on_the_car_holds() {
     .unwrap();
     let mut sim = Simulation::new(world);
     let (id, _) = sim
-        .add_car_with(
-            Model::BmwX5.params(),
-            &TyreChoice::default(),
-            crate::MOUNTING,
-            VehiclePlacement::default(),
+        .add_car(
+            sim::CarBuilder::new(Model::BmwX5.params())
+                .tyre(TyreChoice::default().clone())
+                .mounting(crate::MOUNTING)
+                .placement(VehiclePlacement::default()),
         )
         .unwrap();
     sim.driver_mut(id).unwrap().set_brake_intensity(1.0);

@@ -82,7 +82,12 @@ fn bmw_x5_free_wheels_roll_smoothly_at_45_degrees() {
             ..VehiclePlacement::default()
         };
         let (id, _) = sim
-            .add_car_with(Model::BmwX5.params(), &tyre, crate::MOUNTING, placement)
+            .add_car(
+                sim::CarBuilder::new(Model::BmwX5.params())
+                    .tyre(tyre.clone())
+                    .mounting(crate::MOUNTING)
+                    .placement(placement),
+            )
             .unwrap();
         common::run(&mut sim, 1.0);
         sim.driver_mut(id).unwrap().set_cruising_speed(20.0);

@@ -109,11 +109,11 @@ fn world_with(obstacles: Vec<Obstacle>) -> (Simulation, VehicleId) {
     .unwrap();
     let mut sim = Simulation::new(world);
     let (id, _) = sim
-        .add_car_with(
-            Model::ToyotaPrius.params(),
-            &sim::TyreChoice::default(),
-            crate::MOUNTING,
-            VehiclePlacement::default(),
+        .add_car(
+            sim::CarBuilder::new(Model::ToyotaPrius.params())
+                .tyre(sim::TyreChoice::default().clone())
+                .mounting(crate::MOUNTING)
+                .placement(VehiclePlacement::default()),
         )
         .unwrap();
     common::run(&mut sim, 1.0);

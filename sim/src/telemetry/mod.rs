@@ -1,6 +1,11 @@
-//! Per-step telemetry of a run (one [`Telemetry`] per vehicle and scenario) and its CSV form.
+//! Per-step telemetry of a run (one [`Telemetry`] per vehicle and scenario), its CSV form, and
+//! the [`TelemetryLog`] that keeps a run of any length in bounded memory.
+
+mod log;
 
 use std::io::Write;
+
+pub use log::{MEMORY_ROWS, Row, TelemetryLog};
 
 use vehicle_model::{KMH_PER_MS, PerWheel, Wheel};
 
@@ -94,6 +99,45 @@ impl Sample {
             speed_kmh: 0.5 * (l + r) * robot.params().wheel_radius * KMH_PER_MS,
             ..Sample::default()
         })
+    }
+
+    /// The sample whose [`Sample::values`] are `row` (NaN for `None`): the inverse of
+    /// [`Sample::values`] for finite values. The tyres are present if any tyre value is.
+    pub fn from_row(row: &Row) -> Sample {
+        let opt = |v: f64| (!v.is_nan()).then_some(v);
+        let tyre_values = &row[14..];
+        let tyres = tyre_values.iter().any(|v| !v.is_nan()).then(|| {
+            PerWheel::from_fn(|w| {
+                let i = Wheel::ALL.iter().position(|&v| v == w).unwrap_or(0) * 6;
+                let c = &tyre_values[i..i + 6];
+                TyreTelemetry {
+                    slip_ratio: c[0],
+                    slip_angle: c[1],
+                    fx: c[2],
+                    fy: c[3],
+                    fz: c[4],
+                    friction_use: c[5],
+                }
+            })
+        });
+        Sample {
+            time: row[0],
+            x: row[1],
+            y: row[2],
+            yaw: row[3],
+            speed_kmh: row[4],
+            driver_speed_kmh: opt(row[5]),
+            rpm: opt(row[6]),
+            // A gear is a small whole number (−1 to the gear count).
+            gear: opt(row[7]).map(|g| g as i32),
+            steering_command: opt(row[8]),
+            steering: opt(row[9]),
+            throttle: opt(row[10]),
+            brake: opt(row[11]),
+            lateral_accel: opt(row[12]),
+            longitudinal_accel: opt(row[13]),
+            tyres,
+        }
     }
 
     /// The speed along the heading (m/s).
@@ -218,8 +262,58 @@ fn cell(v: Option<f64>) -> String {
     }
 }
 
-/// Writes `runs` as one CSV table (header [`CSV_HEADER`]) to `out`, one row per sample, the
-/// scenario and vehicle names in the first two columns. Missing values are empty cells.
+/// A telemetry CSV table being written row by row: the header ([`CSV_HEADER`]) first, then
+/// one row per sample, the scenario and vehicle names in the first two columns; missing and
+/// non-finite values are empty cells.
+pub struct CsvWriter<W: Write> {
+    out: csv::Writer<W>,
+    row: Vec<String>,
+}
+
+impl<W: Write> CsvWriter<W> {
+    /// Writes the header to `out`.
+    ///
+    /// # Errors
+    /// The write error.
+    pub fn new(out: W) -> Result<Self, csv::Error> {
+        let mut out = csv::WriterBuilder::new()
+            .has_headers(false)
+            .from_writer(out);
+        out.write_record(CSV_HEADER.split(','))?;
+        Ok(CsvWriter {
+            out,
+            row: Vec::with_capacity(2 + SAMPLE_COLUMNS),
+        })
+    }
+
+    /// Writes one row: a sample's [`Sample::values`] (or a [`Row`], NaN for missing).
+    ///
+    /// # Errors
+    /// The write error.
+    pub fn write(
+        &mut self,
+        scenario: &str,
+        vehicle: &str,
+        values: impl IntoIterator<Item = Option<f64>>,
+    ) -> Result<(), csv::Error> {
+        self.row.clear();
+        self.row.push(scenario.to_string());
+        self.row.push(vehicle.to_string());
+        self.row.extend(values.into_iter().map(cell));
+        self.out.write_record(&self.row)
+    }
+
+    /// Flushes what is written.
+    ///
+    /// # Errors
+    /// The write error.
+    pub fn finish(mut self) -> Result<(), csv::Error> {
+        self.out.flush()?;
+        Ok(())
+    }
+}
+
+/// Writes `runs` as one CSV table ([`CsvWriter`]) to `out`.
 ///
 /// # Errors
 /// The first write error.
@@ -227,22 +321,85 @@ pub fn write_csv<'a>(
     out: impl Write,
     runs: impl IntoIterator<Item = &'a Telemetry>,
 ) -> Result<(), csv::Error> {
-    let mut w = csv::WriterBuilder::new()
-        .has_headers(false)
-        .from_writer(out);
-    w.write_record(CSV_HEADER.split(','))?;
-    let mut row: Vec<String> = Vec::with_capacity(CSV_HEADER.split(',').count());
+    let mut w = CsvWriter::new(out)?;
     for run in runs {
         for s in &run.samples {
-            row.clear();
-            row.push(run.scenario.clone());
-            row.push(run.vehicle.clone());
-            row.extend(s.values().map(cell));
-            w.write_record(&row)?;
+            w.write(&run.scenario, &run.vehicle, s.values())?;
         }
     }
-    w.flush()?;
-    Ok(())
+    w.finish()
+}
+
+/// Why a telemetry CSV cannot be read back.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum ReadError {
+    /// The file cannot be read or is no CSV.
+    #[error("{0}")]
+    Csv(#[from] csv::Error),
+    /// The header is not [`CSV_HEADER`]: not a telemetry file of this version.
+    #[error("the header is not that of a telemetry file (scenario,car,time_s,...)")]
+    Header,
+    /// A cell is not a number.
+    #[error("line {line}, column '{column}': '{value}' is not a number")]
+    Cell {
+        /// The line (1-based, the header is line 1).
+        line: u64,
+        /// The column's name.
+        column: String,
+        /// The cell.
+        value: String,
+    },
+}
+
+/// Reads a telemetry CSV ([`write_csv`]'s table) back: one [`Telemetry`] per run of
+/// consecutive rows of the same scenario and vehicle, in file order. A vehicle with a
+/// commanded steering is a car, else a robot.
+///
+/// # Errors
+/// The first [`ReadError`].
+pub fn read_csv(input: impl std::io::Read) -> Result<Vec<Telemetry>, ReadError> {
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .from_reader(input);
+    let mut records = reader.records();
+    let header = records.next().transpose()?.ok_or(ReadError::Header)?;
+    let columns: Vec<&str> = CSV_HEADER.split(',').collect();
+    if header.iter().ne(columns.iter().copied()) {
+        return Err(ReadError::Header);
+    }
+    let mut out: Vec<Telemetry> = Vec::new();
+    for record in records {
+        let record = record?;
+        let line = record.position().map_or(0, |p| p.line());
+        let mut row = [f64::NAN; SAMPLE_COLUMNS];
+        for (i, (v, cell)) in row.iter_mut().zip(record.iter().skip(2)).enumerate() {
+            if !cell.is_empty() {
+                *v = cell.parse().map_err(|_| ReadError::Cell {
+                    line,
+                    column: columns[i + 2].to_string(),
+                    value: cell.to_string(),
+                })?;
+            }
+        }
+        let (scenario, vehicle) = (record.get(0).unwrap_or(""), record.get(1).unwrap_or(""));
+        let sample = Sample::from_row(&row);
+        match out.last_mut() {
+            Some(t) if t.scenario == scenario && t.vehicle == vehicle => t.samples.push(sample),
+            _ => out.push(Telemetry {
+                scenario: scenario.to_string(),
+                vehicle: vehicle.to_string(),
+                kind: VehicleKind::Robot,
+                samples: vec![sample],
+            }),
+        }
+    }
+    for t in &mut out {
+        if t.samples.iter().any(|s| s.steering_command.is_some()) {
+            t.kind = VehicleKind::Car;
+        }
+    }
+    Ok(out)
 }
 
 /// [`write_csv`] into a string.
@@ -289,6 +446,43 @@ mod tests {
         assert!(!row.contains("-0"), "{row}");
         assert_eq!(row.split(',').count(), CSV_HEADER.split(',').count());
         assert_eq!(lines.next(), None);
+    }
+
+    #[test]
+    fn a_csv_reads_back_as_its_telemetry() {
+        let car = Telemetry {
+            scenario: "run".into(),
+            vehicle: "a".into(),
+            kind: VehicleKind::Car,
+            samples: (0..3)
+                .map(|i| Sample {
+                    time: 0.25 * f64::from(i),
+                    x: 1.5,
+                    steering_command: Some(0.125),
+                    gear: Some(i),
+                    ..Sample::default()
+                })
+                .collect(),
+        };
+        let robot = Telemetry {
+            scenario: "run".into(),
+            vehicle: "r".into(),
+            kind: VehicleKind::Robot,
+            samples: vec![Sample::default()],
+        };
+        let back = read_csv(to_csv([&car, &robot]).as_bytes()).unwrap();
+        // Values with at most six decimals come back exactly.
+        assert_eq!(back, vec![car, robot]);
+        assert!(matches!(
+            read_csv("a,b\n".as_bytes()),
+            Err(ReadError::Header)
+        ));
+        let bad = format!("{CSV_HEADER}\nrun,a,x{}", ",".repeat(SAMPLE_COLUMNS - 1));
+        let e = read_csv(bad.as_bytes()).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "line 2, column 'time_s': 'x' is not a number"
+        );
     }
 
     #[test]

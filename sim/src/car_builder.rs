@@ -1,0 +1,189 @@
+//! A car to add to a [`Simulation`](crate::Simulation): its Webots parameters and every other
+//! choice a world file makes about it (tyre, wheel mounting, brake balance, start placement,
+//! name), so that a car added from Rust, the C API, Python or a world file is the same car.
+
+use vehicle_model::{BrakeBalance, CarParams, Driver, Model, ParamReport};
+
+use crate::error::SimError;
+use crate::placement::car_placement;
+use crate::vehicle::{Mounting, TyreChoice, VehiclePlacement, VehicleSpec};
+use crate::world_file::CarDescription;
+
+/// Everything that makes a car, before it is built: a builder in rapier's style.
+///
+/// [`CarBuilder::of_model`] is what a world file's `[vehicle] model = "…"` gives with nothing
+/// else said; [`CarBuilder::from`] a world file's car as described; [`CarBuilder::new`] any
+/// parameters. Nothing is derived until [`Simulation::add_car`](crate::Simulation::add_car)
+/// builds the car, so the parameters and what is built from them cannot drift apart.
+///
+/// ```
+/// use sim::{CarBuilder, Mounting, Simulation, TyreChoice, World, WorldConfig};
+/// use vehicle_model::{BrakeBalance, Model, WebotsContact};
+/// let mut sim = Simulation::new(World::new(WorldConfig::default())?);
+/// let car = CarBuilder::of_model(Model::BmwX5)
+///     .tyre(TyreChoice::Webots(WebotsContact::default()))
+///     .mounting(Mounting::Joints)
+///     .brake_balance(BrakeBalance::Proportioned)
+///     .name("ego");
+/// let (id, report) = sim.add_car(car)?;
+/// assert!(report.is_empty());
+/// assert_eq!(sim.world().vehicle(id)?.spec().mounting, Mounting::Joints);
+/// assert_eq!(sim.car_name(id)?, "ego");
+/// # Ok::<(), sim::SimError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct CarBuilder {
+    params: CarParams<f64>,
+    tyre: TyreChoice,
+    mounting: Mounting,
+    brake_balance: BrakeBalance<f64>,
+    placement: Option<VehiclePlacement>,
+    name: Option<String>,
+    /// The name a car gets when none is set (numbered if taken).
+    default_name: &'static str,
+}
+
+/// A car built from a [`CarBuilder`]: its driver, its body and where it starts.
+pub(crate) struct BuiltCar {
+    pub driver: Driver<f64>,
+    pub report: ParamReport,
+    pub spec: VehicleSpec,
+    pub placement: VehiclePlacement,
+    pub name: Option<String>,
+    pub default_name: &'static str,
+}
+
+impl CarBuilder {
+    /// A car of `params` (any `Car` / `AckermannVehicle` fields) on the passenger-car
+    /// slip-based tyre ([`TyreChoice::default`]), its wheels cast ([`Mounting::Cast`]), Webots'
+    /// equal brakes, starting where its `translation` and `rotation` fields say
+    /// ([`car_placement`]), named `Car` (numbered if taken).
+    pub fn new(params: CarParams<f64>) -> Self {
+        CarBuilder {
+            params,
+            tyre: TyreChoice::default(),
+            mounting: Mounting::default(),
+            brake_balance: BrakeBalance::Equal,
+            placement: None,
+            name: None,
+            default_name: Model::Car.webots_name(),
+        }
+    }
+
+    /// The shipped `model` as a world file gives it with nothing else said: its parameters on
+    /// the slip-based tyre of its class ([`TyreChoice::of_model`]), named after it.
+    pub fn of_model(model: Model) -> Self {
+        CarBuilder {
+            tyre: TyreChoice::of_model(model),
+            default_name: model.webots_name(),
+            ..CarBuilder::new(model.params())
+        }
+    }
+
+    /// The tyres it rolls on.
+    #[must_use]
+    pub fn tyre(mut self, tyre: TyreChoice) -> Self {
+        self.tyre = tyre;
+        self
+    }
+
+    /// How its wheels hang on the chassis.
+    #[must_use]
+    pub fn mounting(mut self, mounting: Mounting) -> Self {
+        self.mounting = mounting;
+        self
+    }
+
+    /// How the brake torque is shared between the axles (checked when the car is added).
+    #[must_use]
+    pub fn brake_balance(mut self, balance: BrakeBalance<f64>) -> Self {
+        self.brake_balance = balance;
+        self
+    }
+
+    /// Where it starts, instead of its `translation` and `rotation` fields.
+    #[must_use]
+    pub fn placement(mut self, placement: VehiclePlacement) -> Self {
+        self.placement = Some(placement);
+        self
+    }
+
+    /// Its name in telemetry, metrics and messages (unique in a simulation).
+    #[must_use]
+    pub fn name(mut self, name: impl Into<String>) -> Self {
+        self.name = Some(name.into());
+        self
+    }
+
+    /// The parameters as given (validated when the car is added).
+    pub fn params(&self) -> &CarParams<f64> {
+        &self.params
+    }
+
+    /// The parameters, to change fields before the car is added.
+    pub fn params_mut(&mut self) -> &mut CarParams<f64> {
+        &mut self.params
+    }
+
+    /// The tyre choice.
+    pub fn tyre_choice(&self) -> &TyreChoice {
+        &self.tyre
+    }
+
+    /// The wheel mounting.
+    pub fn wheel_mounting(&self) -> Mounting {
+        self.mounting
+    }
+
+    /// The brake balance.
+    pub fn balance(&self) -> BrakeBalance<f64> {
+        self.brake_balance
+    }
+
+    /// The start placement: the one set, else that of the `translation` and `rotation` fields.
+    pub fn start(&self) -> VehiclePlacement {
+        self.placement
+            .unwrap_or_else(|| car_placement(&self.params))
+    }
+
+    /// Validates the parameters (an invalid field takes its Webots default and is reported,
+    /// as `Driver::new` does) and builds the driver, at `step_ms` (Webots' `basicTimeStep`),
+    /// and the body.
+    ///
+    /// # Errors
+    /// [`SimError::Param`] naming a tyre coefficient or body field the car cannot be built
+    /// with, [`SimError::BrakeBalance`] for a front share outside [0, 1].
+    pub(crate) fn build(self, step_ms: u32) -> Result<BuiltCar, SimError> {
+        let placement = self.start();
+        let (mut driver, report) = Driver::new(self.params, step_ms);
+        driver
+            .set_brake_balance(self.brake_balance)
+            .map_err(SimError::BrakeBalance)?;
+        let mut spec = VehicleSpec::from_car_with(driver.params(), &self.tyre)?;
+        spec.mounting = self.mounting;
+        Ok(BuiltCar {
+            driver,
+            report,
+            spec,
+            placement,
+            name: self.name,
+            default_name: self.default_name,
+        })
+    }
+}
+
+impl From<&CarDescription> for CarBuilder {
+    /// The car of a world file as it is described: its parameters, tyre, mounting, brake
+    /// balance and name; it starts where its `translation` and `rotation` say.
+    fn from(car: &CarDescription) -> Self {
+        CarBuilder {
+            params: car.params.clone(),
+            tyre: car.tyre.clone(),
+            mounting: car.mounting,
+            brake_balance: car.brake_balance,
+            placement: None,
+            name: Some(car.name.clone()),
+            default_name: car.model.webots_name(),
+        }
+    }
+}

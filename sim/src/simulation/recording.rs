@@ -1,0 +1,217 @@
+//! The recording of a run driven through [`Simulation`]: every vehicle's samples in a
+//! [`TelemetryLog`], the replay's keyframes, and the gaps between cars; then the run's report
+//! and data files, for any front-end.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use crate::config::Outline;
+use crate::diff_wheels::RobotId;
+use crate::replay::Recorder;
+use crate::report::{self, OutputError};
+use crate::scenario::{Metric, MotionMeter, RunReport, ScenarioResult};
+use crate::telemetry::{CsvWriter, Sample, Telemetry, TelemetryLog, VehicleKind};
+use crate::vehicle::VehicleId;
+
+use super::Simulation;
+
+/// What a log follows.
+#[derive(Debug, Clone, Copy)]
+enum Target {
+    Car(VehicleId),
+    Robot(RobotId),
+}
+
+/// One vehicle's log.
+struct VehicleLog {
+    name: String,
+    target: Target,
+    log: TelemetryLog,
+}
+
+/// The recording of a run: see [`Simulation::record`].
+pub(super) struct Recording {
+    run: String,
+    vehicles: Vec<VehicleLog>,
+    replay: Recorder,
+    /// Smallest gap between two cars so far (m).
+    min_gap: f64,
+    /// When two cars first touched (s).
+    first_touch: Option<f64>,
+    started: Instant,
+}
+
+impl Recording {
+    /// Starts recording `sim` now: a first sample of every vehicle.
+    pub(super) fn start(sim: &Simulation, run: &str) -> Recording {
+        let vehicles = sim
+            .cars
+            .iter()
+            .map(|c| (c.name.clone(), Target::Car(c.id)))
+            .chain(
+                sim.robots
+                    .iter()
+                    .map(|r| (r.name.clone(), Target::Robot(r.id))),
+            )
+            .map(|(name, target)| VehicleLog {
+                name,
+                target,
+                log: TelemetryLog::new(),
+            })
+            .collect();
+        let mut recording = Recording {
+            run: run.to_string(),
+            vehicles,
+            replay: Recorder::for_simulation(sim),
+            min_gap: f64::INFINITY,
+            first_touch: None,
+            started: Instant::now(),
+        };
+        recording.log_samples(sim);
+        recording
+    }
+
+    /// Records the state after a step.
+    pub(super) fn sample(&mut self, sim: &Simulation) {
+        self.log_samples(sim);
+        self.replay.sample(sim.world());
+        let world = sim.world();
+        for (i, a) in sim.cars.iter().enumerate() {
+            for b in sim.cars.iter().skip(i + 1) {
+                if let Ok(gap) = world.vehicle_gap(a.id, b.id) {
+                    self.min_gap = self.min_gap.min(gap);
+                }
+                if self.first_touch.is_none()
+                    && world.vehicles_in_contact(a.id, b.id).unwrap_or(false)
+                {
+                    self.first_touch = Some(world.time());
+                }
+            }
+        }
+    }
+
+    fn log_samples(&mut self, sim: &Simulation) {
+        for v in &mut self.vehicles {
+            // The handles are the simulation's own: a sample always exists.
+            let sample = match v.target {
+                Target::Car(id) => Sample::of_car(sim, id),
+                Target::Robot(id) => Sample::of_robot(sim.world(), id),
+            };
+            if let Ok(s) = sample {
+                v.log.push(&s);
+            }
+        }
+    }
+
+    /// The log of the vehicle named `name`.
+    pub(super) fn log(&self, name: &str) -> Option<&TelemetryLog> {
+        self.vehicles
+            .iter()
+            .find(|v| v.name == name)
+            .map(|v| &v.log)
+    }
+
+    /// The run so far as a report on the world named `world`; its telemetry read back from the
+    /// logs if `with_telemetry`.
+    pub(super) fn report(
+        &self,
+        sim: &Simulation,
+        world: &str,
+        with_telemetry: bool,
+    ) -> std::io::Result<RunReport> {
+        let mut metrics = Vec::new();
+        let mut telemetry = Vec::new();
+        let mut notes = Vec::new();
+        for v in &self.vehicles {
+            let mut meter = MotionMeter::new();
+            v.log.for_each(|row| meter.push(&Sample::from_row(row)))?;
+            metrics.extend(meter.metrics().into_iter().map(|m| m.of(&v.name)));
+            if let Some(e) = v.log.spill_error() {
+                notes.push(format!(
+                    "{}: the telemetry stayed in memory, its temporary file failed: {e}",
+                    v.name
+                ));
+            }
+            if with_telemetry {
+                telemetry.push(Telemetry {
+                    scenario: self.run.clone(),
+                    vehicle: v.name.clone(),
+                    kind: match v.target {
+                        Target::Car(_) => VehicleKind::Car,
+                        Target::Robot(_) => VehicleKind::Robot,
+                    },
+                    samples: v.log.samples()?,
+                });
+            }
+        }
+        if sim.cars.len() > 1 {
+            metrics.extend([
+                Metric::maybe(
+                    "min_gap_m",
+                    "smallest gap between two cars",
+                    "m",
+                    Some(self.min_gap),
+                ),
+                Metric::flag("touched", "two cars touched", self.first_touch.is_some()),
+                Metric::maybe("first_touch_s", "first touch", "s", self.first_touch),
+            ]);
+        }
+        if let Some(e) = sim.failure() {
+            notes.push(format!("the simulation stopped: {e}"));
+        }
+        let sim_seconds = sim.world().time();
+        let names: Vec<&str> = self.vehicles.iter().map(|v| v.name.as_str()).collect();
+        Ok(RunReport {
+            world: world.to_string(),
+            vehicle: match names.as_slice() {
+                [one] => (*one).to_string(),
+                _ => format!("{} vehicles ({})", names.len(), names.join(", ")),
+            },
+            scenario: self.run.clone(),
+            results: vec![ScenarioResult {
+                name: self.run.clone(),
+                metrics,
+                sim_seconds,
+                telemetry,
+                notes,
+                replay: self.replay.clone().finish(sim.world()),
+                ..ScenarioResult::default()
+            }],
+            sim_seconds,
+            wall_seconds: self.started.elapsed().as_secs_f64(),
+            obstacles: Outline::of_world(sim.world().config()),
+        })
+    }
+
+    /// Writes the run's data files into `dir`, the telemetry streamed from the logs.
+    pub(super) fn save(
+        &self,
+        sim: &Simulation,
+        world: &str,
+        world_warnings: &[String],
+        dir: &Path,
+    ) -> Result<Vec<PathBuf>, OutputError> {
+        let io = |e: std::io::Error| OutputError::Io {
+            path: dir.to_path_buf(),
+            source: e,
+        };
+        let run = self.report(sim, world, false).map_err(io)?;
+        let telemetry = |out: &mut dyn std::io::Write| -> Result<(), csv::Error> {
+            let mut w = CsvWriter::new(out)?;
+            for v in &self.vehicles {
+                let mut result = Ok(());
+                v.log
+                    .for_each(|row| {
+                        if result.is_ok() {
+                            let values = row.iter().map(|&x| (!x.is_nan()).then_some(x));
+                            result = w.write(&self.run, &v.name, values);
+                        }
+                    })
+                    .map_err(csv::Error::from)?;
+                result?;
+            }
+            w.finish()
+        };
+        report::write_files(&run, world_warnings, dir, &report::DATA_OUTPUTS, &telemetry)
+    }
+}
