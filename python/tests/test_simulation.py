@@ -12,8 +12,9 @@ import pytest
 import webots_vehicle as wv
 from conftest import ROOT, WORLDS
 
-# Differences in timing only: everything else of the JSON object is deterministic.
-TIMING = {"wall_seconds", "realtime_factor"}
+# Differences in timing only, and in the files listed: everything else of the JSON object is
+# deterministic. The package writes the data files only (the plots need vehicle-sim).
+TIMING = {"wall_seconds", "realtime_factor", "files"}
 
 
 def test_a_scenario_gives_the_metrics_and_telemetry_of_vehicle_sim(vehicle_sim, tmp_path):
@@ -29,6 +30,8 @@ def test_a_scenario_gives_the_metrics_and_telemetry_of_vehicle_sim(vehicle_sim, 
         k: v for k, v in cli.items() if k not in TIMING
     }
     assert set(ours) == set(cli)
+    assert ours["files"] == [f for f in cli["files"] if not f.endswith(".svg")]
+    assert ours["files"] == ["telemetry.csv", "metrics.json", "replay.glb"]
     metrics = result.metrics["lane-change"]
     assert metrics == cli["scenarios"]["lane-change"]
     assert metrics["left_track"] is False and 2.0 < metrics["max_lateral_accel_mps2"] < 5.0

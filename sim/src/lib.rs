@@ -4,16 +4,23 @@
 //!   holding cars
 //!   ([`Vehicle`], built from a [`VehicleSpec`]) and legacy [`DifferentialWheels`] robots;
 //! * [`Simulation`]: a world whose cars are driven by `vehicle_model::Driver<f64>`, stepped
-//!   like a Webots controller calling `wbu_driver_step()`, with [`CarTelemetry`];
+//!   like a Webots controller calling `wbu_driver_step()` (or `wb_robot_step()`), with
+//!   [`CarTelemetry`]: the one way every front-end builds a run ([`CarBuilder`],
+//!   [`Simulation::from_description`]), owns its duration and end, and records it
+//!   ([`Simulation::record`], [`Simulation::save`]);
 //! * [`motor`]: the Webots motor semantics (velocity ramp, position servo) the joints emulate,
 //!   from [`vehicle_model::actuator`] in f64, and rapier's rigid velocity motor;
 //! * [`world_file`]: TOML worlds in Webots vocabulary (`basicTimeStep`, `[vehicle]` or several
 //!   `[[vehicle]]` with any `Car` field and a driving programme, `[differential_wheels]`,
 //!   obstacles), loaded by path or model name;
 //! * [`programme`]: timed driver commands named after the Webots driver setters;
-//! * [`scenario`], [`telemetry`], [`report`], [`cli`]: the `vehicle-sim` command's driving
-//!   programmes, metrics, CSV, SVG plots and JSON (see `README.md`); the report takes any
-//!   run, also one driven through this API (`examples/custom_route.rs`).
+//! * [`scenario`], [`telemetry`], [`report`]: the `vehicle-sim` command's driving
+//!   programmes, metrics, CSV and JSON (see `README.md`); the report takes any run, also one
+//!   driven through this API (`examples/custom_route.rs`);
+//! * with the `app` feature (default): `cli` (the `vehicle-sim` command), the SVG plots
+//!   (`report::figures`, `report::write_outputs`) and the sweeps' thread pool and merges. The
+//!   engine without it links no command-line, progress-bar, plotting or thread-pool crate
+//!   (`capi` and the Python extension use it so).
 //! * [`replay`]: the run as an animated 3D scene, `replay.glb`.
 //! * [`sweep`]: one scenario on many variants of a world (axes over world-file keys), on
 //!   every core or split into shards for batch engines, one row of metrics per variant

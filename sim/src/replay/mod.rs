@@ -16,8 +16,8 @@
 //!   time from the part's start. Lights and the part groups show and hide through step-
 //!   interpolated scale keyframes: while a part plays, only its own trajectories and cones
 //!   show.
-//! * [`to_glb`] writes the parts' scene as binary glTF; [`crate::report::write_outputs`] puts
-//!   a run's in `replay.glb` beside the CSV and plots.
+//! * [`to_glb`] writes the parts' scene as binary glTF; [`crate::report::write_data`] puts
+//!   a run's in `replay.glb` beside the CSV and the metrics.
 //!
 //! Frames: the scene is built in this crate's z-up world frame (m) and `proto-geom`'s writer
 //! turns it into glTF's y-up frame once, at its root node (`webots_to_gltf`).

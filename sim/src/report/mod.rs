@@ -5,7 +5,7 @@
 //!
 //! The data files ([`write_data`]: `telemetry.csv`, `metrics.json`, `replay.glb`) are the
 //! engine's and every front-end writes them (the C API and Python under `VEHICLE_OUT`); the
-//! plots need plotters and are the application's ([`write_outputs`], `vehicle-sim plot`).
+//! plots need plotters and are the application's (`write_outputs`, `vehicle-sim plot`).
 
 #[cfg(feature = "app")]
 mod figures;

@@ -368,8 +368,12 @@ impl Simulation {
         // step, no car library) has its motors untouched, as in Webots.
         for car in &self.cars {
             let vehicle = self.world.vehicle_mut(car.id)?;
-            if let Some(mut commands) = vehicle.commands().copied() {
-                commands.steering = car.driver.commanded_wheel_angles();
+            let angles = car.driver.commanded_wheel_angles();
+            if let Some(commands) = vehicle.commands()
+                && commands.steering != angles
+            {
+                let mut commands = *commands;
+                commands.steering = angles;
                 vehicle.set_commands(&commands);
             }
         }

@@ -37,9 +37,10 @@
 //! # Ok::<(), sim::sweep::SweepError>(())
 //! ```
 //!
-//! [`run`] runs a shard's cases on a rayon pool and hands their rows over in case order;
-//! [`write_sweep`] writes them into `results.csv` (with `timings.csv`, the manifest
-//! `sweep.json` and the plots); [`merge`] puts shards' outputs back together.
+//! With the `app` feature (default), `run` runs a shard's cases on a rayon pool and hands
+//! their rows over in case order; `write_sweep` writes them into `results.csv` (with
+//! `timings.csv`, the manifest `sweep.json` and the plots); `merge` puts shards' outputs back
+//! together. Without it, the cases run one at a time by index ([`Sweep::run_case`]).
 
 mod axis;
 mod cases;
