@@ -65,6 +65,11 @@ impl BodySpec {
         Ok(())
     }
 
+    /// Its faces' friction coefficient (dimensionless): its own, else [`DEFAULT_FRICTION`].
+    pub(crate) fn friction_or_default(&self) -> f64 {
+        self.friction.unwrap_or(DEFAULT_FRICTION)
+    }
+
     /// The corners of its footprint on the ground at the start (m, world x and y),
     /// counter-clockwise.
     pub fn footprint(&self) -> [Point2<f64>; 4] {
@@ -101,7 +106,7 @@ pub(crate) fn build(world: &mut PhysicsWorld, specs: &[BodySpec]) -> Vec<RigidBo
             let half = geom::vector(&(b.size / 2.0));
             let collider = ColliderBuilder::cuboid(half.x, half.y, half.z)
                 .mass(b.mass as f32)
-                .friction(b.friction.unwrap_or(DEFAULT_FRICTION) as f32)
+                .friction(b.friction_or_default() as f32)
                 .friction_combine_rule(CoefficientCombineRule::Multiply)
                 .collision_groups(geom::groups(G_DYNAMIC));
             world.insert_collider(collider, Some(handle));

@@ -96,6 +96,7 @@ mod config;
 mod diff_wheels;
 mod error;
 mod geom;
+mod ground;
 mod simulation;
 mod vehicle;
 mod world;

@@ -15,6 +15,7 @@ use crate::diff_wheels::{
 };
 use crate::error::{BodyOwner, BodyPart, SimError};
 use crate::geom::{self, G_STATIC};
+use crate::ground::{Ground, Surface};
 use crate::vehicle::{Vehicle, VehicleId, VehiclePlacement, VehicleSpec, WheelRoadHooks};
 
 /// A physics world with a flat ground at z = 0, static obstacles, cars and DifferentialWheels
@@ -39,6 +40,9 @@ use crate::vehicle::{Vehicle, VehicleId, VehiclePlacement, VehicleSpec, WheelRoa
 pub struct World {
     config: WorldConfig,
     physics: PhysicsWorld,
+    /// The friction of what the cars' wheels stand on, in f64 (rapier's colliders keep theirs
+    /// in f32 for its own contacts).
+    ground: Ground,
     vehicles: Vec<Vehicle>,
     robots: Vec<DifferentialWheels>,
     /// The dynamic boxes, in `config.bodies` order.
@@ -57,6 +61,7 @@ impl World {
         physics.integration_parameters = integration_parameters(&config);
         let mut world = World {
             physics,
+            ground: Ground::new(config.ground_friction),
             vehicles: Vec::new(),
             robots: Vec::new(),
             bodies: Vec::new(),
@@ -71,6 +76,16 @@ impl World {
         // come after it, so that they start falling at time 0.
         world.physics.step();
         world.bodies = body::build(&mut world.physics, &world.config.bodies);
+        for (h, spec) in world.bodies.iter().zip(&world.config.bodies) {
+            let Some(b) = world.physics.bodies.get(*h) else {
+                continue;
+            };
+            for &c in b.colliders() {
+                world
+                    .ground
+                    .add(c, Surface::Uniform(spec.friction_or_default()));
+            }
+        }
         Ok(world)
     }
 
@@ -81,13 +96,14 @@ impl World {
                 .friction_combine_rule(CoefficientCombineRule::Multiply)
                 .collision_groups(geom::groups(G_STATIC))
         };
-        self.physics.insert_collider(
+        let ground = self.physics.insert_collider(
             statics(
                 ColliderBuilder::halfspace(Unit::new_unchecked(Vector::Z)),
                 mu,
             ),
             None,
         );
+        self.ground.add(ground, Surface::Uniform(mu));
         for o in &self.config.obstacles {
             let shape = match *o {
                 Obstacle::Box { half_extents, .. } => {
@@ -110,9 +126,10 @@ impl World {
                 }
             };
             let (at, yaw) = o.placement();
-            let collider =
-                statics(shape, o.friction().unwrap_or(mu)).position(geom::pose_xyz_yaw(&at, yaw));
-            self.physics.insert_collider(collider, None);
+            let friction = o.friction().unwrap_or(mu);
+            let collider = statics(shape, friction).position(geom::pose_xyz_yaw(&at, yaw));
+            let handle = self.physics.insert_collider(collider, None);
+            self.ground.add(handle, Surface::Uniform(friction));
         }
     }
 
@@ -347,9 +364,9 @@ impl World {
             // a cast car sets its chassis velocity for the whole basicTimeStep.
             for v in &mut self.vehicles {
                 if v.on_joints() {
-                    v.pre_step(&mut self.physics, sub_dt);
+                    v.pre_step(&mut self.physics, &self.ground, sub_dt);
                 } else if k == 0 {
-                    v.pre_step(&mut self.physics, dt);
+                    v.pre_step(&mut self.physics, &self.ground, dt);
                 }
             }
             self.physics.step_with_events(&WheelRoadHooks, &());
@@ -414,6 +431,10 @@ fn integration_parameters(config: &WorldConfig) -> IntegrationParameters {
         ..IntegrationParameters::default()
     }
 }
+
+// The ground's friction as both mountings read it in a world.
+#[cfg(test)]
+mod ground_tests;
 
 #[cfg(test)]
 mod tests {

@@ -8,10 +8,10 @@ use rapier3d::prelude::{
     RigidBodyBuilder, RigidBodyHandle, Rotation, Vector,
 };
 
-use super::contact::{Body, Contact, Spring, Support, WheelRow};
+use super::contact::{Body, Contact, Spring, Support};
 use super::inertia::mass_properties;
 use super::spec::VehicleSpec;
-use super::wheels::Footing;
+use super::step::{Found, Mount, Solved, Touch};
 use super::{Frame, MIN_GROUND_COSINE, Vehicle};
 use crate::geom::{self, G_CAR_BODY};
 
@@ -56,18 +56,17 @@ pub(crate) fn build(world: &mut PhysicsWorld, spec: &VehicleSpec, origin: Pose) 
     }
 }
 
-/// Wheel `w`'s ground contact and the ground's friction: the tyre (turned by `steer`, spin
-/// axis `axis` in world axes) swept down the suspension axis from one radius above its hard
-/// point to the hard point (the unloaded spring length); the first static surface it meets,
-/// unless too steep to stand on.
-pub(crate) fn find_contact(
+/// Wheel `w`'s ground contact: the tyre (turned by `steer`, spin axis `axis` in world axes)
+/// swept down the suspension axis from one radius above its hard point to the hard point (the
+/// unloaded spring length); the first static surface it meets, unless too steep to stand on.
+fn find_contact(
     world: &PhysicsWorld,
     spec: &VehicleSpec,
     w: Wheel,
     frame: &Frame,
     steer: Rotation,
     axis: Vector,
-) -> Option<(Contact, f32)> {
+) -> Option<Touch> {
     let s = spec.wheels[w];
     let suspension = if w.is_front() {
         spec.front_suspension
@@ -93,7 +92,6 @@ pub(crate) fn find_contact(
     }
     let compression = radius - hit.time_of_impact;
     let centre = hard_point + up * compression;
-    let friction = world.colliders.get(collider).map_or(1.0, |c| c.friction());
     let spring = Spring {
         hardpoint_arm: hard_point - frame.com,
         up,
@@ -102,53 +100,53 @@ pub(crate) fn find_contact(
         damping: suspension.damping as f32,
     };
     let contact = Contact::on_ground(Support::Spring(spring), n, axis, centre, radius, frame.com)?;
-    Some((contact, friction))
+    Some(Touch {
+        contact,
+        collider,
+        given_impulse: None,
+        // The cast meets static surfaces only.
+        ground_body: None,
+    })
+}
+
+/// The cast car's step: the steering is this crate's; the suspension, tyres, brakes and spins
+/// are solved together on the chassis, whose velocity goes to rapier.
+impl Mount for Parts {
+    const CARRIES_LOAD: bool = true;
+    const WARM_RIGID_FORWARD: bool = true;
+
+    fn steer(&self, car: &mut Vehicle, _world: &mut PhysicsWorld, dt: f64) {
+        car.steer(dt);
+    }
+
+    fn chassis(&self, world: &PhysicsWorld, dt: f64) -> Option<(Frame, Body)> {
+        let chassis = world.bodies.get(self.chassis)?;
+        let frame = Frame::of(chassis);
+        let body = Body::new(
+            chassis.linvel() + world.gravity * dt as f32,
+            chassis.angvel(),
+            self.inv_mass,
+            self.inv_inertia,
+            frame.pose.rotation,
+        );
+        Some((frame, body))
+    }
+
+    fn find(&self, car: &Vehicle, world: &PhysicsWorld, w: Wheel, frame: &Frame) -> Option<Found> {
+        let (steer, axis) = car.wheel_axis(w, frame);
+        let touch = find_contact(world, &car.spec, w, frame, steer, axis);
+        Some(Found { axis, touch })
+    }
+
+    fn hand_back(&self, _car: &mut Vehicle, world: &mut PhysicsWorld, solved: &Solved, _dt: f64) {
+        if let Some(chassis) = world.bodies.get_mut(self.chassis) {
+            chassis.set_linvel(solved.body.linvel, true);
+            chassis.set_angvel(solved.body.angvel, true);
+        }
+    }
 }
 
 impl Vehicle {
-    /// The cast car's step of `dt` seconds: the steering is this crate's; the suspension,
-    /// tyres, brakes and spins are solved together on the chassis, whose velocity goes to
-    /// rapier.
-    pub(super) fn pre_step_cast(&mut self, world: &mut PhysicsWorld, parts: &Parts, dt: f64) {
-        self.steer(dt);
-        let Some(chassis) = world.bodies.get(parts.chassis) else {
-            return;
-        };
-        let frame = Frame::of(chassis);
-        let mut body = Body::new(
-            chassis.linvel() + world.gravity * dt as f32,
-            chassis.angvel(),
-            parts.inv_mass,
-            parts.inv_inertia,
-            frame.pose.rotation,
-        );
-        let mut rows = [WheelRow::idle(); 4];
-        let mut imposed = [0.0; 4];
-        let mut axes = [Vector::ZERO; 4];
-        let mut roads = [0.0; 4];
-        for (i, w) in Wheel::ALL.into_iter().enumerate() {
-            let (steer, axis) = self.wheel_axis(w, &frame);
-            axes[i] = axis;
-            imposed[i] = self.start_row(w, &mut rows[i], dt);
-            if let Some((contact, road)) = find_contact(world, &self.spec, w, &frame, steer, axis) {
-                roads[i] = road;
-                let footing = Footing {
-                    road: f64::from(road),
-                    load: self.tyre_load(w, &contact, dt),
-                };
-                self.set_up_contact(w, &mut rows[i], contact, &body, footing, dt);
-            }
-        }
-        self.divide_axles(&mut rows);
-        // The solve carries the load here: the braked wheels' sub-steps take its mean too.
-        self.solve_contacts(&mut body, &mut rows, true, dt);
-        self.finish_wheels(&mut body, &rows, imposed, axes, roads, dt);
-        if let Some(chassis) = world.bodies.get_mut(parts.chassis) {
-            chassis.set_linvel(body.linvel, true);
-            chassis.set_angvel(body.angvel, true);
-        }
-    }
-
     /// The rotation of wheel `w` by its steering angle, and its spin axis in world axes (the
     /// chassis' y turned by the steering).
     fn wheel_axis(&self, w: Wheel, frame: &Frame) -> (Rotation, Vector) {
@@ -160,15 +158,5 @@ impl Vehicle {
         // Positive steering turns right: the wheel (its axis, car y) turned by −δ about z.
         let steer = Rotation::from_rotation_z(-delta as f32);
         (steer, frame.pose.rotation * (steer * Vector::Y))
-    }
-
-    /// The load (N) wheel `w`'s tyre coefficients are taken at on `contact`: the last step's,
-    /// or the spring's at the current compression for a wheel that just landed.
-    fn tyre_load(&self, w: Wheel, contact: &Contact, dt: f64) -> f64 {
-        let previous = f64::from(self.impulses[w].normal) / dt;
-        match contact.support {
-            Support::Spring(s) if previous <= 0.0 => f64::from(s.stiffness * s.compression),
-            _ => previous,
-        }
     }
 }

@@ -45,9 +45,10 @@
 //! (rigid velocity motors of `maxSteeringTorque` at the Webots position controller's velocity),
 //! the **wheel–ground normal contacts** and every collision.
 //!
-//! This crate: the **tyre forces**, brakes and wheel spins, by the cast car's solve
-//! (`contact`): each wheel's ground contact of the last rapier step gives the contact normal,
-//! the load (its normal impulse) and the ground's friction; the solve runs on the whole car as
+//! This crate: the **tyre forces**, brakes and wheel spins, by the cast car's step and solve
+//! (`step`, `contact`): each wheel's ground contact of the last rapier step gives the contact
+//! normal, the load (its normal impulse) and the collider whose friction the world's ground
+//! gives (a dynamic box's own, the ground's for another car); the solve runs on the whole car as
 //! one rigid body (the joints hold the wheels to the chassis in the ground plane) with the
 //! loads given, and its results go to rapier as the tyre force at each contact point on the
 //! wheel (its reaction on the ground, if the ground is a dynamic body) and the spin reaction.
@@ -59,12 +60,12 @@ use rapier3d::prelude::{
     RigidBody, RigidBodyBuilder, RigidBodyHandle, Vector,
 };
 
-use super::contact::{Body, Contact, Support, WheelRow};
+use super::contact::{Body, Contact, Support};
 use super::inertia::{Inertia, body_inertia, mass_properties};
 use super::multibody::{self, Parts, WheelImpulse};
 use super::spec::{SpringDamper, VehicleSpec, WheelSpec};
+use super::step::{Found, Mount, Solved, Touch};
 use super::tread::WHEEL_HOOKS;
-use super::wheels::Footing;
 use super::{Frame, Vehicle};
 use crate::geom::{self, G_CAR_BODY, G_CAR_WHEEL};
 use crate::motor;
@@ -318,13 +319,13 @@ fn steer(world: &mut PhysicsWorld, parts: &Parts, rates: [f64; 2], max_torque: f
 #[derive(Debug, Clone, Copy)]
 struct GroundContact {
     /// The ground's normal (unit, out of the ground).
-    pub normal: Vector,
+    normal: Vector,
     /// The normal impulse rapier applied over the last step (N·s, ≥ 0).
-    pub impulse: f32,
-    /// The ground's friction coefficient.
-    pub friction: f32,
+    impulse: f32,
+    /// The ground's collider: its friction is the world's `Ground`'s for it.
+    collider: ColliderHandle,
     /// The ground's body, if it is dynamic (it takes the tyre force's reaction).
-    pub body: Option<RigidBodyHandle>,
+    body: Option<RigidBodyHandle>,
 }
 
 /// Wheel `w`'s ground: of the surfaces its tyre touched in the last step within 45° of the
@@ -364,14 +365,15 @@ fn ground_contact(
             if best.is_some_and(|b| b.impulse >= impulse) {
                 continue;
             }
-            let collider = world.colliders.get(other);
-            let body = collider
+            let body = world
+                .colliders
+                .get(other)
                 .and_then(|c| c.parent())
                 .filter(|&h| world.bodies.get(h).is_some_and(|b| b.is_dynamic()));
             best = Some(GroundContact {
                 normal,
                 impulse,
-                friction: collider.map_or(0.0, |c| c.friction()),
+                collider: other,
                 body,
             });
         }
@@ -410,95 +412,69 @@ pub(crate) fn read(world: &PhysicsWorld, parts: &Parts) -> Option<Readings> {
     Some(r)
 }
 
-impl Vehicle {
-    /// The step of `dt` seconds of a car on joints: rapier's steering motors get the position
-    /// controller's velocities; the tyres, brakes and spins are solved on the whole car with
-    /// the loads of rapier's last contacts, and go to rapier as tyre forces and the spins'
-    /// reactions.
-    pub(super) fn pre_step_joints(&mut self, world: &mut PhysicsWorld, parts: &Parts, dt: f64) {
-        let rates = self.steering_rates();
-        steer(world, parts, rates, self.spec.steering.max_torque);
-        let Some(chassis) = world.bodies.get(parts.chassis) else {
-            return;
-        };
-        let pose = car_pose(chassis, parts);
+/// The step of a car on joints: rapier's steering motors get the position controller's
+/// velocities; the tyres, brakes and spins are solved on the whole car with the loads of
+/// rapier's last contacts, and go to rapier as tyre forces and the spins' reactions.
+impl Mount for Parts {
+    const CARRIES_LOAD: bool = false;
+    const WARM_RIGID_FORWARD: bool = false;
+
+    fn steer(&self, car: &mut Vehicle, world: &mut PhysicsWorld, _dt: f64) {
+        let rates = car.steering_rates();
+        steer(world, self, rates, car.spec.steering.max_torque);
+    }
+
+    fn chassis(&self, world: &PhysicsWorld, dt: f64) -> Option<(Frame, Body)> {
+        let chassis = world.bodies.get(self.chassis)?;
+        let pose = car_pose(chassis, self);
         let frame = Frame {
             pose,
-            com: pose.transform_point(parts.com),
+            com: pose.transform_point(self.com),
             up: pose.rotation * Vector::Z,
         };
-        let Some(motion) = multibody::chassis_motion(world, parts) else {
-            return;
-        };
-        let mut body = Body::new(
+        let motion = multibody::chassis_motion(world, self)?;
+        let body = Body::new(
             motion.velocity_at(frame.com) + world.gravity * dt as f32,
             motion.angvel,
-            parts.inv_mass,
-            parts.inv_inertia,
+            self.inv_mass,
+            self.inv_inertia,
             pose.rotation,
         );
-        let mut rows = [WheelRow::idle(); 4];
-        let mut imposed = [0.0; 4];
-        let mut roads = [0.0; 4];
-        let mut grounds = [None; 4];
-        let mut axes = [Vector::ZERO; 4];
-        for (i, w) in Wheel::ALL.into_iter().enumerate() {
-            imposed[i] = self.start_row(w, &mut rows[i], dt);
-            let Some((centre, axis)) = wheel_frame(world, parts, w) else {
-                continue;
-            };
-            axes[i] = axis;
-            let tread = Tread::of(&self.spec.wheels[w]);
-            let Some((contact, g)) = wheel_contact(world, parts, w, &frame, centre, axis, tread)
-            else {
-                continue;
-            };
-            // rapier carried the load: the row's normal impulse is given.
-            rows[i].impulses.normal = g.impulse;
-            roads[i] = g.friction;
-            grounds[i] = g.body;
-            let footing = Footing {
-                road: f64::from(g.friction),
-                load: f64::from(g.impulse) / dt,
-            };
-            self.set_up_contact(w, &mut rows[i], contact, &body, footing, dt);
-        }
-        self.divide_axles(&mut rows);
-        for row in &mut rows {
-            row.cold_start_rigid_forward();
-        }
-        // rapier carries the load: only the chassis' motion is corrected.
-        self.solve_contacts(&mut body, &mut rows, false, dt);
-        let spin_changes = self.finish_wheels(&mut body, &rows, imposed, axes, roads, dt);
+        Some((frame, body))
+    }
+
+    fn find(&self, car: &Vehicle, world: &PhysicsWorld, w: Wheel, frame: &Frame) -> Option<Found> {
+        let (centre, axis) = wheel_frame(world, self, w)?;
+        let tread = Tread::of(&car.spec.wheels[w]);
+        let touch = wheel_contact(world, self, w, frame, centre, axis, tread);
+        Some(Found { axis, touch })
+    }
+
+    fn hand_back(&self, car: &mut Vehicle, world: &mut PhysicsWorld, solved: &Solved, dt: f64) {
         let mut handed = PerWheel::splat(WheelImpulse::default());
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
+            let row = &solved.rows[i];
             handed[w] = WheelImpulse {
-                tyre: rows[i].contact.map(|c| {
+                tyre: row.contact.map(|c| {
                     (
-                        c.forward * rows[i].impulses.forward + c.lateral * rows[i].impulses.lateral,
-                        frame.com + c.contact_arm,
+                        c.forward * row.impulses.forward + c.lateral * row.impulses.lateral,
+                        solved.frame.com + c.contact_arm,
                     )
                 }),
-                spin: axes[i] * -spin_changes[i] as f32,
-                ground: grounds[i],
+                spin: solved.axes[i] * -solved.spin_changes[i] as f32,
+                ground: solved.ground_bodies[i],
             };
         }
-        if !self.joint_space_mass_ready {
-            self.joint_space_mass_ready = multibody::joint_space_mass_ready(world, parts);
+        if !car.joint_space_mass_ready {
+            car.joint_space_mass_ready = multibody::joint_space_mass_ready(world, self);
         }
-        multibody::hand_over(
-            world,
-            parts,
-            &handed,
-            dt as f32,
-            self.joint_space_mass_ready,
-        );
+        multibody::hand_over(world, self, &handed, dt as f32, car.joint_space_mass_ready);
     }
 }
 
 /// Wheel `w`'s contact for the solve (its `tread` centred at `centre` on the spin `axis`, on
 /// the ground rapier found under it in the last step, with arms from the centre of mass of
-/// `frame`) and that ground; `None` in the air.
+/// `frame`); `None` in the air.
 fn wheel_contact(
     world: &PhysicsWorld,
     parts: &Parts,
@@ -507,7 +483,7 @@ fn wheel_contact(
     centre: Vector,
     axis: Vector,
     tread: Tread,
-) -> Option<(Contact, GroundContact)> {
+) -> Option<Touch> {
     let g = ground_contact(world, parts, w, frame.up)?;
     let point = tread.contact_point(centre, axis, g.normal);
     let contact = Contact::at_point(
@@ -518,7 +494,12 @@ fn wheel_contact(
         tread.radius,
         frame.com,
     )?;
-    Some((contact, g))
+    Some(Touch {
+        contact,
+        collider: g.collider,
+        given_impulse: Some(g.impulse),
+        ground_body: g.body,
+    })
 }
 
 #[cfg(test)]

@@ -9,9 +9,9 @@
 //! * **wheels**: no rapier bodies. Each step the tyre, a cylinder of `tireRadius` × `thickness`
 //!   turned by the wheel's steering angle, is swept down the chassis' −z axis from one radius
 //!   above the wheel's hard point (its centre at the unloaded spring length) to the hard point;
-//!   the first static surface it meets is the wheel's ground contact (point, normal, friction,
-//!   and the spring compression). Each wheel keeps its own spin rate and, at the front, a
-//!   steering angle.
+//!   the first static surface it meets is the wheel's ground contact (point, normal and the
+//!   spring compression). Each wheel keeps its own spin rate and, at the front, a steering
+//!   angle.
 //!
 //! Webots builds the same car from ODE joints (`Hinge2Joint` at the front, `HingeJoint` at the
 //! rear) and cylinder contacts. The wheels here are those joints written as constraints of a
@@ -47,12 +47,27 @@
 //!
 //! The wipers are kinematic: their angle follows the Webots position controller (P = 10) at the
 //! commanded velocity within the wiper range; no body is simulated.
+//!
+//! # One step, two mountings
+//!
+//! The step above is written once (`step`) for both mountings. What differs is a `Mount`,
+//! implemented by each mounting's rapier parts: how the steering moves (this crate's motor
+//! model, or rapier's motors at the position controller's velocity), how the chassis' motion
+//! is read (the chassis body's, or the multibody's generalized velocity), where a wheel
+//! touches the ground (the shape cast, or rapier's last contacts, whose loads are then given
+//! to the solve), and how the solved step reaches rapier (the chassis' velocity, or impulses
+//! on the multibody). The ground's friction under a wheel (dimensionless, f64) is not read
+//! back from rapier's colliders: both mountings ask the world's `Ground` for the surface they
+//! touch at the contact point, the configured friction of the ground or of that obstacle
+//! (that of a dynamic box under a joints car's wheel; the ground's for anything else, another
+//! car or a robot).
 
 // One concept per module: what a car is built from (`spec`) and what it measures (`state`);
 // the Webots motors of a step (`actuators`); each wheel's row before and after the solve
-// (`wheels`); the solve itself (`contact`); and, per mounting, the rapier bodies, the contact
-// query and the step that ties the others together (`cast`, `joints`). This file holds the car
-// and its life in a world: construction, commands, the step's dispatch and the read-back.
+// (`wheels`); the solve itself (`contact`); the step that ties the others together, once for
+// both mountings (`step`); and, per mounting, the rapier bodies, the contact query and the
+// rest of what `step`'s `Mount` asks (`cast`, `joints` with `multibody`). This file holds the
+// car and its life in a world: construction, commands, the step's dispatch and the read-back.
 mod actuators;
 mod cast;
 mod contact;
@@ -61,6 +76,7 @@ mod joints;
 mod multibody;
 mod spec;
 mod state;
+mod step;
 mod tread;
 mod wheels;
 
@@ -80,6 +96,7 @@ pub use state::{TyreTelemetry, VehicleId, VehiclePlacement, VehicleState};
 use crate::attitude::RollPitchYaw;
 use crate::error::{BodyOwner, BodyPart, ParamError, SimError};
 use crate::geom;
+use crate::ground::Ground;
 use crate::motor::{PositionServo, VelocityRamp};
 use contact::Impulses;
 
@@ -230,13 +247,13 @@ impl Vehicle {
     }
 
     /// Applies the commands for the coming step of `dt` seconds: steering, wheel spins, then
-    /// the tyre and brake solve (with the suspension, for a cast car), whose results rapier
-    /// integrates.
-    pub(crate) fn pre_step(&mut self, world: &mut PhysicsWorld, dt: f64) {
+    /// the tyre and brake solve (with the suspension, for a cast car) on the friction that
+    /// `ground` gives each wheel, whose results rapier integrates.
+    pub(crate) fn pre_step(&mut self, world: &mut PhysicsWorld, ground: &Ground, dt: f64) {
         self.step_wipers(dt);
         match self.parts.clone() {
-            Parts::Cast(p) => self.pre_step_cast(world, &p, dt),
-            Parts::Joints(p) => self.pre_step_joints(world, &p, dt),
+            Parts::Cast(p) => self.step_on(&p, world, ground, dt),
+            Parts::Joints(p) => self.step_on(&p, world, ground, dt),
         }
     }
 

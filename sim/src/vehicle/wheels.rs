@@ -199,7 +199,7 @@ impl Vehicle {
         rows: &[WheelRow; 4],
         imposed: [f64; 4],
         axes: [Vector; 4],
-        roads: [f32; 4],
+        roads: [f64; 4],
         dt: f64,
     ) -> [f64; 4] {
         let omegas: [f64; 4] = core::array::from_fn(|i| rows[i].solved_spin(imposed[i]));
@@ -208,7 +208,7 @@ impl Vehicle {
             spin_changes[i] = self.react_to_spin(body, w, axes[i], omegas[i]);
         }
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
-            self.finish_wheel(w, &rows[i], body, f64::from(roads[i]), omegas[i], dt);
+            self.finish_wheel(w, &rows[i], body, roads[i], omegas[i], dt);
         }
         spin_changes
     }
