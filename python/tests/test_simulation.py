@@ -200,3 +200,31 @@ def test_cars_are_added_before_the_first_step():
     sim.step()
     with pytest.raises(RuntimeError, match="add every vehicle before recording starts"):
         sim.add_car("ToyotaPrius", translation=[0, 10, 0.4])
+
+
+def test_the_outputs_world_drives_the_same_car_as_vehicle_sim(vehicle_sim, tmp_path):
+    # A BmwX5 on joints, Webots' tyre contact and proportioned brakes: built by the package
+    # from the world file, driven with its programme's commands at the same instants, it
+    # writes the rows vehicle-sim writes for the programme.
+    world = WORLDS / "outputs.toml"
+    sim = wv.Simulation(str(world))
+    car = sim.car
+    car.set_cruising_speed(40)
+    sim.run_for(1.5)
+    car.set_steering_angle(0.1)
+    sim.run_for(1.5)
+    car.set_brake_intensity(0.6)
+    assert sim.run_for(1.0) is False  # duration = 4 s
+    sim.save(tmp_path / "package")
+    subprocess.run(
+        [str(vehicle_sim), "--world", str(world), "--out", str(tmp_path / "cli")],
+        capture_output=True, text=True, check=True,
+    )
+
+    def rows(directory):
+        with open(directory / "telemetry.csv", newline="") as f:
+            return [row[1:] for row in csv.reader(f)][1:]
+
+    package, cli = rows(tmp_path / "package"), rows(tmp_path / "cli")
+    assert len(package) == 401
+    assert package == cli

@@ -4,12 +4,11 @@
 
 use vehicle_model::Driver;
 
-use crate::car_builder::CarBuilder;
+use crate::error::SimError;
 use crate::replay::Recorder;
 use crate::simulation::Simulation;
 use crate::telemetry::{Sample, Telemetry, VehicleKind};
 use crate::vehicle::{VehicleId, VehicleSpec, VehicleState};
-use crate::world::World;
 use crate::world_file::{CarDescription, WorldDescription};
 
 use super::{Metric, Scenario, ScenarioError, ScenarioResult};
@@ -40,17 +39,20 @@ pub(crate) struct CarRig {
 }
 
 impl CarRig {
-    /// Builds the world of `desc` with the car of `car` on its tyres at its
-    /// `translation`/`rotation`.
+    /// Builds the world of `desc` (whose car is `car`), as described.
     pub(crate) fn new(
         desc: &WorldDescription,
         car: &CarDescription,
         limit: f64,
         expected: f64,
     ) -> Result<Self, ScenarioError> {
-        let mut sim = Simulation::new(World::new(desc.config.clone())?);
-        // The world file validated the params already: the report is empty.
-        let (id, _) = sim.add_car(CarBuilder::from(car))?;
+        // The world as every front-end builds it; the scenarios drive worlds of one car
+        // (`Scenario::check`), so `car` is its only one.
+        let (sim, _) = Simulation::from_description(desc)?;
+        let id = sim
+            .car_ids()
+            .find(|&id| sim.car_name(id).is_ok_and(|n| n == car.name))
+            .ok_or(SimError::UnknownVehicle(0))?;
         let vehicle = sim.world().vehicle(id)?;
         let (state, spec) = (*vehicle.state(), *vehicle.spec());
         let samples = vec![Sample::of_car(&sim, id)?];
