@@ -8,7 +8,7 @@
 
 use pyo3::exceptions::{PyIndexError, PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PyBytes;
+use pyo3::types::{PyByteArray, PyBytes};
 
 use sim::scenario::{self, Scenario};
 use sim::telemetry::{CSV_HEADER, SAMPLE_COLUMNS, Sample, TelemetryLog};
@@ -315,19 +315,24 @@ impl Simulation {
             .map(|r| r.to_vec()))
     }
 
-    /// Every sample of car `car` as native-endian f64 bytes, row-major (rows × columns).
-    fn telemetry<'py>(&self, py: Python<'py>, car: usize) -> PyResult<Bound<'py, PyBytes>> {
+    /// Every sample of car `car` as native-endian f64 bytes, row-major (rows × columns), in a
+    /// `bytearray` written in place: numpy takes it as a writable array without a copy, so
+    /// reading a long run needs its table's memory once.
+    fn telemetry<'py>(&self, py: Python<'py>, car: usize) -> PyResult<Bound<'py, PyByteArray>> {
         let Some(log) = self.log(car)? else {
-            return Ok(PyBytes::new(py, &[]));
+            return Ok(PyByteArray::new(py, &[]));
         };
-        let mut bytes = Vec::with_capacity(log.len() * SAMPLE_COLUMNS * 8);
-        log.for_each(|row| {
-            for v in row {
-                bytes.extend_from_slice(&v.to_ne_bytes());
-            }
+        PyByteArray::new_with(py, log.len() * SAMPLE_COLUMNS * 8, |bytes: &mut [u8]| {
+            let mut cells = bytes.chunks_exact_mut(8);
+            log.for_each(|row| {
+                // The row first: zip asks its first iterator first, and a cell taken after the
+                // row's end would be lost.
+                for (v, cell) in row.iter().zip(cells.by_ref()) {
+                    cell.copy_from_slice(&v.to_ne_bytes());
+                }
+            })
+            .map_err(|e| PyOSError::new_err(e.to_string()))
         })
-        .map_err(|e| PyOSError::new_err(e.to_string()))?;
-        Ok(PyBytes::new(py, &bytes))
     }
 
     /// Runs the `vehicle-sim` scenario `name` on a fresh copy of this simulation's world file

@@ -132,7 +132,7 @@ class Simulation:
         """telemetry.csv, metrics.json and replay.glb of the run so far."""
     def sample_count(self, car: int) -> int: ...
     def last_sample(self, car: int) -> Optional[List[float]]: ...
-    def telemetry(self, car: int) -> bytes:
+    def telemetry(self, car: int) -> bytearray:
         """Native-endian float64, row-major (samples x columns)."""
     def run(self, name: str) -> Tuple[str, List[Tuple[str, bytes]]]:
         """The ``vehicle-sim --json`` object and each single scenario's telemetry table."""

@@ -1,6 +1,6 @@
 """Per-step telemetry as numpy arrays."""
 
-from typing import Any, Dict, Iterator, Sequence
+from typing import Any, Dict, Iterator, Sequence, Union
 
 import numpy as np
 
@@ -22,8 +22,11 @@ class Telemetry:
     ``t.to_pandas()`` a DataFrame with the same columns (needs pandas).
     """
 
-    def __init__(self, table: bytes, name: str = "") -> None:
-        data = np.frombuffer(table, dtype=np.float64).reshape(-1, len(COLUMNS)).copy()
+    def __init__(self, table: Union[bytes, bytearray], name: str = "") -> None:
+        data = np.frombuffer(table, dtype=np.float64).reshape(-1, len(COLUMNS))
+        # A bytearray (a simulation's telemetry) is taken as it is; bytes are read-only.
+        if not data.flags.writeable:
+            data = data.copy()
         self._data = data
         self._name = name
 
