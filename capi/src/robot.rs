@@ -107,6 +107,14 @@ impl Robot {
         for w in reports.iter().flatten() {
             eprintln!("Warning: {}: {w}", description.source);
         }
+        // Nothing the world says is dropped silently: its programme is vehicle-sim's to run.
+        if description.has_programme() {
+            eprintln!(
+                "Warning: {}: the world's programme is not run: the controller drives (vehicle-sim \
+                 runs programmes).",
+                description.source
+            );
+        }
         let body = match (simulation.car_ids().next(), simulation.robot_ids().next()) {
             (Some(id), _) => Body::Car {
                 id,

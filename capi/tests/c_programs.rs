@@ -159,7 +159,17 @@ fn a_controller_run_writes_the_outputs_of_the_same_programme() {
     cmd.env("VEHICLE_OUT", &out);
     let r = run_command(cmd, Some(&world.display().to_string()));
     assert!(r.status.success(), "outputs: {}{}", r.stdout, r.stderr);
-    assert_eq!(r.stderr, "", "outputs: stderr");
+    // The world's programme is the other way to drive it: the controller is told it does not
+    // run.
+    assert_eq!(
+        r.stderr,
+        format!(
+            "Warning: {}: the world's programme is not run: the controller drives (vehicle-sim \
+             runs programmes).\n",
+            world.display()
+        ),
+        "outputs: stderr"
+    );
 
     let description = sim::world_file::load_file(&world).unwrap();
     let report = sim::scenario::run(
