@@ -23,7 +23,7 @@ pub const WINDOW_PER_THREAD: usize = 32;
 
 /// Most threads a sweep runs on: 1024. More than the cores of any single machine the runner
 /// targets (a sweep spreads further as shards); each thread holds a world while it runs a
-/// case and [`WINDOW_PER_THREAD`] rows of reorder window, and starting thousands of threads
+/// case and 32 rows (`WINDOW_PER_THREAD`) of reorder window, and starting thousands of threads
 /// takes seconds before the first case (10,000 took 12 s to fail). A larger count is refused,
 /// not lowered.
 pub const MAX_THREADS: usize = 1024;
