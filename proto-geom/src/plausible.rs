@@ -196,6 +196,18 @@ pub const COEFFICIENT: Plausible = Plausible {
     unit: "",
 };
 
+/// A Coulomb friction coefficient (dimensionless) of a surface: the ground's, an obstacle's,
+/// a body's. Rubber grips dry asphalt at about 1, racing slicks and soft silicone reach 2 to
+/// 4: 100 leaves room for a surface meant never to slide while keeping the physics finite.
+/// rapier multiplies two surfaces' coefficients in f32 (at most 10⁴ here), and the tyre's
+/// force is the coefficient times the load; a coefficient past `f32::MAX` (`1e39`) became
+/// infinite in rapier and the tyre gripped nothing at all.
+pub const FRICTION: Plausible = Plausible {
+    min: 0.0,
+    max: 100.0,
+    unit: "",
+};
+
 #[cfg(test)]
 mod tests {
     use super::*;

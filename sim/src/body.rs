@@ -40,7 +40,8 @@ pub struct BodySpec {
     pub yaw: f64,
     /// Mass (kg, in [`plausible::MASS`]), spread uniformly over the box.
     pub mass: f64,
-    /// Coulomb friction of its faces (≥ 0), multiplied by the other surface's (the ground's,
+    /// Coulomb friction of its faces (dimensionless, 0 to 100: [`plausible::FRICTION`]),
+    /// multiplied by the other surface's (the ground's,
     /// a chassis' 1, another box's); `None` = [`DEFAULT_FRICTION`] (1), so that on the ground
     /// the box slides with the ground's friction.
     pub friction: Option<f64>,
@@ -48,7 +49,7 @@ pub struct BodySpec {
 
 impl BodySpec {
     /// Checks every field: a finite centre and heading, sizes and mass within their ranges and
-    /// a finite friction ≥ 0. Fields are named `body.center`, `body.size`, `body.yaw`,
+    /// a friction from 0 to 100. Fields are named `body.center`, `body.size`, `body.yaw`,
     /// `body.mass` and `body.friction`.
     pub fn validate(&self) -> Result<(), ParamError> {
         for &c in self.center.iter() {
@@ -60,7 +61,7 @@ impl BodySpec {
         ParamError::finite("body.yaw", self.yaw)?;
         ParamError::within("body.mass", self.mass, plausible::MASS)?;
         if let Some(f) = self.friction {
-            ParamError::non_negative("body.friction", f)?;
+            ParamError::friction("body.friction", f)?;
         }
         Ok(())
     }

@@ -28,7 +28,7 @@ pub enum Obstacle {
         half_extents: Vector3<f64>,
         /// Heading (rad, counter-clockwise about +z).
         yaw: f64,
-        /// Coulomb friction; `None` = the ground's.
+        /// Coulomb friction (dimensionless, 0 to 100); `None` = the ground's.
         friction: Option<f64>,
     },
     /// A wedge rising from the ground: a rectangle of `length` × `width` whose far edge is
@@ -44,7 +44,7 @@ pub enum Obstacle {
         width: f64,
         /// Height of the far edge (m).
         height: f64,
-        /// Coulomb friction; `None` = the ground's.
+        /// Coulomb friction (dimensionless, 0 to 100); `None` = the ground's.
         friction: Option<f64>,
     },
 }
@@ -116,7 +116,7 @@ impl Obstacle {
                 }
                 ParamError::finite("obstacle.box.yaw", *yaw)?;
                 if let Some(f) = friction {
-                    ParamError::non_negative("obstacle.box.friction", *f)?;
+                    ParamError::friction("obstacle.box.friction", *f)?;
                 }
             }
             Obstacle::Ramp {
@@ -135,7 +135,7 @@ impl Obstacle {
                 ParamError::within("obstacle.ramp.width", *width, plausible::LENGTH)?;
                 ParamError::within("obstacle.ramp.height", *height, plausible::LENGTH)?;
                 if let Some(f) = friction {
-                    ParamError::non_negative("obstacle.ramp.friction", *f)?;
+                    ParamError::friction("obstacle.ramp.friction", *f)?;
                 }
             }
         }
@@ -208,8 +208,9 @@ pub struct WorldConfig {
     pub gravity: Vector3<f64>,
     /// The fixed physics step (ms, ≥ 1). Webots: `WorldInfo.basicTimeStep`.
     pub basic_time_step_ms: u32,
-    /// Coulomb friction between the ground (and obstacles without their own) and anything on it.
-    /// Webots: `ContactProperties.coulombFriction` (default 1).
+    /// Coulomb friction between the ground (and obstacles without their own) and anything on it
+    /// (dimensionless, 0 to 100: [`proto_geom::plausible::FRICTION`]). Webots:
+    /// `ContactProperties.coulombFriction` (default 1).
     pub ground_friction: f64,
     /// Static boxes and ramps.
     pub obstacles: Vec<Obstacle>,
@@ -238,7 +239,8 @@ impl WorldConfig {
         f64::from(self.basic_time_step_ms) / 1000.0
     }
 
-    /// Checks every field: finite gravity, a step of 1 ms to 1 s, a friction ≥ 0, valid
+    /// Checks every field: finite gravity, a step of 1 ms to 1 s, a friction from 0 to 100
+    /// ([`proto_geom::plausible::FRICTION`]), valid
     /// obstacles and dynamic boxes and 1 to 64 iterations of each solver kind.
     pub fn validate(&self) -> Result<(), ParamError> {
         for &g in self.gravity.iter() {
@@ -257,7 +259,7 @@ impl WorldConfig {
             "between 1 and 1000 ms",
             |v| (1.0..=1000.0).contains(&v),
         )?;
-        ParamError::non_negative("ground.friction", self.ground_friction)?;
+        ParamError::friction("ground.friction", self.ground_friction)?;
         for o in &self.obstacles {
             o.validate()?;
         }

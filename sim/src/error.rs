@@ -27,6 +27,15 @@ pub enum Rule {
     Text(&'static str),
     /// A plausible physical range ([`proto_geom::plausible`]).
     Within(Plausible),
+    /// A lower bound that depends on another field: at least `bound` (in the field's unit),
+    /// `why` saying what the bound is and why it holds, e.g. `"m, half the wheel's
+    /// thickness: …"`.
+    AtLeast {
+        /// The bound, in the field's unit.
+        bound: f64,
+        /// The unit, what the bound is and its reason.
+        why: &'static str,
+    },
 }
 
 impl fmt::Display for Rule {
@@ -34,6 +43,7 @@ impl fmt::Display for Rule {
         match self {
             Rule::Text(t) => f.write_str(t),
             Rule::Within(range) => write!(f, "within {range}"),
+            Rule::AtLeast { bound, why } => write!(f, "at least {} {why}", Compact(*bound)),
         }
     }
 }
@@ -72,6 +82,32 @@ impl ParamError {
                 rule: Rule::Within(range),
             })
         }
+    }
+
+    /// `value` must be finite and at least `bound` (another field's consequence, see
+    /// [`Rule::AtLeast`]).
+    pub(crate) fn at_least(
+        field: &'static str,
+        value: f64,
+        bound: f64,
+        why: &'static str,
+    ) -> Result<f64, ParamError> {
+        if value.is_finite() && value >= bound {
+            Ok(value)
+        } else {
+            Err(ParamError {
+                field,
+                value,
+                rule: Rule::AtLeast { bound, why },
+            })
+        }
+    }
+
+    /// `value` must be a friction coefficient the physics honours: finite and ≥ 0, and within
+    /// [`proto_geom::plausible::FRICTION`] (see there why).
+    pub(crate) fn friction(field: &'static str, value: f64) -> Result<f64, ParamError> {
+        Self::non_negative(field, value)?;
+        Self::within(field, value, proto_geom::plausible::FRICTION)
     }
 
     /// `value` must be finite and > 0.
@@ -180,6 +216,19 @@ pub enum SimError {
         /// Simulated time at the end of the failed step (ms).
         time_ms: u64,
     },
+    /// A panic interrupted the step that began at `time_ms` (an assertion of rapier or
+    /// parry on a shape or number this crate did not foresee: a bug to report), while
+    /// `owner`'s part of the step ran (a vehicle's or robot's own, or rapier's step of the
+    /// whole world). The world refuses to step any further.
+    #[error("the step at t = {time_ms} ms failed in {owner}'s part of it (a bug): {message}")]
+    Panic {
+        /// Whose part of the step was running.
+        owner: BodyOwner,
+        /// Simulated time at the start of the failed step (ms).
+        time_ms: u64,
+        /// The panic's message.
+        message: String,
+    },
     /// rapier refused a joint of a car on joints (it refuses joints that close a loop, which a
     /// car's tree of joints never does); nothing usable was created.
     #[error("rapier refused a joint of {0}")]
@@ -198,6 +247,16 @@ pub enum SimError {
     )]
     Recording(String),
 }
+/// The message of a caught panic's `payload` (its `&str` or `String`), for the errors that
+/// report it.
+pub(crate) fn panic_message(payload: &(dyn core::any::Any + Send)) -> String {
+    payload
+        .downcast_ref::<&str>()
+        .map(|s| (*s).to_string())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "no message".to_string())
+}
+
 impl SimError {
     /// The [`SimError::NonFinite`] of a part of `owner` in the step ending at `time_ms`.
     pub(crate) fn diverged(owner: BodyOwner, time_ms: u64) -> impl Fn(BodyPart) -> SimError {

@@ -1,6 +1,8 @@
 //! The simulated world: rapier bodies, the ground and obstacles, dynamic boxes, cars and
 //! DifferentialWheels robots, stepped at a fixed `basicTimeStep`.
 
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
 use rapier3d::na::Unit;
 use rapier3d::parry::query::distance;
 use rapier3d::prelude::{
@@ -13,7 +15,7 @@ use crate::config::{Obstacle, WorldConfig, ramp_corners};
 use crate::diff_wheels::{
     DifferentialWheels, DifferentialWheelsParams, RobotId, RobotMode, RobotPlacement,
 };
-use crate::error::{BodyOwner, BodyPart, SimError};
+use crate::error::{BodyOwner, BodyPart, SimError, panic_message};
 use crate::geom::{self, G_STATIC};
 use crate::ground::{Ground, Surface};
 use crate::vehicle::{Vehicle, VehicleId, VehiclePlacement, VehicleSpec, WheelRoadHooks};
@@ -50,6 +52,9 @@ pub struct World {
     time_ms: u64,
     last_substeps: usize,
     failure: Option<SimError>,
+    /// Whose part of the step runs (a vehicle's, a robot's, or rapier's for the whole world),
+    /// for the [`SimError::Panic`] of a step that panics.
+    stepping: BodyOwner,
 }
 
 impl World {
@@ -68,6 +73,7 @@ impl World {
             time_ms: 0,
             last_substeps: 1,
             failure: None,
+            stepping: BodyOwner::World,
             config,
         };
         world.build_static();
@@ -270,13 +276,33 @@ impl World {
     /// steps rapier (1 to [`MAX_SUBSTEPS`] times, see [`World::last_substeps`]), then reads the
     /// sensors back.
     ///
-    /// Fails with [`SimError::NonFinite`] if any body's state stops being finite; the world then
-    /// keeps returning that error and never steps again.
+    /// Fails with [`SimError::NonFinite`] if any body's state stops being finite, and with
+    /// [`SimError::Panic`] if a panic (a rapier or parry assertion) interrupts the step; the
+    /// world then keeps returning that error and never steps again.
     pub fn step(&mut self) -> Result<(), SimError> {
         if let Some(e) = &self.failure {
             return Err(e.clone());
         }
-        let result = self.step_inner();
+        // Why the engine catches panics: the step runs rapier and parry, which assert on
+        // geometry and numbers that this crate validates but cannot prove in every case (f32
+        // roundings of shapes, degenerate contacts). Uncaught, such a panic would end a
+        // `vehicle-sim` run with exit code 101, take down a whole sweep's thread pool, or reach
+        // a C controller's guard or Python as a bare `PanicException`, none of them saying
+        // which vehicle. Caught here, it is the run's typed error naming whose part of the
+        // step was running, and the world, possibly left half-stepped, is marked failed and
+        // never steps again, so no caller builds on a state that a panic interrupted (reading
+        // it stays memory-safe: all of it is safe Rust). This relies on `panic = "unwind"`,
+        // the default of every profile of the workspace; under `panic = "abort"` the process
+        // ends as it would have anyway.
+        let start_ms = self.time_ms;
+        let result =
+            catch_unwind(AssertUnwindSafe(|| self.step_inner())).unwrap_or_else(|payload| {
+                Err(SimError::Panic {
+                    owner: self.stepping,
+                    time_ms: start_ms,
+                    message: panic_message(payload.as_ref()),
+                })
+            });
         if let Err(e) = &result {
             self.failure = Some(e.clone());
         }
@@ -354,7 +380,8 @@ impl World {
         let dt = self.dt();
         let substeps = self.substeps(dt);
         let sub_dt = dt / substeps as f64;
-        for r in &mut self.robots {
+        for (i, r) in self.robots.iter_mut().enumerate() {
+            self.stepping = BodyOwner::Robot(i);
             r.pre_step(&mut self.physics, dt);
         }
         self.physics.integration_parameters.dt = sub_dt as f32;
@@ -362,13 +389,15 @@ impl World {
             // A car on joints hands rapier forces that hold for one rapier step (its tyre
             // loads are the last step's contact impulses), so it is solved again before each;
             // a cast car sets its chassis velocity for the whole basicTimeStep.
-            for v in &mut self.vehicles {
+            for (i, v) in self.vehicles.iter_mut().enumerate() {
+                self.stepping = BodyOwner::Vehicle(i);
                 if v.on_joints() {
                     v.pre_step(&mut self.physics, &self.ground, sub_dt);
                 } else if k == 0 {
                     v.pre_step(&mut self.physics, &self.ground, dt);
                 }
             }
+            self.stepping = BodyOwner::World;
             self.physics.step_with_events(&WheelRoadHooks, &());
         }
         self.last_substeps = substeps;
@@ -390,12 +419,15 @@ impl World {
         if let Some((owner, part)) = diverged {
             return Err(SimError::diverged(owner, self.time_ms)(part));
         }
-        for v in &mut self.vehicles {
+        for (i, v) in self.vehicles.iter_mut().enumerate() {
+            self.stepping = BodyOwner::Vehicle(i);
             v.post_step(&self.physics, dt, self.time_ms)?;
         }
-        for r in &mut self.robots {
+        for (i, r) in self.robots.iter_mut().enumerate() {
+            self.stepping = BodyOwner::Robot(i);
             r.post_step(&self.physics, dt, self.time_ms)?;
         }
+        self.stepping = BodyOwner::World;
         Ok(())
     }
 }
@@ -456,6 +488,35 @@ mod tests {
             world.add_vehicle(spec, placement).unwrap();
         }
         world
+    }
+
+    #[test]
+    fn a_panic_in_a_step_is_an_error_naming_the_car_and_ends_the_world() {
+        // A negative tyre width, past the validation, makes parry's cylinder assert in the
+        // cast car's wheel query: the step returns the error instead of unwinding.
+        let mut world = two_cars();
+        world.step().unwrap();
+        world.vehicles[0].spec_mut().wheels[Wheel::FrontRight].width = -0.2;
+        let err = world.step().unwrap_err();
+        let SimError::Panic {
+            owner,
+            time_ms,
+            ref message,
+        } = err
+        else {
+            panic!("{err:?}");
+        };
+        assert_eq!((owner, time_ms), (BodyOwner::Vehicle(0), 10));
+        assert!(message.contains("assertion failed"), "{message}");
+        assert!(
+            err.to_string()
+                .starts_with("the step at t = 10 ms failed in car 1's part of it (a bug): "),
+            "{err}"
+        );
+        // The world is failed for good: the same error, no more time.
+        assert_eq!(world.step().unwrap_err(), err);
+        assert_eq!(world.time_ms(), 10);
+        assert_eq!(world.failure(), Some(&err));
     }
 
     #[test]

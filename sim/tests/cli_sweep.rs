@@ -213,3 +213,44 @@ fn the_slurm_example_runs_as_a_job_array_would() {
     assert_eq!(empty.lines().count(), 1);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn thread_and_shard_counts_past_their_bounds_are_usage_errors() {
+    // Issue #37: --threads 10000 spent 12 s before failing, --shard 0/1000000000 was taken
+    // and its merge allocated 4 GB. Both are refused at once, before the sweep file is read.
+    let usage = |args: &[&str], message: &str| {
+        let out = sweep_cmd(args, &[]);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert!(text(&out.stderr).contains(message), "{}", text(&out.stderr));
+    };
+    usage(
+        &["sweep", "none.toml", "--threads", "10000"],
+        "'10000' is not a number of threads from 1 to 1024",
+    );
+    usage(
+        &["sweep", "none.toml", "--threads", "0"],
+        "'0' is not a number of threads from 1 to 1024",
+    );
+    usage(
+        &["sweep", "none.toml", "--shard", "0/1000000000"],
+        "1000000000 shards: a sweep is split into at most 100000 shards",
+    );
+    usage(
+        &["sweep", "none.toml", "--shard", "1/18446744073709551615"],
+        "18446744073709551615 shards: a sweep is split into at most 100000 shards",
+    );
+    // 1024 threads and 100000 shards are accepted: the missing file is then the error.
+    let out = sweep_cmd(
+        &[
+            "sweep",
+            "none.toml",
+            "--threads",
+            "1024",
+            "--shard",
+            "0/100000",
+        ],
+        &[],
+    );
+    assert_eq!(out.status.code(), Some(1));
+    assert!(text(&out.stderr).contains("cannot read the sweep file"));
+}

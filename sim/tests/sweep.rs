@@ -386,6 +386,53 @@ fn sweep_file_errors_name_file_line_and_key() {
 }
 
 #[test]
+fn a_merge_of_one_shard_of_many_names_a_few_missing_and_refuses_too_many() {
+    // Issue #37: one shard of 10⁹ was accepted and its merge allocated a record per missing
+    // shard (4 GB). The most shards now: MAX_SHARDS, and the merge names eight.
+    let dir = scratch("merge-many");
+    let sweep = parse(SHORT).unwrap();
+    let last = dir.join("last");
+    write(&sweep, Shard::new(3, sweep::MAX_SHARDS).unwrap(), 1, &last);
+    let e = sweep::merge(std::slice::from_ref(&last), &dir.join("out")).unwrap_err();
+    let MergeError::MissingShards {
+        ref missing,
+        absent,
+        count,
+    } = e
+    else {
+        panic!("{e:?}");
+    };
+    assert_eq!((absent, count), (sweep::MAX_SHARDS - 1, sweep::MAX_SHARDS));
+    let first: Vec<usize> = missing.iter().map(|s| s.index()).collect();
+    assert_eq!(first, [0, 1, 2, 4, 5, 6, 7, 8]);
+    assert_eq!(
+        e.to_string(),
+        "shards 0/100000, 1/100000, 2/100000, 4/100000, 5/100000, 6/100000, 7/100000, \
+         8/100000 and 99991 more are missing: merge the outputs of all 100000 shards"
+    );
+    // A manifest whose count was corrupted past the bound is no shard.
+    let manifest = last.join(sweep::MANIFEST_JSON);
+    let m = read(&manifest);
+    std::fs::write(
+        &manifest,
+        m.replace(
+            "\"shard_count\": 100000",
+            "\"shard_count\": 18446744073709551615",
+        ),
+    )
+    .unwrap();
+    let e = sweep::merge(std::slice::from_ref(&last), &dir.join("out")).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        format!(
+            "{}: shard 3/18446744073709551615 is not a shard (0 <= I < N <= 100000)",
+            manifest.display()
+        )
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
 fn merges_refuse_missing_duplicated_and_foreign_shards() {
     let dir = scratch("merge-errors");
     let text = "world = \"BmwX5\"\nscenario = \"brake\"\n[set]\nduration = 0.2\n[axes]\n\
@@ -400,7 +447,7 @@ fn merges_refuse_missing_duplicated_and_foreign_shards() {
     let err = |dirs: &[PathBuf]| sweep::merge(dirs, &dir.join("out")).unwrap_err();
     assert!(matches!(
         err(std::slice::from_ref(&s0)),
-        MergeError::MissingShards { ref missing, count: 2 } if missing == &[Shard::new(1, 2).unwrap()]
+        MergeError::MissingShards { ref missing, absent: 1, count: 2 } if missing == &[Shard::new(1, 2).unwrap()]
     ));
     assert!(matches!(
         err(&[s0.clone(), s0.clone()]),
@@ -481,4 +528,48 @@ fn the_example_sweeps_load() {
     let bench = Sweep::load(dir.join("brake-10000.toml")).unwrap();
     assert_eq!(bench.len(), 10_000);
     assert_eq!(Shard::new(0, 10).unwrap().len(bench.len()), 1000);
+}
+
+#[test]
+fn axes_give_finite_values_inside_their_intervals() {
+    // Issue #37: draws over [0.99999, 1) rounded to the excluded 1.0 (3 cases of 20, then
+    // "must be in [-10, 1)"), and a range from −1e308 to 1e308 gave NaN and inf.
+    let text = "world = \"BmwX5\"\nscenario = \"brake\"\n[set]\nduration = 0.05\n[axes]\n\
+                \"vehicle.tyre.lateral.curvature\" = { uniform = [0.99999, 1.0], count = 20, \
+                seed = 1 }\n";
+    let sweep = parse(text).unwrap();
+    for row in rows(&sweep) {
+        let x = row.values[0].as_f64().unwrap();
+        assert!((0.99999..1.0).contains(&x), "{x}");
+        assert!(row.error.is_none(), "case {}: {:?}", row.case, row.error);
+    }
+    let text = "world = \"BmwX5\"\nscenario = \"brake\"\n[axes]\n\
+                \"vehicle.mass\" = { from = -1e308, to = 1e308, steps = 5 }\n";
+    let sweep = parse(text).unwrap();
+    let values: Vec<f64> = (0..5)
+        .map(|i| sweep.case(i).unwrap().values[0].as_f64().unwrap())
+        .collect();
+    assert_eq!(values, [-1e308, -5e307, 0.0, 5e307, 1e308]);
+    // A normal draw that would overflow is the sweep file's error.
+    let e = parse(
+        "world = \"BmwX5\"\nscenario = \"brake\"\n[axes]\n\
+         \"vehicle.mass\" = { normal = [0, 1e308], count = 2, seed = 1 }\n",
+    )
+    .unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "s.toml:4:20: invalid 'axes.vehicle.mass.normal': [0, 1e308]: the draws would overflow \
+         (|mean| + 9 standard deviations must be finite)"
+    );
+}
+
+#[cfg(unix)]
+#[test]
+fn an_endless_sweep_file_is_read_no_further_than_the_bound() {
+    let e = Sweep::load("/dev/zero").unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "/dev/zero: cannot read the sweep file: it is longer than 16 MiB, the most a world or \
+         sweep file may hold"
+    );
 }

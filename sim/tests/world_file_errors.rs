@@ -407,3 +407,179 @@ fn brake_balance_names_shares_and_refusals() {
     let (id, _) = sim.add_car(sim::CarBuilder::from(&w.cars[0])).unwrap();
     assert_eq!(sim.driver(id).unwrap().brake_front_share(), 0.7);
 }
+
+/// The world-file reproducers of issue #37 ("Hardening round 3"), refused with their file,
+/// line and key; the values at the bounds load.
+mod hardening_round_3 {
+    use super::*;
+    use sim::{CarBuilder, Mounting, ParamError, Rule, SimError, Simulation, World};
+
+    const JOINTS_BMW: &str = "[vehicle]\nmodel = \"BmwX5\"\nmounting = \"joints\"\n";
+
+    #[test]
+    fn a_joints_wheel_wider_than_its_diameter_is_refused_by_the_key_that_made_it() {
+        // It panicked in parry's cylinder (exit 101).
+        let e = err(&format!("{JOINTS_BMW}wheels.tireRadius = 0.1\n"));
+        assert_eq!(e.location, at(4, 8));
+        assert_eq!(e.key.as_deref(), Some("vehicle.wheels.tireRadius"));
+        assert_eq!(
+            e.to_string(),
+            "w.toml:4:8: invalid 'vehicle.wheels.tireRadius': tireRadius 0.1 m with thickness \
+             0.25 m: tireRadius must be at least 0.125 m, half the wheel's thickness: the \
+             joints mounting rounds the tread across the whole width (use mounting = \"cast\" \
+             for a wheel wider than its diameter)"
+        );
+        let e = err(&format!(
+            "{JOINTS_BMW}[vehicle.wheelRearLeft]\nthickness = 1\n"
+        ));
+        assert_eq!(e.location, at(5, 1));
+        assert_eq!(e.key.as_deref(), Some("vehicle.wheelRearLeft.thickness"));
+        // Half the thickness exactly builds.
+        let w = parse_str(
+            "w.toml",
+            &format!("{JOINTS_BMW}wheels.tireRadius = 0.125\n"),
+        );
+        let (mut sim, _) = Simulation::from_description(&w.unwrap()).unwrap();
+        for _ in 0..10 {
+            sim.step().unwrap();
+        }
+    }
+
+    #[test]
+    fn the_cast_mounting_honours_a_wheel_wider_than_its_diameter() {
+        let text = "[vehicle]\nmodel = \"BmwX5\"\nwheels.tireRadius = 0.1\n";
+        let w = parse_str("w.toml", text).unwrap();
+        assert_eq!(w.cars[0].mounting, Mounting::Cast);
+        let (mut sim, _) = Simulation::from_description(&w).unwrap();
+        let id = sim.car_ids().next().unwrap();
+        for _ in 0..100 {
+            sim.step().unwrap();
+        }
+        let state = *sim.world().vehicle(id).unwrap().state();
+        assert!(
+            state.position.z.is_finite() && state.position.z > 0.0,
+            "{state:?}"
+        );
+        // The same car on joints, added from Rust: the typed error naming the field.
+        let mut car = w.cars[0].clone();
+        car.mounting = Mounting::Joints;
+        let mut sim = Simulation::new(World::new(w.config.clone()).unwrap());
+        let e = sim.add_car(CarBuilder::from(&car)).unwrap_err();
+        let SimError::Param(ParamError { field, value, rule }) = e else {
+            panic!("{e:?}");
+        };
+        assert_eq!((field, value), ("tireRadius", 0.1));
+        assert!(
+            matches!(rule, Rule::AtLeast { bound, .. } if bound == 0.125),
+            "{rule:?}"
+        );
+        assert_eq!(sim.car_ids().count(), 0);
+    }
+
+    #[test]
+    fn durations_and_programme_times_past_a_day_are_refused() {
+        let e = err("duration = 1e9\n[vehicle]\n");
+        assert_eq!(
+            e.to_string(),
+            "w.toml:1:1: invalid 'duration': 1000000000 s: must be finite, > 0 and at most 86400 s \
+             (a day)"
+        );
+        let e = err("[vehicle]\n[[vehicle.programme]]\nat = 1e9\nthrottle = 1\n");
+        assert_eq!(
+            e.to_string(),
+            "w.toml:3:1: invalid 'vehicle.programme[1].at': 1000000000 s: must be from 0 to 86400 s \
+             (a day, the longest run)"
+        );
+        let e = err(
+            "[differential_wheels]\n[[differential_wheels.programme]]\nat = 1e300\n\
+             speed = [1, 1]\n",
+        );
+        assert_eq!(
+            e.key.as_deref(),
+            Some("differential_wheels.programme[1].at")
+        );
+        assert_eq!(e.location, at(3, 1));
+        let w = parse_str(
+            "w.toml",
+            "duration = 86400\n[vehicle]\n[[vehicle.programme]]\nat = 86400\nthrottle = 1\n",
+        )
+        .unwrap();
+        assert_eq!(w.duration, Some(sim::MAX_DURATION));
+        // From Rust, the same bound.
+        let mut sim = Simulation::new(World::new(w.config.clone()).unwrap());
+        let e = sim.set_duration(Some(1e9)).unwrap_err();
+        assert_eq!((e.field, e.value), ("duration", 1e9));
+        assert_eq!(sim.duration(), None);
+        sim.set_duration(Some(86_400.0)).unwrap();
+    }
+
+    #[test]
+    fn frictions_the_physics_cannot_honour_are_refused() {
+        // 1e39 is past f32::MAX: rapier's friction became infinite and the tyre gripped
+        // nothing (0.0108 km/h after 60 s of full throttle).
+        let e = err("[vehicle]\n[ground]\nfriction = 1e39\n");
+        assert_eq!(
+            e.to_string(),
+            "w.toml:3:1: invalid 'ground.friction': 1e39: must be within 0 to 100"
+        );
+        let e = err(
+            "[vehicle]\n[[ramp]]\nstart = [5, 0]\nlength = 5\nwidth = 3\nheight = 1\n\
+                     friction = 101\n",
+        );
+        assert_eq!(e.key.as_deref(), Some("ramp[1].friction"));
+        assert_eq!(e.location, at(7, 1));
+        let e = err(
+            "[vehicle]\n[[box]]\ntranslation = [9, 0, 1]\nsize = [1, 1, 1]\n\
+                     friction = 1e300\n",
+        );
+        assert_eq!(e.key.as_deref(), Some("box[1].friction"));
+        let e = err(
+            "[vehicle]\n[[body]]\ntranslation = [9, 0, 1]\nsize = [1, 1, 1]\n\
+                     mass = 10\nfriction = 1e39\n",
+        );
+        assert_eq!(
+            e.to_string(),
+            "w.toml:6:1: invalid 'body[1].friction': 1e39: must be within 0 to 100"
+        );
+        // Negative frictions keep their message; the bound itself loads.
+        let e = err("[vehicle]\n[ground]\nfriction = -1\n");
+        assert_eq!(
+            e.message().to_string(),
+            "invalid 'ground.friction': -1: must be finite and >= 0"
+        );
+        let w = parse_str("w.toml", "[vehicle]\n[ground]\nfriction = 100\n").unwrap();
+        assert_eq!(w.config.ground_friction, 100.0);
+    }
+
+    #[test]
+    fn numbers_in_messages_are_compact() {
+        let e = err("[vehicle]\n[[vehicle.programme]]\nat = 0\ngear = 1e300\n");
+        assert_eq!(
+            e.to_string(),
+            "w.toml:4:1: invalid 'vehicle.programme[1].gear': 1e300: must be from -1 to 5"
+        );
+        let e = err(
+            "[differential_wheels]\nspeedUnit = 1e-300\n[[differential_wheels.programme]]\n\
+             at = 0\nspeed = [1e302, 0]\n",
+        );
+        let m = e.to_string();
+        assert!(m.len() < 200, "{} characters: {m}", m.len());
+        assert!(m.ends_with("invalid 'differential_wheels.programme[1].speed': 1e302: each \
+                             wheel speed must be within ±9.999999999999999e300 speed units (maxSpeed / \
+                             speedUnit)"),
+            "{m}");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn an_endless_file_is_read_no_further_than_the_bound() {
+        // It read /dev/zero until memory ran out (2.1 GB).
+        let e = world_file::load("/dev/zero").unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "/dev/zero: cannot read the world file: it is longer than 16 MiB, the most a world \
+             or sweep file may hold"
+        );
+        assert_eq!(world_file::MAX_FILE_BYTES, 16 * 1024 * 1024);
+    }
+}

@@ -20,6 +20,7 @@ use vehicle_model::Model;
 
 use crate::report;
 use crate::scenario::{self, Progress, Scenario};
+use crate::simulation::is_duration;
 use crate::world_file::{self, WorldDescription};
 
 pub use plot::PlotOptions;
@@ -51,11 +52,13 @@ impl ValueEnum for Scenario {
     }
 }
 
-/// A simulated duration (s): finite and > 0.
+/// A simulated duration (s): > 0 and at most [`MAX_DURATION`](crate::MAX_DURATION).
 fn seconds(text: &str) -> Result<f64, String> {
     match text.parse::<f64>() {
-        Ok(s) if s.is_finite() && s > 0.0 => Ok(s),
-        _ => Err(format!("'{text}' is not a number of seconds > 0")),
+        Ok(s) if is_duration(s) => Ok(s),
+        _ => Err(format!(
+            "'{text}' is not a number of seconds > 0 and at most 86400 (a day)"
+        )),
     }
 }
 

@@ -8,7 +8,7 @@ use std::str::FromStr;
 use clap::Args;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
-use crate::sweep::{self, Shard, ShardError, Sweep};
+use crate::sweep::{self, MAX_THREADS, Shard, ShardError, Sweep};
 
 use super::{EXIT_FAILURE, EXIT_OK, EXIT_USAGE};
 
@@ -44,6 +44,16 @@ fn positive(text: &str) -> Result<usize, String> {
     }
 }
 
+/// A number of threads: from 1 to [`MAX_THREADS`].
+fn thread_count(text: &str) -> Result<usize, String> {
+    match text.parse::<usize>() {
+        Ok(n) if (1..=MAX_THREADS).contains(&n) => Ok(n),
+        _ => Err(format!(
+            "'{text}' is not a number of threads from 1 to {MAX_THREADS}"
+        )),
+    }
+}
+
 /// The options of `vehicle-sim sweep`.
 #[derive(Debug, Clone, PartialEq, Eq, Args)]
 #[command(after_help = SWEEP_HELP)]
@@ -54,8 +64,8 @@ pub struct SweepOptions {
     /// Output directory: results.csv, timings.csv, sweep.json, plots/
     #[arg(long, value_name = "DIR", default_value = DEFAULT_SWEEP_DIR)]
     pub out: PathBuf,
-    /// Threads running cases (default: every core)
-    #[arg(long, value_name = "N", value_parser = positive)]
+    /// Threads running cases, at most 1024 (default: every core)
+    #[arg(long, value_name = "N", value_parser = thread_count)]
     pub threads: Option<usize>,
     /// Run one shard only: I/N runs the cases whose index is I modulo N; `auto` takes the
     /// shard from a Slurm job array (SLURM_ARRAY_TASK_ID, SLURM_ARRAY_TASK_COUNT) or a
@@ -143,9 +153,7 @@ pub(super) fn sweep_main(
         }
     }
     let total = shard.len(sweep.len());
-    let threads = o
-        .threads
-        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from));
+    let threads = sweep::thread_count(o.threads);
     if !o.quiet {
         let part = if shard == Shard::WHOLE {
             String::new()

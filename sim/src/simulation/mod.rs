@@ -25,6 +25,23 @@ use crate::world::World;
 use crate::world_file::{RobotDescription, WorldDescription};
 use recording::Recording;
 
+/// Longest simulated time a run may last (s): one day. Every built-in scenario ends within
+/// 10 minutes, and a day of simulated time is 8.64 million steps at the default 10 ms (hours
+/// of wall time for one car): a longer `duration` or programme step is a typo (`1e9` for
+/// `1e3`) or a run that never ends. The limit is on simulated time, not on memory: a run's
+/// telemetry is recorded in bounded memory ([`TelemetryLog`]) whatever its length. It is the
+/// bound of a world file's `duration` and programme times `at`, of `vehicle-sim --duration`
+/// and of [`Simulation::set_duration`].
+pub const MAX_DURATION: f64 = 86_400.0;
+
+/// What a duration must be, completing "must be …".
+pub(crate) const DURATION_RULE: &str = "finite, > 0 and at most 86400 s (a day)";
+
+/// True for a duration `d` (s) that a run may have: > 0 and at most [`MAX_DURATION`].
+pub(crate) fn is_duration(d: f64) -> bool {
+    d > 0.0 && d <= MAX_DURATION
+}
+
 /// One car's driver, name and whether it has had its first step.
 struct Controlled {
     id: VehicleId,
@@ -132,12 +149,13 @@ impl Simulation {
     /// ```
     ///
     /// # Errors
-    /// The [`SimError`] of a world or car that cannot be built.
+    /// The [`SimError`] of a world or car that cannot be built, or of a `duration` that
+    /// [`Simulation::set_duration`] refuses.
     pub fn from_description(
         description: &WorldDescription,
     ) -> Result<(Simulation, Vec<ParamReport>), SimError> {
         let mut sim = Simulation::new(World::new(description.config.clone())?);
-        sim.duration = description.duration;
+        sim.set_duration(description.duration)?;
         let mut reports = Vec::with_capacity(description.cars.len());
         for car in &description.cars {
             let (_, report) = sim.add_car(CarBuilder::from(car))?;
@@ -304,13 +322,14 @@ impl Simulation {
         self.duration
     }
 
-    /// Sets the simulated time after which the run is over (s, finite and > 0), or none.
+    /// Sets the simulated time after which the run is over (s, > 0 and at most
+    /// [`MAX_DURATION`]), or none.
     ///
     /// # Errors
     /// [`ParamError`] naming `duration` and the value.
     pub fn set_duration(&mut self, duration: Option<f64>) -> Result<(), ParamError> {
         if let Some(d) = duration {
-            ParamError::positive("duration", d)?;
+            ParamError::check("duration", d, DURATION_RULE, is_duration)?;
         }
         self.duration = duration;
         Ok(())

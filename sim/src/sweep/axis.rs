@@ -3,6 +3,7 @@
 
 use core::ops::Range;
 
+use proto_geom::plausible::Compact;
 use toml::de::{DeTable, DeValue};
 
 use crate::report::{METRIC_DIGITS, significant};
@@ -95,8 +96,12 @@ impl Axis {
     }
 
     /// Value `k` (from 0), `None` past the last. A range's step and a random draw are rounded
-    /// to 6 significant digits (the physics runs in f32, and the results' CSV then holds
-    /// exactly the value the case ran with); a whole number is an integer.
+    /// to 6 significant digits (the physics runs in f32, and the results' CSV then holds a
+    /// short number) unless the rounding would leave the axis's interval (`[from, to]`,
+    /// `[lo, hi)`): a draw from `[0.99999, 1)` may not round to the excluded 1, which a key
+    /// valid below 1 refuses, so such a value keeps its full precision. A whole number is an
+    /// integer. Every value is finite: a range's values are computed without its span, which
+    /// may overflow (`-1e308` to `1e308`).
     pub fn value(&self, k: usize) -> Option<AxisValue> {
         if k >= self.len() {
             return None;
@@ -105,19 +110,37 @@ impl Axis {
         let x = match self.values {
             AxisValues::List(ref v) => return v.get(k).cloned(),
             AxisValues::Range { from, to, steps } => {
-                if k + 1 == steps {
+                let span = to - from;
+                let x = if k + 1 == steps {
                     to
+                } else if span.is_finite() {
+                    from + span * k as f64 / (steps - 1) as f64
                 } else {
-                    from + (to - from) * k as f64 / (steps - 1) as f64
-                }
+                    // (1 − t)·from + t·to: each term within the bounds' magnitude, so finite
+                    // where the span overflows.
+                    let t = k as f64 / (steps - 1) as f64;
+                    (1.0 - t) * from + t * to
+                };
+                let (lo, hi) = (from.min(to), from.max(to));
+                rounded_within(x, |r| (lo..=hi).contains(&r))
             }
-            AxisValues::Uniform { lo, hi, seed, .. } => draw::uniform(seed, key, k as u64, lo, hi),
+            AxisValues::Uniform { lo, hi, seed, .. } => {
+                let x = draw::uniform(seed, key, k as u64, lo, hi);
+                rounded_within(x, |r| (lo..hi).contains(&r))
+            }
             AxisValues::Normal { mean, sd, seed, .. } => {
-                draw::normal(seed, key, k as u64, mean, sd)
+                significant(draw::normal(seed, key, k as u64, mean, sd), METRIC_DIGITS)
             }
         };
-        Some(AxisValue::number(significant(x, METRIC_DIGITS)))
+        Some(AxisValue::number(x))
     }
+}
+
+/// `x` rounded to [`METRIC_DIGITS`] significant digits if `inside` holds for the rounded
+/// value, else `x` itself (which the caller made inside).
+fn rounded_within(x: f64, inside: impl Fn(f64) -> bool) -> f64 {
+    let r = significant(x, METRIC_DIGITS);
+    if inside(r) { r } else { x }
 }
 
 /// An axis read from the sweep file, with where each of its values is written (for the
@@ -142,7 +165,7 @@ fn finite(s: &Section<'_, '_>, key: &str, what: &str) -> Result<f64, WorldFileEr
         Some(x) if x.is_finite() => Ok(x),
         Some(x) => Err(s.error(
             key,
-            WorldFileErrorKind::InvalidValue(format!("{x}: must be finite")),
+            WorldFileErrorKind::InvalidValue(format!("{}: must be finite", Compact(x))),
         )),
         None => Err(missing(s, key, what)),
     }
@@ -178,7 +201,11 @@ fn pair(s: &Section<'_, '_>, key: &str) -> Result<[f64; 2], WorldFileError> {
     } else {
         Err(s.error(
             key,
-            WorldFileErrorKind::InvalidValue(format!("[{a}, {b}]: both must be finite")),
+            WorldFileErrorKind::InvalidValue(format!(
+                "[{}, {}]: both must be finite",
+                Compact(a),
+                Compact(b)
+            )),
         ))
     }
 }
@@ -268,7 +295,11 @@ fn shape(s: &Section<'_, '_>) -> Result<AxisValues, WorldFileError> {
             if lo >= hi {
                 return Err(s.error(
                     "uniform",
-                    WorldFileErrorKind::InvalidValue(format!("[{lo}, {hi}]: lo must be < hi")),
+                    WorldFileErrorKind::InvalidValue(format!(
+                        "[{}, {}]: lo must be < hi",
+                        Compact(lo),
+                        Compact(hi)
+                    )),
                 ));
             }
             Ok(AxisValues::Uniform {
@@ -288,7 +319,21 @@ fn shape(s: &Section<'_, '_>) -> Result<AxisValues, WorldFileError> {
                 return Err(s.error(
                     "normal",
                     WorldFileErrorKind::InvalidValue(format!(
-                        "[{mean}, {sd}]: the standard deviation must be >= 0"
+                        "[{}, {}]: the standard deviation must be >= 0",
+                        Compact(mean),
+                        Compact(sd)
+                    )),
+                ));
+            }
+            if !(mean.abs() + draw::NORMAL_REACH * sd).is_finite() {
+                return Err(s.error(
+                    "normal",
+                    WorldFileErrorKind::InvalidValue(format!(
+                        "[{}, {}]: the draws would overflow (|mean| + {} standard deviations \
+                         must be finite)",
+                        Compact(mean),
+                        Compact(sd),
+                        draw::NORMAL_REACH
                     )),
                 ));
             }
@@ -351,6 +396,60 @@ mod tests {
             steps: 4,
         });
         assert_eq!(down.value(1), Some(AxisValue::Float(0.666667)));
+    }
+
+    #[test]
+    fn ranges_of_any_span_are_finite_and_exact() {
+        // Issue #37: −1e308 + (1e308 − −1e308)·t overflowed to NaN and inf.
+        let wide = axis(AxisValues::Range {
+            from: -1e308,
+            to: 1e308,
+            steps: 5,
+        });
+        let v: Vec<f64> = (0..5)
+            .map(|k| wide.value(k).unwrap().as_f64().unwrap())
+            .collect();
+        assert_eq!(v, [-1e308, -5e307, 0.0, 5e307, 1e308]);
+        let max = axis(AxisValues::Range {
+            from: f64::MAX,
+            to: -f64::MAX,
+            steps: 3,
+        });
+        let v: Vec<f64> = (0..3)
+            .map(|k| max.value(k).unwrap().as_f64().unwrap())
+            .collect();
+        assert_eq!(v, [1.79769e308, 0.0, -1.79769e308]);
+    }
+
+    #[test]
+    fn rounding_never_leaves_the_interval() {
+        // Issue #37: draws over [0.99999, 1) rounded to 6 digits gave the excluded 1.0 in 3
+        // of 20 cases; they now keep their full precision there.
+        let a = axis(AxisValues::Uniform {
+            lo: 0.99999,
+            hi: 1.0,
+            count: 200,
+            seed: 1,
+        });
+        let xs: Vec<f64> = (0..200)
+            .map(|k| a.value(k).unwrap().as_f64().unwrap())
+            .collect();
+        assert!(xs.iter().all(|x| (0.99999..1.0).contains(x)), "{xs:?}");
+        // Some do round, to 6 digits: 0.99999x.
+        assert!(xs.iter().any(|&x| x == significant(x, METRIC_DIGITS)));
+        assert!(xs.iter().any(|&x| x != significant(x, METRIC_DIGITS)));
+        // A range's ends stay themselves when 6 digits would move them out.
+        let r = axis(AxisValues::Range {
+            from: 0.9999991,
+            to: 0.9999999,
+            steps: 3,
+        });
+        let v: Vec<f64> = (0..3)
+            .map(|k| r.value(k).unwrap().as_f64().unwrap())
+            .collect();
+        assert_eq!(v[0], 0.9999991);
+        assert_eq!(v[2], 0.9999999);
+        assert!((0.9999991..=0.9999999).contains(&v[1]), "{v:?}");
     }
 
     #[test]

@@ -32,14 +32,29 @@ fn generator(seed: u64, key: &str, index: u64) -> SplitMix64 {
     g
 }
 
-/// Draw `index` of a uniform axis over `[lo, hi)`.
+/// Draw `index` of a uniform axis over `[lo, hi)` (finite bounds, `lo < hi`): always in
+/// that interval, whatever the bounds' magnitude.
 pub(crate) fn uniform(seed: u64, key: &str, index: u64, lo: f64, hi: f64) -> f64 {
     let u = generator(seed, key, index).uniform();
-    lo + (hi - lo) * u
+    // Where `hi − lo` overflows (−1e308 to 1e308), (1 − u)·lo + u·hi is finite. Either
+    // sum's rounding may reach `hi`, which the interval excludes: the largest number below
+    // it then (never below `lo`, as `lo < hi`).
+    let span = hi - lo;
+    let x = if span.is_finite() {
+        lo + span * u
+    } else {
+        (1.0 - u) * lo + u * hi
+    };
+    if x < hi { x.max(lo) } else { hi.next_down() }
 }
 
+/// Farthest a normal draw lies from its mean, in standard deviations: √(−2 ln 2⁻⁵³) = 8.57
+/// for the smallest `1 − u` of a draw, rounded up.
+pub(crate) const NORMAL_REACH: f64 = 9.0;
+
 /// Draw `index` of a normal axis of mean `mean` and standard deviation `sd` (Box–Muller on
-/// the draw's two numbers).
+/// the draw's two numbers): within [`NORMAL_REACH`] standard deviations of the mean, finite
+/// if `|mean| + NORMAL_REACH·sd` is (the sweep file's reader checks it).
 pub(crate) fn normal(seed: u64, key: &str, index: u64, mean: f64, sd: f64) -> f64 {
     let mut g = generator(seed, key, index);
     // 1 − u is in (0, 1]: its logarithm is finite.
@@ -79,6 +94,16 @@ mod tests {
         let mut stream = SplitMix64::new(start);
         stream.advance(6);
         assert_eq!(0.5 + 0.5 * stream.uniform(), forward[3]);
+    }
+
+    #[test]
+    fn uniform_draws_of_any_span_stay_in_the_half_open_interval() {
+        for k in 0..1000 {
+            let x = uniform(5, "gravity", k, -1e308, 1e308);
+            assert!(x.is_finite() && (-1e308..1e308).contains(&x), "{x}");
+            let y = uniform(5, "gravity", k, 1.0, 1.0 + f64::EPSILON);
+            assert_eq!(y, 1.0);
+        }
     }
 
     #[test]

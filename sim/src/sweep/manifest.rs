@@ -80,7 +80,7 @@ impl Manifest {
     /// The file cannot be read or is not a manifest: a sentence saying which.
     pub fn read(dir: &Path) -> Result<Manifest, String> {
         let path = dir.join(MANIFEST_JSON);
-        let text = std::fs::read_to_string(&path).map_err(|e| {
+        let text = crate::world_file::read_text(&path).map_err(|e| {
             format!(
                 "{}: {e} (not an output directory of vehicle-sim sweep?)",
                 path.display()

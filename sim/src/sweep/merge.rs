@@ -14,7 +14,7 @@ use super::manifest::{MANIFEST_JSON, Manifest};
 use super::output::{PLOTS_DIR, RESULTS_CSV, TIMINGS_CSV, finish};
 use super::plots::write_plots;
 use super::row::csv_writer;
-use super::shard::Shard;
+use super::shard::{MAX_SHARDS, Shard};
 
 /// Why shards cannot be merged.
 #[derive(Debug, thiserror::Error)]
@@ -49,10 +49,12 @@ pub enum MergeError {
         dirs: [PathBuf; 2],
     },
     /// Shards are missing.
-    #[error("{} missing: merge the outputs of all {count} shards", list(missing))]
+    #[error("{} missing: merge the outputs of all {count} shards", list(missing, *absent))]
     MissingShards {
-        /// The missing shards.
+        /// The first missing shards, in shard order: at most [`LISTED_MISSING`].
         missing: Vec<Shard>,
+        /// How many shards are missing in all.
+        absent: usize,
         /// The number of shards.
         count: usize,
     },
@@ -111,12 +113,19 @@ pub enum MergeError {
     Output(#[from] OutputError),
 }
 
-/// `1/3`, `1/3 and 2/3 are`…
-fn list(shards: &[Shard]) -> String {
+/// Most missing shards a [`MergeError::MissingShards`] names: a merge given one shard of
+/// 100,000 says so in one line, and finding them takes no memory per missing shard.
+pub const LISTED_MISSING: usize = 8;
+
+/// `shard 1/3 is`, `shards 1/3 and 2/3 are`, `shards 1/9, 2/9 and 4 more are`… of the first
+/// missing `shards` of `absent` in all.
+fn list(shards: &[Shard], absent: usize) -> String {
     let names: Vec<String> = shards.iter().map(ToString::to_string).collect();
+    let more = absent.saturating_sub(names.len());
     match names.split_last() {
-        Some((last, [])) => format!("shard {last} is"),
-        Some((last, rest)) => format!("shards {} and {last} are", rest.join(", ")),
+        Some((last, [])) if more == 0 => format!("shard {last} is"),
+        Some((last, rest)) if more == 0 => format!("shards {} and {last} are", rest.join(", ")),
+        Some(_) => format!("shards {} and {more} more are", names.join(", ")),
         None => "no shard is".to_string(),
     }
 }
@@ -142,7 +151,7 @@ fn shards_of(dirs: &[PathBuf]) -> Result<Vec<(PathBuf, Manifest)>, MergeError> {
         let m = Manifest::read(dir).map_err(MergeError::Manifest)?;
         let shard = m.shard().ok_or_else(|| {
             MergeError::Manifest(format!(
-                "{}: shard {}/{} is not a shard",
+                "{}: shard {}/{} is not a shard (0 <= I < N <= {MAX_SHARDS})",
                 dir.join(MANIFEST_JSON).display(),
                 m.shard_index,
                 m.shard_count
@@ -192,14 +201,24 @@ fn shards_of(dirs: &[PathBuf]) -> Result<Vec<(PathBuf, Manifest)>, MergeError> {
         found.push((dir.clone(), m));
     }
     let count = found.first().map_or(0, |(_, m)| m.shard_count);
-    let missing: Vec<Shard> = (0..count)
-        .filter(|i| !found.iter().any(|(_, m)| m.shard_index == *i))
-        .filter_map(|i| Shard::new(i, count))
-        .collect();
-    if !missing.is_empty() {
-        return Err(MergeError::MissingShards { missing, count });
-    }
+    // The shards found are distinct shards of `count`: the others are missing. Only the first
+    // few are named, found in order with no allocation per missing shard (the walk stops
+    // after the found ones and the listed ones).
     found.sort_by_key(|(_, m)| m.shard_index);
+    let absent = count - found.len();
+    if absent > 0 {
+        let mut present = found.iter().map(|(_, m)| m.shard_index).peekable();
+        let missing: Vec<Shard> = (0..count)
+            .filter(|&i| present.next_if_eq(&i).is_none())
+            .filter_map(|i| Shard::new(i, count))
+            .take(LISTED_MISSING)
+            .collect();
+        return Err(MergeError::MissingShards {
+            missing,
+            absent,
+            count,
+        });
+    }
     Ok(found)
 }
 

@@ -66,6 +66,7 @@ use std::path::Path;
 use toml::de::DeValue;
 use vehicle_model::Model;
 
+use crate::error::panic_message;
 use crate::scenario::{self, Scenario};
 use crate::world_file::read::Source;
 use crate::world_file::{
@@ -80,15 +81,16 @@ pub use error::OutputError;
 pub use error::SweepError;
 pub use manifest::{Fingerprint, MANIFEST_JSON, Manifest};
 #[cfg(feature = "app")]
-pub use merge::{MergeError, MergeSummary, merge};
+pub use merge::{LISTED_MISSING, MergeError, MergeSummary, merge};
 #[cfg(feature = "app")]
 pub use output::{PLOTS_DIR, RESULTS_CSV, RunSummary, TIMINGS_CSV, write_sweep};
 #[cfg(feature = "app")]
 pub use plots::write_plots;
 pub use row::{CASE_COLUMN, CaseError, Cell, Columns, ERROR_COLUMN, NOTES_COLUMN, Row};
+pub(crate) use runner::thread_count;
 #[cfg(feature = "app")]
-pub use runner::{RunError, run};
-pub use shard::{Shard, ShardError};
+pub use runner::{MAX_THREADS, RunError, run};
+pub use shard::{MAX_SHARDS, Shard, ShardError};
 pub use value::AxisValue;
 
 /// One case: its index, its axis values and its world.
@@ -148,13 +150,13 @@ fn base_world(
         }
     }
     let source = path.display().to_string();
-    match std::fs::read_to_string(&path) {
+    match world_file::read_text(&path) {
         Ok(text) => Ok((source, text)),
-        Err(e) => Err(SweepError::world(WorldFileError {
+        Err(message) => Err(SweepError::world(WorldFileError {
             file: source,
             location: None,
             key: None,
-            kind: WorldFileErrorKind::Io(e.to_string()),
+            kind: WorldFileErrorKind::Io(message),
         })),
     }
 }
@@ -214,13 +216,14 @@ impl Sweep {
     /// Loads the sweep file at `path`; a relative `world` path is relative to its directory.
     ///
     /// # Errors
-    /// See [`Sweep::parse`]; [`SweepError::Io`] when the file cannot be read.
+    /// See [`Sweep::parse`]; [`SweepError::Io`] when the file cannot be read or is longer
+    /// than [`world_file::MAX_FILE_BYTES`].
     pub fn load(path: impl AsRef<Path>) -> Result<Sweep, SweepError> {
         let path = path.as_ref();
         let file = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| SweepError::Io {
+        let text = world_file::read_text(path).map_err(|message| SweepError::Io {
             file: file.clone(),
-            message: e.to_string(),
+            message,
         })?;
         let dir = path.parent().unwrap_or(Path::new(""));
         Sweep::parse(&file, &text, dir)
@@ -482,11 +485,7 @@ impl Sweep {
         let values = case.values.clone();
         let run = catch_unwind(AssertUnwindSafe(|| self.run(case)));
         Ok(run.unwrap_or_else(|payload| {
-            let message = payload
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| payload.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "no message".to_string());
+            let message = panic_message(payload.as_ref());
             Row::failed(index, values, &self.columns, CaseError::Panic(message))
         }))
     }

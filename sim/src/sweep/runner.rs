@@ -21,6 +21,13 @@ use super::shard::Shard;
 /// seconds of work, while one slow case lets the other threads go on.
 pub const WINDOW_PER_THREAD: usize = 32;
 
+/// Most threads a sweep runs on: 1024. More than the cores of any single machine the runner
+/// targets (a sweep spreads further as shards); each thread holds a world while it runs a
+/// case and 32 rows (`WINDOW_PER_THREAD`) of reorder window, and starting thousands of threads
+/// takes seconds before the first case (10,000 took 12 s to fail). A larger count is refused,
+/// not lowered.
+pub const MAX_THREADS: usize = 1024;
+
 /// Why a run stopped.
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
@@ -33,6 +40,9 @@ pub enum RunError {
         /// What rayon reported.
         message: String,
     },
+    /// More threads than [`MAX_THREADS`] were asked for; nothing ran.
+    #[error("cannot run on {0} threads: a sweep runs on at most {MAX_THREADS}")]
+    TooManyThreads(usize),
     /// The row's consumer failed (e.g. a full disk); the run stopped.
     #[error(transparent)]
     Sink(#[from] std::io::Error),
@@ -78,11 +88,11 @@ impl Gate {
     }
 }
 
-/// The threads to use: `threads`, or every core when `None`.
+/// The threads to use: `threads`, or every core when `None` (at most [`MAX_THREADS`]).
 pub(crate) fn thread_count(threads: Option<usize>) -> usize {
-    threads
-        .filter(|&n| n > 0)
-        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from))
+    threads.filter(|&n| n > 0).unwrap_or_else(|| {
+        std::thread::available_parallelism().map_or(1, |n| usize::from(n).min(MAX_THREADS))
+    })
 }
 
 /// Runs the cases of `shard` of `sweep` on `threads` threads (every core when `None`) and
@@ -90,7 +100,8 @@ pub(crate) fn thread_count(threads: Option<usize>) -> usize {
 /// failing case is a row with its error; the run stops only when `sink` fails.
 ///
 /// # Errors
-/// [`RunError::Threads`] when the pool cannot start, [`RunError::Sink`] with the sink's
+/// [`RunError::TooManyThreads`] past [`MAX_THREADS`], [`RunError::Threads`] when the pool
+/// cannot start, [`RunError::Sink`] with the sink's
 /// error.
 pub fn run(
     sweep: &Sweep,
@@ -99,6 +110,9 @@ pub fn run(
     sink: &mut dyn FnMut(Row, Duration) -> std::io::Result<()>,
 ) -> Result<(), RunError> {
     let threads = thread_count(threads);
+    if threads > MAX_THREADS {
+        return Err(RunError::TooManyThreads(threads));
+    }
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .thread_name(|i| format!("sweep-{i}"))

@@ -13,6 +13,12 @@ pub const SLURM_TASK_MIN: &str = "SLURM_ARRAY_TASK_MIN";
 /// Kubernetes' index of the pod in an Indexed Job (0 to `completions − 1`).
 pub const K8S_COMPLETION_INDEX: &str = "JOB_COMPLETION_INDEX";
 
+/// Most shards a sweep may be split into: 100,000, the most pods a Kubernetes Indexed Job
+/// runs (`completions`) and a hundred times Slurm's default array size (`MaxArraySize`
+/// 1001). `sweep-merge` opens every shard's files at once, and a shard count from a typo or
+/// a corrupted `sweep.json` (`1/18446744073709551615`) must not be taken for a real split.
+pub const MAX_SHARDS: usize = 100_000;
+
 /// Shard `index` of `count`: the cases `index`, `index + count`, `index + 2·count`, …
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Shard {
@@ -27,6 +33,9 @@ pub enum ShardError {
     /// Not `I/N` with integers `0 <= I < N`.
     #[error("'{0}' is not a shard: write I/N with 0 <= I < N, e.g. 0/4, or auto")]
     Syntax(String),
+    /// More shards than [`MAX_SHARDS`].
+    #[error("{0} shards: a sweep is split into at most {MAX_SHARDS} shards")]
+    TooMany(usize),
     /// `--shard auto` outside a Slurm job array and a Kubernetes Indexed Job.
     #[error(
         "--shard auto: neither {SLURM_TASK_ID} (a Slurm job array) nor {K8S_COMPLETION_INDEX} \
@@ -75,9 +84,22 @@ impl Shard {
     /// The whole sweep: shard 0 of 1.
     pub const WHOLE: Shard = Shard { index: 0, count: 1 };
 
-    /// Shard `index` of `count`, if `index < count`.
+    /// Shard `index` of `count`, if `index < count <= MAX_SHARDS`.
     pub fn new(index: usize, count: usize) -> Option<Shard> {
-        (index < count).then_some(Shard { index, count })
+        (index < count && count <= MAX_SHARDS).then_some(Shard { index, count })
+    }
+
+    /// Shard `index` of `count`, refusing a count over [`MAX_SHARDS`] by name and anything
+    /// else that is no shard with `syntax`.
+    fn checked(
+        index: usize,
+        count: usize,
+        syntax: impl FnOnce() -> ShardError,
+    ) -> Result<Shard, ShardError> {
+        if count > MAX_SHARDS {
+            return Err(ShardError::TooMany(count));
+        }
+        Shard::new(index, count).ok_or_else(syntax)
     }
 
     /// Its index, from 0.
@@ -143,6 +165,9 @@ impl Shard {
                     found: count,
                 });
             }
+            if count > MAX_SHARDS {
+                return Err(ShardError::TooMany(count));
+            }
             return id
                 .checked_sub(min)
                 .and_then(|index| Shard::new(index, count))
@@ -150,7 +175,9 @@ impl Shard {
         }
         if let Some(index) = number(K8S_COMPLETION_INDEX)? {
             let count = shards.ok_or(ShardError::NoCount(index))?;
-            return Shard::new(index, count).ok_or(ShardError::Syntax(format!("{index}/{count}")));
+            return Shard::checked(index, count, || {
+                ShardError::Syntax(format!("{index}/{count}"))
+            });
         }
         Err(ShardError::NoBatchEngine)
     }
@@ -165,7 +192,7 @@ impl fmt::Display for Shard {
 impl FromStr for Shard {
     type Err = ShardError;
 
-    /// `I/N`, e.g. `2/8`.
+    /// `I/N`, e.g. `2/8`, with `N` at most [`MAX_SHARDS`].
     fn from_str(s: &str) -> Result<Shard, ShardError> {
         let bad = || ShardError::Syntax(s.to_string());
         let (i, n) = s.split_once('/').ok_or_else(bad)?;
@@ -173,7 +200,7 @@ impl FromStr for Shard {
             i.trim().parse().map_err(|_| bad())?,
             n.trim().parse().map_err(|_| bad())?,
         );
-        Shard::new(i, n).ok_or_else(bad)
+        Shard::checked(i, n, bad)
     }
 }
 
@@ -203,6 +230,19 @@ mod tests {
         assert!(shards[1].has(7) && !shards[1].has(8));
         assert_eq!(Shard::new(5, 8).unwrap().len(3), 0);
         assert_eq!("2/8".parse(), Ok(Shard::new(2, 8).unwrap()));
+        assert_eq!(
+            "1/18446744073709551615".parse::<Shard>(),
+            Err(ShardError::TooMany(usize::MAX))
+        );
+        assert_eq!(
+            "0/1000000000".parse::<Shard>().unwrap_err().to_string(),
+            "1000000000 shards: a sweep is split into at most 100000 shards"
+        );
+        assert_eq!(
+            format!("0/{MAX_SHARDS}").parse::<Shard>().map(Shard::count),
+            Ok(MAX_SHARDS)
+        );
+        assert_eq!(Shard::new(0, MAX_SHARDS + 1), None);
         for bad in ["8/8", "1", "a/2", "-1/2", "1/0"] {
             assert_eq!(
                 bad.parse::<Shard>(),
@@ -246,6 +286,15 @@ mod tests {
                 name: K8S_COMPLETION_INDEX,
                 value: "x".into()
             })
+        );
+        assert_eq!(
+            Shard::from_env(&k8s, Some(MAX_SHARDS + 1)),
+            Err(ShardError::TooMany(MAX_SHARDS + 1))
+        );
+        let huge = env(&[(SLURM_TASK_ID, "0"), (SLURM_TASK_COUNT, "4000001")]);
+        assert_eq!(
+            Shard::from_env(huge, None),
+            Err(ShardError::TooMany(4_000_001))
         );
         assert_eq!(
             Shard::from_env(env(&[]), Some(3)),

@@ -224,7 +224,10 @@ pub(crate) fn build(world: &mut PhysicsWorld, spec: &VehicleSpec, origin: Pose) 
                 .can_sleep(false),
         );
         // rapier's (round) cylinder axis is its local y, the axle. The mass properties are the
-        // solid cylinder's (`WheelSpec`), not the rounded shape's.
+        // solid cylinder's (`WheelSpec`), not the rounded shape's. The core's radius
+        // `radius − border` is ≥ 0 (parry asserts it): `VehicleSpec::check_mounting` refuses a
+        // joints wheel whose `tireRadius` is under half its width, and f32 rounding keeps the
+        // order of the two.
         let tread = Tread::of(s);
         let transverse = s.transverse_inertia() as f32;
         colliders[w] = world.insert_collider(

@@ -74,6 +74,11 @@ pub struct SteeringSpec {
     pub max_torque: f64,
 }
 
+/// Why a joints wheel's `tireRadius` must be at least half its `thickness`
+/// ([`VehicleSpec::check_mounting`]), completing "must be at least <bound> …".
+const JOINTS_TREAD: &str = "m, half the wheel's thickness: the joints mounting rounds the \
+     tread across the whole width (use mounting = \"cast\" for a wheel wider than its diameter)";
+
 /// How a car's wheels hang on its chassis in rapier (`[vehicle] mounting` in a world file).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Mounting {
@@ -231,8 +236,32 @@ impl VehicleSpec {
         })
     }
 
+    /// Checks that the wheels can hang on the car's [`Mounting`]: on `joints`, each wheel's
+    /// `tireRadius` must be at least half its `thickness` (m). The joints wheel's collider is a
+    /// cylinder whose tread is rounded across its whole width (`vehicle/joints.rs`, `Tread`):
+    /// a round cylinder of border radius `thickness/2` around a core of radius
+    /// `tireRadius − thickness/2`, which cannot be negative (rapier's shape asserts it). A
+    /// wheel wider than its diameter has no such shape; the `cast` mounting's swept cylinder
+    /// needs none and takes any plausible tyre. The error names the first wheel at fault
+    /// (in wheel order).
+    ///
+    /// # Errors
+    /// The wheel and a [`ParamError`] naming `tireRadius`, its value and the bound.
+    pub fn check_mounting(&self) -> Result<(), (Wheel, ParamError)> {
+        if self.mounting == Mounting::Cast {
+            return Ok(());
+        }
+        for w in Wheel::ALL {
+            let s = &self.wheels[w];
+            ParamError::at_least("tireRadius", s.radius, 0.5 * s.width, JOINTS_TREAD)
+                .map_err(|e| (w, e))?;
+        }
+        Ok(())
+    }
+
     /// Checks every field: positive masses, lengths and spring constants, a physical inertia
-    /// tensor, finite positions and `min_angle ≤ max_angle`.
+    /// tensor, finite positions, `min_angle ≤ max_angle`, and wheels that the mounting can
+    /// build ([`VehicleSpec::check_mounting`]).
     pub fn validate(&self) -> Result<(), ParamError> {
         let c = &self.chassis;
         ParamError::within("physics.mass", c.mass, plausible::MASS)?;
@@ -270,6 +299,7 @@ impl VehicleSpec {
             ParamError::within("thickness", s.width, plausible::LENGTH)?;
             ParamError::within("wheel.mass", s.mass, plausible::MASS)?;
         }
+        self.check_mounting().map_err(|(_, e)| e)?;
         for (k, c) in [
             (
                 "suspensionFrontSpringConstant",

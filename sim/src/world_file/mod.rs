@@ -39,6 +39,7 @@ mod statics;
 mod tyre;
 mod vehicle;
 
+use std::io::Read;
 use std::path::Path;
 
 use proto_geom::plausible::Compact;
@@ -46,6 +47,7 @@ use toml::de::{DeTable, DeValue};
 use vehicle_model::Model;
 
 use crate::config::WorldConfig;
+use crate::simulation::{DURATION_RULE, is_duration};
 
 pub use error::{Location, NameSet, WorldFileError, WorldFileErrorKind, WorldWarning};
 pub use overrides::KeyPath;
@@ -101,7 +103,8 @@ pub struct WorldDescription {
     pub source: String,
     /// Time step, gravity, ground, obstacles and dynamic boxes (validated).
     pub config: WorldConfig,
-    /// Simulated time after which stepping reports the end of the simulation (s, > 0), if set.
+    /// Simulated time after which stepping reports the end of the simulation (s, > 0 and at
+    /// most [`MAX_DURATION`](crate::MAX_DURATION)), if set.
     pub duration: Option<f64>,
     /// The cars (`[vehicle]`, or every `[[vehicle]]` in file order), each with a unique name.
     pub cars: Vec<CarDescription>,
@@ -200,7 +203,8 @@ pub fn with_model(model: Model) -> WorldDescription {
 /// This is what `vehicle-sim --world` and the C API's `VEHICLE_WORLD` accept.
 ///
 /// # Errors
-/// A [`WorldFileError`] naming the file, line, column and key: unreadable file, invalid TOML,
+/// A [`WorldFileError`] naming the file, line, column and key: unreadable file (or one longer
+/// than [`MAX_FILE_BYTES`]), invalid TOML,
 /// unknown key (with the closest valid names), wrong type, unknown model, invalid value, or a
 /// `spec` that is neither a file nor a model name.
 pub fn load(spec: &str) -> Result<WorldDescription, WorldFileError> {
@@ -228,17 +232,40 @@ pub fn load(spec: &str) -> Result<WorldDescription, WorldFileError> {
     load_file(path)
 }
 
-/// Loads the world file at `path`.
+/// Largest world or sweep file read (bytes): 16 MiB. The shipped worlds and sweeps are a few
+/// kB, and a world of ten thousand obstacles is about 1 MiB; the bound keeps a path to a
+/// device or an endless stream (`--world /dev/zero`) from being read until memory runs out.
+pub const MAX_FILE_BYTES: u64 = 16 << 20;
+
+/// The text of the file at `path`, at most [`MAX_FILE_BYTES`] long, or what is wrong (the
+/// system's message, or the file's size).
+pub(crate) fn read_text(path: &Path) -> Result<String, String> {
+    let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
+    let mut bytes = Vec::new();
+    // One byte past the bound tells a file of exactly the bound from a longer one.
+    file.take(MAX_FILE_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| e.to_string())?;
+    if bytes.len() as u64 > MAX_FILE_BYTES {
+        return Err(format!(
+            "it is longer than {} MiB, the most a world or sweep file may hold",
+            MAX_FILE_BYTES >> 20
+        ));
+    }
+    String::from_utf8(bytes).map_err(|_| "stream did not contain valid UTF-8".to_string())
+}
+
+/// Loads the world file at `path` (at most [`MAX_FILE_BYTES`] long).
 ///
 /// # Errors
 /// As [`load`].
 pub fn load_file(path: &Path) -> Result<WorldDescription, WorldFileError> {
     let name = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| WorldFileError {
+    let text = read_text(path).map_err(|m| WorldFileError {
         file: name.clone(),
         location: None,
         key: None,
-        kind: WorldFileErrorKind::Io(e.to_string()),
+        kind: WorldFileErrorKind::Io(m),
     })?;
     parse_str(&name, &text)
 }
@@ -285,11 +312,11 @@ pub(crate) fn parse_with(
     root.check_keys(&ROOT_KEYS)?;
     let config = statics::read_world(&root)?;
     let duration = match root.number("duration")? {
-        Some(d) if !(d.is_finite() && d > 0.0) => {
+        Some(d) if !is_duration(d) => {
             return Err(root.error(
                 "duration",
                 WorldFileErrorKind::InvalidValue(format!(
-                    "{} s: must be finite and > 0",
+                    "{} s: must be {DURATION_RULE}",
                     Compact(d)
                 )),
             ));

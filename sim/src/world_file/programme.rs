@@ -3,7 +3,10 @@
 
 use vehicle_model::{IndicatorState, WiperMode};
 
+use proto_geom::plausible::Compact;
+
 use crate::programme::{DriverCommand, Programme, Step, WheelSpeeds};
+use crate::simulation::MAX_DURATION;
 
 use super::error::{NameSet, WorldFileError, WorldFileErrorKind};
 use super::read::Section;
@@ -40,10 +43,14 @@ fn steps<'a, 'i>(
                 WorldFileErrorKind::Structure(format!("missing key '{}'", step.key_path(AT))),
             )
         })?;
-        if !(at.is_finite() && at >= 0.0) {
+        // A step after a day never comes: the run could not last that long.
+        if !(0.0..=MAX_DURATION).contains(&at) {
             return Err(step.error(
                 AT,
-                WorldFileErrorKind::InvalidValue(format!("{at} s: must be finite and >= 0")),
+                WorldFileErrorKind::InvalidValue(format!(
+                    "{} s: must be from 0 to {MAX_DURATION} s (a day, the longest run)",
+                    Compact(at)
+                )),
             ));
         }
         if step.entries().len() < 2 {
@@ -52,7 +59,8 @@ fn steps<'a, 'i>(
                 step.span(),
                 Some(step.path().to_string()),
                 WorldFileErrorKind::Structure(format!(
-                    "the step at {at} s of '{}' has no command (one of: {})",
+                    "the step at {} s of '{}' has no command (one of: {})",
+                    Compact(at),
                     step.path(),
                     names.join(", ")
                 )),
@@ -72,11 +80,11 @@ fn number_in(step: &Section<'_, '_>, key: &str, lo: f64, hi: f64) -> Result<f64,
         let rule = if lo == f64::MIN {
             "must be finite".to_string()
         } else {
-            format!("must be from {lo} to {hi}")
+            format!("must be from {} to {}", Compact(lo), Compact(hi))
         };
         Err(step.error(
             key,
-            WorldFileErrorKind::InvalidValue(format!("{v}: {rule}")),
+            WorldFileErrorKind::InvalidValue(format!("{}: {rule}", Compact(v))),
         ))
     }
 }
@@ -132,7 +140,10 @@ pub(crate) fn read_car_programme(
                     if g.fract() != 0.0 {
                         return Err(step.error(
                             key,
-                            WorldFileErrorKind::InvalidValue(format!("{g}: must be an integer")),
+                            WorldFileErrorKind::InvalidValue(format!(
+                                "{}: must be an integer",
+                                Compact(g)
+                            )),
                         ));
                     }
                     DriverCommand::Gear(g as i32)
@@ -170,8 +181,10 @@ pub(crate) fn read_robot_programme(
             return Err(step.error(
                 "speed",
                 WorldFileErrorKind::InvalidValue(format!(
-                    "{bad}: each wheel speed must be within ±{max_speed_units} speed units \
-                     (maxSpeed / speedUnit)"
+                    "{}: each wheel speed must be within ±{} speed units (maxSpeed / \
+                     speedUnit)",
+                    Compact(bad),
+                    Compact(max_speed_units)
                 )),
             ));
         }

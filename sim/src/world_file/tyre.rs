@@ -156,7 +156,8 @@ fn read_webots(t: &Section<'_, '_>) -> Result<TyreChoice, WorldFileError> {
         t.error(
             FORCE_DEPENDENT_SLIP,
             WorldFileErrorKind::InvalidValue(format!(
-                "{v} m/s per N: must be finite and in [0, 1]"
+                "{} m/s per N: must be finite and in [0, 1]",
+                Compact(v)
             )),
         )
     })

@@ -200,11 +200,31 @@ pub(crate) fn read_vehicle(
     }
     // Fields that are each plausible may still make a car that cannot be built (a 33 m tyre
     // of the default density weighs more than 1e6 kg): a world that loads must build.
-    VehicleSpec::from_car_with(&params, &tyre).map_err(|e| {
+    let mut spec = VehicleSpec::from_car_with(&params, &tyre).map_err(|e| {
         s.src.error(
             s.span(),
             Some("vehicle".to_string()),
             WorldFileErrorKind::InvalidValue(format!("this car cannot be built: {e}")),
+        )
+    })?;
+    // A wheel the mounting cannot build (a joints wheel wider than its diameter) is blamed
+    // on the key that made it so: its tireRadius, else its thickness, else the mounting.
+    spec.mounting = mounting;
+    spec.check_mounting().map_err(|(wheel, e)| {
+        let (key, span) = [WheelField::TireRadius, WheelField::Thickness]
+            .into_iter()
+            .map(|field| locate_wheel_field(s, wheel, field))
+            .find(|(_, span)| span.is_some())
+            .unwrap_or_else(|| (Some(s.key_path(MOUNTING)), s.key_span(MOUNTING)));
+        s.src.error(
+            span,
+            key,
+            WorldFileErrorKind::InvalidValue(format!(
+                "tireRadius {} m with thickness {} m: tireRadius must be {}",
+                Compact(e.value),
+                Compact(spec.wheels[wheel].width),
+                e.rule
+            )),
         )
     })?;
     let name = s.string(NAME)?.unwrap_or("").to_string();
@@ -251,7 +271,8 @@ fn read_brake_balance(s: &Section<'_, '_>) -> Result<BrakeBalance<f64>, WorldFil
         Err(s.error(
             BRAKE_BALANCE,
             WorldFileErrorKind::InvalidValue(format!(
-                "the front axle's share of the brake torque must be in [0, 1], not {share}"
+                "the front axle's share of the brake torque must be in [0, 1], not {}",
+                Compact(share)
             )),
         ))
     }

@@ -16,7 +16,7 @@ fn seeds() -> PathBuf {
 
 /// Each seed and what loading it gives: `None` for a world that loads, else the whole error
 /// message (the file name, line and column, key and value in compact form).
-const OUTCOMES: [(&str, Option<&str>); 26] = [
+const OUTCOMES: [(&str, Option<&str>); 34] = [
     ("basic_time_step_100_truck.toml", None),
     ("basic_time_step_100_truck_joints.toml", None),
     (
@@ -148,6 +148,62 @@ const OUTCOMES: [(&str, Option<&str>); 26] = [
             "wheel_mass_1e300.toml:3:8: invalid 'vehicle.wheels.mass': wheelFrontRight: \
              'physics' must have a mass of 0.001 to 1000000 kg or a density of 1 to 100000 \
              kg/m³ (value 1e300).",
+        ),
+    ),
+    // Issue #37 ("Hardening round 3"): a joints wheel wider than its diameter panicked in
+    // parry; a day-long-plus duration or programme step ran forever; a friction past f32::MAX
+    // gripped nothing; a gear of 1e300 printed 301 digits. The cast mounting takes the wheel.
+    ("cast_tire_radius_100mm.toml", None),
+    (
+        "duration_1e9.toml",
+        Some(
+            "duration_1e9.toml:1:1: invalid 'duration': 1000000000 s: must be finite, > 0 and at \
+             most 86400 s (a day)",
+        ),
+    ),
+    (
+        "ground_friction_1e39.toml",
+        Some(
+            "ground_friction_1e39.toml:4:1: invalid 'ground.friction': 1e39: must be within 0 to 100",
+        ),
+    ),
+    (
+        "joints_thickness_1.toml",
+        Some(
+            "joints_thickness_1.toml:4:8: invalid 'vehicle.wheels.thickness': tireRadius 0.374 m \
+             with thickness 1 m: tireRadius must be at least 0.5 m, half the wheel's thickness: \
+             the joints mounting rounds the tread across the whole width (use mounting = \
+             \"cast\" for a wheel wider than its diameter)",
+        ),
+    ),
+    (
+        "joints_tire_radius_100mm.toml",
+        Some(
+            "joints_tire_radius_100mm.toml:4:8: invalid 'vehicle.wheels.tireRadius': tireRadius \
+             0.1 m with thickness 0.25 m: tireRadius must be at least 0.125 m, half the wheel's \
+             thickness: the joints mounting rounds the tread across the whole width (use \
+             mounting = \"cast\" for a wheel wider than its diameter)",
+        ),
+    ),
+    (
+        "programme_at_1e9.toml",
+        Some(
+            "programme_at_1e9.toml:4:1: invalid 'vehicle.programme[1].at': 1000000000 s: must be \
+             from 0 to 86400 s (a day, the longest run)",
+        ),
+    ),
+    (
+        "programme_gear_1e300.toml",
+        Some(
+            "programme_gear_1e300.toml:5:1: invalid 'vehicle.programme[1].gear': 1e300: must be \
+             from -1 to 5",
+        ),
+    ),
+    (
+        "robot_programme_at_1e300.toml",
+        Some(
+            "robot_programme_at_1e300.toml:3:1: invalid 'differential_wheels.programme[1].at': \
+             1e300 s: must be from 0 to 86400 s (a day, the longest run)",
         ),
     ),
     (
