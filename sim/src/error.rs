@@ -197,6 +197,10 @@ pub enum SimError {
         "cannot add '{0}' while the simulation records: add every vehicle before recording starts"
     )]
     Recording(String),
+    /// A car's sensor devices cannot be built (nothing was created), or a device index the
+    /// car does not have.
+    #[error("{0}")]
+    Device(crate::devices::DeviceError),
 }
 impl SimError {
     /// The [`SimError::NonFinite`] of a part of `owner` in the step ending at `time_ms`.
