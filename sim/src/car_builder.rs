@@ -1,8 +1,12 @@
 //! A car to add to a [`Simulation`](crate::Simulation): its Webots parameters and every other
 //! choice a world file makes about it (tyre, wheel mounting, brake balance, start placement,
-//! name), so that a car added from Rust, the C API, Python or a world file is the same car.
+//! name, sensor devices and their noise seed), so that a car added from Rust, the C API,
+//! Python or a world file is the same car.
 
+use proto_geom::SensorSlots;
 use vehicle_model::{BrakeBalance, CarParams, Driver, Model, ParamReport};
+
+use crate::devices::{CarDevices, DeviceSpec};
 
 use crate::error::SimError;
 use crate::placement::car_placement;
@@ -41,6 +45,12 @@ pub struct CarBuilder {
     name: Option<String>,
     /// The name a car gets when none is set (numbered if taken).
     default_name: &'static str,
+    /// Its sensor devices, in the order they were added.
+    devices: Vec<DeviceSpec>,
+    /// The seed of its devices' noise.
+    seed: u64,
+    /// The frames of its model's sensor slots, `None` for a model without them.
+    slots: Option<SensorSlots<f64>>,
 }
 
 /// A car built from a [`CarBuilder`]: its driver, its body and where it starts.
@@ -51,6 +61,7 @@ pub(crate) struct BuiltCar {
     pub placement: VehiclePlacement,
     pub name: Option<String>,
     pub default_name: &'static str,
+    pub devices: CarDevices,
 }
 
 impl CarBuilder {
@@ -67,15 +78,20 @@ impl CarBuilder {
             placement: None,
             name: None,
             default_name: Model::Car.webots_name(),
+            devices: Vec::new(),
+            seed: 0,
+            slots: None,
         }
     }
 
     /// The shipped `model` as a world file gives it with nothing else said: its parameters on
-    /// the slip-based tyre of its class ([`TyreChoice::of_model`]), named after it.
+    /// the slip-based tyre of its class ([`TyreChoice::of_model`]), named after it, with its
+    /// sensor slots for devices.
     pub fn of_model(model: Model) -> Self {
         CarBuilder {
             tyre: TyreChoice::of_model(model),
             default_name: model.webots_name(),
+            slots: slots_of(model),
             ..CarBuilder::new(model.params())
         }
     }
@@ -115,6 +131,34 @@ impl CarBuilder {
         self
     }
 
+    /// Adds a sensor device (checked when the car is added). Devices keep the order they are
+    /// added in: the C API's tags and each device's noise stream follow it.
+    #[must_use]
+    pub fn device(mut self, device: DeviceSpec) -> Self {
+        self.devices.push(device);
+        self
+    }
+
+    /// The seed of its devices' noise (default 0): the same seed gives the same noise.
+    #[must_use]
+    pub fn seed(mut self, seed: u64) -> Self {
+        self.seed = seed;
+        self
+    }
+
+    /// The sensor-slot frames its devices may sit in (those of a shipped model by default;
+    /// none for [`CarBuilder::new`]).
+    #[must_use]
+    pub fn sensor_slots(mut self, slots: Option<SensorSlots<f64>>) -> Self {
+        self.slots = slots;
+        self
+    }
+
+    /// The sensor devices, in order.
+    pub fn devices(&self) -> &[DeviceSpec] {
+        &self.devices
+    }
+
     /// The parameters as given (validated when the car is added).
     pub fn params(&self) -> &CarParams<f64> {
         &self.params
@@ -152,9 +196,11 @@ impl CarBuilder {
     ///
     /// # Errors
     /// [`SimError::Param`] naming a tyre coefficient or body field the car cannot be built
-    /// with, [`SimError::BrakeBalance`] for a front share outside [0, 1].
+    /// with, [`SimError::BrakeBalance`] for a front share outside [0, 1], [`SimError::Device`]
+    /// for a device that cannot be built.
     pub(crate) fn build(self, step_ms: u32) -> Result<BuiltCar, SimError> {
         let placement = self.start();
+        let devices = CarDevices::build(&self.devices, self.slots.as_ref(), self.seed)?;
         let (mut driver, report) = Driver::new(self.params, step_ms);
         driver
             .set_brake_balance(self.brake_balance)
@@ -168,13 +214,14 @@ impl CarBuilder {
             placement,
             name: self.name,
             default_name: self.default_name,
+            devices,
         })
     }
 }
 
 impl From<&CarDescription> for CarBuilder {
     /// The car of a world file as it is described: its parameters, tyre, mounting, brake
-    /// balance and name; it starts where its `translation` and `rotation` say.
+    /// balance, name, devices and seed; it starts where its `translation` and `rotation` say.
     fn from(car: &CarDescription) -> Self {
         CarBuilder {
             params: car.params.clone(),
@@ -184,6 +231,14 @@ impl From<&CarDescription> for CarBuilder {
             placement: None,
             name: Some(car.name.clone()),
             default_name: car.model.webots_name(),
+            devices: car.devices.clone(),
+            seed: car.seed,
+            slots: slots_of(car.model),
         }
     }
+}
+
+/// The sensor-slot frames of `model`, `None` for the plain `Car` and the models without them.
+fn slots_of(model: Model) -> Option<SensorSlots<f64>> {
+    model.shipped().and_then(|v| v.sensor_slots())
 }

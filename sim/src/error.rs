@@ -246,6 +246,10 @@ pub enum SimError {
         "cannot add '{0}' while the simulation records: add every vehicle before recording starts"
     )]
     Recording(String),
+    /// A car's sensor devices cannot be built (nothing was created), or a device index the
+    /// car does not have.
+    #[error("{0}")]
+    Device(crate::devices::DeviceError),
 }
 /// The message of a caught panic's `payload` (its `&str` or `String`), for the errors that
 /// report it.

@@ -21,6 +21,8 @@
 //!   (`report::figures`, `report::write_outputs`) and the sweeps' thread pool and merges. The
 //!   engine without it links no command-line, progress-bar, plotting or thread-pool crate
 //!   (`capi` and the Python extension use it so).
+//! * [`devices`]: Webots sensors on a car (GPS, InertialUnit, Gyro, Accelerometer,
+//!   Compass), sampled by the [`Simulation`] as Webots samples them;
 //! * [`replay`]: the run as an animated 3D scene, `replay.glb`.
 //! * [`sweep`]: one scenario on many variants of a world (axes over world-file keys), on
 //!   every core or split into shards for batch engines, one row of metrics per variant
@@ -81,6 +83,7 @@ mod body;
 mod car_builder;
 #[cfg(feature = "app")]
 pub mod cli;
+pub mod devices;
 pub mod motor;
 pub mod placement;
 pub mod programme;

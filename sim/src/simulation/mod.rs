@@ -12,9 +12,12 @@ mod recording;
 
 use std::path::{Path, PathBuf};
 
+use proto_geom::nalgebra::{Isometry3, Translation3};
+
 use vehicle_model::{ControlMode, Driver, Gear, ParamReport, Sensors};
 
 use crate::car_builder::CarBuilder;
+use crate::devices::{CarDevices, ChassisMotion, Device};
 use crate::diff_wheels::{DifferentialWheelsParams, RobotId, RobotMode, RobotPlacement};
 use crate::error::{ParamError, SimError};
 use crate::report::OutputError;
@@ -42,12 +45,13 @@ pub(crate) fn is_duration(d: f64) -> bool {
     d > 0.0 && d <= MAX_DURATION
 }
 
-/// One car's driver, name and whether it has had its first step.
+/// One car's driver, name, sensor devices and whether it has had its first step.
 struct Controlled {
     id: VehicleId,
     driver: Driver<f64>,
     name: String,
     sampled: bool,
+    devices: CarDevices,
 }
 
 /// A robot's handle and name.
@@ -185,6 +189,7 @@ impl Simulation {
             driver: built.driver,
             name,
             sampled: false,
+            devices: built.devices,
         });
         Ok((id, built.report))
     }
@@ -397,6 +402,9 @@ impl Simulation {
             }
         }
         let result = self.world.step();
+        if result.is_ok() {
+            self.refresh_devices()?;
+        }
         if result.is_ok()
             && let Some(mut recording) = self.recording.take()
         {
@@ -404,6 +412,71 @@ impl Simulation {
             self.recording = Some(recording);
         }
         result
+    }
+
+    /// Samples every enabled device whose period has come, on its car's chassis as the step
+    /// left it (Webots refreshes its sensors at the end of each step).
+    fn refresh_devices(&mut self) -> Result<(), SimError> {
+        let now_ms = self.world.time_ms();
+        let gravity = self.world.config().gravity;
+        for car in &mut self.cars {
+            if !car.devices.any_enabled() {
+                continue;
+            }
+            let s = self.world.vehicle(car.id)?.state();
+            let chassis = ChassisMotion {
+                pose: Isometry3::from_parts(Translation3::from(s.position.coords), s.orientation),
+                velocity: s.velocity,
+                angular_velocity: s.angular_velocity,
+                gravity,
+            };
+            car.devices.refresh(&chassis, now_ms);
+        }
+        Ok(())
+    }
+
+    /// The sensor devices of car `id`, in the order its builder (or world file) lists them,
+    /// each with its name, kind, sampling period and last sample.
+    ///
+    /// ```
+    /// use sim::devices::{DeviceKind, DeviceSettings, DeviceSpec, Reading};
+    /// use sim::{CarBuilder, Simulation, World, WorldConfig};
+    /// use vehicle_model::Model;
+    /// let mut sim = Simulation::new(World::new(WorldConfig::default())?);
+    /// let gyro = DeviceSpec::new(DeviceSettings::default_of(DeviceKind::Gyro));
+    /// let (car, _) = sim.add_car(CarBuilder::of_model(Model::BmwX5).device(gyro))?;
+    /// sim.enable_device(car, 0, 20)?; // ms
+    /// sim.step()?;
+    /// let Reading::Vector(w) = *sim.devices(car)?[0].reading() else { unreachable!() };
+    /// assert!(w.x.is_nan()); // no sample before one full period
+    /// sim.step()?;
+    /// let Reading::Vector(w) = *sim.devices(car)?[0].reading() else { unreachable!() };
+    /// assert!(w.z.abs() < 1e-3); // rad/s: a parked car hardly turns
+    /// # Ok::<(), sim::SimError>(())
+    /// ```
+    pub fn devices(&self, id: VehicleId) -> Result<&[Device], SimError> {
+        self.car(id).map(|c| c.devices.all())
+    }
+
+    /// Enables device `index` of car `id` with a sampling period of `period_ms` ms (Webots:
+    /// `wb_<device>_enable`; 0 disables, as `wb_<device>_disable`). Its first sample comes one
+    /// full period from now ([`crate::devices`]).
+    ///
+    /// # Errors
+    /// [`SimError::UnknownVehicle`]; [`SimError::Device`] for an index the car does not have.
+    pub fn enable_device(
+        &mut self,
+        id: VehicleId,
+        index: usize,
+        period_ms: u32,
+    ) -> Result<(), SimError> {
+        let now_ms = self.world.time_ms();
+        let car = self
+            .cars
+            .iter_mut()
+            .find(|c| c.id == id)
+            .ok_or(SimError::UnknownVehicle(id.index()))?;
+        Ok(car.devices.enable(index, period_ms, now_ms)?)
     }
 
     /// The telemetry of car `id` after the last step.

@@ -83,7 +83,7 @@ mod wheels;
 pub(crate) use tread::WheelRoadHooks;
 
 use ackermann::{PerWheel, Wheel, WheelAngles};
-use proto_geom::nalgebra::Point3;
+use proto_geom::nalgebra::{Point3, UnitQuaternion, Vector3};
 use proto_geom::plausible;
 use rapier3d::prelude::{PhysicsWorld, Pose, RigidBody, RigidBodyHandle, Vector};
 use vehicle_model::{Commands, Sensors, SpinPrediction, SpinStep, TransientSlip};
@@ -187,6 +187,7 @@ impl Vehicle {
                     yaw: geom::wrap(placement.yaw),
                     ..RollPitchYaw::default()
                 },
+                orientation: UnitQuaternion::from_axis_angle(&Vector3::z_axis(), placement.yaw),
                 wiper: spec.wiper_range.map(|[lo, _]| lo),
                 ..VehicleState::default()
             },
@@ -319,6 +320,7 @@ impl Vehicle {
         let origin = pose.translation;
         s.position = geom::to_point(origin);
         s.roll_pitch_yaw = geom::roll_pitch_yaw(q);
+        s.orientation = geom::to_rotation(q);
         if !(motion.linvel.is_finite() && motion.angvel.is_finite()) {
             return Err(fail(BodyPart::Chassis));
         }
@@ -326,6 +328,7 @@ impl Vehicle {
         s.velocity = geom::to_vector(v);
         s.forward_speed = f64::from(v.dot(q * Vector::X));
         s.yaw_rate = f64::from(motion.angvel.z);
+        s.angular_velocity = geom::to_vector(motion.angvel);
         // The whole car's centre of mass: the chassis body's, unless the wheels are bodies.
         let v_com = motion.velocity_at(com);
         if let Some(prev) = self.previous_com_velocity {

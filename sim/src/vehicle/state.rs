@@ -1,7 +1,7 @@
 //! What identifies a car, where it starts, and what it measures after a step.
 
 use ackermann::{PerWheel, WheelAngles};
-use proto_geom::nalgebra::{Point3, Vector3};
+use proto_geom::nalgebra::{Point3, UnitQuaternion, Vector3};
 
 use crate::attitude::RollPitchYaw;
 
@@ -38,12 +38,16 @@ pub struct VehicleState {
     pub position: Point3<f64>,
     /// Roll, pitch and yaw of the chassis (rad, z-y-x convention; yaw in (−π, π]).
     pub roll_pitch_yaw: RollPitchYaw,
+    /// Orientation of the chassis: car frame → world.
+    pub orientation: UnitQuaternion<f64>,
     /// Velocity of the car origin (m/s, world frame), from the chassis rigid body.
     pub velocity: Vector3<f64>,
     /// Signed speed along the chassis x axis (m/s, positive forward).
     pub forward_speed: f64,
     /// Yaw rate (rad/s, counter-clockwise about world +z).
     pub yaw_rate: f64,
+    /// Angular velocity of the chassis (rad/s, world axes).
+    pub angular_velocity: Vector3<f64>,
     /// Acceleration of the centre of mass along the chassis x axis over the last step (m/s²).
     pub longitudinal_acceleration: f64,
     /// Acceleration of the centre of mass along the chassis y axis (left) over the last step

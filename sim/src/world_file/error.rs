@@ -105,6 +105,10 @@ pub enum NameSet {
     Scenario,
     /// A sweep file's `combine`: `product`, `zip`.
     Combine,
+    /// `[[vehicle.device]] type`: `GPS`, `InertialUnit`, `Gyro`, `Accelerometer`, `Compass`.
+    DeviceType,
+    /// `[[vehicle.device]] slot`: `front`, `top`, `rear`, `center`.
+    SensorSlot,
 }
 
 impl fmt::Display for NameSet {
@@ -118,6 +122,8 @@ impl fmt::Display for NameSet {
             NameSet::WiperMode => "wiper mode",
             NameSet::Scenario => "scenario",
             NameSet::Combine => "way to combine the axes",
+            NameSet::DeviceType => "device type",
+            NameSet::SensorSlot => "sensor slot",
         })
     }
 }

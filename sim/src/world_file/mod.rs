@@ -30,6 +30,7 @@
 //! ```
 
 mod bodies;
+mod devices;
 mod error;
 mod overrides;
 mod programme;

@@ -11,12 +11,14 @@ use vehicle_model::{
     Wheel, WheelSetting, WheelSlot,
 };
 
+use super::devices::{DEVICE, read_devices};
 use super::error::{
     NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, closest, model_names,
 };
 use super::programme::{PROGRAMME, read_car_programme};
 use super::read::{Section, as_f64, describe};
 use super::tyre;
+use crate::devices::DeviceSpec;
 use crate::error::ParamError;
 use crate::programme::Programme;
 use crate::vehicle::{Mounting, TyreChoice, VehicleSpec};
@@ -36,7 +38,19 @@ const BRAKE_BALANCES: [(&str, BrakeBalance<f64>); 2] = [
 ];
 
 /// The keys of `[vehicle]` that are neither Webots fields nor wheel slots.
-const OWN_KEYS: [&str; 6] = ["model", "tyre", MOUNTING, BRAKE_BALANCE, NAME, PROGRAMME];
+const OWN_KEYS: [&str; 8] = [
+    "model",
+    "tyre",
+    MOUNTING,
+    BRAKE_BALANCE,
+    NAME,
+    PROGRAMME,
+    DEVICE,
+    SEED,
+];
+
+/// The key of the seed of the car's device noise in `[vehicle]`.
+const SEED: &str = "seed";
 
 /// A car as a world file describes it: inputs only. [`CarBuilder::from`](crate::CarBuilder)
 /// takes all of it to [`Simulation::add_car`](crate::Simulation::add_car), which builds the
@@ -64,6 +78,10 @@ pub struct CarDescription {
     pub name: String,
     /// Its timed driver commands (`[[vehicle.programme]]`), empty if none.
     pub programme: Programme,
+    /// Its sensor devices (`[[vehicle.device]]`), in file order, empty if none.
+    pub devices: Vec<DeviceSpec>,
+    /// The seed of its devices' noise (`seed`, default 0).
+    pub seed: u64,
 }
 
 impl CarDescription {
@@ -86,6 +104,8 @@ impl CarDescription {
                 brake_balance: BrakeBalance::Equal,
                 name: model.webots_name().to_string(),
                 programme: Programme::default(),
+                devices: Vec::new(),
+                seed: 0,
             },
             messages,
         ))
@@ -230,6 +250,8 @@ pub(crate) fn read_vehicle(
     let name = s.string(NAME)?.unwrap_or("").to_string();
     let gears = i32::try_from(params.gear_ratios.len().saturating_sub(1)).unwrap_or(i32::MAX);
     let programme = read_car_programme(s, gears)?;
+    let devices = read_devices(s, model)?;
+    let seed = s.unsigned(SEED)?.unwrap_or(0);
     Ok(CarDescription {
         model,
         params,
@@ -238,6 +260,8 @@ pub(crate) fn read_vehicle(
         brake_balance,
         name,
         programme,
+        devices,
+        seed,
     })
 }
 

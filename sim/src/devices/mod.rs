@@ -1,0 +1,395 @@
+//! Webots sensor devices on a car: `GPS`, `InertialUnit`, `Gyro`, `Accelerometer` and
+//! `Compass`, mounted in the Car PROTO's sensor slots (or anywhere on the chassis), sampled as
+//! Webots samples them. The measurements are written here once; the C API and Python only
+//! marshal them.
+//!
+//! * **Mounting.** A device's frame on the chassis is its slot's frame (`proto_geom`'s
+//!   [`SensorSlots`](proto_geom::SensorSlots); no slot: the car frame, origin at the rear-axle
+//!   centre at wheel-centre height) composed with its own `translation` (m) and `rotation`.
+//!   The device rides on the chassis body: its point moves with the chassis' velocity and
+//!   angular velocity.
+//! * **Sampling** (spec §2). Enabling with a period of `p` ms at time `t` sets the last
+//!   sample time to `t`; after each step the device samples iff `now − last ≥ p`, and then
+//!   `last = now`: the first value comes one full period after enabling (the effective period
+//!   is `p` rounded up to whole steps), and every value is NaN before it. A disabled device
+//!   keeps its last sample and costs nothing.
+//! * **Noise** comes from a [`SplitMix64`] per device: device `k` of a car (in the order the
+//!   car lists them) draws from the car's `seed` stream starting at draw `k·2⁴⁰`, so devices
+//!   never share draws, adding a device leaves the others' noise unchanged, and the same
+//!   world gives the same readings on every run.
+//! * **World frame.** The world is Webots' default ENU: x east, y north, z up. The compass
+//!   points to world +y; the inertial unit's yaw is 0 with the device's x axis along world +x.
+
+mod gps;
+mod inertial_unit;
+mod lookup;
+mod noise;
+mod spec;
+mod triaxial;
+
+use proto_geom::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
+use proto_geom::{SensorSlot, SensorSlots};
+
+use crate::error::{ParamError, SimError};
+use crate::rng::SplitMix64;
+
+pub use gps::{GpsReading, GpsSettings};
+pub use inertial_unit::{InertialUnitReading, InertialUnitSettings};
+pub use lookup::LookupTable;
+pub use spec::{Axes, DeviceKind, DeviceSettings, DeviceSpec};
+pub use triaxial::TriaxialSettings;
+
+use gps::GpsNoise;
+use spec::check_resolution;
+use triaxial::{PreviousVelocity, Quantity};
+
+/// The names of a car's own devices (the Car PROTO and Webots' car library): a sensor added to
+/// a car may not take one of them, so that a name finds one device.
+pub const CAR_DEVICE_NAMES: [&str; 27] = [
+    "right_steer",
+    "left_steer",
+    "right_steer_sensor",
+    "left_steer_sensor",
+    "right_front_wheel",
+    "left_front_wheel",
+    "right_rear_wheel",
+    "left_rear_wheel",
+    "right_front_sensor",
+    "left_front_sensor",
+    "right_rear_sensor",
+    "left_rear_sensor",
+    "right_front_brake",
+    "left_front_brake",
+    "right_rear_brake",
+    "left_rear_brake",
+    "front_lights",
+    "antifog_lights",
+    "right_indicators",
+    "left_indicators",
+    "rear_lights",
+    "backwards_lights",
+    "brake_lights",
+    "engine_speaker",
+    "right_wiper_motor",
+    "left_wiper_motor",
+    "wiper_sensor",
+];
+
+/// Why the devices of a car cannot be built.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum DeviceError {
+    /// A field is out of its range.
+    #[error("device '{name}': {error}")]
+    Field {
+        /// The device's name.
+        name: String,
+        /// The field and its value.
+        error: ParamError,
+    },
+    /// Two devices of the car have this name.
+    #[error("two devices of the car are named '{0}': device names must be unique on a car")]
+    DuplicateName(String),
+    /// The name is one of the car's own devices ([`CAR_DEVICE_NAMES`]).
+    #[error("'{0}' is the name of one of the car's own devices: choose another")]
+    ReservedName(String),
+    /// The device's slot is not known for this car: only the shipped models with the four
+    /// slots have their frames.
+    #[error(
+        "device '{name}': the car has no {} frame (only the shipped models with sensor slots \
+         have them; leave `slot` out to mount it in the car's frame)",
+        .slot.webots_name()
+    )]
+    NoSlot {
+        /// The device's name.
+        name: String,
+        /// The slot asked for.
+        slot: SensorSlot,
+    },
+    /// A device index the car does not have.
+    #[error("no device {index} on this car (it has {count})")]
+    Unknown {
+        /// The index asked for.
+        index: usize,
+        /// How many devices the car has.
+        count: usize,
+    },
+}
+
+/// A sample of a device, by kind.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Reading {
+    /// A GPS's position and speed.
+    Gps(GpsReading),
+    /// An inertial unit's orientation.
+    InertialUnit(InertialUnitReading),
+    /// A gyro's angular velocity (rad/s), an accelerometer's specific force (m/s²) or a
+    /// compass' north vector, device axes.
+    Vector(Vector3<f64>),
+}
+
+/// A device on a car: its fields, its frame on the chassis, its sampling state and its last
+/// sample.
+#[derive(Debug, Clone)]
+pub struct Device {
+    name: String,
+    settings: DeviceSettings,
+    /// Device frame → car frame (m).
+    mount: Isometry3<f64>,
+    /// Sampling period (ms), 0 when disabled.
+    period_ms: u32,
+    /// Time of the last sample, or of enabling (ms).
+    last_ms: u64,
+    rng: SplitMix64,
+    /// A GPS's correlated position noise.
+    gps_noise: GpsNoise,
+    /// An accelerometer's velocity at its previous sample.
+    previous_velocity: PreviousVelocity,
+    reading: Reading,
+}
+
+impl Device {
+    /// Its name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// Its kind.
+    pub fn kind(&self) -> DeviceKind {
+        self.settings.kind()
+    }
+
+    /// Its node fields.
+    pub fn settings(&self) -> &DeviceSettings {
+        &self.settings
+    }
+
+    /// Its frame on the car: device coordinates → car coordinates (m).
+    pub fn mount(&self) -> &Isometry3<f64> {
+        &self.mount
+    }
+
+    /// Its sampling period (ms), 0 when disabled.
+    pub fn period_ms(&self) -> u32 {
+        self.period_ms
+    }
+
+    /// Its last sample (NaN before the first), kept while disabled.
+    pub fn reading(&self) -> &Reading {
+        &self.reading
+    }
+
+    /// Enables it with a period of `period_ms` ms at time `now_ms` (0 disables). A new period
+    /// (or enabling a disabled device) restarts the wait for a full period; enabling again
+    /// with the period in force changes nothing, so a controller that enables in its loop
+    /// still gets samples.
+    fn enable(&mut self, period_ms: u32, now_ms: u64) {
+        if period_ms != self.period_ms {
+            self.period_ms = period_ms;
+            self.last_ms = now_ms;
+        }
+    }
+
+    /// Samples if enabled and a full period has passed since the last sample.
+    fn refresh(&mut self, chassis: &ChassisMotion, now_ms: u64) {
+        if self.period_ms == 0 || now_ms - self.last_ms < u64::from(self.period_ms) {
+            return;
+        }
+        // Whole ms: exact in f64.
+        let dt = (now_ms - self.last_ms) as f64 / 1000.0;
+        self.last_ms = now_ms;
+        let point = chassis.point(&self.mount);
+        let rng = &mut self.rng;
+        let vector = |quantity: Quantity,
+                      previous: &mut PreviousVelocity,
+                      settings: &TriaxialSettings,
+                      rng: &mut SplitMix64| {
+            let v = triaxial::physical(quantity, &point, dt, previous);
+            Reading::Vector(triaxial::respond(settings, &v, rng))
+        };
+        let previous = &mut self.previous_velocity;
+        self.reading = match &self.settings {
+            DeviceSettings::Gps(s) => {
+                Reading::Gps(gps::measure(s, &point, dt, &mut self.gps_noise, rng))
+            }
+            DeviceSettings::InertialUnit(s) => {
+                Reading::InertialUnit(inertial_unit::measure(s, &point, rng))
+            }
+            DeviceSettings::Gyro(s) => vector(Quantity::AngularVelocity, previous, s, rng),
+            DeviceSettings::Accelerometer(s) => vector(Quantity::SpecificForce, previous, s, rng),
+            DeviceSettings::Compass(s) => vector(Quantity::North, previous, s, rng),
+        };
+    }
+}
+
+/// The chassis' motion after a step, from which each device's point is measured.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ChassisMotion {
+    /// Car frame → world (m).
+    pub pose: Isometry3<f64>,
+    /// Velocity of the car frame's origin (m/s, world axes).
+    pub velocity: Vector3<f64>,
+    /// Angular velocity (rad/s, world axes).
+    pub angular_velocity: Vector3<f64>,
+    /// Gravity (m/s², world axes).
+    pub gravity: Vector3<f64>,
+}
+
+impl ChassisMotion {
+    /// The motion of the chassis point at device frame `mount`.
+    fn point(&self, mount: &Isometry3<f64>) -> DevicePoint {
+        let offset = self.pose.rotation * mount.translation.vector;
+        DevicePoint {
+            position: self.pose.translation.vector.into(),
+            rotation: self.pose.rotation * mount.rotation,
+            velocity: self.velocity + self.angular_velocity.cross(&offset),
+            angular_velocity: self.angular_velocity,
+            gravity: self.gravity,
+        }
+        .moved_by(offset)
+    }
+}
+
+/// A device's point on the chassis and its frame, in the world.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct DevicePoint {
+    /// Position (m).
+    pub position: Point3<f64>,
+    /// Device → world.
+    pub rotation: UnitQuaternion<f64>,
+    /// Velocity (m/s, world axes).
+    pub velocity: Vector3<f64>,
+    /// Angular velocity of the body it rides on (rad/s, world axes).
+    pub angular_velocity: Vector3<f64>,
+    /// Gravity (m/s², world axes).
+    pub gravity: Vector3<f64>,
+}
+
+impl DevicePoint {
+    fn moved_by(mut self, offset: Vector3<f64>) -> Self {
+        self.position += offset;
+        self
+    }
+}
+
+/// The devices of one car, in the order they were given.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct CarDevices {
+    devices: Vec<Device>,
+}
+
+/// How far apart two devices' noise streams start (draws): more than any run draws.
+const STREAM_SPACING: u64 = 1 << 40;
+
+impl CarDevices {
+    /// Builds `specs` on a car whose sensor slots are `slots` (`None`: a model without them),
+    /// their noise drawn from `seed`'s stream.
+    ///
+    /// # Errors
+    /// [`DeviceError`]: a field out of range, a name taken twice or one of
+    /// [`CAR_DEVICE_NAMES`], a slot the car does not have.
+    pub(crate) fn build(
+        specs: &[DeviceSpec],
+        slots: Option<&SensorSlots<f64>>,
+        seed: u64,
+    ) -> Result<CarDevices, DeviceError> {
+        let mut devices: Vec<Device> = Vec::with_capacity(specs.len());
+        for (k, spec) in specs.iter().enumerate() {
+            let name = spec.device_name().to_string();
+            spec.settings
+                .validate()
+                .map_err(|error| DeviceError::Field {
+                    name: name.clone(),
+                    error,
+                })?;
+            for (field, &v) in ["translation"; 3].iter().zip(spec.translation.iter()) {
+                ParamError::finite(field, v).map_err(|error| DeviceError::Field {
+                    name: name.clone(),
+                    error,
+                })?;
+            }
+            for &c in spec.rotation.coords.iter() {
+                ParamError::finite("rotation", c).map_err(|error| DeviceError::Field {
+                    name: name.clone(),
+                    error,
+                })?;
+            }
+            if CAR_DEVICE_NAMES.contains(&name.as_str()) {
+                return Err(DeviceError::ReservedName(name));
+            }
+            if devices.iter().any(|d| d.name == name) {
+                return Err(DeviceError::DuplicateName(name));
+            }
+            let slot = match spec.slot {
+                None => Isometry3::identity(),
+                Some(slot) => slots
+                    .map(|s| s.get(slot))
+                    .ok_or_else(|| DeviceError::NoSlot {
+                        name: name.clone(),
+                        slot,
+                    })?,
+            };
+            let own = Isometry3::from_parts(Translation3::from(spec.translation), spec.rotation);
+            let mut rng = SplitMix64::new(seed);
+            rng.advance((k as u64).wrapping_mul(STREAM_SPACING));
+            let reading = match spec.kind() {
+                DeviceKind::Gps => Reading::Gps(GpsReading::unsampled()),
+                DeviceKind::InertialUnit => Reading::InertialUnit(InertialUnitReading::unsampled()),
+                DeviceKind::Gyro | DeviceKind::Accelerometer | DeviceKind::Compass => {
+                    Reading::Vector(Vector3::repeat(f64::NAN))
+                }
+            };
+            devices.push(Device {
+                name,
+                settings: spec.settings.clone(),
+                mount: slot * own,
+                period_ms: 0,
+                last_ms: 0,
+                rng,
+                gps_noise: GpsNoise::default(),
+                previous_velocity: PreviousVelocity::default(),
+                reading,
+            });
+        }
+        Ok(CarDevices { devices })
+    }
+
+    /// The devices, in order.
+    pub(crate) fn all(&self) -> &[Device] {
+        &self.devices
+    }
+
+    /// Enables device `index` with a period of `period_ms` ms (0 disables) at `now_ms`.
+    pub(crate) fn enable(
+        &mut self,
+        index: usize,
+        period_ms: u32,
+        now_ms: u64,
+    ) -> Result<(), DeviceError> {
+        let count = self.devices.len();
+        let device = self
+            .devices
+            .get_mut(index)
+            .ok_or(DeviceError::Unknown { index, count })?;
+        device.enable(period_ms, now_ms);
+        Ok(())
+    }
+
+    /// True if a device is enabled (else a step need not measure the chassis).
+    pub(crate) fn any_enabled(&self) -> bool {
+        self.devices.iter().any(|d| d.period_ms != 0)
+    }
+
+    /// Samples every device whose period has come, at `now_ms`, on `chassis`.
+    pub(crate) fn refresh(&mut self, chassis: &ChassisMotion, now_ms: u64) {
+        for d in &mut self.devices {
+            d.refresh(chassis, now_ms);
+        }
+    }
+}
+
+impl From<DeviceError> for SimError {
+    fn from(e: DeviceError) -> Self {
+        SimError::Device(e)
+    }
+}

@@ -1,0 +1,235 @@
+//! What describes a device before it is built: its kind, its node fields and where it sits
+//! on the car ([`DeviceSpec`]).
+
+use proto_geom::SensorSlot;
+use proto_geom::nalgebra::{UnitQuaternion, Vector3};
+
+use crate::error::ParamError;
+
+use super::{GpsSettings, InertialUnitSettings, TriaxialSettings};
+
+/// The kinds of device of this phase.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum DeviceKind {
+    /// Webots `GPS`.
+    Gps,
+    /// Webots `InertialUnit`.
+    InertialUnit,
+    /// Webots `Gyro`.
+    Gyro,
+    /// Webots `Accelerometer`.
+    Accelerometer,
+    /// Webots `Compass`.
+    Compass,
+}
+
+impl DeviceKind {
+    /// Every kind.
+    pub const ALL: [DeviceKind; 5] = [
+        DeviceKind::Gps,
+        DeviceKind::InertialUnit,
+        DeviceKind::Gyro,
+        DeviceKind::Accelerometer,
+        DeviceKind::Compass,
+    ];
+
+    /// The Webots node name (`"GPS"`, `"InertialUnit"`, …).
+    pub const fn webots_name(self) -> &'static str {
+        match self {
+            DeviceKind::Gps => "GPS",
+            DeviceKind::InertialUnit => "InertialUnit",
+            DeviceKind::Gyro => "Gyro",
+            DeviceKind::Accelerometer => "Accelerometer",
+            DeviceKind::Compass => "Compass",
+        }
+    }
+
+    /// The kind of Webots node name `name` (exact).
+    pub fn from_webots_name(name: &str) -> Option<DeviceKind> {
+        DeviceKind::ALL
+            .into_iter()
+            .find(|k| k.webots_name() == name)
+    }
+
+    /// The node's default `name` field (`"gps"`, `"inertial unit"`, …).
+    pub const fn default_name(self) -> &'static str {
+        match self {
+            DeviceKind::Gps => "gps",
+            DeviceKind::InertialUnit => "inertial unit",
+            DeviceKind::Gyro => "gyro",
+            DeviceKind::Accelerometer => "accelerometer",
+            DeviceKind::Compass => "compass",
+        }
+    }
+}
+
+/// The `xAxis`, `yAxis`, `zAxis` fields (default all true).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Axes {
+    /// `xAxis`.
+    pub x: bool,
+    /// `yAxis`.
+    pub y: bool,
+    /// `zAxis`.
+    pub z: bool,
+}
+
+impl Default for Axes {
+    fn default() -> Self {
+        Axes {
+            x: true,
+            y: true,
+            z: true,
+        }
+    }
+}
+
+impl Axes {
+    /// True when every axis is enabled.
+    pub const fn all(self) -> bool {
+        self.x && self.y && self.z
+    }
+}
+
+/// A `resolution` field: −1 (none) or finite and > 0.
+pub(crate) fn check_resolution(field: &'static str, value: f64) -> Result<(), ParamError> {
+    ParamError::check(field, value, "-1 (none) or finite and > 0", |r| {
+        r == -1.0 || (r.is_finite() && r > 0.0)
+    })
+    .map(|_| ())
+}
+
+/// A device's node fields, by kind.
+#[derive(Debug, Clone, PartialEq)]
+pub enum DeviceSettings {
+    /// A `GPS`.
+    Gps(GpsSettings),
+    /// An `InertialUnit`.
+    InertialUnit(InertialUnitSettings),
+    /// A `Gyro` (rad/s).
+    Gyro(TriaxialSettings),
+    /// An `Accelerometer` (m/s²).
+    Accelerometer(TriaxialSettings),
+    /// A `Compass` (unitless).
+    Compass(TriaxialSettings),
+}
+
+impl DeviceSettings {
+    /// The kind of device.
+    pub fn kind(&self) -> DeviceKind {
+        match self {
+            DeviceSettings::Gps(_) => DeviceKind::Gps,
+            DeviceSettings::InertialUnit(_) => DeviceKind::InertialUnit,
+            DeviceSettings::Gyro(_) => DeviceKind::Gyro,
+            DeviceSettings::Accelerometer(_) => DeviceKind::Accelerometer,
+            DeviceSettings::Compass(_) => DeviceKind::Compass,
+        }
+    }
+
+    /// The Webots defaults of a `kind` node.
+    pub fn default_of(kind: DeviceKind) -> Self {
+        match kind {
+            DeviceKind::Gps => DeviceSettings::Gps(GpsSettings::default()),
+            DeviceKind::InertialUnit => {
+                DeviceSettings::InertialUnit(InertialUnitSettings::default())
+            }
+            DeviceKind::Gyro => DeviceSettings::Gyro(TriaxialSettings::default()),
+            DeviceKind::Accelerometer => DeviceSettings::Accelerometer(TriaxialSettings::default()),
+            DeviceKind::Compass => DeviceSettings::Compass(TriaxialSettings::default()),
+        }
+    }
+
+    /// Checks every field against Webots' range.
+    ///
+    /// # Errors
+    /// A [`ParamError`] naming the Webots field and the value.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        match self {
+            DeviceSettings::Gps(s) => s.validate(),
+            DeviceSettings::InertialUnit(s) => s.validate(),
+            DeviceSettings::Gyro(s)
+            | DeviceSettings::Accelerometer(s)
+            | DeviceSettings::Compass(s) => s.validate(),
+        }
+    }
+}
+
+/// A device to put on a car ([`CarBuilder::device`](crate::CarBuilder::device)): its node
+/// fields, its name and where it sits.
+///
+/// ```
+/// use sim::devices::{DeviceKind, DeviceSettings, DeviceSpec, GpsSettings};
+/// use sim::nalgebra::Vector3;
+/// use proto_geom::SensorSlot;
+/// let gps = DeviceSpec::new(DeviceSettings::Gps(GpsSettings { accuracy: 0.5, ..GpsSettings::default() }))
+///     .slot(SensorSlot::Top)
+///     .translation(Vector3::new(0.0, 0.0, 0.1)); // m, in the slot's frame
+/// assert_eq!(gps.kind(), DeviceKind::Gps);
+/// assert_eq!(gps.device_name(), "gps");
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct DeviceSpec {
+    /// The node fields.
+    pub settings: DeviceSettings,
+    /// The `name` field; `None`: the kind's Webots default.
+    pub name: Option<String>,
+    /// The sensor slot it sits in; `None`: the car frame (origin at the rear-axle centre).
+    pub slot: Option<SensorSlot>,
+    /// Its `translation` in the slot's frame (m).
+    pub translation: Vector3<f64>,
+    /// Its `rotation` in the slot's frame.
+    pub rotation: UnitQuaternion<f64>,
+}
+
+impl DeviceSpec {
+    /// A device of `settings`, named by default, at the car frame's origin.
+    pub fn new(settings: DeviceSettings) -> Self {
+        DeviceSpec {
+            settings,
+            name: None,
+            slot: None,
+            translation: Vector3::zeros(),
+            rotation: UnitQuaternion::identity(),
+        }
+    }
+
+    /// Its name (unique on the car).
+    #[must_use]
+    pub fn name(mut self, name: impl Into<String>) -> Self {
+        self.name = Some(name.into());
+        self
+    }
+
+    /// The sensor slot it sits in.
+    #[must_use]
+    pub fn slot(mut self, slot: SensorSlot) -> Self {
+        self.slot = Some(slot);
+        self
+    }
+
+    /// Its translation in the slot's frame (m).
+    #[must_use]
+    pub fn translation(mut self, translation: Vector3<f64>) -> Self {
+        self.translation = translation;
+        self
+    }
+
+    /// Its rotation in the slot's frame.
+    #[must_use]
+    pub fn rotation(mut self, rotation: UnitQuaternion<f64>) -> Self {
+        self.rotation = rotation;
+        self
+    }
+
+    /// The kind of device.
+    pub fn kind(&self) -> DeviceKind {
+        self.settings.kind()
+    }
+
+    /// The name it has on the car: its `name`, or its kind's default.
+    pub fn device_name(&self) -> &str {
+        self.name
+            .as_deref()
+            .unwrap_or(self.settings.kind().default_name())
+    }
+}

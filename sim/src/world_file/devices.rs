@@ -1,0 +1,235 @@
+//! `[[vehicle.device]]`: the Webots sensor devices on a car (see [`crate::devices`]), with the
+//! Webots fields of each node.
+
+use proto_geom::SensorSlot;
+use proto_geom::nalgebra::{Unit, UnitQuaternion, Vector3};
+use proto_geom::plausible::{self, Compact};
+use toml::de::DeValue;
+use vehicle_model::Model;
+
+use super::error::{NameSet, WorldFileError, WorldFileErrorKind};
+use super::read::{Section, as_f64, describe, missing};
+use crate::devices::{
+    Axes, CAR_DEVICE_NAMES, DeviceKind, DeviceSettings, DeviceSpec, GpsSettings,
+    InertialUnitSettings, LookupTable, TriaxialSettings,
+};
+use crate::error::ParamError;
+
+/// The key of the devices in `[vehicle]`.
+pub(crate) const DEVICE: &str = "device";
+
+/// The keys every device has.
+const COMMON: [&str; 5] = ["type", "name", "slot", "translation", "rotation"];
+/// The `GPS` fields.
+const GPS: [&str; 5] = [
+    "accuracy",
+    "noiseCorrelation",
+    "resolution",
+    "speedNoise",
+    "speedResolution",
+];
+/// The `InertialUnit` fields.
+const INERTIAL_UNIT: [&str; 5] = ["noise", "xAxis", "yAxis", "zAxis", "resolution"];
+/// The `Gyro`, `Accelerometer` and `Compass` fields.
+const TRIAXIAL: [&str; 5] = ["lookupTable", "xAxis", "yAxis", "zAxis", "resolution"];
+
+/// The slots by their names in a world file.
+const SLOTS: [(&str, SensorSlot); 4] = [
+    ("front", SensorSlot::Front),
+    ("top", SensorSlot::Top),
+    ("rear", SensorSlot::Rear),
+    ("center", SensorSlot::Centre),
+];
+
+/// Reads the `[[device]]` tables of the car section `s` of a `model` car, in file order.
+pub(crate) fn read_devices(
+    s: &Section<'_, '_>,
+    model: Model,
+) -> Result<Vec<DeviceSpec>, WorldFileError> {
+    let mut out: Vec<DeviceSpec> = Vec::new();
+    for d in s.tables(DEVICE)? {
+        let spec = read_device(&d, model)?;
+        let name = spec.device_name();
+        let clash = if CAR_DEVICE_NAMES.contains(&name) {
+            Some("is the name of one of the car's own devices (Webots' car library)")
+        } else if out.iter().any(|o| o.device_name() == name) {
+            Some("is taken by another device of this car: device names must be unique")
+        } else {
+            None
+        };
+        if let Some(why) = clash {
+            return Err(d.error(
+                "name",
+                WorldFileErrorKind::InvalidValue(format!("\"{name}\" {why}")),
+            ));
+        }
+        out.push(spec);
+    }
+    Ok(out)
+}
+
+/// Reads one device table.
+fn read_device(d: &Section<'_, '_>, model: Model) -> Result<DeviceSpec, WorldFileError> {
+    let type_name = d.string("type")?.ok_or_else(|| missing(d, "type"))?;
+    let kind = DeviceKind::from_webots_name(type_name).ok_or_else(|| {
+        let names = DeviceKind::ALL.map(DeviceKind::webots_name);
+        d.unknown_name("type", NameSet::DeviceType, type_name, &names)
+    })?;
+    let fields: &[&str] = match kind {
+        DeviceKind::Gps => &GPS,
+        DeviceKind::InertialUnit => &INERTIAL_UNIT,
+        DeviceKind::Gyro | DeviceKind::Accelerometer | DeviceKind::Compass => &TRIAXIAL,
+    };
+    let allowed: Vec<&str> = COMMON.iter().chain(fields).copied().collect();
+    d.check_keys(&allowed)?;
+    let settings = match kind {
+        DeviceKind::Gps => DeviceSettings::Gps(read_gps(d)?),
+        DeviceKind::InertialUnit => DeviceSettings::InertialUnit(read_inertial_unit(d)?),
+        DeviceKind::Gyro => DeviceSettings::Gyro(read_triaxial(d)?),
+        DeviceKind::Accelerometer => DeviceSettings::Accelerometer(read_triaxial(d)?),
+        DeviceKind::Compass => DeviceSettings::Compass(read_triaxial(d)?),
+    };
+    settings.validate().map_err(|e| invalid(d, &e))?;
+    let mut spec = DeviceSpec::new(settings);
+    if let Some(name) = d.string("name")? {
+        if name.is_empty() {
+            return Err(d.error(
+                "name",
+                WorldFileErrorKind::InvalidValue("an empty name cannot be looked up".to_string()),
+            ));
+        }
+        spec = spec.name(name);
+    }
+    if let Some(slot_name) = d.string("slot")? {
+        let slot = SLOTS
+            .iter()
+            .find(|(n, _)| *n == slot_name)
+            .map(|&(_, slot)| slot)
+            .ok_or_else(|| {
+                let names = SLOTS.map(|(n, _)| n);
+                d.unknown_name("slot", NameSet::SensorSlot, slot_name, &names)
+            })?;
+        if model
+            .shipped()
+            .and_then(|v| v.sensor_slots::<f64>())
+            .is_none()
+        {
+            return Err(d.error(
+                "slot",
+                WorldFileErrorKind::InvalidValue(format!(
+                    "the {} model has no sensor slots; leave `slot` out to place the device \
+                     in the car's frame (origin at the rear-axle centre)",
+                    model.webots_name()
+                )),
+            ));
+        }
+        spec = spec.slot(slot);
+    }
+    if let Some(t) = d.array::<3>("translation")? {
+        for v in t {
+            ParamError::within("translation", v, plausible::POSITION)
+                .map_err(|e| invalid(d, &e))?;
+        }
+        spec = spec.translation(Vector3::from(t));
+    }
+    if let Some([x, y, z, angle]) = d.array::<4>("rotation")? {
+        let axis = Vector3::new(x, y, z);
+        let valid = axis.iter().all(|c| c.is_finite()) && angle.is_finite();
+        let Some(axis) = Unit::try_new(axis, 0.0).filter(|_| valid) else {
+            return Err(d.error(
+                "rotation",
+                WorldFileErrorKind::InvalidValue(format!(
+                    "[{}, {}, {}, {}]: the axis must be finite and not zero, the angle finite",
+                    Compact(x),
+                    Compact(y),
+                    Compact(z),
+                    Compact(angle)
+                )),
+            ));
+        };
+        spec = spec.rotation(UnitQuaternion::from_axis_angle(&axis, angle));
+    }
+    Ok(spec)
+}
+
+/// The file error of a field out of its range, at its key.
+fn invalid(d: &Section<'_, '_>, e: &ParamError) -> WorldFileError {
+    d.error(
+        e.field,
+        WorldFileErrorKind::InvalidValue(format!("{}: must be {}", Compact(e.value), e.rule)),
+    )
+}
+
+fn read_gps(d: &Section<'_, '_>) -> Result<GpsSettings, WorldFileError> {
+    let g = GpsSettings::default();
+    Ok(GpsSettings {
+        accuracy: d.number("accuracy")?.unwrap_or(g.accuracy),
+        noise_correlation: d.number("noiseCorrelation")?.unwrap_or(g.noise_correlation),
+        resolution: d.number("resolution")?.unwrap_or(g.resolution),
+        speed_noise: d.number("speedNoise")?.unwrap_or(g.speed_noise),
+        speed_resolution: d.number("speedResolution")?.unwrap_or(g.speed_resolution),
+    })
+}
+
+fn read_axes(d: &Section<'_, '_>) -> Result<Axes, WorldFileError> {
+    Ok(Axes {
+        x: d.boolean("xAxis")?.unwrap_or(true),
+        y: d.boolean("yAxis")?.unwrap_or(true),
+        z: d.boolean("zAxis")?.unwrap_or(true),
+    })
+}
+
+fn read_inertial_unit(d: &Section<'_, '_>) -> Result<InertialUnitSettings, WorldFileError> {
+    let u = InertialUnitSettings::default();
+    Ok(InertialUnitSettings {
+        noise: d.number("noise")?.unwrap_or(u.noise),
+        axes: read_axes(d)?,
+        resolution: d.number("resolution")?.unwrap_or(u.resolution),
+    })
+}
+
+fn read_triaxial(d: &Section<'_, '_>) -> Result<TriaxialSettings, WorldFileError> {
+    let lookup_table = match d.value("lookupTable") {
+        None => LookupTable::default(),
+        Some(v) => LookupTable::new(read_rows(d, v)?).map_err(|e| invalid(d, &e))?,
+    };
+    Ok(TriaxialSettings {
+        lookup_table,
+        axes: read_axes(d)?,
+        resolution: d.number("resolution")?.unwrap_or(-1.0),
+    })
+}
+
+/// The rows of a `lookupTable`: a list of `[input, output, noise]` lists.
+fn read_rows(d: &Section<'_, '_>, v: &DeValue<'_>) -> Result<Vec<[f64; 3]>, WorldFileError> {
+    let wrong = |found: String| {
+        d.error(
+            "lookupTable",
+            WorldFileErrorKind::WrongType {
+                expected: "a list of [input, output, noise] rows".to_string(),
+                found,
+            },
+        )
+    };
+    let DeValue::Array(rows) = v else {
+        return Err(wrong(describe(v)));
+    };
+    let mut out = Vec::with_capacity(rows.len());
+    for (i, row) in rows.iter().enumerate() {
+        let numbers: Option<Vec<f64>> = match row.get_ref() {
+            DeValue::Array(items) => items.iter().map(|x| as_f64(x.get_ref())).collect(),
+            _ => None,
+        };
+        match numbers.and_then(|n| <[f64; 3]>::try_from(n).ok()) {
+            Some(r) => out.push(r),
+            None => {
+                return Err(wrong(format!(
+                    "{} at row {}",
+                    describe(row.get_ref()),
+                    i + 1
+                )));
+            }
+        }
+    }
+    Ok(out)
+}
