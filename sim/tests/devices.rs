@@ -415,13 +415,17 @@ fn device_tables_are_read_with_webots_defaults_and_located_errors() {
     ));
     assert_eq!(key, "vehicle.device[1].lookupTable");
     assert!(text.contains("strictly increasing"), "{text}");
-    let (_, key, text) = refused(&format!("{device}type = \"Gyro\"\nlookupTable = [[0, 0]]\n"));
+    let (_, key, text) = refused(&format!(
+        "{device}type = \"Gyro\"\nlookupTable = [[0, 0]]\n"
+    ));
     assert_eq!(key, "vehicle.device[1].lookupTable");
     assert!(text.contains("row 1"), "{text}");
     let (_, key, text) = refused(&format!("{device}type = \"Gyro\"\nslot = \"roof\"\n"));
     assert_eq!(key, "vehicle.device[1].slot");
     assert!(text.contains("front") && text.contains("center"), "{text}");
-    let (_, key, text) = refused(&format!("{device}type = \"Gyro\"\nrotation = [0, 0, 0, 1]\n"));
+    let (_, key, text) = refused(&format!(
+        "{device}type = \"Gyro\"\nrotation = [0, 0, 0, 1]\n"
+    ));
     assert_eq!(key, "vehicle.device[1].rotation");
     assert!(text.contains("axis"), "{text}");
     let (line, key, text) = refused(&format!(
@@ -430,7 +434,9 @@ fn device_tables_are_read_with_webots_defaults_and_located_errors() {
     // No `name` key: located at the second table's header.
     assert_eq!((line, key.as_str()), (5, "vehicle.device[2].name"));
     assert!(text.contains("\"gyro\" is taken"), "{text}");
-    let (_, key, text) = refused(&format!("{device}type = \"Gyro\"\nname = \"right_steer\"\n"));
+    let (_, key, text) = refused(&format!(
+        "{device}type = \"Gyro\"\nname = \"right_steer\"\n"
+    ));
     assert_eq!(key, "vehicle.device[1].name");
     assert!(text.contains("car's own devices"), "{text}");
     // The plain Car and the Tractor have no slot frames.
@@ -438,4 +444,32 @@ fn device_tables_are_read_with_webots_defaults_and_located_errors() {
         refused("[vehicle]\n[[vehicle.device]]\ntype = \"Gyro\"\nslot = \"top\"\n");
     assert_eq!(key, "vehicle.device[1].slot");
     assert!(text.contains("Car model has no sensor slots"), "{text}");
+}
+
+#[test]
+fn the_sensors_world_has_one_of_each_device() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/worlds/sensors.toml");
+    let description = world_file::load(path).unwrap();
+    let (mut sim, _) = Simulation::from_description(&description).unwrap();
+    let id = sim.car_ids().next().unwrap();
+    let kinds: Vec<_> = sim.devices(id).unwrap().iter().map(|d| d.kind()).collect();
+    assert_eq!(kinds, sim::devices::DeviceKind::ALL);
+    for i in 0..kinds.len() {
+        sim.enable_device(id, i, 20).unwrap();
+    }
+    for _ in 0..100 {
+        sim.step().unwrap();
+    }
+    // The rear slot faces backward and the car heads north-east: north is behind-right,
+    // (−sin π/4, −cos π/4, 0) in the compass' axes; 5e-3 for the body's pitch on its springs.
+    let n = vector(&sim, id, "rear compass");
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    assert!((n + Vector3::new(h, h, 0.0)).norm() < 5e-3, "{n}");
+    // The gyro's resolution of 1e-3 rad/s: every value a whole number of steps.
+    let w = vector(&sim, id, "gyro");
+    assert!(
+        w.iter()
+            .all(|c| ((c / 1e-3) - (c / 1e-3).round()).abs() < 1e-6),
+        "{w}"
+    );
 }
