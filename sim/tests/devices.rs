@@ -1,7 +1,7 @@
 //! Webots sensor devices on a car against analytic values: a steady circle (GPS, gyro,
 //! accelerometer, inertial unit), a car parked on a 10 % slope (accelerometer), a car heading
 //! north-east (compass), lookup tables and resolution, sampling periods, noise.
-#![allow(clippy::unwrap_used, clippy::panic)]
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use sim::devices::{GpsReading, InertialUnitReading, Reading};
 use sim::nalgebra::{Matrix3, Point3, Vector3};
