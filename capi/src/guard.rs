@@ -28,6 +28,11 @@ pub(crate) fn call<R: Default>(name: &str, body: impl FnOnce() -> R) -> R {
     }
 }
 
+/// As [`call`] for a function whose C result is a pointer: `None` and a panic give NULL.
+pub(crate) fn call_pointer<T>(name: &str, body: impl FnOnce() -> Option<*const T>) -> *const T {
+    call(name, body).unwrap_or(std::ptr::null())
+}
+
 /// Defines `#[unsafe(no_mangle)] pub extern "C"` functions whose bodies run behind
 /// [`call`]. Syntax: doc comments, then `fn name(arg: Type, ...) -> Ret { body }`.
 macro_rules! entry_points {

@@ -20,7 +20,11 @@
 //!   `wbu_driver_set_brake`, `..._get_brake`, `..._set_wipers_mode`, `..._get_wipers_mode`,
 //!   `..._set_indicator_warning`, `initialization_is_possible`), exported by `libdriver` and
 //!   implemented here as `vehicle_capi_driver_*`;
-//! * `webots/differential_wheels.h`: every `wb_differential_wheels_*` function.
+//! * `webots/differential_wheels.h`: every `wb_differential_wheels_*` function;
+//! * `webots/gps.h`, `webots/inertial_unit.h`, `webots/gyro.h`, `webots/accelerometer.h`,
+//!   `webots/compass.h`: the sensors a world file puts on the car (`[[vehicle.device]]`),
+//!   measured by `sim::devices`; `webots/device.h` and `wb_robot_get_number_of_devices`,
+//!   `wb_robot_get_device_by_index` to list the robot's devices.
 //!
 //! Arguments and results follow the C ABI of the headers: C `bool` is one byte (any non-zero
 //! value is true; results are 0 or 1), enumerations are `int` (out-of-range values are refused
@@ -57,18 +61,23 @@ mod guard;
 
 mod abi;
 mod car_api;
+mod device_api;
 mod devices;
 mod differential_wheels_api;
 mod driver_api;
 mod message;
 mod robot;
 mod robot_api;
+mod sensor;
+mod sensor_api;
 mod session;
 
 pub use abi::WbDeviceTag;
 pub use car_api::*;
+pub use device_api::*;
 pub use differential_wheels_api::*;
 pub use driver_api::*;
 pub use robot::WORLD_VARIABLE;
 pub use robot_api::*;
+pub use sensor_api::*;
 pub use session::load_world;

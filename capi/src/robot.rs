@@ -9,7 +9,8 @@ use sim::world_file::{self, WorldDescription};
 use sim::{RobotId, SimError, Simulation, VehicleId};
 
 use crate::abi::WbDeviceTag;
-use crate::devices;
+use crate::devices::{self, CAR_TAGS, DeviceEntry};
+use crate::sensor::Buffers;
 
 /// The environment variable that selects the world: a world file path or a shipped model name.
 pub const WORLD_VARIABLE: &str = "VEHICLE_WORLD";
@@ -59,6 +60,11 @@ pub(crate) struct Robot {
     warnings: Vec<String>,
     /// `VEHICLE_OUT`: where the run's outputs go, until they are written.
     outputs: Option<PathBuf>,
+    /// The robot's devices in tag order (tag = index + 1), `None` for a car-library device
+    /// the model lacks.
+    devices: Vec<Option<DeviceEntry>>,
+    /// Where the sensor functions' `const double *` results live.
+    pub(crate) buffers: Buffers,
 }
 
 impl Robot {
@@ -128,6 +134,17 @@ impl Robot {
         if outputs.is_some() {
             simulation.record(CONTROLLER_RUN);
         }
+        let (devices, buffers) = match body {
+            Body::Car { id, .. } => {
+                let sensors = simulation.devices(id).map_err(|e| e.to_string())?;
+                let params = simulation.driver(id).map_err(|e| e.to_string())?.params();
+                let named = sensors.iter().map(|d| (d.name().to_string(), d.kind()));
+                (devices::car_table(params, named), Buffers::new(sensors))
+            }
+            Body::DifferentialWheels(_) => {
+                (devices::differential_wheels_table(), Buffers::new(&[]))
+            }
+        };
         Ok(Robot {
             simulation,
             body,
@@ -138,6 +155,8 @@ impl Robot {
                 .map(ToString::to_string)
                 .collect(),
             outputs,
+            devices,
+            buffers,
         })
     }
 
@@ -210,12 +229,28 @@ impl Robot {
 
     /// The tag of the device `name`, 0 if the robot has none.
     pub(crate) fn device(&self, name: &str) -> WbDeviceTag {
+        devices::tag_of(&self.devices, name)
+    }
+
+    /// The number of tags (the robot's own, 0, excluded).
+    pub(crate) fn device_count(&self) -> usize {
+        self.devices.len()
+    }
+
+    /// The device of `tag`, `None` for 0, a tag past the last or a hole of the car's table.
+    pub(crate) fn device_entry(&self, tag: WbDeviceTag) -> Option<&DeviceEntry> {
+        let index = usize::from(tag).checked_sub(1)?;
+        self.devices.get(index)?.as_ref()
+    }
+
+    /// The car and the index among its sensors of the sensor with `tag`, if it is one.
+    pub(crate) fn sensor_of(&self, tag: WbDeviceTag) -> Option<(VehicleId, usize)> {
         match self.body {
-            Body::Car { id, .. } => self
-                .simulation
-                .driver(id)
-                .map_or(0, |d| devices::car_device(d.params(), name)),
-            Body::DifferentialWheels(_) => devices::differential_wheels_device(name),
+            Body::Car { id, .. } => {
+                let index = usize::from(tag).checked_sub(CAR_TAGS + 1)?;
+                (index < self.devices.len() - CAR_TAGS).then_some((id, index))
+            }
+            Body::DifferentialWheels(_) => None,
         }
     }
 

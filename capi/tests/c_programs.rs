@@ -75,6 +75,14 @@ fn differential_wheels() {
     run_announcing("differential_wheels", Some(&differential_wheels_world()), 8);
 }
 
+/// The sensors of a world file's car, the device enumeration and the sensor misuse messages.
+#[test]
+fn sensors() {
+    // 1 index out of bounds, 2 disabled reads, 1 negative period, 5 wrong tags (one of them
+    // two lines) and the accelerometer's silent one (not counted).
+    run_announcing("sensors", Some(&sensors_world()), 9);
+}
+
 /// The C++ wrapper, linked with the libraries in the other order (`-lcar -ldriver`).
 #[test]
 fn cpp_wrapper() {
@@ -136,6 +144,8 @@ fn announced_stderr_checker() {
     assert!(check_announced_stderr("p", missing).is_err());
     let stray = "p: start\nstray\n";
     assert!(check_announced_stderr("p", stray).is_err());
+    let two_lines = "p: call: x -> stderr: E: a\\nE: b\nE: a\nE: b\np: PASS\n";
+    assert_eq!(check_announced_stderr("p", two_lines), Ok(1));
 }
 
 /// A controller run with `VEHICLE_OUT` writes `telemetry.csv`, `metrics.json` and

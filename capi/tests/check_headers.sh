@@ -79,8 +79,10 @@ supports() {
 }
 
 C_HEADERS=(webots/types.h webots/robot.h webots/differential_wheels.h webots/vehicle/driver.h webots/vehicle/car.h
-  webots/driver.h webots/car.h)
-CPP_HEADERS=(webots/vehicle/Driver.hpp webots/vehicle/Car.hpp)
+  webots/driver.h webots/car.h webots/nodes.h webots/device.h webots/gps.h webots/inertial_unit.h webots/gyro.h
+  webots/accelerometer.h webots/compass.h)
+CPP_HEADERS=(webots/vehicle/Driver.hpp webots/vehicle/Car.hpp webots/Device.hpp webots/GPS.hpp webots/InertialUnit.hpp
+  webots/Gyro.hpp webots/Accelerometer.hpp webots/Compass.hpp)
 
 C_STDS=(c89 c99 c11 c17)
 for std in c2x gnu89; do
@@ -243,6 +245,13 @@ ALL_C='#include <webots/types.h>
 #include <webots/vehicle/car.h>
 #include <webots/driver.h>
 #include <webots/car.h>
+#include <webots/nodes.h>
+#include <webots/device.h>
+#include <webots/gps.h>
+#include <webots/inertial_unit.h>
+#include <webots/gyro.h>
+#include <webots/accelerometer.h>
+#include <webots/compass.h>
 void use(bool b);
 void use(bool b) { wbu_driver_set_hazard_flashers(b && true); }'
 for std in c99 c11 c17; do
@@ -255,6 +264,23 @@ done
 check "all C headers together, c89" c c89 "$ALL_C"
 check "all headers together, c++17" c++ c++17 "$ALL_C
 #include <webots/vehicle/Car.hpp>"
+
+# ---- WbNodeType: the R2023b+ numbering (spec section 1). ----
+NODES='#include <webots/nodes.h>
+#include <webots/gps.h>
+typedef char first_robot_34[(WB_NODE_ROBOT == 34) ? 1 : -1];
+typedef char accelerometer_35[(WB_NODE_ACCELEROMETER == 35) ? 1 : -1];
+typedef char compass_39[(WB_NODE_COMPASS == 39) ? 1 : -1];
+typedef char gps_44[(WB_NODE_GPS == 44) ? 1 : -1];
+typedef char gyro_45[(WB_NODE_GYRO == 45) ? 1 : -1];
+typedef char inertial_unit_46[(WB_NODE_INERTIAL_UNIT == 46) ? 1 : -1];
+typedef char rotational_motor_57[(WB_NODE_ROTATIONAL_MOTOR == 57) ? 1 : -1];
+typedef char vacuum_gripper_61[(WB_NODE_VACUUM_GRIPPER == 61) ? 1 : -1];
+typedef char solid_80[(WB_NODE_SOLID == 80) ? 1 : -1];
+typedef char radio_87[(WB_NODE_RADIO == 87) ? 1 : -1];
+typedef char wgs84_1[(WB_GPS_WGS84_COORDINATE == 1) ? 1 : -1];'
+check "WbNodeType and WbGpsCoordinateSystem values, c89" c c89 "$NODES"
+check "WbNodeType and WbGpsCoordinateSystem values, c++11" c++ c++11 "$NODES"
 
 # ---- C++ wrapper: no enumerator leak, include order, singleton and step(int) rules. ----
 for std in "${CXX_STDS[@]}"; do

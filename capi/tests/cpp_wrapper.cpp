@@ -74,6 +74,11 @@ int main() {
   check_int("Driver::getGearNumber()", car.getGearNumber(), 6);
   check_close("Car::getIndicatorPeriod() (s)", car.getIndicatorPeriod(), 0.34, 1e-12);
   check_close("Driver::getBasicTimeStep() (ms)", car.getBasicTimeStep(), 10.0, 0.0);
+  // The default world's BmwX5 has its 27 car-library tags and no sensor.
+  check_int("Driver::getNumberOfDevices()", car.getNumberOfDevices(), 27);
+  check_true(car.getGPS("gps") == nullptr, "Driver::getGPS(\"gps\") is nullptr without a GPS");
+  check_true(car.getCompass("right_steer") == nullptr, "Driver::getCompass(\"right_steer\") is nullptr (a motor)");
+  check_true(webots::Device("brake_lights").getNodeType() == WB_NODE_LED, "brake_lights is an LED");
 
   // Cruise control, turning left.
   car.setCruisingSpeed(30.0);

@@ -64,11 +64,27 @@ fn exported_symbols_match_the_headers() {
     assert_eq!(driver_so, driver_h);
 
     let car = defined_symbols("libcar.so");
-    let mut expected: Vec<String> = ["vehicle/car.h", "robot.h", "differential_wheels.h"]
-        .iter()
-        .flat_map(|h| declared_functions(h))
-        .collect();
-    assert_eq!(expected.len(), 21 + 6 + 11, "{expected:?}");
+    let mut expected: Vec<String> = [
+        "vehicle/car.h",
+        "robot.h",
+        "differential_wheels.h",
+        "device.h",
+        "gps.h",
+        "inertial_unit.h",
+        "gyro.h",
+        "accelerometer.h",
+        "compass.h",
+    ]
+    .iter()
+    .flat_map(|h| declared_functions(h))
+    .collect();
+    // car 21, robot 8, DifferentialWheels 11, device 3, GPS 8, inertial unit 6, gyro,
+    // accelerometer and compass 6 each.
+    assert_eq!(
+        expected.len(),
+        21 + 8 + 11 + 3 + 8 + 6 + 3 * 6,
+        "{expected:?}"
+    );
     expected.extend(
         driver_h
             .iter()

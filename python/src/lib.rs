@@ -12,6 +12,7 @@
 //!
 //! Units: m, rad (positive steers right), rad/s, s; km/h and ms where the Webots API uses them.
 
+mod sensors;
 mod simulation;
 mod sweep;
 mod webots;
@@ -32,6 +33,7 @@ pyo3::create_exception!(
 fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("WorldError", m.py().get_type::<WorldError>())?;
     webots::register(m)?;
+    sensors::register(m)?;
     simulation::register(m)?;
     sweep::register(m)?;
     Ok(())

@@ -1,7 +1,7 @@
 //! Webots sensor devices on a car against analytic values: a steady circle (GPS, gyro,
 //! accelerometer, inertial unit), a car parked on a 10 % slope (accelerometer), a car heading
 //! north-east (compass), lookup tables and resolution, sampling periods, noise.
-#![allow(clippy::unwrap_used, clippy::panic)]
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use sim::devices::{GpsReading, InertialUnitReading, Reading};
 use sim::nalgebra::{Matrix3, Point3, Vector3};
@@ -444,4 +444,32 @@ fn device_tables_are_read_with_webots_defaults_and_located_errors() {
         refused("[vehicle]\n[[vehicle.device]]\ntype = \"Gyro\"\nslot = \"top\"\n");
     assert_eq!(key, "vehicle.device[1].slot");
     assert!(text.contains("Car model has no sensor slots"), "{text}");
+}
+
+#[test]
+fn the_sensors_world_has_one_of_each_device() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/worlds/sensors.toml");
+    let description = world_file::load(path).unwrap();
+    let (mut sim, _) = Simulation::from_description(&description).unwrap();
+    let id = sim.car_ids().next().unwrap();
+    let kinds: Vec<_> = sim.devices(id).unwrap().iter().map(|d| d.kind()).collect();
+    assert_eq!(kinds, sim::devices::DeviceKind::ALL);
+    for i in 0..kinds.len() {
+        sim.enable_device(id, i, 20).unwrap();
+    }
+    for _ in 0..100 {
+        sim.step().unwrap();
+    }
+    // The rear slot faces backward and the car heads north-east: north is behind-right,
+    // (−sin π/4, −cos π/4, 0) in the compass' axes; 5e-3 for the body's pitch on its springs.
+    let n = vector(&sim, id, "rear compass");
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    assert!((n + Vector3::new(h, h, 0.0)).norm() < 5e-3, "{n}");
+    // The gyro's resolution of 1e-3 rad/s: every value a whole number of steps.
+    let w = vector(&sim, id, "gyro");
+    assert!(
+        w.iter()
+            .all(|c| ((c / 1e-3) - (c / 1e-3).round()).abs() < 1e-6),
+        "{w}"
+    );
 }

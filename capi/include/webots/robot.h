@@ -47,6 +47,18 @@ void wb_robot_cleanup();
  */
 WbDeviceTag wb_robot_get_device(const char *name);
 
+/*
+ * The number of devices of the robot: a car's fixed table of car-library devices (27 tags, the
+ * ones its model lacks included, whose name is NULL) and then its world-file sensors.
+ */
+int wb_robot_get_number_of_devices();
+
+/*
+ * The tag of device `index` (0 <= index < wb_robot_get_number_of_devices()): index + 1. Out of
+ * range: an error and 0.
+ */
+WbDeviceTag wb_robot_get_device_by_index(int index);
+
 #ifdef __cplusplus
 }
 #endif

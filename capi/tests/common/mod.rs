@@ -186,7 +186,9 @@ pub fn check_announced_stderr(program: &str, merged: &str) -> Result<usize, Stri
                 if let Some(call) = body.strip_prefix("call: ") {
                     match call.split_once(" -> stderr: ") {
                         Some((what, text)) => {
-                            let after = next.strip_prefix(text).ok_or_else(|| {
+                            // A message of several lines is announced with `\n` between them.
+                            let text = text.replace("\\n", "\n");
+                            let after = next.strip_prefix(text.as_str()).ok_or_else(|| {
                                 format!(
                                     "after `{what}` expected stderr `{text}`, got `{}`",
                                     next.lines().next().unwrap_or("")
@@ -240,6 +242,15 @@ pub fn run_exact(program: &str, world: Option<&str>, link: &[String], expected_s
     assert_eq!(lines, expected_stderr, "{program}: stderr");
 }
 
+/// The path of `worlds/sensors.toml`.
+pub fn sensors_world() -> String {
+    tests_dir()
+        .join("worlds/sensors.toml")
+        .display()
+        .to_string()
+}
+
+/// The path of `worlds/differential_wheels.toml`.
 pub fn differential_wheels_world() -> String {
     tests_dir()
         .join("worlds/differential_wheels.toml")

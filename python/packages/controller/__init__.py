@@ -17,21 +17,35 @@ makes ``step`` return -1. With ``VEHICLE_OUT=DIR`` the run is recorded and writt
 ``DIR`` (``telemetry.csv``, ``metrics.json``, ``replay.glb``) when it ends or the process exits.
 
 Only the calls a vehicle controller uses exist: ``step``, ``getTime``, ``getBasicTimeStep``,
-``getDevice`` and ``getName``. Devices are names only (there is no device API, as in the C
-API of this simulator): ``getDevice`` returns a :class:`Device` for the car's devices and
-``None`` for names the robot does not have. Warnings go to stderr with Webots' texts.
+``getDevice``, ``getNumberOfDevices``, ``getDeviceByIndex`` and ``getName``. ``getDevice``
+returns the sensors a world file puts on the car (``[[vehicle.device]]``) as :class:`GPS`,
+:class:`InertialUnit`, :class:`Gyro`, :class:`Accelerometer` and :class:`Compass`, with
+Webots' method names, measured by the same engine code as the C API's; the car's own devices
+(motors, brakes, lights) as a plain :class:`Device` (names and node types only); ``None`` for
+names the robot does not have. Warnings and errors go to stderr with Webots' texts.
 """
 
 import atexit
 import numbers
 import operator
 import sys
-from typing import Dict, Optional
+from typing import Dict, List, Optional
 
 from webots_vehicle import _native
 from webots_vehicle._native import WorldError
 
-__all__ = ["Device", "Robot", "Supervisor", "WorldError"]
+__all__ = [
+    "Accelerometer",
+    "Compass",
+    "Device",
+    "GPS",
+    "Gyro",
+    "InertialUnit",
+    "Node",
+    "Robot",
+    "Supervisor",
+    "WorldError",
+]
 
 _INT_MIN = -(2**31)
 _INT_MAX = 2**31 - 1
@@ -51,8 +65,25 @@ def _c_double(value: object) -> float:
     return float(value)
 
 
+class Node:
+    """Webots' node types (``WbNodeType``, R2023b numbering) of the devices there are."""
+
+    NO_NODE = 0
+    ACCELEROMETER = 35
+    BRAKE = 37
+    COMPASS = 39
+    GPS = 44
+    GYRO = 45
+    INERTIAL_UNIT = 46
+    LED = 47
+    POSITION_SENSOR = 52
+    ROTATIONAL_MOTOR = 57
+    SPEAKER = 59
+    SOLID = 80
+
+
 class Device:
-    """A device of the robot, known by name only (Webots: ``controller.Device``)."""
+    """A device of the robot (Webots: ``controller.Device``)."""
 
     def __init__(self, name: str, tag: int) -> None:
         self._name = name
@@ -62,6 +93,14 @@ class Device:
         """The device name, e.g. ``"right_steer"``."""
         return self._name
 
+    def getModel(self) -> str:
+        """The device's ``model`` field: ``""`` for every device here."""
+        return ""
+
+    def getNodeType(self) -> int:
+        """Its node type (``Node.GPS``...)."""
+        return _native.wb_device_get_node_type(self._tag)
+
     @property
     def name(self) -> str:
         """The device name."""
@@ -69,6 +108,118 @@ class Device:
 
     def __repr__(self) -> str:
         return f"Device({self._name!r})"
+
+
+class _Sensor(Device):
+    """A sensor: enable, disable and the sampling period (ms), shared by every kind."""
+
+    _kind = ""
+
+    def enable(self, samplingPeriod: int) -> None:
+        """Samples every ``samplingPeriod`` ms (negative: Webots' error, ignored); the first
+        sample comes one full period later, the values are NaN before it."""
+        _native.sensor_enable(self._kind, self._tag, _c_int(samplingPeriod))
+
+    def disable(self) -> None:
+        """Stops sampling; the last sample stays readable (with Webots' error)."""
+        _native.sensor_disable(self._kind, self._tag)
+
+    def getSamplingPeriod(self) -> int:
+        """The sampling period (ms), 0 when disabled."""
+        return _native.sensor_get_sampling_period(self._kind, self._tag)
+
+
+class GPS(_Sensor):
+    """Webots' ``GPS``: the device's world position (m; x east, y north, z up) and velocity
+    (m/s). Local coordinates only."""
+
+    _kind = "gps"
+    LOCAL = 0
+    WGS84 = 1
+
+    def getValues(self) -> List[float]:
+        """The position ``[x, y, z]`` (m)."""
+        return list(_native.wb_gps_get_values(self._tag) or [])
+
+    def getSpeed(self) -> float:
+        """The speed (m/s)."""
+        return _native.wb_gps_get_speed(self._tag)
+
+    def getSpeedVector(self) -> List[float]:
+        """The velocity ``[vx, vy, vz]`` (m/s, world axes)."""
+        return list(_native.wb_gps_get_speed_vector(self._tag) or [])
+
+    def getCoordinateSystem(self) -> int:
+        """Always ``GPS.LOCAL``."""
+        return _native.wb_gps_get_coordinate_system(self._tag)
+
+    @staticmethod
+    def convertToDegreesMinutesSeconds(decimal: float) -> str:
+        """``"D° M′ S″"`` of a decimal angle (degrees), each part truncated as Webots does."""
+        return _native.wb_gps_convert_to_degrees_minutes_seconds(_c_double(decimal))
+
+
+class InertialUnit(_Sensor):
+    """Webots' ``InertialUnit``: the device's orientation in the ENU world."""
+
+    _kind = "inertial_unit"
+
+    def getRollPitchYaw(self) -> List[float]:
+        """``[roll, pitch, yaw]`` (rad); yaw 0 with the x axis east, π/2 north."""
+        return list(_native.wb_inertial_unit_get_roll_pitch_yaw(self._tag))
+
+    def getQuaternion(self) -> List[float]:
+        """The orientation quaternion ``[x, y, z, w]``."""
+        return list(_native.wb_inertial_unit_get_quaternion(self._tag) or [])
+
+    def getNoise(self) -> float:
+        """The ``noise`` field."""
+        return _native.wb_inertial_unit_get_noise(self._tag)
+
+
+class _Triaxial(_Sensor):
+    """A three-axis sensor with a lookup table."""
+
+    def getValues(self) -> List[float]:
+        """The three values in the device's axes (NaN on a disabled axis)."""
+        return list(_native.triaxial_get_values(self._kind, self._tag) or [])
+
+    def getLookupTable(self) -> List[float]:
+        """The ``lookupTable``, flat: ``[input, output, noise]`` row after row."""
+        return _native.triaxial_get_lookup_table(self._kind, self._tag)
+
+
+class Gyro(_Triaxial):
+    """Webots' ``Gyro``: angular velocity (rad/s)."""
+
+    _kind = "gyro"
+
+
+class Accelerometer(_Triaxial):
+    """Webots' ``Accelerometer``: specific force (m/s², +9.81 on z upright at rest)."""
+
+    _kind = "accelerometer"
+
+
+class Compass(_Triaxial):
+    """Webots' ``Compass``: the north direction (world +y) in the device's axes."""
+
+    _kind = "compass"
+
+
+_SENSOR_CLASSES = {
+    Node.GPS: GPS,
+    Node.INERTIAL_UNIT: InertialUnit,
+    Node.GYRO: Gyro,
+    Node.ACCELEROMETER: Accelerometer,
+    Node.COMPASS: Compass,
+}
+
+
+def _device(name: str, tag: int) -> Device:
+    """The device with ``tag`` as its class."""
+    cls = _SENSOR_CLASSES.get(_native.wb_device_get_node_type(tag), Device)
+    return cls(name, tag)
 
 
 class Robot:
@@ -120,9 +271,21 @@ class Robot:
             tag = _native.wb_robot_get_device(str(name))
             if tag == 0:
                 return None
-            device = Device(str(name), tag)
+            device = _device(str(name), tag)
             self._devices[name] = device
         return device
+
+    def getNumberOfDevices(self) -> int:
+        """The number of devices: a car's 27 car-library tags (those its model lacks
+        included), then its sensors."""
+        return _native.wb_robot_get_number_of_devices()
+
+    def getDeviceByIndex(self, index: int) -> Optional[Device]:
+        """The device of ``index`` (0 to ``getNumberOfDevices() - 1``), None for a hole of the
+        car's table or (with Webots' error) an index out of range."""
+        tag = _native.wb_robot_get_device_by_index(_c_int(index))
+        name = _native.wb_device_get_name(tag) if tag else None
+        return None if name is None else self.getDevice(name)
 
     def getName(self) -> str:
         """The robot's name: ``"vehicle"`` for a car (the ``name`` default of Webots' car

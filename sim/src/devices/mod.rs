@@ -4,7 +4,7 @@
 //! marshal them.
 //!
 //! * **Mounting.** A device's frame on the chassis is its slot's frame (`proto_geom`'s
-//!   [`SensorSlots`](proto_geom::SensorSlots); no slot: the car frame, origin at the rear-axle
+//!   [`SensorSlots`]; no slot: the car frame, origin at the rear-axle
 //!   centre at wheel-centre height) composed with its own `translation` (m) and `rotation`.
 //!   The device rides on the chassis body: its point moves with the chassis' velocity and
 //!   angular velocity.

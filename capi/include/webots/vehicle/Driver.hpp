@@ -8,7 +8,9 @@
 // Differences from Webots:
 // * Webots' Driver derives from webots::Supervisor (itself a webots::Robot). This simulator has
 //   no Supervisor or Robot C++ classes, so Driver derives from nothing; of the Robot methods it
-//   offers getTime() and getBasicTimeStep(), which driver controllers commonly use.
+//   offers getTime(), getBasicTimeStep(), getNumberOfDevices() and the typed device getters of
+//   the sensors this simulator has (getGPS, getInertialUnit, getGyro, getAccelerometer,
+//   getCompass; nullptr for a name the car lacks or a device of another type).
 // * Header-only: every method is inline and calls the C function of the same meaning, so only
 //   libdriver.so and libcar.so are needed at link time (no libCppDriver).
 // * The destructor releases the singleton, so a new Driver may be created after the previous
@@ -27,10 +29,19 @@
 #define WB_VEHICLE_DRIVER_HPP_NO_ENUMERATORS
 #include <webots/vehicle/driver.h>
 #undef WB_VEHICLE_DRIVER_HPP_NO_ENUMERATORS
+#include <webots/Accelerometer.hpp>
+#include <webots/Compass.hpp>
+#include <webots/GPS.hpp>
+#include <webots/Gyro.hpp>
+#include <webots/InertialUnit.hpp>
+#include <webots/nodes.h>
 #include <webots/robot.h>
 
 #include <cstdlib>
 #include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
 
 namespace webots {
   // The driver of a Car: steering, cruise control or throttle and gears, brake, lights,
@@ -90,6 +101,15 @@ namespace webots {
 
     // The world's basicTimeStep in ms (wb_robot_get_basic_time_step()).
     double getBasicTimeStep() { return wb_robot_get_basic_time_step(); }
+
+    // The number of devices (wb_robot_get_number_of_devices()).
+    int getNumberOfDevices() { return wb_robot_get_number_of_devices(); }
+    // The sensors of the car by name, owned by the Driver; nullptr if it has none of that type.
+    GPS *getGPS(const std::string &name) { return device<GPS>(name, WB_NODE_GPS); }
+    InertialUnit *getInertialUnit(const std::string &name) { return device<InertialUnit>(name, WB_NODE_INERTIAL_UNIT); }
+    Gyro *getGyro(const std::string &name) { return device<Gyro>(name, WB_NODE_GYRO); }
+    Accelerometer *getAccelerometer(const std::string &name) { return device<Accelerometer>(name, WB_NODE_ACCELEROMETER); }
+    Compass *getCompass(const std::string &name) { return device<Compass>(name, WB_NODE_COMPASS); }
 
     // Steers with Ackermann geometry: rad, positive right, negative left.
     void setSteeringAngle(double steeringAngle) { wbu_driver_set_steering_angle(steeringAngle); }
@@ -170,6 +190,20 @@ namespace webots {
     }
 
   private:
+    // The device `name` as a T if its node type is `type`, created once and kept.
+    template <class T> T *device(const std::string &name, int type) {
+      const WbDeviceTag tag = wb_robot_get_device(name.c_str());
+      if (tag == 0 || wb_device_get_node_type(tag) != type)
+        return nullptr;
+      for (const std::unique_ptr<Device> &d : devices_)
+        if (d->getTag() == tag)
+          return static_cast<T *>(d.get());
+      devices_.emplace_back(new T(tag));
+      return static_cast<T *>(devices_.back().get());
+    }
+
+    std::vector<std::unique_ptr<Device>> devices_;
+
     // The driver step takes no duration (it always runs one basic time step); as in Webots,
     // step(int) cannot be called on a Driver.
     int step(int duration) = delete;
