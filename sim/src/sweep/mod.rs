@@ -87,6 +87,7 @@ pub use output::{PLOTS_DIR, RESULTS_CSV, RunSummary, TIMINGS_CSV, write_sweep};
 #[cfg(feature = "app")]
 pub use plots::write_plots;
 pub use row::{CASE_COLUMN, CaseError, Cell, Columns, ERROR_COLUMN, NOTES_COLUMN, Row};
+#[cfg(feature = "app")]
 pub(crate) use runner::thread_count;
 #[cfg(feature = "app")]
 pub use runner::{MAX_THREADS, RunError, run};
