@@ -368,18 +368,7 @@ pub fn write_outputs(
         .into_iter()
         .map(|(name, f)| f.to_svg().map(|svg| (name, svg)))
         .collect::<Result<Vec<_>, _>>()?;
-    let names = output_names(report);
-    let telemetry = |out: &mut dyn std::io::Write| {
-        write_csv(out, report.results.iter().flat_map(|r| &r.telemetry))
-    };
-    let mut written = write_files(report, world_warnings, dir, &names, &telemetry)?;
-    for (name, svg) in &plots {
-        written.push(write_file(dir, name, svg.as_bytes())?);
-    }
-    // The replay last, as the list of names says.
-    let glb = written.remove(2);
-    written.push(glb);
-    Ok(written)
+    write_report(report, world_warnings, dir, &output_names(report), &plots)
 }
 
 /// Writes the data files of `report` into `dir` (created if needed): `telemetry.csv`,
@@ -395,10 +384,21 @@ pub fn write_data(
     world_warnings: &[String],
     dir: &Path,
 ) -> Result<Vec<PathBuf>, OutputError> {
+    write_report(report, world_warnings, dir, &DATA_OUTPUTS, &[])
+}
+
+/// [`write_files`] with the telemetry of `report` itself.
+fn write_report(
+    report: &RunReport,
+    world_warnings: &[String],
+    dir: &Path,
+    names: &[&str],
+    plots: &[(&str, String)],
+) -> Result<Vec<PathBuf>, OutputError> {
     let telemetry = |out: &mut dyn std::io::Write| {
         write_csv(out, report.results.iter().flat_map(|r| &r.telemetry))
     };
-    write_files(report, world_warnings, dir, &DATA_OUTPUTS, &telemetry)
+    write_files(report, world_warnings, dir, names, plots, &telemetry)
 }
 
 /// The I/O error of `path`.
@@ -420,13 +420,14 @@ pub(crate) type TelemetryWriter<'a> =
     dyn Fn(&mut dyn std::io::Write) -> Result<(), csv::Error> + 'a;
 
 /// Creates `dir`, removes the known outputs not in `names`, and writes the telemetry (by
-/// `telemetry`), the metrics of `report` (listing `names`) and its replay; returns their paths
-/// in that order.
+/// `telemetry`), the metrics of `report` (listing `names`), the `plots` (file name and SVG)
+/// and its replay; returns their paths in that order.
 pub(crate) fn write_files(
     report: &RunReport,
     world_warnings: &[String],
     dir: &Path,
     names: &[&str],
+    plots: &[(&str, String)],
     telemetry: &TelemetryWriter<'_>,
 ) -> Result<Vec<PathBuf>, OutputError> {
     std::fs::create_dir_all(dir).map_err(io_error(dir))?;
@@ -444,11 +445,14 @@ pub(crate) fn write_files(
         source,
     })?;
     let metrics = to_json(report, world_warnings, names) + "\n";
-    let json = write_file(dir, METRICS_JSON, metrics.as_bytes())?;
+    let mut written = vec![path, write_file(dir, METRICS_JSON, metrics.as_bytes())?];
+    for (name, svg) in plots {
+        written.push(write_file(dir, name, svg.as_bytes())?);
+    }
     let glb =
         crate::replay::to_glb(&report.replay_parts()).map_err(io_error(&dir.join(REPLAY_GLB)))?;
-    let glb = write_file(dir, REPLAY_GLB, &glb)?;
-    Ok(vec![path, json, glb])
+    written.push(write_file(dir, REPLAY_GLB, &glb)?);
+    Ok(written)
 }
 
 #[cfg(test)]

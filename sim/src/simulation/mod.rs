@@ -404,12 +404,10 @@ impl Simulation {
         let result = self.world.step();
         if result.is_ok() {
             self.refresh_devices()?;
-        }
-        if result.is_ok()
-            && let Some(mut recording) = self.recording.take()
-        {
-            recording.sample(self);
-            self.recording = Some(recording);
+            if let Some(mut recording) = self.recording.take() {
+                recording.sample(self);
+                self.recording = Some(recording);
+            }
         }
         result
     }

@@ -212,6 +212,13 @@ impl Recording {
             }
             w.finish()
         };
-        report::write_files(&run, world_warnings, dir, &report::DATA_OUTPUTS, &telemetry)
+        report::write_files(
+            &run,
+            world_warnings,
+            dir,
+            &report::DATA_OUTPUTS,
+            &[],
+            &telemetry,
+        )
     }
 }

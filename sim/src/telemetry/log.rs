@@ -114,14 +114,14 @@ impl TelemetryLog {
         if n >= SAMPLE_COLUMNS {
             return row_of(&self.recent[n - SAMPLE_COLUMNS..]);
         }
-        let mut row = [0.0; SAMPLE_COLUMNS];
-        let mut found = None;
-        // Only after a spill that emptied memory: read the file's last row.
-        let _ = self.for_each(|r| {
-            row = *r;
-            found = Some(row);
-        });
-        found
+        // Only after a spill that emptied memory: the file's last row, read alone (Python's
+        // `state` asks for it every step).
+        let mut file = self.spilled.as_ref()?;
+        let last = self.spilled_rows.checked_sub(1)?;
+        file.seek(SeekFrom::Start((last * ROW_BYTES) as u64)).ok()?;
+        let mut bytes = [0u8; ROW_BYTES];
+        file.read_exact(&mut bytes).ok()?;
+        Some(row_of_bytes(&bytes))
     }
 
     /// Calls `f` on every row in time order.
@@ -136,13 +136,7 @@ impl TelemetryLog {
             let mut bytes = [0u8; ROW_BYTES];
             for _ in 0..self.spilled_rows {
                 reader.read_exact(&mut bytes)?;
-                let mut row = [0.0; SAMPLE_COLUMNS];
-                for (v, b) in row.iter_mut().zip(bytes.chunks_exact(8)) {
-                    let mut le = [0u8; 8];
-                    le.copy_from_slice(b);
-                    *v = f64::from_ne_bytes(le);
-                }
-                f(&row);
+                f(&row_of_bytes(&bytes));
             }
         }
         for chunk in self.recent.chunks_exact(SAMPLE_COLUMNS) {
@@ -162,6 +156,17 @@ impl TelemetryLog {
         self.for_each(|r| out.push(Sample::from_row(r)))?;
         Ok(out)
     }
+}
+
+/// A row as the temporary file holds it (native-endian f64).
+fn row_of_bytes(bytes: &[u8; ROW_BYTES]) -> Row {
+    let mut row = [0.0; SAMPLE_COLUMNS];
+    for (v, b) in row.iter_mut().zip(bytes.chunks_exact(8)) {
+        let mut ne = [0u8; 8];
+        ne.copy_from_slice(b);
+        *v = f64::from_ne_bytes(ne);
+    }
+    row
 }
 
 /// A slice of `SAMPLE_COLUMNS` values as a row.
