@@ -264,9 +264,8 @@ impl Simulation {
     /// Writes the run recorded so far into `dir` (`telemetry.csv`, `metrics.json`,
     /// `replay.glb`); returns the paths written (none before the first step).
     fn save(&self, dir: std::path::PathBuf) -> PyResult<Vec<std::path::PathBuf>> {
-        let warnings: Vec<String> = self.warnings.clone();
         self.simulation
-            .save(&self.description.source, &warnings, &dir)
+            .save(&self.description.source, &self.warnings, &dir)
             .map_err(|e| PyOSError::new_err(e.to_string()))
     }
 
