@@ -66,7 +66,7 @@ fn axis_value<'py>(py: Python<'py>, v: &AxisValue) -> PyResult<Bound<'py, PyAny>
 /// A row's cells as Python values, in column order: the case index, the axis values, the
 /// metrics (float, bool, None when empty), the notes and the error (None when empty).
 fn row_values<'py>(py: Python<'py>, row: &Row) -> PyResult<Vec<Bound<'py, PyAny>>> {
-    let mut out = Vec::with_capacity(row.values.len() + row.metrics.len() + 3);
+    let mut out = Vec::with_capacity(row.values.len() + row.metrics.len() + 4);
     out.push(row.case.into_pyobject(py)?.into_any());
     for v in &row.values {
         out.push(axis_value(py, v)?);
@@ -82,6 +82,7 @@ fn row_values<'py>(py: Python<'py>, row: &Row) -> PyResult<Vec<Bound<'py, PyAny>
     out.push(notes.into_pyobject(py)?.into_any());
     let error = row.error.as_ref().map(ToString::to_string);
     out.push(error.into_pyobject(py)?.into_any());
+    out.push(row.checksum().into_pyobject(py)?.into_any());
     Ok(out)
 }
 

@@ -46,7 +46,7 @@ def test_cases_by_index_and_rows_identical_to_the_cli(sweep_file, cli_results):
     assert sweep.axes == ["ground.friction", "vehicle.brakeCoefficient"]
     assert sweep.columns[:4] == ["case", "ground.friction", "vehicle.brakeCoefficient",
                                  "initial_speed_kmh"]
-    assert sweep.columns[-2:] == ["notes", "error"]
+    assert sweep.columns[-3:] == ["notes", "error", "checksum"]
     assert sweep.case(3) == {"ground.friction": -1, "vehicle.brakeCoefficient": 1400}
     with pytest.raises(IndexError):
         sweep.case(6)
@@ -60,7 +60,8 @@ def test_cases_by_index_and_rows_identical_to_the_cli(sweep_file, cli_results):
     assert row["vehicle.brakeCoefficient"] == 1400
     assert row["at_rest"] is True and row["error"] is None and row["notes"] is None
     cells = lines[5].rstrip("\n").split(",")
-    for column, cell in zip(sweep.columns, cells):
+    assert row["checksum"] == cells[-1] and len(cells[-1]) == 16
+    for column, cell in zip(sweep.columns[:-1], cells):
         value = row[column]
         if isinstance(value, bool):
             assert cell == str(value).lower()
@@ -95,6 +96,7 @@ def test_results_load_as_a_dataframe(sweep_file, vehicle_sim, tmp_path):
         assert d[1400] < d[700]
     assert pandas.api.types.is_float_dtype(frame["stop_distance_m"])
     assert frame["notes"].dtype == object and frame["error"].dtype == object
+    assert all(isinstance(c, str) and len(c) == 16 for c in frame["checksum"])
     assert math.isclose(frame.loc[0, "initial_speed_kmh"], 99.5, abs_tol=0.5)
 
 

@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 
 use sim::sweep::{
     self, AxisValue, CaseError, MergeError, RESULTS_CSV, Row, Shard, Sweep, SweepError,
+    WriteOptions,
 };
 
 /// A fresh scratch directory for one test.
@@ -24,7 +25,15 @@ fn parse(text: &str) -> Result<Sweep, SweepError> {
 
 /// Runs `shard` of `sweep` into `dir` on `threads` threads.
 fn write(sweep: &Sweep, shard: Shard, threads: usize, dir: &Path) {
-    sweep::write_sweep(sweep, shard, Some(threads), dir, &mut |_, _| {}).unwrap();
+    sweep::write_sweep(
+        sweep,
+        shard,
+        Some(threads),
+        dir,
+        WriteOptions::default(),
+        &mut |_, _| {},
+    )
+    .unwrap();
 }
 
 fn read(path: &Path) -> String {
@@ -126,10 +135,12 @@ fn an_invalid_value_fails_its_cases_only_naming_the_key() {
                 "invalid 'ground.friction': -1: must be finite and >= 0"
             );
             assert!(row.metrics.iter().all(|c| *c == sweep::Cell::Empty));
-            assert!(
-                row.csv_line()
-                    .ends_with(",invalid 'ground.friction': -1: must be finite and >= 0\n")
-            );
+            // The error cell, then the row's checksum (16 hexadecimal digits).
+            let line = row.csv_line();
+            let (before, checksum) = line.trim_end().rsplit_once(',').unwrap();
+            assert!(before.ends_with(",invalid 'ground.friction': -1: must be finite and >= 0"));
+            assert_eq!(checksum, row.checksum());
+            assert!(checksum.len() == 16 && checksum.bytes().all(|b| b.is_ascii_hexdigit()));
         } else {
             // Complete: within 2 s a car has neither reached 100 km/h (empty) nor failed;
             // every other metric has its value.

@@ -83,7 +83,7 @@ class Sweep:
     @property
     def columns(self) -> List[str]:
         """Every column of ``results.csv``: ``case``, the axes, the metrics, ``notes``,
-        ``error``."""
+        ``error``, ``checksum``."""
         return self._core.columns
 
     @property
@@ -98,7 +98,8 @@ class Sweep:
     def run_case(self, index: int) -> Dict[str, Any]:
         """Runs case ``index`` and returns its row by column, as ``results.csv`` has it: the
         case index, the axis values, the metrics (float, bool, or None when not measured or
-        when the case failed), ``notes`` and ``error`` (None when empty). A case whose world is
+        when the case failed), ``notes`` and ``error`` (None when empty) and ``checksum`` (the
+        row's, as ``results.csv`` has it: 16 hexadecimal digits). A case whose world is
         invalid is a row with its ``error``, not an exception. The GIL is released while the
         case runs."""
         values, _ = self._core.run_case(index)
@@ -131,7 +132,8 @@ def load_results(path: PathLike, index: Optional[str] = "case") -> Any:
     ``pandas.DataFrame`` indexed by ``case`` (``index=None`` keeps it a column). Numbers are
     floats or integers, ``true``/``false`` booleans, empty cells NaN (a metric not measured, or
     every metric of a failed case, whose ``error`` says why); ``notes`` and ``error`` are
-    text (NaN when empty)."""
+    text (NaN when empty), and so is ``checksum`` (16 hexadecimal digits of the row's other
+    cells, which ``vehicle-sim sweep-merge`` and ``sweep --resume`` check)."""
     try:
         import pandas
     except ImportError as e:
@@ -141,11 +143,12 @@ def load_results(path: PathLike, index: Optional[str] = "case") -> Any:
     path = os.fspath(path)
     if os.path.isdir(path):
         path = os.path.join(path, "results.csv")
-    # notes and error stay text columns even when every cell is empty.
+    # notes and error stay text columns even when every cell is empty; a checksum of digits
+    # only must not become a number.
     frame = pandas.read_csv(
         path,
         true_values=["true"],
         false_values=["false"],
-        dtype={"notes": "object", "error": "object"},
+        dtype={"notes": "object", "error": "object", "checksum": "object"},
     )
     return frame.set_index(index) if index is not None else frame

@@ -393,15 +393,17 @@ mod tests {
                 threads: Some(2),
                 shard: Some(ShardChoice::Auto),
                 shards: Some(4),
+                resume: false,
                 quiet: false,
             }))
         );
-        let o = parse(&["sweep", "s.toml", "--shard", "1/3", "-q"]).unwrap();
+        let o = parse(&["sweep", "s.toml", "--shard", "1/3", "--resume", "-q"]).unwrap();
         let Some(Command::Sweep(s)) = o.command else {
             panic!("{o:?}")
         };
         assert_eq!(s.shard, Some(ShardChoice::Fixed("1/3".parse().unwrap())));
         assert_eq!(s.out, PathBuf::from(DEFAULT_SWEEP_DIR));
+        assert!(s.resume && s.quiet);
         let o = parse(&["sweep-merge", "a", "b", "--out", "m"]).unwrap();
         assert_eq!(
             o.command,

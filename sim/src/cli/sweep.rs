@@ -4,6 +4,7 @@
 use std::io::Write;
 use std::path::PathBuf;
 use std::str::FromStr;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use clap::Args;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -11,6 +12,29 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use crate::sweep::{self, MAX_THREADS, Shard, ShardError, Sweep};
 
 use super::{EXIT_FAILURE, EXIT_OK, EXIT_USAGE};
+
+/// The exit status of a sweep stopped by SIGINT or SIGTERM (128 + SIGINT, as shells report an
+/// interrupted command).
+pub const EXIT_INTERRUPTED: i32 = 130;
+
+/// Set by the SIGINT/SIGTERM handler: the sweep stops starting cases and writes what it has.
+static STOP: AtomicBool = AtomicBool::new(false);
+
+/// Installs the handler once per process: the first signal asks the sweep to stop after the
+/// cases running (their rows are written and `sweep.json` records them); a second one ends
+/// the process at once (the files still end with whole rows, which `--resume` keeps).
+fn stop_on_signal() -> Option<&'static AtomicBool> {
+    static INSTALLED: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    let installed = *INSTALLED.get_or_init(|| {
+        ctrlc::set_handler(|| {
+            if STOP.swap(true, Ordering::SeqCst) {
+                std::process::exit(EXIT_INTERRUPTED);
+            }
+        })
+        .is_ok()
+    });
+    installed.then_some(&STOP)
+}
 
 /// The default output directory of a sweep.
 pub const DEFAULT_SWEEP_DIR: &str = "vehicle-sim-sweep";
@@ -76,6 +100,11 @@ pub struct SweepOptions {
     /// completions); with Slurm, a check of SLURM_ARRAY_TASK_COUNT
     #[arg(long, value_name = "N", value_parser = positive, requires = "shard")]
     pub shards: Option<usize>,
+    /// Keep the whole rows an earlier run of this sweep and shard left in the output
+    /// directory and run only the cases after them (a directory without sweep.json starts
+    /// afresh)
+    #[arg(long)]
+    pub resume: bool,
     /// Print nothing but errors: no progress bar, warnings or summary
     #[arg(short, long)]
     pub quiet: bool,
@@ -84,10 +113,13 @@ pub struct SweepOptions {
 const SWEEP_HELP: &str = "\
 Every case's row goes to DIR/results.csv in case order as soon as it is done: case, the axis \
 values, the metrics, notes, error (a failing case has its error there and the sweep goes on). \
-Wall times go to DIR/timings.csv. Shards' outputs are merged with `vehicle-sim sweep-merge`.
+Wall times go to DIR/timings.csv. Shards' outputs are merged with `vehicle-sim sweep-merge`. \
+Ctrl-C (SIGINT) or SIGTERM stops the sweep after the cases running, with DIR/sweep.json \
+saying how many rows were written; `--resume` goes on from there.
 
 Exit status: 0 when every case has its row (failed cases included), 1 when the sweep file or \
-its world cannot be loaded or the outputs cannot be written, 2 usage error.";
+its world cannot be loaded or the outputs cannot be written, 2 usage error, 130 when stopped \
+by a signal.";
 
 /// The options of `vehicle-sim sweep-merge`.
 #[derive(Debug, Clone, PartialEq, Eq, Args)]
@@ -181,9 +213,20 @@ pub(super) fn sweep_main(
     ) {
         bar.set_style(style.progress_chars("#>-"));
     }
-    let result = sweep::write_sweep(&sweep, shard, Some(threads), &o.out, &mut |done, _| {
-        bar.set_position(done as u64);
-    });
+    let options = sweep::WriteOptions {
+        resume: o.resume,
+        stop: stop_on_signal(),
+    };
+    let result = sweep::write_sweep(
+        &sweep,
+        shard,
+        Some(threads),
+        &o.out,
+        options,
+        &mut |done, _| {
+            bar.set_position(done as u64);
+        },
+    );
     bar.finish_and_clear();
     let summary = match result {
         Ok(s) => s,
@@ -192,16 +235,32 @@ pub(super) fn sweep_main(
             return EXIT_FAILURE;
         }
     };
+    if !summary.complete {
+        let _ = writeln!(
+            err,
+            "vehicle-sim: stopped: {} of {total} cases written to {}; `vehicle-sim sweep {} \
+             --out {} --resume` runs the others",
+            summary.rows,
+            o.out.display(),
+            o.file.display(),
+            o.out.display()
+        );
+        return EXIT_INTERRUPTED;
+    }
     if !o.quiet {
-        let rate = summary.rows as f64 / summary.wall_seconds.max(1e-9);
+        let run = summary.rows - summary.resumed;
+        let rate = run as f64 / summary.wall_seconds.max(1e-9);
         let failed = match summary.errors {
             0 => "none failed".to_string(),
             n => format!("{n} failed (see their error column)"),
         };
+        let kept = match summary.resumed {
+            0 => String::new(),
+            n => format!(" after the {n} kept from the earlier run"),
+        };
         let _ = writeln!(
             out,
-            "{} cases in {:.1} s ({rate:.1} cases/s), {failed}\noutputs in {}: {}",
-            summary.rows,
+            "{run} cases in {:.1} s ({rate:.1} cases/s){kept}, {failed}\noutputs in {}: {}",
             summary.wall_seconds,
             o.out.display(),
             names(&summary.files, &o.out)

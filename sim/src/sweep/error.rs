@@ -85,6 +85,14 @@ pub enum OutputError {
     /// The run could not start its threads.
     #[error(transparent)]
     Run(RunError),
+    /// `--resume` was asked for a directory that holds another run, or damaged rows.
+    #[error("cannot resume the run in {}: {reason}", dir.display())]
+    Resume {
+        /// The output directory.
+        dir: PathBuf,
+        /// Why not.
+        reason: String,
+    },
     /// A plot could not be drawn.
     #[error(transparent)]
     Plot(#[from] PlotError),

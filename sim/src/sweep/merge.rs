@@ -3,7 +3,14 @@
 //! shards come from one sweep and that every case is there exactly once.
 //!
 //! The rows are read as streams, one from each shard in turn (case `c` is in shard
-//! `c mod n`), so memory does not grow with the number of cases.
+//! `c mod n`), so memory does not grow with the number of cases. Each row's checksum is
+//! checked: a value edited by hand in a shard's file stops the merge.
+//!
+//! The merged files are written into a fresh directory inside the output directory
+//! ([`STAGING_PREFIX`] and the process id) and moved into place only when all of them are
+//! written, `sweep.json` last: a failed merge leaves the output directory as it was (an
+//! earlier merge's files whole and consistent), never a truncated `results.csv` beside a
+//! manifest that says it is complete.
 
 use std::fs::File;
 use std::io::BufWriter;
@@ -13,7 +20,7 @@ use super::error::{OutputError, csv_at, io_at};
 use super::manifest::{MANIFEST_JSON, Manifest};
 use super::output::{PLOTS_DIR, RESULTS_CSV, TIMINGS_CSV, finish};
 use super::plots::write_plots;
-use super::row::csv_writer;
+use super::row::{ERROR_COLUMN, checksum_matches, csv_writer};
 use super::shard::{MAX_SHARDS, Shard};
 
 /// Why shards cannot be merged.
@@ -108,10 +115,28 @@ pub enum MergeError {
     /// The output directory is one of the shards'.
     #[error("--out {} is one of the shard directories: merge into another", .0.display())]
     OutputIsInput(PathBuf),
+    /// A row's checksum does not match its cells: the file was edited or damaged.
+    #[error(
+        "{}/{RESULTS_CSV} line {line}: case {case}'s checksum does not match its cells (the row \
+         was edited or damaged; run the shard again)",
+        dir.display()
+    )]
+    Checksum {
+        /// The shard's directory.
+        dir: PathBuf,
+        /// The line of the row (1 is the header).
+        line: u64,
+        /// The row's case.
+        case: usize,
+    },
     /// A file could not be read or written.
     #[error(transparent)]
     Output(#[from] OutputError),
 }
+
+/// The start of the name of the directory a merge writes into before moving its files into
+/// the output directory; a failed merge removes it.
+pub const STAGING_PREFIX: &str = ".sweep-merge-";
 
 /// Most missing shards a [`MergeError::MissingShards`] names: a merge given one shard of
 /// 100,000 says so in one line, and finding them takes no memory per missing shard.
@@ -223,9 +248,9 @@ fn shards_of(dirs: &[PathBuf]) -> Result<Vec<(PathBuf, Manifest)>, MergeError> {
 }
 
 /// Interleaves the `file` of each shard directory (in shard order) into `out/file`, checking
-/// that the row of case `c` is the next of shard `c mod n`; `header` is checked against the
-/// first line of each when given. Returns the rows written and those whose last cell (the
-/// error) is not empty.
+/// that the row of case `c` is the next of shard `c mod n`; `header` (`results.csv`'s
+/// columns) is checked against the first line of each when given, and then each row's
+/// checksum too. Returns the rows written and those whose `error` cell is not empty.
 fn interleave(
     shards: &[(PathBuf, Manifest)],
     file: &'static str,
@@ -255,6 +280,7 @@ fn interleave(
         w.write_record(h).map_err(csv_at(&out_path))?;
     }
     let n = readers.len().max(1);
+    let error_at = header.and_then(|cols| cols.iter().position(|c| c == ERROR_COLUMN));
     let mut errors = 0;
     for case in 0..cases {
         let Some((dir, path, records)) = readers.get_mut(case % n) else {
@@ -274,7 +300,18 @@ fn interleave(
         if index != case.to_string() {
             return Err(missing(format!("has case {index} in its place")));
         }
-        errors += usize::from(record.iter().next_back().is_some_and(|e| !e.is_empty()));
+        if header.is_some() && !checksum_matches(&record) {
+            return Err(MergeError::Checksum {
+                dir: dir.to_path_buf(),
+                line: record.position().map_or(0, csv::Position::line),
+                case,
+            });
+        }
+        errors += usize::from(
+            error_at
+                .and_then(|i| record.get(i))
+                .is_some_and(|e| !e.is_empty()),
+        );
         w.write_record(&record).map_err(csv_at(&out_path))?;
     }
     for (dir, path, records) in &mut readers {
@@ -314,33 +351,88 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<MergeSummary, MergeError> {
     };
     let mut manifest = first.clone();
     std::fs::create_dir_all(out).map_err(io_at(out))?;
+    let staging = out.join(format!("{STAGING_PREFIX}{}", std::process::id()));
+    // A directory of that name is a merge of this process id that died: its files are stale.
+    if staging.exists() {
+        std::fs::remove_dir_all(&staging).map_err(io_at(&staging))?;
+    }
+    std::fs::create_dir(&staging).map_err(io_at(&staging))?;
+    let written = write_merged(&shards, &mut manifest, &staging);
+    let moved = written.and_then(|(rows, errors, staged)| {
+        move_into(&staging, out, &staged)?;
+        Ok((rows, errors, staged))
+    });
+    // Whatever happened, the staging directory goes (on success it is empty).
+    let _ = std::fs::remove_dir_all(&staging);
+    let (rows, errors, staged) = moved?;
+    Ok(MergeSummary {
+        shards: shards.len(),
+        rows,
+        errors,
+        files: staged.iter().map(|name| out.join(name)).collect(),
+    })
+}
+
+/// Writes the merged files into `staging`: `results.csv`, `timings.csv`, `sweep.json` and
+/// the plots. Returns the rows, the failed rows and the names of the files written (relative
+/// to `staging`, `results.csv` first).
+fn write_merged(
+    shards: &[(PathBuf, Manifest)],
+    manifest: &mut Manifest,
+    staging: &Path,
+) -> Result<(usize, usize, Vec<PathBuf>), MergeError> {
     let (rows, errors) = interleave(
-        &shards,
+        shards,
         RESULTS_CSV,
         manifest.cases,
         Some(&manifest.columns),
-        out,
+        staging,
     )?;
-    interleave(&shards, TIMINGS_CSV, manifest.cases, None, out)?;
+    interleave(shards, TIMINGS_CSV, manifest.cases, None, staging)?;
     manifest.shard_index = 0;
     manifest.shard_count = 1;
     manifest.rows = rows;
     manifest.errors = errors;
     manifest.complete = true;
-    let manifest_path = out.join(MANIFEST_JSON);
-    manifest.write(out).map_err(io_at(&manifest_path))?;
-    let results = out.join(RESULTS_CSV);
-    let mut files = vec![results.clone(), out.join(TIMINGS_CSV), manifest_path];
+    let manifest_path = staging.join(MANIFEST_JSON);
+    manifest.write(staging).map_err(io_at(&manifest_path))?;
+    let results = staging.join(RESULTS_CSV);
+    let mut files = vec![results.clone(), staging.join(TIMINGS_CSV), manifest_path];
     files.extend(write_plots(
         &results,
         &manifest.axes,
         &manifest.scenario,
-        &out.join(PLOTS_DIR),
+        &staging.join(PLOTS_DIR),
     )?);
-    Ok(MergeSummary {
-        shards: shards.len(),
-        rows,
-        errors,
-        files,
-    })
+    let names = files
+        .iter()
+        .map(|f| f.strip_prefix(staging).unwrap_or(f).to_path_buf())
+        .collect();
+    Ok((rows, errors, names))
+}
+
+/// Moves the merged files from `staging` into `out`: the old manifest goes first (so that
+/// no moment shows the new rows beside an old manifest claiming completeness), the old plots
+/// directory is replaced whole, and the new manifest comes last.
+fn move_into(staging: &Path, out: &Path, staged: &[PathBuf]) -> Result<(), MergeError> {
+    let rename = |from: PathBuf, to: PathBuf| -> Result<(), MergeError> {
+        std::fs::rename(&from, &to).map_err(|e| MergeError::Output(io_at(&to)(e)))
+    };
+    let old_manifest = out.join(MANIFEST_JSON);
+    if old_manifest.exists() {
+        std::fs::remove_file(&old_manifest)
+            .map_err(|e| MergeError::Output(io_at(&old_manifest)(e)))?;
+    }
+    let old_plots = out.join(PLOTS_DIR);
+    if old_plots.is_dir() {
+        std::fs::remove_dir_all(&old_plots)
+            .map_err(|e| MergeError::Output(io_at(&old_plots)(e)))?;
+    }
+    for name in [RESULTS_CSV, TIMINGS_CSV, PLOTS_DIR, MANIFEST_JSON] {
+        let from = staging.join(name);
+        if from.exists() && staged.iter().any(|s| s.starts_with(name)) {
+            rename(from, out.join(name))?;
+        }
+    }
+    Ok(())
 }

@@ -54,6 +54,8 @@ mod merge;
 mod output;
 #[cfg(feature = "app")]
 mod plots;
+#[cfg(feature = "app")]
+mod resume;
 mod row;
 #[cfg(feature = "app")]
 mod runner;
@@ -81,16 +83,19 @@ pub use error::OutputError;
 pub use error::SweepError;
 pub use manifest::{Fingerprint, MANIFEST_JSON, Manifest};
 #[cfg(feature = "app")]
-pub use merge::{LISTED_MISSING, MergeError, MergeSummary, merge};
+pub use merge::{LISTED_MISSING, MergeError, MergeSummary, STAGING_PREFIX, merge};
 #[cfg(feature = "app")]
-pub use output::{PLOTS_DIR, RESULTS_CSV, RunSummary, TIMINGS_CSV, write_sweep};
+pub use output::{PLOTS_DIR, RESULTS_CSV, RunSummary, TIMINGS_CSV, WriteOptions, write_sweep};
 #[cfg(feature = "app")]
 pub use plots::write_plots;
-pub use row::{CASE_COLUMN, CaseError, Cell, Columns, ERROR_COLUMN, NOTES_COLUMN, Row};
+pub use row::{
+    CASE_COLUMN, CHECKSUM_COLUMN, CaseError, Cell, Columns, ERROR_COLUMN, NOTES_COLUMN, Row,
+    checksum, checksum_matches,
+};
 #[cfg(feature = "app")]
 pub(crate) use runner::thread_count;
 #[cfg(feature = "app")]
-pub use runner::{MAX_THREADS, RunError, run};
+pub use runner::{Ended, MAX_THREADS, RunError, RunFrom, run, run_from};
 pub use shard::{MAX_SHARDS, Shard, ShardError};
 pub use value::AxisValue;
 

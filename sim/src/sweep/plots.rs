@@ -12,6 +12,7 @@ use std::path::{Path, PathBuf};
 use crate::report::{Figure, Panel, Series, SeriesKind};
 
 use super::error::{OutputError, csv_at, io_at};
+use super::row::NOTES_COLUMN;
 
 /// Most dots kept per panel: the plots draw 1000 at most anyway.
 pub const MAX_POINTS: usize = 1000;
@@ -124,11 +125,11 @@ pub fn write_plots(
         .from_path(results)
         .map_err(csv_at(results))?;
     let header = reader.headers().map_err(csv_at(results))?.clone();
-    // case, the axes, the metrics, notes, error.
+    // case, the axes, the metrics, then notes, error and checksum.
     let metrics: Vec<String> = header
         .iter()
         .skip(1 + axes.len())
-        .take(header.len().saturating_sub(3 + axes.len()))
+        .take_while(|&name| name != NOTES_COLUMN)
         .map(str::to_string)
         .collect();
     let mut pairs = vec![vec![Pair::new(); metrics.len()]; axes.len()];

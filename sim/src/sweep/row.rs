@@ -1,5 +1,11 @@
 //! One case's outcome as a row of `results.csv`: its index, its axis values, its metrics, its
-//! notes, and the error of a case that did not run.
+//! notes, the error of a case that did not run, and a checksum of those cells.
+//!
+//! The checksum (FNV-1a, 64 bits, of the other cells each followed by the ASCII unit
+//! separator 0x1F, as 16 lowercase hexadecimal digits) lets `sweep-merge` and
+//! `sweep --resume` tell a row written by a run from one edited or damaged afterwards. It is
+//! not a signature: anyone can recompute it; it catches accidents (a hand-edited value, a
+//! file cut or spliced), not forgery.
 
 use core::fmt;
 use std::io::Write;
@@ -11,7 +17,7 @@ use crate::world_file::WorldFileError;
 use super::value::AxisValue;
 
 /// The columns of `results.csv`: `case`, one per axis (its key), one per metric, `notes`,
-/// `error`.
+/// `error`, `checksum`.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Columns {
     /// The axes' keys, in the sweep file's order.
@@ -27,8 +33,32 @@ pub struct Columns {
 pub const CASE_COLUMN: &str = "case";
 /// The column of the scenario's notes (e.g. a lane change not completed), `; `-separated.
 pub const NOTES_COLUMN: &str = "notes";
-/// The last column: why the case did not run, empty when it did.
+/// The column after the notes: why the case did not run, empty when it did.
 pub const ERROR_COLUMN: &str = "error";
+/// The last column: the checksum of the row's other cells (see the module's documentation).
+pub const CHECKSUM_COLUMN: &str = "checksum";
+
+/// The checksum of a row's cells (every cell but the checksum, in column order): 16 lowercase
+/// hexadecimal digits.
+pub fn checksum<I, S>(cells: I) -> String
+where
+    I: IntoIterator<Item = S>,
+    S: AsRef<[u8]>,
+{
+    let mut bytes = Vec::new();
+    for c in cells {
+        bytes.extend_from_slice(c.as_ref());
+        bytes.push(0x1F);
+    }
+    format!("{:016x}", super::draw::fnv1a(&bytes))
+}
+
+/// Whether a record of `results.csv` (every cell, the checksum last) carries the checksum of
+/// its other cells.
+pub fn checksum_matches(record: &csv::StringRecord) -> bool {
+    let n = record.len();
+    n > 1 && record.get(n - 1) == Some(checksum(record.iter().take(n - 1)).as_str())
+}
 
 impl Columns {
     /// Every column name, in order.
@@ -36,7 +66,7 @@ impl Columns {
         std::iter::once(CASE_COLUMN)
             .chain(self.axes.iter().map(String::as_str))
             .chain(self.metrics.iter().map(String::as_str))
-            .chain([NOTES_COLUMN, ERROR_COLUMN])
+            .chain([NOTES_COLUMN, ERROR_COLUMN, CHECKSUM_COLUMN])
             .collect()
     }
 
@@ -185,9 +215,9 @@ impl Row {
         }
     }
 
-    /// The row's cells as the CSV writes them, in column order.
+    /// The row's cells as the CSV writes them, in column order, its checksum last.
     pub fn cells(&self) -> Vec<String> {
-        std::iter::once(self.case.to_string())
+        let mut cells: Vec<String> = std::iter::once(self.case.to_string())
             .chain(self.values.iter().map(ToString::to_string))
             .chain(self.metrics.iter().map(ToString::to_string))
             .chain([
@@ -197,7 +227,14 @@ impl Row {
                     .map(ToString::to_string)
                     .unwrap_or_default(),
             ])
-            .collect()
+            .collect();
+        cells.push(checksum(&cells));
+        cells
+    }
+
+    /// The row's checksum (its last cell).
+    pub fn checksum(&self) -> String {
+        self.cells().pop().unwrap_or_default()
     }
 
     /// The row's line of `results.csv`, with its line end: what the `vehicle-sim sweep`
@@ -294,20 +331,52 @@ mod tests {
         let row = Row::of_report(3, vec![AxisValue::Float(0.6)], &columns(), &r);
         assert_eq!(
             columns().csv_header(),
-            "case,ground.friction,stop_distance_m,at_rest,sim_seconds,notes,error\n"
+            "case,ground.friction,stop_distance_m,at_rest,sim_seconds,notes,error,checksum\n"
         );
-        assert_eq!(row.csv_line(), "3,0.6,47.2195,true,12.3457,\"a, note\",\n");
+        // The checksums are FNV-1a of the cells each followed by 0x1F, computed independently.
+        assert_eq!(
+            row.csv_line(),
+            "3,0.6,47.2195,true,12.3457,\"a, note\",,5191c35b5f99ed44\n"
+        );
         // A missing metric is an empty cell; an error row has only its values and the error.
         let r = report(vec![Metric::maybe("stop_distance_m", "", "m", None)]);
         let row = Row::of_report(0, vec![AxisValue::Integer(1)], &columns(), &r);
-        assert_eq!(row.csv_line(), "0,1,,,12.3457,\"a, note\",\n");
+        assert_eq!(
+            row.csv_line(),
+            "0,1,,,12.3457,\"a, note\",,24216758be777354\n"
+        );
         let failed = Row::failed(
             1,
             vec![AxisValue::Integer(1)],
             &columns(),
             CaseError::Panic("x".into()),
         );
-        assert_eq!(failed.csv_line(), "1,1,,,,,the case panicked: x\n");
+        assert_eq!(
+            failed.csv_line(),
+            "1,1,,,,,the case panicked: x,3ff5605deea30b4e\n"
+        );
+    }
+
+    #[test]
+    fn an_edited_cell_breaks_the_checksum() {
+        let record = |cells: &[&str]| csv::StringRecord::from(cells.to_vec());
+        let written = [
+            "3",
+            "0.6",
+            "47.2195",
+            "true",
+            "12.3457",
+            "a, note",
+            "",
+            "5191c35b5f99ed44",
+        ];
+        assert!(checksum_matches(&record(&written)));
+        let mut edited = written;
+        edited[2] = "47.2196";
+        assert!(!checksum_matches(&record(&edited)));
+        // A cell moved across a separator changes the hash: "a" + "bc" is not "ab" + "c".
+        assert_ne!(checksum(["a", "bc"]), checksum(["ab", "c"]));
+        assert!(!checksum_matches(&record(&["5191c35b5f99ed44"])));
     }
 
     #[test]

@@ -49,7 +49,10 @@ pub enum RunError {
 }
 
 /// Where the run is: set by the calling thread, read by the workers.
-struct Gate {
+struct Gate<'a> {
+    /// The caller's stop flag: set by someone who cannot wake the waiting workers (a signal
+    /// handler), so they look at it every [`STOP_POLL`].
+    external: Option<&'a AtomicBool>,
     /// Rows handed over so far (the shard's `k`-th case is the next).
     handed: AtomicUsize,
     /// Set when the consumer failed: the workers stop.
@@ -58,21 +61,31 @@ struct Gate {
     moved: Condvar,
 }
 
-impl Gate {
+/// How often a worker waiting for its turn looks at the caller's stop flag.
+const STOP_POLL: Duration = Duration::from_millis(50);
+
+impl Gate<'_> {
+    /// Whether the run stopped: the consumer failed or the caller asked.
+    fn stopped(&self) -> bool {
+        self.stop.load(Ordering::Acquire)
+            || self.external.is_some_and(|s| s.load(Ordering::Relaxed))
+    }
+
     /// Blocks while case `k` is `window` or more ahead of the rows handed over; false when
     /// the run stopped.
     fn wait_for(&self, k: usize, window: usize) -> bool {
-        let ahead = |g: &Gate| k >= g.handed.load(Ordering::Acquire) + window;
+        let ahead = |g: &Gate<'_>| k >= g.handed.load(Ordering::Acquire) + window;
         if ahead(self) {
             let mut guard = self.lock.lock().unwrap_or_else(PoisonError::into_inner);
-            while ahead(self) && !self.stop.load(Ordering::Acquire) {
+            while ahead(self) && !self.stopped() {
                 guard = self
                     .moved
-                    .wait(guard)
-                    .unwrap_or_else(PoisonError::into_inner);
+                    .wait_timeout(guard, STOP_POLL)
+                    .unwrap_or_else(PoisonError::into_inner)
+                    .0;
             }
         }
-        !self.stop.load(Ordering::Acquire)
+        !self.stopped()
     }
 
     /// Records progress (or the stop) and wakes the waiting workers.
@@ -95,6 +108,28 @@ pub(crate) fn thread_count(threads: Option<usize>) -> usize {
     })
 }
 
+/// Where a run starts and what stops it early.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct RunFrom<'a> {
+    /// The first of the shard's cases to run, by its position in the shard (0: all of
+    /// them; `k`: a resumed run whose first `k` rows are written).
+    pub first: usize,
+    /// Set (e.g. by a signal handler) to stop: no case starts after it is seen, the cases
+    /// running finish and their rows are handed over, then [`run`] returns
+    /// `Ok(Ended::Stopped)`.
+    pub stop: Option<&'a AtomicBool>,
+}
+
+/// How a run ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ended {
+    /// Every case from the first has its row.
+    Complete,
+    /// The stop flag was set: the rows handed over are whole and in case order, and the
+    /// others were not started or are lost.
+    Stopped,
+}
+
 /// Runs the cases of `shard` of `sweep` on `threads` threads (every core when `None`) and
 /// hands each row with its wall time to `sink`, in case order, on the calling thread. A
 /// failing case is a row with its error; the run stops only when `sink` fails.
@@ -109,6 +144,20 @@ pub fn run(
     threads: Option<usize>,
     sink: &mut dyn FnMut(Row, Duration) -> std::io::Result<()>,
 ) -> Result<(), RunError> {
+    run_from(sweep, shard, threads, RunFrom::default(), sink).map(|_| ())
+}
+
+/// [`run`] from the shard's case `from.first`, stopping early when `from.stop` is set.
+///
+/// # Errors
+/// As [`run`].
+pub fn run_from(
+    sweep: &Sweep,
+    shard: Shard,
+    threads: Option<usize>,
+    from: RunFrom<'_>,
+    sink: &mut dyn FnMut(Row, Duration) -> std::io::Result<()>,
+) -> Result<Ended, RunError> {
     let threads = thread_count(threads);
     if threads > MAX_THREADS {
         return Err(RunError::TooManyThreads(threads));
@@ -123,9 +172,11 @@ pub fn run(
         })?;
     let total = shard.len(sweep.len());
     let window = WINDOW_PER_THREAD * threads;
-    let next = AtomicUsize::new(0);
+    let first = from.first.min(total);
+    let next = AtomicUsize::new(first);
     let gate = Gate {
-        handed: AtomicUsize::new(0),
+        external: from.stop,
+        handed: AtomicUsize::new(first),
         stop: AtomicBool::new(false),
         lock: Mutex::new(()),
         moved: Condvar::new(),
@@ -156,7 +207,7 @@ pub fn run(
         drop(tx);
         // The rows that came before their turn, by their position in the shard.
         let mut early: BTreeMap<usize, (Row, Duration)> = BTreeMap::new();
-        let mut handed = 0;
+        let mut handed = first;
         for (k, row, wall) in rx {
             early.insert(k, (row, wall));
             while let Some((row, wall)) = early.remove(&handed) {
@@ -176,6 +227,8 @@ pub fn run(
     });
     match failure {
         Some(e) => Err(RunError::Sink(e)),
-        None => Ok(()),
+        // A case not run leaves `handed` short of the total: only a stop does that.
+        None if gate.handed.load(Ordering::Acquire) < total && gate.stopped() => Ok(Ended::Stopped),
+        None => Ok(Ended::Complete),
     }
 }
