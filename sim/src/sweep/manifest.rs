@@ -90,14 +90,19 @@ impl Manifest {
             .map_err(|e| format!("{}: not a sweep manifest: {e}", path.display()))
     }
 
-    /// Writes `dir/sweep.json`.
+    /// Writes `dir/sweep.json`: into a temporary file beside it, then renamed over it, so
+    /// that a run killed while writing leaves the previous manifest whole, never half of one.
     ///
     /// # Errors
     /// What the system reported.
     pub fn write(&self, dir: &Path) -> std::io::Result<()> {
         // Strings, numbers and booleans always serialise.
         let text = serde_json::to_string_pretty(self).unwrap_or_default();
-        std::fs::write(dir.join(MANIFEST_JSON), text + "\n")
+        let temporary = dir.join(format!(".{MANIFEST_JSON}.{}", std::process::id()));
+        std::fs::write(&temporary, text + "\n")?;
+        std::fs::rename(&temporary, dir.join(MANIFEST_JSON)).inspect_err(|_| {
+            let _ = std::fs::remove_file(&temporary);
+        })
     }
 }
 
