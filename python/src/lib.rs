@@ -27,11 +27,23 @@ pyo3::create_exception!(
     "A world that cannot be loaded: the message names the file, line, key and value."
 );
 
+// Qualified as `webots_vehicle.SimulationError`. A RuntimeError, as these errors were before
+// it existed, so that `except RuntimeError` keeps catching them.
+pyo3::create_exception!(
+    webots_vehicle,
+    SimulationError,
+    pyo3::exceptions::PyRuntimeError,
+    "A simulation that cannot go on or a request it refuses: a vehicle added after recording \
+     started, a name taken twice, a run that diverged, or a failure inside the engine (a bug, \
+     caught and reported with the vehicle and the time rather than as a PanicException)."
+);
+
 /// The extension module.
 #[pymodule]
 #[pyo3(name = "_native")]
 fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("WorldError", m.py().get_type::<WorldError>())?;
+    m.add("SimulationError", m.py().get_type::<SimulationError>())?;
     webots::register(m)?;
     sensors::register(m)?;
     simulation::register(m)?;

@@ -6,7 +6,7 @@
 //! per car and step (the columns of `vehicle-sim`'s CSV), and the `vehicle-sim` scenarios run
 //! on a fresh copy of the world.
 
-use pyo3::exceptions::{PyIndexError, PyOSError, PyRuntimeError, PyValueError};
+use pyo3::exceptions::{PyIndexError, PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyByteArray, PyBytes};
 
@@ -16,7 +16,7 @@ use sim::world_file::{self, WorldDescription, WorldFileError};
 use sim::{CarBuilder, SimError, VehicleId};
 use vehicle_model::Warning;
 
-use crate::WorldError;
+use crate::{SimulationError, WorldError};
 
 /// One driven car.
 struct Car {
@@ -55,7 +55,7 @@ fn world_error(py: Python<'_>, e: &WorldFileError) -> PyErr {
 
 /// A physics failure as a Python `RuntimeError`.
 fn sim_error(e: &SimError) -> PyErr {
-    PyRuntimeError::new_err(format!("the simulation failed: {e}"))
+    SimulationError::new_err(format!("the simulation failed: {e}"))
 }
 
 /// The driver's warning as a Python string (the Python side issues it as a warning).
@@ -353,7 +353,7 @@ impl Simulation {
         let description = &self.description;
         let report = py
             .detach(|| scenario::run(description, scenario, &mut |_| {}))
-            .map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+            .map_err(|e| SimulationError::new_err(e.to_string()))?;
         let world_warnings: Vec<String> = description
             .warnings
             .iter()

@@ -198,8 +198,10 @@ def test_save_writes_the_run_as_vehicle_sim_writes_one(tmp_path):
 def test_cars_are_added_before_the_first_step():
     sim = wv.Simulation(model="BmwX5")
     sim.step()
-    with pytest.raises(RuntimeError, match="add every vehicle before recording starts"):
+    with pytest.raises(wv.SimulationError, match="add every vehicle before recording starts"):
         sim.add_car("ToyotaPrius", translation=[0, 10, 0.4])
+    # The project's exception is a RuntimeError, as these errors were before it existed.
+    assert issubclass(wv.SimulationError, RuntimeError)
 
 
 def test_the_outputs_world_drives_the_same_car_as_vehicle_sim(vehicle_sim, tmp_path):

@@ -229,6 +229,16 @@ pub enum SimError {
         /// The panic's message.
         message: String,
     },
+    /// A panic interrupted the building of `owner`'s bodies and joints (a bug to report, as
+    /// for [`SimError::Panic`]). Its bodies may be half in the world, so the world refuses to
+    /// step any further.
+    #[error("adding {owner} to the world failed (a bug): {message}")]
+    PanicWhileAdding {
+        /// The car or robot being added.
+        owner: BodyOwner,
+        /// The panic's message.
+        message: String,
+    },
     /// rapier refused a joint of a car on joints (it refuses joints that close a loop, which a
     /// car's tree of joints never does); nothing usable was created.
     #[error("rapier refused a joint of {0}")]

@@ -165,9 +165,24 @@ impl World {
         spec: VehicleSpec,
         placement: VehiclePlacement,
     ) -> Result<VehicleId, SimError> {
+        if let Some(e) = &self.failure {
+            return Err(e.clone());
+        }
         let id = VehicleId(self.vehicles.len());
-        let vehicle = Vehicle::new(id, &mut self.physics, spec, placement)?;
-        self.vehicles.push(vehicle);
+        // Built under the same guard as a step (see `step`): shapes and joints go through
+        // parry's and rapier's assertions.
+        let built = catch_unwind(AssertUnwindSafe(|| {
+            Vehicle::new(id, &mut self.physics, spec, placement)
+        }))
+        .unwrap_or_else(|payload| {
+            let e = SimError::PanicWhileAdding {
+                owner: BodyOwner::Vehicle(id.0),
+                message: panic_message(payload.as_ref()),
+            };
+            self.failure = Some(e.clone());
+            Err(e)
+        });
+        self.vehicles.push(built?);
         Ok(id)
     }
 
@@ -238,10 +253,23 @@ impl World {
         mode: RobotMode,
         placement: RobotPlacement,
     ) -> Result<RobotId, SimError> {
+        if let Some(e) = &self.failure {
+            return Err(e.clone());
+        }
         let id = RobotId(self.robots.len());
-        let robot =
-            DifferentialWheels::new(id, &mut self.physics, params, mode, placement, self.time_ms)?;
-        self.robots.push(robot);
+        let now = self.time_ms;
+        let built = catch_unwind(AssertUnwindSafe(|| {
+            DifferentialWheels::new(id, &mut self.physics, params, mode, placement, now)
+        }))
+        .unwrap_or_else(|payload| {
+            let e = SimError::PanicWhileAdding {
+                owner: BodyOwner::Robot(id.0),
+                message: panic_message(payload.as_ref()),
+            };
+            self.failure = Some(e.clone());
+            Err(e)
+        });
+        self.robots.push(built?);
         Ok(id)
     }
 

@@ -17,7 +17,7 @@ API uses it (cruising speed, ``speed_kmh``); ms for ``basicTimeStep``. Frame: x 
 left, z up.
 """
 
-from webots_vehicle._native import WorldError
+from webots_vehicle._native import SimulationError, WorldError
 from webots_vehicle.simulation import SCENARIOS, RunResult, SimCar, Simulation, VehicleWarning
 from webots_vehicle.sweep import Sweep, load_results, run_case
 from webots_vehicle.telemetry import COLUMNS, Telemetry
@@ -28,6 +28,7 @@ __all__ = [
     "RunResult",
     "SimCar",
     "Simulation",
+    "SimulationError",
     "Sweep",
     "Telemetry",
     "VehicleWarning",

@@ -255,7 +255,7 @@ class Simulation:
         """Adds a car of the shipped ``model`` with ``fields`` overriding its ``Car`` fields in
         world-file vocabulary, e.g. ``add_car("ToyotaPrius", translation=[0, 5, 0.4],
         rotation=[0, 0, 1, 0.5], mounting="joints")`` (m, rad). Cars are added before the
-        first step (the run is recorded from then on): afterwards this raises RuntimeError."""
+        first step (the run is recorded from then on): afterwards this raises SimulationError."""
         text = "[vehicle]\n" + document({"model": model, **fields})
         index, car_warnings = self._core.add_car("<add_car keyword arguments>", text)
         for w in car_warnings:
