@@ -14,7 +14,7 @@ use std::io::{BufReader, Read, Seek, SeekFrom};
 use std::path::{Path, PathBuf};
 
 use super::Sweep;
-use super::error::{OutputError, csv_at, io_at};
+use super::error::{OutputError, io_at};
 use super::manifest::{MANIFEST_JSON, Manifest};
 use super::output::{RESULTS_CSV, TIMINGS_CSV};
 use super::row::{ERROR_COLUMN, checksum_matches};
@@ -137,7 +137,8 @@ fn whole_rows(
     let name = path
         .file_name()
         .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
-    let has_header = reader.read_record(&mut record).map_err(csv_at(path))?;
+    // An unreadable header (not UTF-8, say) is damage like a wrong one.
+    let has_header = reader.read_record(&mut record).unwrap_or(false);
     if !has_header || (checked && !record.iter().eq(header.iter().copied())) {
         return Err(refuse(
             dir,

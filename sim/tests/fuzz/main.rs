@@ -24,6 +24,7 @@ mod strategies;
 mod corpus;
 mod documents;
 mod simulation;
+mod sweep_files;
 mod world_file;
 
 use proptest::prelude::*;
@@ -113,5 +114,31 @@ proptest! {
         let text = format!("[differential_wheels]\nphysics = {physics}\n");
         let world = wf::parse_str("robot.toml", &text).unwrap();
         simulation::run(&world, &[], &ops).map_err(TestCaseError::fail)?;
+    }
+}
+
+proptest! {
+    #![proptest_config(config(64))]
+
+    #[test]
+    fn any_sweep_text_loads_or_gives_an_error_naming_the_file(text in any::<String>()) {
+        let checked = sweep_files::check_text(&text);
+        prop_assert!(checked.is_ok(), "{}", checked.unwrap_err());
+    }
+}
+
+proptest! {
+    // Each case copies two shard directories and resumes a shard: a few ms.
+    #![proptest_config(config(24))]
+
+    #[test]
+    fn damaged_shard_files_never_merge_or_resume_into_wrong_rows(
+        timings in any::<bool>(),
+        cut in proptest::option::of(any::<usize>()),
+        byte in proptest::option::of((any::<usize>(), any::<u8>())),
+    ) {
+        let damage = sweep_files::Damage { timings, cut, byte };
+        let checked = sweep_files::check_damage(damage);
+        prop_assert!(checked.is_ok(), "{damage:?}: {}", checked.unwrap_err());
     }
 }

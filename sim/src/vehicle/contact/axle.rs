@@ -24,7 +24,7 @@ pub(super) struct Axle {
     /// `n·up` per wheel: the share of its normal impulse that its spring carries.
     axis_cosine: [f32; 2],
     /// `[forward·up, lateral·up]` per wheel: the shares of its tyre impulses that its spring
-    /// carries when the chassis leans on the ground.
+    /// carries when the chassis leans on the ground, limited by [`MAX_FRICTION_FEEDBACK`].
     tyre_along_axis: [[f32; 2]; 2],
     /// `dt·k·x` (N·s) per wheel: the spring's impulse at the current compression.
     spring_impulse: [f32; 2],
@@ -34,6 +34,31 @@ pub(super) struct Axle {
     /// Tyre rows' inverse effective masses (1/kg), 4×4 in the order forward 0, lateral 0,
     /// forward 1, lateral 1, with each free wheel's spin on its forward diagonal.
     k_tyre: [[f32; 4]; 4],
+}
+
+/// The most the tyre's friction may feed back into its own normal load through the leaning
+/// suspension axis (dimensionless, < 1).
+///
+/// Why a limit: the spring carries `N·(n·up) + P_t·up`, and the tyre impulse `P_t` can reach
+/// `μ·N`, so the normal impulse solves `N·(n·up − μ·|t·up|) ≤ P_spring` at worst (`t` the
+/// tyre force's direction in the ground plane). Once the suspension axis leans from the
+/// ground's normal past `atan(1/μ)` (45° at μ = 1, 18° at μ = 3, 6° at μ = 10, a car rolling
+/// over), the factor is ≤ 0 and a rigid slider with Coulomb friction has no bounded solution:
+/// the wedging of Painlevé's paradox. The solve then found normal loads of meganewtons whose
+/// friction threw a rolled BmwX5 76 m up (issue #37). A real suspension yields there (bump stop,
+/// arm compliance, the tyre's sidewall). The spring's share of the tyre impulse is scaled
+/// down so that the gain `μ·|t·up| / (n·up)` is at most this: the normal impulse is then at
+/// most `P_spring / ((1 − 0.5)·(n·up))`. A car on its wheels never reaches it (the gain is
+/// `μ·tan(lean)`: 0.09 at μ = 1 and 5° of roll), so its handling is unchanged.
+pub(super) const MAX_FRICTION_FEEDBACK: f32 = 0.5;
+
+/// The peak friction coefficient of `grip` in any direction of the ground plane.
+#[inline]
+fn peak_friction(grip: &Grip) -> f32 {
+    match *grip {
+        Grip::Slip(law) => law.friction[0].max(law.friction[1]),
+        Grip::Coulomb { friction, .. } => friction,
+    }
 }
 
 impl Axle {
@@ -54,7 +79,19 @@ impl Axle {
             if let Some(si) = ci.spring() {
                 axle.axis_cosine[i] = ci.axis_cosine(si);
                 axle.compression_direction[i] = ci.normal / axle.axis_cosine[i];
-                axle.tyre_along_axis[i] = [ci.forward.dot(si.up), ci.lateral.dot(si.up)];
+                let along = [ci.forward.dot(si.up), ci.lateral.dot(si.up)];
+                // Each axis of the Coulomb pyramid reaches μ·N on its own: the worst case adds them.
+                let reach = match wheels[i].grip {
+                    Grip::Slip(_) => along[0].hypot(along[1]),
+                    Grip::Coulomb { .. } => along[0].abs() + along[1].abs(),
+                };
+                let gain = peak_friction(&wheels[i].grip) * reach / axle.axis_cosine[i];
+                let share = if gain > MAX_FRICTION_FEEDBACK {
+                    MAX_FRICTION_FEEDBACK / gain
+                } else {
+                    1.0
+                };
+                axle.tyre_along_axis[i] = along.map(|a| a * share);
                 axle.spring_impulse[i] = dt * si.stiffness * si.compression;
                 axle.softness[i] = dt * (si.stiffness * dt + si.damping);
             }

@@ -310,3 +310,53 @@ fn small_systems() {
     }
     assert_eq!(solve4([[0.0; 4]; 4], [1.0; 4]), None);
 }
+
+#[test]
+fn friction_cannot_wedge_a_leaning_suspension() {
+    // A chassis rolled by φ = 0.6 rad (its suspension axis leaning toward +y) slides toward +y
+    // at 5 m/s on a rigid tyre with μ = 10: the friction impulse −μ·N·y loads the spring along
+    // the axis, `N·cos φ − μ·N·sin φ = P_spring`, a factor cos φ − μ·sin φ = −4.8 < 0: a rigid
+    // slider with friction has no bounded solution (issue #37 threw a rolled BmwX5 76 m up).
+    // With the friction's share of the spring load limited to a gain of
+    // MAX_FRICTION_FEEDBACK = 0.5, `N ≤ P_spring / ((1 − 0.5)·cos φ)`, P_spring at most the
+    // spring's static impulse `dt·k·x` (the normal impulse lifts the chassis, which only
+    // unloads the spring).
+    let phi: f32 = 0.6;
+    let mut c = contact(0.01);
+    if let Support::Spring(s) = &mut c.support {
+        s.up = Vector::new(0.0, phi.sin(), phi.cos());
+    }
+    let mut b = body();
+    b.linvel = Vector::new(0.0, 5.0, 0.0);
+    let mut w = one(wheel(Some(c), rigid(10.0), Spin::Imposed, 0.0));
+    solve(&mut b, &mut w, 0.01);
+    let n = w[0].impulses.normal;
+    let bound = 0.01 * 1e5 * 0.01 / ((1.0 - axle::MAX_FRICTION_FEEDBACK) * phi.cos());
+    assert!(
+        n > 0.0 && n <= bound * 1.0001,
+        "N = {n} N·s, bound {bound} N·s"
+    );
+    // The friction stays within μ·N.
+    assert!(w[0].impulses.lateral.abs() <= 10.0 * n * 1.0001);
+
+    // Upright (φ = 5°, μ = 1: a gain of 0.087), the spring carries the whole tyre share:
+    // `N·cos φ + P_lat·sin φ` equals the spring's impulse as before the limit.
+    let phi: f32 = 5f32.to_radians();
+    let mut c = contact(0.01);
+    if let Support::Spring(s) = &mut c.support {
+        s.up = Vector::new(0.0, phi.sin(), phi.cos());
+    }
+    let mut b = body();
+    b.linvel = Vector::new(0.0, 0.5, 0.0);
+    let mut w = one(wheel(Some(c), rigid(1.0), Spin::Imposed, 0.0));
+    solve(&mut b, &mut w, 0.01);
+    let i = w[0].impulses;
+    let carried = i.normal * phi.cos() + i.lateral * phi.sin();
+    // The implicit spring at the end-of-step compression rate: P = dt·k·(x + dt·ẋ).
+    let rate = -Vector::new(0.0, 0.0, 1.0 / phi.cos()).dot(b.linvel);
+    let spring = 0.01 * 1e5 * (0.01 + 0.01 * rate);
+    assert!(
+        (carried - spring).abs() < 1e-3 * spring,
+        "{carried} vs {spring}"
+    );
+}
