@@ -27,7 +27,10 @@ mod car_programmes;
 mod fit;
 mod lane;
 mod metrics;
+mod plausibility;
 mod programme;
+
+pub use plausibility::{MIN_STEPS_PER_BOUNCE, MIN_TYRE_FRICTION, notes as plausibility_notes};
 mod robot;
 
 use core::fmt;
@@ -507,6 +510,7 @@ pub fn run(
     }
     if let Some(first) = results.first_mut() {
         let mut notes = world_notes(world);
+        notes.extend(plausibility::notes(world));
         notes.append(&mut first.notes);
         first.notes = notes;
     }
