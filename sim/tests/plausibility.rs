@@ -31,7 +31,9 @@ fn stiff_springs_need_short_steps() {
     // (2π·√(m/k) of its lighter corner): 16 ms is more than a tenth of it; the
     // MercedesBenzSprinter's 0.31 s takes 32 ms.
     let note = |model: &str, step: u32| {
-        notes(&format!("basicTimeStep = {step}\n[vehicle]\nmodel = \"{model}\"\n"))
+        notes(&format!(
+            "basicTimeStep = {step}\n[vehicle]\nmodel = \"{model}\"\n"
+        ))
     };
     assert!(note("Truck", 15).is_empty());
     assert!(note("Truck", 16)[0].contains("of Truck on its springs (0.15 s)"));

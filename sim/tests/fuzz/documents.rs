@@ -41,6 +41,19 @@ const NAMES: [&str; 16] = [
     "bmwx5",
 ];
 
+/// A `[[vehicle.programme]]` step's commands (issue #37: programme times were unbounded).
+const PROGRAMME: [(&str, Shape); 9] = [
+    ("cruising_speed", Shape::Number),
+    ("steering_angle", Shape::Number),
+    ("throttle", Shape::Number),
+    ("brake_intensity", Shape::Number),
+    ("gear", Shape::Number),
+    ("indicator", Shape::Text),
+    ("hazard_flashers", Shape::Bool),
+    ("dipped_beams", Shape::Bool),
+    ("antifog_lights", Shape::Bool),
+];
+
 /// `[differential_wheels]`: the Webots node fields, then the simulator's own keys.
 const ROBOT: [(&str, Shape); 17] = [
     ("motorConsumption", Shape::Number),
@@ -219,8 +232,15 @@ pub fn document() -> impl Strategy<Value = String> {
         1 => value(Shape::Text),
     ]
     .prop_map(|m| format!("model = {m}\n"));
-    let car = (model, entries(Vec::new(), vehicle_keys(), 3))
-        .prop_map(|(m, e)| format!("[vehicle]\n{m}{e}"));
+    // Programme steps: a time (`at`, s: everyday or hostile) and up to two commands.
+    let step = entries(owned(&[("at", Shape::Number)]), owned(&PROGRAMME), 2)
+        .prop_map(|e| format!("[[vehicle.programme]]\n{e}"));
+    let car = (
+        model,
+        entries(Vec::new(), vehicle_keys(), 3),
+        prop::collection::vec(step, 0..3),
+    )
+        .prop_map(|(m, e, steps)| format!("[vehicle]\n{m}{e}{}", steps.concat()));
     let robot =
         entries(Vec::new(), owned(&ROBOT), 3).prop_map(|e| format!("[differential_wheels]\n{e}"));
     let object = prop::sample::select(OBJECTS.to_vec()).prop_flat_map(|(header, req, opt)| {
