@@ -207,9 +207,12 @@ impl World {
 
     /// Car `id`'s mechanical energy (J): the kinetic energy of its rapier bodies (the chassis
     /// and, on joints, the wheels: translation of the centre of mass and rotation), their
-    /// potential energy in the world's gravity (zero at the world's origin), and, for a cast
-    /// car, whose wheels are no bodies, the wheels' spin energy `½·I·ω²` relative to the
-    /// chassis.
+    /// potential energy in the world's gravity (zero at the world's origin), the energy held in
+    /// its suspension springs (`½·k·x²` at each wheel's compression), and, for a cast car,
+    /// whose wheels are no bodies, the wheels' spin energy `½·I·ω²` relative to the chassis.
+    ///
+    /// rapier computes a body's mass properties in a step: before the world's first step the
+    /// bodies count for nothing here.
     ///
     /// Only the engine and gravity put energy into a car; the tyres, brakes, dampers and
     /// contacts take it out. A car whose throttle is off cannot gain it: the tests hold every
@@ -230,9 +233,18 @@ impl World {
                 + gravity[2] * f64::from(com.z));
             energy += f64::from(body.kinetic_energy()) + f64::from(body.mass()) * height;
         }
+        let (spec, state) = (vehicle.spec(), vehicle.state());
+        for (w, x) in state.suspension.0.iter().enumerate() {
+            let springs = if w < 2 {
+                spec.front_suspension
+            } else {
+                spec.rear_suspension
+            };
+            energy += 0.5 * springs.stiffness * x * x;
+        }
         if !vehicle.on_joints() {
-            for (w, omega) in vehicle.state().wheel_speeds.0.iter().enumerate() {
-                let inertia = vehicle.spec().wheels.0[w].spin_inertia();
+            for (w, omega) in state.wheel_speeds.0.iter().enumerate() {
+                let inertia = spec.wheels.0[w].spin_inertia();
                 energy += 0.5 * inertia * omega * omega;
             }
         }
