@@ -30,7 +30,9 @@ mod metrics;
 mod plausibility;
 mod programme;
 
-pub use plausibility::{MIN_STEPS_PER_BOUNCE, MIN_TYRE_FRICTION, notes as plausibility_notes};
+pub use plausibility::{
+    MIN_STEPS_PER_BOUNCE, MIN_TYRE_FRICTION, bounce_period, notes as plausibility_notes,
+};
 mod robot;
 
 use core::fmt;

@@ -28,6 +28,27 @@ pub const MIN_STEPS_PER_BOUNCE: f64 = 10.0;
 /// the car's grip away.
 pub const MIN_TYRE_FRICTION: f64 = 0.3;
 
+/// The body's share of the weight on one wheel of each axle, `[front, rear]` (kg), from the
+/// centre of mass between the axles (the rear axle at x = 0, the front at the wheelbase).
+fn corner_masses(spec: &VehicleSpec) -> [f64; 2] {
+    let wheelbase = spec.wheels[Wheel::FrontRight].position.x;
+    let front = (spec.chassis.center_of_mass.x / wheelbase).clamp(0.0, 1.0);
+    [front, 1.0 - front].map(|share| spec.chassis.mass * share / 2.0)
+}
+
+/// The shortest bounce period (s) of a car's body on its springs: `2π·√(m/k)` of each axle's
+/// corner (its share `m` of the body's weight on one spring of stiffness `k`), the shorter.
+/// Infinite for a car without springs. A step longer than a tenth of it
+/// ([`MIN_STEPS_PER_BOUNCE`]) leaves the body's motion to the integrator.
+pub fn bounce_period(spec: &VehicleSpec) -> f64 {
+    let [front, rear] = corner_masses(spec);
+    [(front, spec.front_suspension), (rear, spec.rear_suspension)]
+        .into_iter()
+        .filter(|(m, springs)| *m > 0.0 && springs.stiffness > 0.0)
+        .map(|(m, springs)| TAU * (m / springs.stiffness).sqrt())
+        .fold(f64::INFINITY, f64::min)
+}
+
 /// The notes on every car of `world`, in the order of its cars: a centre of mass outside
 /// the body, tyres without grip at the car's load, a time step too long for the body's motion.
 /// Every scenario's first result carries them.
@@ -71,19 +92,9 @@ fn car_notes(car: &CarDescription, g: f64, dt: f64) -> Vec<String> {
             centre.z + half.z,
         ));
     }
-    // Each axle's static share of the body's weight, from the centre of mass between the
-    // axles (the rear axle at x = 0, the front at the wheelbase).
-    let wheelbase = spec.wheels[Wheel::FrontRight].position.x;
-    let front_share = (com.x / wheelbase).clamp(0.0, 1.0);
-    let mut shortest = f64::INFINITY;
-    for (front, share, springs) in [
-        (true, front_share, spec.front_suspension),
-        (false, 1.0 - front_share, spec.rear_suspension),
-    ] {
-        let corner = chassis.mass * share / 2.0;
-        if springs.stiffness > 0.0 && corner > 0.0 {
-            shortest = shortest.min(TAU * (corner / springs.stiffness).sqrt());
-        }
+    let shortest = bounce_period(&spec);
+    let [front_corner, rear_corner] = corner_masses(&spec);
+    for (front, corner) in [(true, front_corner), (false, rear_corner)] {
         let wheel = if front {
             Wheel::FrontRight
         } else {
