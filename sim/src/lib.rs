@@ -81,6 +81,7 @@ struct ReadmeDoctests;
 mod attitude;
 mod body;
 mod car_builder;
+pub mod appearance;
 #[cfg(feature = "app")]
 pub mod cli;
 pub mod devices;

@@ -6,9 +6,9 @@ use proto_geom::nalgebra::{UnitQuaternion, Vector3};
 
 use crate::error::ParamError;
 
-use super::{GpsSettings, InertialUnitSettings, TriaxialSettings};
+use super::{CameraSettings, GpsSettings, InertialUnitSettings, TriaxialSettings};
 
-/// The kinds of device of this phase.
+/// The kinds of device.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum DeviceKind {
     /// Webots `GPS`.
@@ -21,16 +21,19 @@ pub enum DeviceKind {
     Accelerometer,
     /// Webots `Compass`.
     Compass,
+    /// Webots `Camera`.
+    Camera,
 }
 
 impl DeviceKind {
     /// Every kind.
-    pub const ALL: [DeviceKind; 5] = [
+    pub const ALL: [DeviceKind; 6] = [
         DeviceKind::Gps,
         DeviceKind::InertialUnit,
         DeviceKind::Gyro,
         DeviceKind::Accelerometer,
         DeviceKind::Compass,
+        DeviceKind::Camera,
     ];
 
     /// The Webots node name (`"GPS"`, `"InertialUnit"`, …).
@@ -41,6 +44,7 @@ impl DeviceKind {
             DeviceKind::Gyro => "Gyro",
             DeviceKind::Accelerometer => "Accelerometer",
             DeviceKind::Compass => "Compass",
+            DeviceKind::Camera => "Camera",
         }
     }
 
@@ -59,6 +63,7 @@ impl DeviceKind {
             DeviceKind::Gyro => "gyro",
             DeviceKind::Accelerometer => "accelerometer",
             DeviceKind::Compass => "compass",
+            DeviceKind::Camera => "camera",
         }
     }
 }
@@ -112,6 +117,8 @@ pub enum DeviceSettings {
     Accelerometer(TriaxialSettings),
     /// A `Compass` (unitless).
     Compass(TriaxialSettings),
+    /// A `Camera` (and its `Recognition`).
+    Camera(CameraSettings),
 }
 
 impl DeviceSettings {
@@ -123,6 +130,7 @@ impl DeviceSettings {
             DeviceSettings::Gyro(_) => DeviceKind::Gyro,
             DeviceSettings::Accelerometer(_) => DeviceKind::Accelerometer,
             DeviceSettings::Compass(_) => DeviceKind::Compass,
+            DeviceSettings::Camera(_) => DeviceKind::Camera,
         }
     }
 
@@ -136,6 +144,7 @@ impl DeviceSettings {
             DeviceKind::Gyro => DeviceSettings::Gyro(TriaxialSettings::default()),
             DeviceKind::Accelerometer => DeviceSettings::Accelerometer(TriaxialSettings::default()),
             DeviceKind::Compass => DeviceSettings::Compass(TriaxialSettings::default()),
+            DeviceKind::Camera => DeviceSettings::Camera(CameraSettings::default()),
         }
     }
 
@@ -150,6 +159,7 @@ impl DeviceSettings {
             DeviceSettings::Gyro(s)
             | DeviceSettings::Accelerometer(s)
             | DeviceSettings::Compass(s) => s.validate(),
+            DeviceSettings::Camera(s) => s.validate(),
         }
     }
 }

@@ -16,7 +16,9 @@ use proto_geom::nalgebra::{Isometry3, Translation3};
 
 use vehicle_model::{ControlMode, Driver, Gear, ParamReport, Sensors};
 
+use crate::appearance::{Appearance, Appearances, SceneObject};
 use crate::car_builder::CarBuilder;
+use crate::devices::camera::solids::Solids;
 use crate::devices::{CarDevices, ChassisMotion, Device};
 use crate::diff_wheels::{DifferentialWheelsParams, RobotId, RobotMode, RobotPlacement};
 use crate::error::{ParamError, SimError};
@@ -113,6 +115,8 @@ pub struct Simulation {
     /// Simulated time after which the run is over (s).
     duration: Option<f64>,
     recording: Option<Recording>,
+    /// How the world's things look to the cameras.
+    appearances: Appearances,
 }
 
 impl Simulation {
@@ -126,6 +130,7 @@ impl Simulation {
             robots: Vec::new(),
             duration: None,
             recording: None,
+            appearances: Appearances::default(),
         }
     }
 
@@ -167,6 +172,9 @@ impl Simulation {
         }
         if let Some(robot) = &description.robot {
             sim.add_robot(robot)?;
+        }
+        for (object, appearance) in description.appearances.iter() {
+            sim.set_appearance(*object, appearance.clone())?;
         }
         Ok((sim, reports))
     }
@@ -413,10 +421,16 @@ impl Simulation {
     }
 
     /// Samples every enabled device whose period has come, on its car's chassis as the step
-    /// left it (Webots refreshes its sensors at the end of each step).
+    /// left it (Webots refreshes its sensors at the end of each step). The world's solids are
+    /// gathered once, and only when a camera renders.
     fn refresh_devices(&mut self) -> Result<(), SimError> {
         let now_ms = self.world.time_ms();
         let gravity = self.world.config().gravity;
+        let solids = self
+            .cars
+            .iter()
+            .any(|c| c.devices.renders_at(now_ms))
+            .then(|| Solids::of(&self.world, &self.appearances));
         for car in &mut self.cars {
             if !car.devices.any_enabled() {
                 continue;
@@ -428,7 +442,8 @@ impl Simulation {
                 angular_velocity: s.angular_velocity,
                 gravity,
             };
-            car.devices.refresh(&chassis, now_ms);
+            car.devices
+                .refresh(&chassis, now_ms, solids.as_ref(), car.id);
         }
         Ok(())
     }
@@ -454,6 +469,42 @@ impl Simulation {
     /// ```
     pub fn devices(&self, id: VehicleId) -> Result<&[Device], SimError> {
         self.car(id).map(|c| c.devices.all())
+    }
+
+    /// Gives `object` the look `appearance`: its colour in camera images, its recognition
+    /// colours and model for a camera's Recognition ([`crate::appearance`]).
+    ///
+    /// # Errors
+    /// [`SimError::Param`] for a colour out of [0, 1].
+    pub fn set_appearance(
+        &mut self,
+        object: SceneObject,
+        appearance: Appearance,
+    ) -> Result<(), SimError> {
+        self.appearances.set(object, appearance)?;
+        Ok(())
+    }
+
+    /// Enables the Recognition of camera `index` of car `id` with a sampling period of
+    /// `period_ms` ms (Webots: `wb_camera_recognition_enable`; 0 disables). The camera itself
+    /// need not be enabled.
+    ///
+    /// # Errors
+    /// [`SimError::UnknownVehicle`]; [`SimError::Device`] for an index the car does not have
+    /// or a device without Recognition.
+    pub fn enable_recognition(
+        &mut self,
+        id: VehicleId,
+        index: usize,
+        period_ms: u32,
+    ) -> Result<(), SimError> {
+        let now_ms = self.world.time_ms();
+        let car = self
+            .cars
+            .iter_mut()
+            .find(|c| c.id == id)
+            .ok_or(SimError::UnknownVehicle(id.index()))?;
+        Ok(car.devices.enable_recognition(index, period_ms, now_ms)?)
     }
 
     /// Enables device `index` of car `id` with a sampling period of `period_ms` ms (Webots:

@@ -38,8 +38,10 @@ const BRAKE_BALANCES: [(&str, BrakeBalance<f64>); 2] = [
 ];
 
 /// The keys of `[vehicle]` that are neither Webots fields nor wheel slots.
-const OWN_KEYS: [&str; 8] = [
+const OWN_KEYS: [&str; 10] = [
     "model",
+    "color",
+    "recognitionColors",
     "tyre",
     MOUNTING,
     BRAKE_BALANCE,
