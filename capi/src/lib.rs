@@ -24,7 +24,9 @@
 //! * `webots/gps.h`, `webots/inertial_unit.h`, `webots/gyro.h`, `webots/accelerometer.h`,
 //!   `webots/compass.h`: the sensors a world file puts on the car (`[[vehicle.device]]`),
 //!   measured by `sim::devices`; `webots/device.h` and `wb_robot_get_number_of_devices`,
-//!   `wb_robot_get_device_by_index` to list the robot's devices.
+//!   `wb_robot_get_device_by_index` to list the robot's devices;
+//! * `webots/camera.h` and `webots/camera_recognition_object.h`: the camera and its
+//!   Recognition, rendered by `sim::devices::camera`.
 //!
 //! Arguments and results follow the C ABI of the headers: C `bool` is one byte (any non-zero
 //! value is true; results are 0 or 1), enumerations are `int` (out-of-range values are refused
@@ -60,6 +62,7 @@
 mod guard;
 
 mod abi;
+mod camera_api;
 mod car_api;
 mod device_api;
 mod devices;
@@ -73,6 +76,7 @@ mod sensor_api;
 mod session;
 
 pub use abi::WbDeviceTag;
+pub use camera_api::*;
 pub use car_api::*;
 pub use device_api::*;
 pub use differential_wheels_api::*;

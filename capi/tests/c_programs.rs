@@ -83,6 +83,13 @@ fn sensors() {
     run_announcing("sensors", Some(&sensors_world()), 9);
 }
 
+/// The camera of a world file's car, its Recognition and the camera misuse messages.
+#[test]
+fn camera() {
+    // 1 wrong tag, 1 disabled image, 1 negative period, 1 disabled Recognition.
+    run_announcing("camera", Some(&world_path("camera.toml")), 4);
+}
+
 /// The C++ wrapper, linked with the libraries in the other order (`-lcar -ldriver`).
 #[test]
 fn cpp_wrapper() {
