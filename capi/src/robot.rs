@@ -5,6 +5,7 @@ use std::env::{self, VarError};
 use std::ffi::c_int;
 use std::path::PathBuf;
 
+use sim::keyboard::Keyboard;
 use sim::world_file::{self, WorldDescription};
 use sim::{RobotId, SimError, Simulation, VehicleId};
 
@@ -65,6 +66,9 @@ pub(crate) struct Robot {
     devices: Vec<Option<DeviceEntry>>,
     /// Where the sensor functions' `const double *` results live.
     pub(crate) buffers: Buffers,
+    /// The keyboard of a DifferentialWheels robot's controller: no programme presses its keys
+    /// (a car's keyboard is the simulation's).
+    pub(crate) robot_keyboard: Keyboard,
 }
 
 impl Robot {
@@ -157,6 +161,7 @@ impl Robot {
             outputs,
             devices,
             buffers,
+            robot_keyboard: Keyboard::default(),
         })
     }
 

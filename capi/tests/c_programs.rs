@@ -90,6 +90,13 @@ fn camera() {
     run_announcing("camera", Some(&world_path("camera.toml")), 4);
 }
 
+/// The keys a world's programme presses, read through webots/keyboard.h.
+#[test]
+fn keyboard() {
+    // 1 disabled read, 1 negative period.
+    run_announcing("keyboard", Some(&world_path("keyboard.toml")), 2);
+}
+
 /// The C++ wrapper, linked with the libraries in the other order (`-lcar -ldriver`).
 #[test]
 fn cpp_wrapper() {

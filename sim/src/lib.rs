@@ -85,6 +85,7 @@ pub mod appearance;
 #[cfg(feature = "app")]
 pub mod cli;
 pub mod devices;
+pub mod keyboard;
 pub mod motor;
 pub mod placement;
 pub mod programme;

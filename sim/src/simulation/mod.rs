@@ -22,6 +22,7 @@ use crate::devices::camera::solids::Solids;
 use crate::devices::{CarDevices, ChassisMotion, Device};
 use crate::diff_wheels::{DifferentialWheelsParams, RobotId, RobotMode, RobotPlacement};
 use crate::error::{ParamError, SimError};
+use crate::keyboard::Keyboard;
 use crate::report::OutputError;
 use crate::scenario::RunReport;
 use crate::telemetry::TelemetryLog;
@@ -54,6 +55,7 @@ struct Controlled {
     name: String,
     sampled: bool,
     devices: CarDevices,
+    keyboard: Keyboard,
 }
 
 /// A robot's handle and name.
@@ -198,6 +200,7 @@ impl Simulation {
             name,
             sampled: false,
             devices: built.devices,
+            keyboard: built.keyboard,
         });
         Ok((id, built.report))
     }
@@ -411,6 +414,10 @@ impl Simulation {
         }
         let result = self.world.step();
         if result.is_ok() {
+            let now_ms = self.world.time_ms();
+            for car in &mut self.cars {
+                car.keyboard.refresh(now_ms);
+            }
             self.refresh_devices()?;
             if let Some(mut recording) = self.recording.take() {
                 recording.sample(self);
@@ -469,6 +476,45 @@ impl Simulation {
     /// ```
     pub fn devices(&self, id: VehicleId) -> Result<&[Device], SimError> {
         self.car(id).map(|c| c.devices.all())
+    }
+
+    /// The keyboard of car `id`'s controller: the keys its programme presses
+    /// ([`crate::keyboard`]).
+    ///
+    /// # Errors
+    /// [`SimError::UnknownVehicle`].
+    pub fn keyboard(&self, id: VehicleId) -> Result<&Keyboard, SimError> {
+        self.car(id).map(|c| &c.keyboard)
+    }
+
+    /// Enables car `id`'s keyboard with a period of `period_ms` ms (0 disables) (Webots:
+    /// `wb_keyboard_enable`).
+    ///
+    /// # Errors
+    /// [`SimError::UnknownVehicle`].
+    pub fn enable_keyboard(&mut self, id: VehicleId, period_ms: u32) -> Result<(), SimError> {
+        let now_ms = self.world.time_ms();
+        let car = self
+            .cars
+            .iter_mut()
+            .find(|c| c.id == id)
+            .ok_or(SimError::UnknownVehicle(id.index()))?;
+        car.keyboard.enable(period_ms, now_ms);
+        Ok(())
+    }
+
+    /// The next key car `id`'s keyboard holds, −1 when none is left (Webots:
+    /// `wb_keyboard_get_key`).
+    ///
+    /// # Errors
+    /// [`SimError::UnknownVehicle`].
+    pub fn next_key(&mut self, id: VehicleId) -> Result<i32, SimError> {
+        let car = self
+            .cars
+            .iter_mut()
+            .find(|c| c.id == id)
+            .ok_or(SimError::UnknownVehicle(id.index()))?;
+        Ok(car.keyboard.next_key())
     }
 
     /// Gives `object` the look `appearance`: its colour in camera images, its recognition

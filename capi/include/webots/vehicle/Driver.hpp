@@ -35,6 +35,7 @@
 #include <webots/GPS.hpp>
 #include <webots/Gyro.hpp>
 #include <webots/InertialUnit.hpp>
+#include <webots/Keyboard.hpp>
 #include <webots/nodes.h>
 #include <webots/robot.h>
 
@@ -112,6 +113,12 @@ namespace webots {
     Accelerometer *getAccelerometer(const std::string &name) { return device<Accelerometer>(name, WB_NODE_ACCELEROMETER); }
     Compass *getCompass(const std::string &name) { return device<Compass>(name, WB_NODE_COMPASS); }
     Camera *getCamera(const std::string &name) { return device<Camera>(name, WB_NODE_CAMERA); }
+    // The keyboard, owned by the Driver (its keys: the world's programme's).
+    Keyboard *getKeyboard() {
+      if (!keyboard_)
+        keyboard_.reset(new Keyboard());
+      return keyboard_.get();
+    }
 
     // Steers with Ackermann geometry: rad, positive right, negative left.
     void setSteeringAngle(double steeringAngle) { wbu_driver_set_steering_angle(steeringAngle); }
@@ -205,6 +212,7 @@ namespace webots {
     }
 
     std::vector<std::unique_ptr<Device>> devices_;
+    std::unique_ptr<Keyboard> keyboard_;
 
     // The driver step takes no duration (it always runs one basic time step); as in Webots,
     // step(int) cannot be called on a Driver.
