@@ -13,6 +13,7 @@
 //! Units: m, rad (positive steers right), rad/s, s; km/h and ms where the Webots API uses them.
 
 mod camera;
+mod keyboard;
 mod sensors;
 mod simulation;
 mod sweep;
@@ -36,6 +37,7 @@ fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     webots::register(m)?;
     sensors::register(m)?;
     camera::register(m)?;
+    keyboard::register(m)?;
     simulation::register(m)?;
     sweep::register(m)?;
     Ok(())
