@@ -31,6 +31,8 @@ pub(crate) mod node {
     pub(crate) const CAMERA: i32 = 38;
     /// `WB_NODE_COMPASS`.
     pub(crate) const COMPASS: i32 = 39;
+    /// `WB_NODE_DISPLAY`.
+    pub(crate) const DISPLAY: i32 = 41;
     /// `WB_NODE_GPS`.
     pub(crate) const GPS: i32 = 44;
     /// `WB_NODE_GYRO`.
@@ -58,6 +60,7 @@ pub(crate) fn sensor_node_type(kind: DeviceKind) -> i32 {
         DeviceKind::Accelerometer => node::ACCELEROMETER,
         DeviceKind::Compass => node::COMPASS,
         DeviceKind::Camera => node::CAMERA,
+        DeviceKind::Display => node::DISPLAY,
     }
 }
 

@@ -27,6 +27,7 @@
 //!   `wb_robot_get_device_by_index` to list the robot's devices;
 //! * `webots/camera.h` and `webots/camera_recognition_object.h`: the camera and its
 //!   Recognition, rendered by `sim::devices::camera`;
+//! * `webots/display.h`: drawing into a car's `Display` (`sim::devices::display`);
 //! * `webots/keyboard.h`: the keys the world's programme presses (`sim::keyboard`).
 //!
 //! Arguments and results follow the C ABI of the headers: C `bool` is one byte (any non-zero
@@ -67,6 +68,7 @@ mod camera_api;
 mod car_api;
 mod device_api;
 mod devices;
+mod display_api;
 mod differential_wheels_api;
 mod driver_api;
 mod keyboard_api;
@@ -81,6 +83,7 @@ pub use abi::WbDeviceTag;
 pub use camera_api::*;
 pub use car_api::*;
 pub use device_api::*;
+pub use display_api::*;
 pub use differential_wheels_api::*;
 pub use driver_api::*;
 pub use keyboard_api::*;

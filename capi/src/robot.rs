@@ -9,6 +9,7 @@ use sim::keyboard::Keyboard;
 use sim::world_file::{self, WorldDescription};
 use sim::{RobotId, SimError, Simulation, VehicleId};
 
+use crate::display_api::Images;
 use crate::abi::WbDeviceTag;
 use crate::devices::{self, CAR_TAGS, DeviceEntry};
 use crate::sensor::Buffers;
@@ -69,6 +70,8 @@ pub(crate) struct Robot {
     /// The keyboard of a DifferentialWheels robot's controller: no programme presses its keys
     /// (a car's keyboard is the simulation's).
     pub(crate) robot_keyboard: Keyboard,
+    /// The images of `wb_display_image_*`, by handle.
+    pub(crate) images: Images,
 }
 
 impl Robot {
@@ -162,6 +165,7 @@ impl Robot {
             devices,
             buffers,
             robot_keyboard: Keyboard::default(),
+            images: Images::default(),
         })
     }
 

@@ -77,9 +77,10 @@ fn table_of(settings: &DeviceSettings) -> Box<[f64]> {
         DeviceSettings::Gyro(s) | DeviceSettings::Accelerometer(s) | DeviceSettings::Compass(s) => {
             s.lookup_table.rows().iter().flatten().copied().collect()
         }
-        DeviceSettings::Gps(_) | DeviceSettings::InertialUnit(_) | DeviceSettings::Camera(_) => {
-            Box::new([])
-        }
+        DeviceSettings::Gps(_)
+        | DeviceSettings::InertialUnit(_)
+        | DeviceSettings::Camera(_)
+        | DeviceSettings::Display(_) => Box::new([]),
     }
 }
 
@@ -92,6 +93,7 @@ pub(crate) fn prefix(kind: DeviceKind) -> &'static str {
         DeviceKind::Accelerometer => "accelerometer",
         DeviceKind::Compass => "compass",
         DeviceKind::Camera => "camera",
+        DeviceKind::Display => "display",
     }
 }
 

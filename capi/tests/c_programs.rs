@@ -97,6 +97,13 @@ fn keyboard() {
     run_announcing("keyboard", Some(&world_path("keyboard.toml")), 2);
 }
 
+/// Drawing into a car's Display through webots/display.h, and the display misuse messages.
+#[test]
+fn display() {
+    // 1 wrong tag, 1 bad colour, 1 bad opacity, 1 bad format, 1 stale image.
+    run_announcing("display", Some(&world_path("display.toml")), 5);
+}
+
 /// The C++ wrapper, linked with the libraries in the other order (`-lcar -ldriver`).
 #[test]
 fn cpp_wrapper() {

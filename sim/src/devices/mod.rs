@@ -1,5 +1,5 @@
 //! Webots sensor devices on a car: `GPS`, `InertialUnit`, `Gyro`, `Accelerometer`,
-//! `Compass` and `Camera` (with its `Recognition`), mounted in the Car PROTO's sensor slots (or anywhere on the chassis), sampled as
+//! `Compass`, `Camera` (with its `Recognition`) and `Display`, mounted in the Car PROTO's sensor slots (or anywhere on the chassis), sampled as
 //! Webots samples them. The measurements are written here once; the C API and Python only
 //! marshal them.
 //!
@@ -21,6 +21,7 @@
 //!   points to world +y; the inertial unit's yaw is 0 with the device's x axis along world +x.
 
 pub mod camera;
+pub mod display;
 mod gps;
 mod inertial_unit;
 mod lookup;
@@ -39,6 +40,7 @@ use camera::solids::Solids;
 pub use camera::{
     CameraSettings, CameraState, Occlusion, RecognitionObject, RecognitionSettings,
 };
+pub use display::{Display, DisplayImage, DisplaySettings, PixelFormat};
 pub use gps::{GpsReading, GpsSettings};
 pub use inertial_unit::{InertialUnitReading, InertialUnitSettings};
 pub use lookup::LookupTable;
@@ -115,6 +117,9 @@ pub enum DeviceError {
     /// Recognition asked of a device that is no camera with a `recognition` node.
     #[error("device '{0}' has no Recognition (a Camera with a `recognition` node)")]
     NoRecognition(String),
+    /// A display asked of a device that is no `Display`.
+    #[error("device '{0}' is no Display")]
+    NotDisplay(String),
     /// A device index the car does not have.
     #[error("no device {index} on this car (it has {count})")]
     Unknown {
@@ -137,6 +142,8 @@ pub enum Reading {
     Vector(Vector3<f64>),
     /// A camera's: its image and objects are in [`Device::camera`].
     Camera,
+    /// A display's: no measurement; its image is in [`Device::display`].
+    Display,
 }
 
 /// A device on a car: its fields, its frame on the chassis, its sampling state and its last
@@ -159,6 +166,8 @@ pub struct Device {
     reading: Reading,
     /// A camera's image, objects and Recognition sampling.
     camera: Option<Box<CameraState>>,
+    /// A display's image and drawing context.
+    display: Option<Box<Display>>,
 }
 
 impl Device {
@@ -195,6 +204,16 @@ impl Device {
     /// A camera's image and recognised objects (`None` for other devices).
     pub fn camera(&self) -> Option<&CameraState> {
         self.camera.as_deref()
+    }
+
+    /// A display's image and context (`None` for other devices).
+    pub fn display(&self) -> Option<&Display> {
+        self.display.as_deref()
+    }
+
+    /// A display to draw into (`None` for other devices).
+    pub fn display_mut(&mut self) -> Option<&mut Display> {
+        self.display.as_deref_mut()
     }
 
     /// True if a camera of it is to render at `now_ms` (its image or its Recognition due).
@@ -269,6 +288,7 @@ impl Device {
             DeviceSettings::Accelerometer(s) => vector(Quantity::SpecificForce, previous, s, rng),
             DeviceSettings::Compass(s) => vector(Quantity::North, previous, s, rng),
             DeviceSettings::Camera(_) => Reading::Camera,
+            DeviceSettings::Display(_) => Reading::Display,
         };
     }
 }
@@ -390,6 +410,11 @@ impl CarDevices {
                     Reading::Vector(Vector3::repeat(f64::NAN))
                 }
                 DeviceKind::Camera => Reading::Camera,
+                DeviceKind::Display => Reading::Display,
+            };
+            let display = match &spec.settings {
+                DeviceSettings::Display(s) => Some(Box::new(Display::new(s))),
+                _ => None,
             };
             let camera = match &spec.settings {
                 DeviceSettings::Camera(s) => Some(Box::new(CameraState::new(s))),
@@ -406,6 +431,7 @@ impl CarDevices {
                 previous_velocity: PreviousVelocity::default(),
                 reading,
                 camera,
+                display,
             });
         }
         Ok(CarDevices { devices })
@@ -430,6 +456,17 @@ impl CarDevices {
             .ok_or(DeviceError::Unknown { index, count })?;
         device.enable(period_ms, now_ms);
         Ok(())
+    }
+
+    /// Display `index`, to draw into.
+    pub(crate) fn display_mut(&mut self, index: usize) -> Result<&mut Display, DeviceError> {
+        let count = self.devices.len();
+        let device = self
+            .devices
+            .get_mut(index)
+            .ok_or(DeviceError::Unknown { index, count })?;
+        let name = device.name.clone();
+        device.display_mut().ok_or(DeviceError::NotDisplay(name))
     }
 
     /// Enables the Recognition of camera `index` with a period of `period_ms` ms (0

@@ -6,7 +6,7 @@ use proto_geom::nalgebra::{UnitQuaternion, Vector3};
 
 use crate::error::ParamError;
 
-use super::{CameraSettings, GpsSettings, InertialUnitSettings, TriaxialSettings};
+use super::{CameraSettings, DisplaySettings, GpsSettings, InertialUnitSettings, TriaxialSettings};
 
 /// The kinds of device.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -23,17 +23,20 @@ pub enum DeviceKind {
     Compass,
     /// Webots `Camera`.
     Camera,
+    /// Webots `Display`.
+    Display,
 }
 
 impl DeviceKind {
     /// Every kind.
-    pub const ALL: [DeviceKind; 6] = [
+    pub const ALL: [DeviceKind; 7] = [
         DeviceKind::Gps,
         DeviceKind::InertialUnit,
         DeviceKind::Gyro,
         DeviceKind::Accelerometer,
         DeviceKind::Compass,
         DeviceKind::Camera,
+        DeviceKind::Display,
     ];
 
     /// The Webots node name (`"GPS"`, `"InertialUnit"`, …).
@@ -45,6 +48,7 @@ impl DeviceKind {
             DeviceKind::Accelerometer => "Accelerometer",
             DeviceKind::Compass => "Compass",
             DeviceKind::Camera => "Camera",
+            DeviceKind::Display => "Display",
         }
     }
 
@@ -64,6 +68,7 @@ impl DeviceKind {
             DeviceKind::Accelerometer => "accelerometer",
             DeviceKind::Compass => "compass",
             DeviceKind::Camera => "camera",
+            DeviceKind::Display => "display",
         }
     }
 }
@@ -119,6 +124,8 @@ pub enum DeviceSettings {
     Compass(TriaxialSettings),
     /// A `Camera` (and its `Recognition`).
     Camera(CameraSettings),
+    /// A `Display`.
+    Display(DisplaySettings),
 }
 
 impl DeviceSettings {
@@ -131,6 +138,7 @@ impl DeviceSettings {
             DeviceSettings::Accelerometer(_) => DeviceKind::Accelerometer,
             DeviceSettings::Compass(_) => DeviceKind::Compass,
             DeviceSettings::Camera(_) => DeviceKind::Camera,
+            DeviceSettings::Display(_) => DeviceKind::Display,
         }
     }
 
@@ -145,6 +153,7 @@ impl DeviceSettings {
             DeviceKind::Accelerometer => DeviceSettings::Accelerometer(TriaxialSettings::default()),
             DeviceKind::Compass => DeviceSettings::Compass(TriaxialSettings::default()),
             DeviceKind::Camera => DeviceSettings::Camera(CameraSettings::default()),
+            DeviceKind::Display => DeviceSettings::Display(DisplaySettings::default()),
         }
     }
 
@@ -160,6 +169,7 @@ impl DeviceSettings {
             | DeviceSettings::Accelerometer(s)
             | DeviceSettings::Compass(s) => s.validate(),
             DeviceSettings::Camera(s) => s.validate(),
+            DeviceSettings::Display(s) => s.validate(),
         }
     }
 }

@@ -478,6 +478,24 @@ impl Simulation {
         self.car(id).map(|c| c.devices.all())
     }
 
+    /// Display `index` of car `id`, to draw into (Webots: the `wb_display_*` functions).
+    ///
+    /// # Errors
+    /// [`SimError::UnknownVehicle`]; [`SimError::Device`] for an index the car does not have
+    /// or a device that is no display.
+    pub fn display_mut(
+        &mut self,
+        id: VehicleId,
+        index: usize,
+    ) -> Result<&mut crate::devices::Display, SimError> {
+        let car = self
+            .cars
+            .iter_mut()
+            .find(|c| c.id == id)
+            .ok_or(SimError::UnknownVehicle(id.index()))?;
+        Ok(car.devices.display_mut(index)?)
+    }
+
     /// The keyboard of car `id`'s controller: the keys its programme presses
     /// ([`crate::keyboard`]).
     ///

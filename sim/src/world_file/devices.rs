@@ -10,7 +10,7 @@ use vehicle_model::Model;
 use super::error::{NameSet, WorldFileError, WorldFileErrorKind};
 use super::read::{Section, as_f64, describe, missing};
 use crate::devices::{
-    Axes, CAR_DEVICE_NAMES, CameraSettings, DeviceKind, DeviceSettings, DeviceSpec, GpsSettings,
+    Axes, CAR_DEVICE_NAMES, CameraSettings, DeviceKind, DisplaySettings, DeviceSettings, DeviceSpec, GpsSettings,
     InertialUnitSettings, LookupTable, Occlusion, RecognitionSettings, TriaxialSettings,
 };
 use crate::error::ParamError;
@@ -44,6 +44,8 @@ const CAMERA: [&str; 8] = [
     "projection",
     "recognition",
 ];
+/// The `Display` fields.
+const DISPLAY: [&str; 2] = ["width", "height"];
 /// The `Recognition` fields.
 const RECOGNITION: [&str; 3] = ["maxRange", "maxObjects", "occlusion"];
 
@@ -94,6 +96,7 @@ fn read_device(d: &Section<'_, '_>, model: Model) -> Result<DeviceSpec, WorldFil
         DeviceKind::InertialUnit => &INERTIAL_UNIT,
         DeviceKind::Gyro | DeviceKind::Accelerometer | DeviceKind::Compass => &TRIAXIAL,
         DeviceKind::Camera => &CAMERA,
+        DeviceKind::Display => &DISPLAY,
     };
     let allowed: Vec<&str> = COMMON.iter().chain(fields).copied().collect();
     d.check_keys(&allowed)?;
@@ -104,6 +107,13 @@ fn read_device(d: &Section<'_, '_>, model: Model) -> Result<DeviceSpec, WorldFil
         DeviceKind::Accelerometer => DeviceSettings::Accelerometer(read_triaxial(d)?),
         DeviceKind::Compass => DeviceSettings::Compass(read_triaxial(d)?),
         DeviceKind::Camera => DeviceSettings::Camera(read_camera(d)?),
+        DeviceKind::Display => {
+            let defaults = DisplaySettings::default();
+            DeviceSettings::Display(DisplaySettings {
+                width: pixels(d, "width")?.unwrap_or(defaults.width),
+                height: pixels(d, "height")?.unwrap_or(defaults.height),
+            })
+        }
     };
     settings.validate().map_err(|e| invalid(d, &e))?;
     let mut spec = DeviceSpec::new(settings);

@@ -10,7 +10,7 @@
 //   no Supervisor or Robot C++ classes, so Driver derives from nothing; of the Robot methods it
 //   offers getTime(), getBasicTimeStep(), getNumberOfDevices() and the typed device getters of
 //   the sensors this simulator has (getGPS, getInertialUnit, getGyro, getAccelerometer,
-//   getCompass, getCamera; nullptr for a name the car lacks or a device of another type).
+//   getCompass, getCamera, getDisplay, getKeyboard; nullptr for a name the car lacks or a device of another type).
 // * Header-only: every method is inline and calls the C function of the same meaning, so only
 //   libdriver.so and libcar.so are needed at link time (no libCppDriver).
 // * The destructor releases the singleton, so a new Driver may be created after the previous
@@ -32,6 +32,7 @@
 #include <webots/Accelerometer.hpp>
 #include <webots/Camera.hpp>
 #include <webots/Compass.hpp>
+#include <webots/Display.hpp>
 #include <webots/GPS.hpp>
 #include <webots/Gyro.hpp>
 #include <webots/InertialUnit.hpp>
@@ -113,6 +114,7 @@ namespace webots {
     Accelerometer *getAccelerometer(const std::string &name) { return device<Accelerometer>(name, WB_NODE_ACCELEROMETER); }
     Compass *getCompass(const std::string &name) { return device<Compass>(name, WB_NODE_COMPASS); }
     Camera *getCamera(const std::string &name) { return device<Camera>(name, WB_NODE_CAMERA); }
+    Display *getDisplay(const std::string &name) { return device<Display>(name, WB_NODE_DISPLAY); }
     // The keyboard, owned by the Driver (its keys: the world's programme's).
     Keyboard *getKeyboard() {
       if (!keyboard_)
