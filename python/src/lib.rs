@@ -13,6 +13,7 @@
 //! Units: m, rad (positive steers right), rad/s, s; km/h and ms where the Webots API uses them.
 
 mod camera;
+mod display;
 mod keyboard;
 mod sensors;
 mod simulation;
@@ -37,6 +38,7 @@ fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     webots::register(m)?;
     sensors::register(m)?;
     camera::register(m)?;
+    display::register(m)?;
     keyboard::register(m)?;
     simulation::register(m)?;
     sweep::register(m)?;
