@@ -73,9 +73,10 @@ fn camera(c: &mut Criterion) {
         // Every 10 ms step, image and Recognition: each step renders once.
         sim.enable_device(id, 0, 10).unwrap();
         sim.enable_recognition(id, 0, 10).unwrap();
-        g.bench_function(BenchmarkId::new("step_with_camera", format!("{w}x{h}")), |b| {
-            b.iter(|| sim.step().unwrap())
-        });
+        g.bench_function(
+            BenchmarkId::new("step_with_camera", format!("{w}x{h}")),
+            |b| b.iter(|| sim.step().unwrap()),
+        );
     }
     g.finish();
 }

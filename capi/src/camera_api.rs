@@ -141,7 +141,8 @@ pub mod camera_values {
     pub fn wb_camera_get_image(tag: WbDeviceTag) -> Option<Vec<u8>> {
         with_robot(|r| {
             image(r, tag)?;
-            camera(r, tag, "wb_camera_get_image").and_then(|(_, d)| Some(d.camera()?.image().to_vec()))
+            camera(r, tag, "wb_camera_get_image")
+                .and_then(|(_, d)| Some(d.camera()?.image().to_vec()))
         })
     }
 
@@ -154,7 +155,11 @@ pub mod camera_values {
 }
 
 /// The objects of the camera with `tag` (errors without Recognition or when disabled).
-fn objects<'r>(robot: &'r Robot, tag: WbDeviceTag, function: &str) -> Option<&'r [RecognitionObject]> {
+fn objects<'r>(
+    robot: &'r Robot,
+    tag: WbDeviceTag,
+    function: &str,
+) -> Option<&'r [RecognitionObject]> {
     let (_, d) = with_recognition(robot, tag, function)?;
     let state = d.camera()?;
     if state.recognition_period_ms() == 0 {
@@ -180,7 +185,9 @@ fn enable_recognition(robot: &mut Robot, tag: WbDeviceTag, period_ms: c_int, fun
     };
     if with_recognition(robot, tag, function).is_some() {
         // Found on this car, with Recognition: enabling cannot fail.
-        let _ = robot.simulation.enable_recognition(found.0, found.1, period);
+        let _ = robot
+            .simulation
+            .enable_recognition(found.0, found.1, period);
     }
 }
 

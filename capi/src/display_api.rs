@@ -7,7 +7,7 @@
 
 use std::ffi::{c_int, c_void};
 
-use sim::devices::{Display, DisplayImage, DeviceKind, PixelFormat};
+use sim::devices::{DeviceKind, Display, DisplayImage, PixelFormat};
 
 use crate::abi::WbDeviceTag;
 use crate::message;
@@ -224,7 +224,9 @@ pub unsafe extern "C" fn wb_display_image_new(
 ) -> WbImageRef {
     let Some(f) = PixelFormat::from_code(format) else {
         crate::guard::call("wb_display_image_new", || {
-            message::error(format_args!("wb_display_image_new(): unknown image format {format}."));
+            message::error(format_args!(
+                "wb_display_image_new(): unknown image format {format}."
+            ));
         });
         return std::ptr::null_mut();
     };
@@ -281,9 +283,7 @@ pub extern "C" fn wb_display_image_delete(tag: WbDeviceTag, image: WbImageRef) {
     let handle = image as usize;
     crate::guard::call("wb_display_image_delete", move || {
         with_robot(|r| {
-            if display(r, tag, "wb_display_image_delete").is_some()
-                && !r.images.remove(handle)
-            {
+            if display(r, tag, "wb_display_image_delete").is_some() && !r.images.remove(handle) {
                 message::error("wb_display_image_delete(): invalid image reference.");
             }
         })

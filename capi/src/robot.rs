@@ -9,9 +9,9 @@ use sim::keyboard::Keyboard;
 use sim::world_file::{self, WorldDescription};
 use sim::{RobotId, SimError, Simulation, VehicleId};
 
-use crate::display_api::Images;
 use crate::abi::WbDeviceTag;
 use crate::devices::{self, CAR_TAGS, DeviceEntry};
+use crate::display_api::Images;
 use crate::sensor::Buffers;
 
 /// The environment variable that selects the world: a world file path or a shipped model name.

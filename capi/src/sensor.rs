@@ -51,7 +51,10 @@ impl Buffers {
                 .collect(),
             tables: sensors.iter().map(|d| table_of(d.settings())).collect(),
             roll_pitch_yaw: Box::new([f64::NAN; 3]),
-            recognition: sensors.iter().map(|_| RecognitionStore::default()).collect(),
+            recognition: sensors
+                .iter()
+                .map(|_| RecognitionStore::default())
+                .collect(),
         }
     }
 

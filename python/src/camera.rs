@@ -27,7 +27,10 @@ fn wb_camera_get_image(py: Python<'_>, tag: u16) -> Option<Py<PyBytes>> {
 /// Width, height (px); −1 for a wrong tag.
 #[pyfunction]
 fn wb_camera_get_size(tag: u16) -> (i32, i32) {
-    (car::wb_camera_get_width(tag), car::wb_camera_get_height(tag))
+    (
+        car::wb_camera_get_width(tag),
+        car::wb_camera_get_height(tag),
+    )
 }
 
 /// Field of view, its minimum and maximum (rad), near plane (m).
@@ -113,8 +116,14 @@ pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(wb_camera_get_optics, m)?)?;
     m.add_function(wrap_pyfunction!(wb_camera_has_recognition, m)?)?;
     m.add_function(wrap_pyfunction!(wb_camera_recognition_enable, m)?)?;
-    m.add_function(wrap_pyfunction!(wb_camera_recognition_get_sampling_period, m)?)?;
-    m.add_function(wrap_pyfunction!(wb_camera_recognition_get_number_of_objects, m)?)?;
+    m.add_function(wrap_pyfunction!(
+        wb_camera_recognition_get_sampling_period,
+        m
+    )?)?;
+    m.add_function(wrap_pyfunction!(
+        wb_camera_recognition_get_number_of_objects,
+        m
+    )?)?;
     m.add_function(wrap_pyfunction!(wb_camera_recognition_get_objects, m)?)?;
     m.add_function(wrap_pyfunction!(wb_camera_recognition_has_segmentation, m)?)?;
     Ok(())

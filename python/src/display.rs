@@ -8,7 +8,10 @@ use pyo3::prelude::*;
 /// Width and height (px); −1 for a wrong tag.
 #[pyfunction]
 fn wb_display_get_size(tag: u16) -> (i32, i32) {
-    (car::wb_display_get_width(tag), car::wb_display_get_height(tag))
+    (
+        car::wb_display_get_width(tag),
+        car::wb_display_get_height(tag),
+    )
 }
 
 /// Sets the colour (`0xRRGGBB`).

@@ -6,8 +6,8 @@
 use proto_geom::SensorSlots;
 use vehicle_model::{BrakeBalance, CarParams, Driver, Model, ParamReport};
 
-use crate::keyboard::{KeyPress, Keyboard};
 use crate::devices::{CarDevices, DeviceSpec};
+use crate::keyboard::{KeyPress, Keyboard};
 
 use crate::error::SimError;
 use crate::placement::car_placement;

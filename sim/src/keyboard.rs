@@ -47,7 +47,10 @@ pub fn parse_key(text: &str) -> Option<i32> {
     let mut code = 0;
     let mut rest = text;
     loop {
-        let Some((modifier, tail)) = rest.split_once('+').filter(|(m, t)| !m.is_empty() && !t.is_empty()) else {
+        let Some((modifier, tail)) = rest
+            .split_once('+')
+            .filter(|(m, t)| !m.is_empty() && !t.is_empty())
+        else {
             break;
         };
         code |= match modifier {
@@ -75,8 +78,13 @@ pub fn check_code(code: i64) -> Result<i32, ParamError> {
         let c = c as i64;
         c & i64::from(KEY) != 0 && c & !i64::from(KEY | SHIFT | CONTROL | ALT) == 0
     };
-    ParamError::check("key", code as f64, "a key code 1 to 0xFFFF with SHIFT, CONTROL or ALT bits", ok)
-        .map(|c| c as i32)
+    ParamError::check(
+        "key",
+        code as f64,
+        "a key code 1 to 0xFFFF with SHIFT, CONTROL or ALT bits",
+        ok,
+    )
+    .map(|c| c as i32)
 }
 
 /// One key pressed by a programme.
@@ -129,7 +137,11 @@ impl Keyboard {
     }
 
     fn skip_until(&mut self, now_ms: u64) {
-        while self.presses.get(self.next_press).is_some_and(|p| p.at_ms <= now_ms) {
+        while self
+            .presses
+            .get(self.next_press)
+            .is_some_and(|p| p.at_ms <= now_ms)
+        {
             self.next_press += 1;
         }
     }
@@ -147,7 +159,11 @@ impl Keyboard {
             return;
         }
         self.last_ms = now_ms;
-        while let Some(p) = self.presses.get(self.next_press).filter(|p| p.at_ms <= now_ms) {
+        while let Some(p) = self
+            .presses
+            .get(self.next_press)
+            .filter(|p| p.at_ms <= now_ms)
+        {
             if self.held.len() < MAX_KEYS {
                 self.held.push(p.code);
             }
@@ -190,8 +206,14 @@ mod tests {
     #[test]
     fn a_press_is_held_by_one_sample_and_read_once() {
         let mut k = Keyboard::new(vec![
-            KeyPress { at_ms: 25, code: 65 },
-            KeyPress { at_ms: 25, code: 66 },
+            KeyPress {
+                at_ms: 25,
+                code: 65,
+            },
+            KeyPress {
+                at_ms: 25,
+                code: 66,
+            },
             KeyPress { at_ms: 5, code: 67 },
         ]);
         k.enable(20, 10); // the press at 5 ms came before enabling: never seen

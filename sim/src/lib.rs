@@ -78,10 +78,10 @@
 #[doc = include_str!("../README.md")]
 struct ReadmeDoctests;
 
+pub mod appearance;
 mod attitude;
 mod body;
 mod car_builder;
-pub mod appearance;
 #[cfg(feature = "app")]
 pub mod cli;
 pub mod devices;

@@ -99,8 +99,10 @@ fn a_box_covers_the_pixels_the_pinhole_predicts() {
             // the corners' projections are not a perfect rectangle when the camera has
             // a little pitch or roll; pixels within 0.5 px of an edge are left out.
             let margin = 0.5;
-            let is_in = u > lo_u + margin && u < hi_u - margin && v > lo_v + margin && v < hi_v - margin;
-            let is_out = u < lo_u - margin || u > hi_u + margin || v < lo_v - margin || v > hi_v + margin;
+            let is_in =
+                u > lo_u + margin && u < hi_u - margin && v > lo_v + margin && v < hi_v - margin;
+            let is_out =
+                u < lo_u - margin || u > hi_u + margin || v < lo_v - margin || v > hi_v + margin;
             let px = rgb(image, 128, i, j);
             if is_in {
                 assert_eq!(px, face, "pixel ({i}, {j}) inside the box's projection");
@@ -129,8 +131,16 @@ fn recognition_reports_the_box_where_it_is() {
     let expected = pose.inverse() * Point3::new(15.0, 0.5, 1.0);
     // Within 1 cm (the bound); the render and the expectation share the pose, so
     // the difference is rounding (< 1e-9 m).
-    assert!((o.position - expected.coords).norm() < 0.01, "{:?} vs {expected}", o.position);
-    assert!((o.size[0] - 2.0).abs() < 0.05 && (o.size[1] - 2.0).abs() < 0.05, "{:?}", o.size);
+    assert!(
+        (o.position - expected.coords).norm() < 0.01,
+        "{:?} vs {expected}",
+        o.position
+    );
+    assert!(
+        (o.size[0] - 2.0).abs() < 0.05 && (o.size[1] - 2.0).abs() < 0.05,
+        "{:?}",
+        o.size
+    );
     assert_eq!(o.colors, vec![[1.0, 0.0, 0.0]]);
     // The box's axes are the world's; the camera is level within the car's settling (mrad).
     assert!(o.orientation[3].abs() < 0.01, "{:?}", o.orientation);
@@ -144,14 +154,23 @@ fn recognition_reports_the_box_where_it_is() {
         })
         .collect();
     let span = |axis: usize| {
-        let lo = projected.iter().map(|p| p[axis]).fold(f64::INFINITY, f64::min);
-        let hi = projected.iter().map(|p| p[axis]).fold(-f64::INFINITY, f64::max);
+        let lo = projected
+            .iter()
+            .map(|p| p[axis])
+            .fold(f64::INFINITY, f64::min);
+        let hi = projected
+            .iter()
+            .map(|p| p[axis])
+            .fold(-f64::INFINITY, f64::max);
         (lo, hi)
     };
     let ((u0, u1), (v0, v1)) = (span(0), span(1));
     let [cu, cv] = o.position_on_image.map(f64::from);
     let [sw, sh] = o.size_on_image.map(f64::from);
-    assert!((sw - (u1 - u0)).abs() <= 2.0 && (sh - (v1 - v0)).abs() <= 2.0, "{sw} × {sh}");
+    assert!(
+        (sw - (u1 - u0)).abs() <= 2.0 && (sh - (v1 - v0)).abs() <= 2.0,
+        "{sw} × {sh}"
+    );
     assert!((cu - (u0 + u1) / 2.0).abs() <= 1.0 && (cv - (v0 + v1) / 2.0).abs() <= 1.0);
 }
 
@@ -227,7 +246,9 @@ fn camera_fields_are_checked() {
         ("recognition = { foo = 1 }", "foo"),
     ] {
         let text = format!("[vehicle]\n[[vehicle.device]]\ntype = \"Camera\"\n{field}\n");
-        let e = world_file::parse_str("camera.toml", &text).unwrap_err().to_string();
+        let e = world_file::parse_str("camera.toml", &text)
+            .unwrap_err()
+            .to_string();
         assert!(e.contains(error), "{field}: {e}");
         assert!(e.contains("camera.toml"), "{field}: {e}");
     }

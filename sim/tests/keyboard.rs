@@ -48,12 +48,7 @@ fn programmed_keys_arrive_at_their_times() {
     // 60 ms, the one at 100 ms at 100 ms, the one at 200 ms at 200 ms; each once.
     assert_eq!(
         seen,
-        vec![
-            (60, 65),
-            (60, CONTROL | 315),
-            (100, 66),
-            (200, SHIFT | 367)
-        ]
+        vec![(60, 65), (60, CONTROL | 315), (100, 66), (200, SHIFT | 367)]
     );
 }
 
@@ -66,9 +61,17 @@ fn a_disabled_keyboard_holds_nothing_and_bad_keys_are_refused() {
         sim.step().unwrap();
         assert_eq!(sim.next_key(id).unwrap(), -1);
     }
-    for bad in ["key = \"UPP\"", "key = \"META+A\"", "key = 0", "key = 1.5", "key = true"] {
+    for bad in [
+        "key = \"UPP\"",
+        "key = \"META+A\"",
+        "key = 0",
+        "key = 1.5",
+        "key = true",
+    ] {
         let text = format!("[vehicle]\n[[vehicle.programme]]\nat = 1\n{bad}\n");
-        let e = world_file::parse_str("keys.toml", &text).unwrap_err().to_string();
+        let e = world_file::parse_str("keys.toml", &text)
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("key") && e.contains("keys.toml"), "{bad}: {e}");
     }
 }

@@ -115,7 +115,10 @@ impl DisplayImage {
         Some(DisplayImage {
             width,
             height,
-            pixels: bytes.chunks_exact(format.bytes()).map(|p| format.argb(p)).collect(),
+            pixels: bytes
+                .chunks_exact(format.bytes())
+                .map(|p| format.argb(p))
+                .collect(),
         })
     }
 
@@ -202,7 +205,9 @@ impl Display {
     /// # Errors
     /// A [`ParamError`] naming `opacity` outside [0, 1].
     pub fn set_opacity(&mut self, opacity: f64) -> Result<(), ParamError> {
-        ParamError::check("opacity", opacity, "in [0, 1]", |o| (0.0..=1.0).contains(&o))?;
+        ParamError::check("opacity", opacity, "in [0, 1]", |o| {
+            (0.0..=1.0).contains(&o)
+        })?;
         self.opacity = (opacity * 255.0) as u8;
         Ok(())
     }
@@ -274,7 +279,10 @@ impl Display {
     pub fn fill_rectangle(&mut self, x: i32, y: i32, width: i32, height: i32) {
         let (w, h) = (self.image.width as i32, self.image.height as i32);
         let (x0, y0) = (x.max(0), y.max(0));
-        let (x1, y1) = (x.saturating_add(width).min(w), y.saturating_add(height).min(h));
+        let (x1, y1) = (
+            x.saturating_add(width).min(w),
+            y.saturating_add(height).min(h),
+        );
         for py in y0..y1 {
             for px in x0..x1 {
                 self.draw_pixel(px, py);
@@ -292,7 +300,11 @@ impl Display {
         let mut rows = Vec::new();
         for dy in -(b as i32)..=(b as i32) {
             // Half-width of the row: x²/a² + y²/b² ≤ 1.
-            let t = if b == 0.0 { 1.0 } else { 1.0 - (f64::from(dy) / b).powi(2) };
+            let t = if b == 0.0 {
+                1.0
+            } else {
+                1.0 - (f64::from(dy) / b).powi(2)
+            };
             let half = (a * t.max(0.0).sqrt()).round() as i32;
             rows.push((cy + dy, cx - half, cx + half));
         }
@@ -343,7 +355,12 @@ impl Display {
             return;
         }
         let lo = ys[..n].iter().copied().min().unwrap_or(0).max(0);
-        let hi = ys[..n].iter().copied().max().unwrap_or(-1).min(self.image.height as i32 - 1);
+        let hi = ys[..n]
+            .iter()
+            .copied()
+            .max()
+            .unwrap_or(-1)
+            .min(self.image.height as i32 - 1);
         for y in lo..=hi {
             let yc = f64::from(y) + 0.5;
             let mut crossings: Vec<f64> = Vec::new();
@@ -376,7 +393,10 @@ impl Display {
     pub fn copy(&self, x: i32, y: i32, width: i32, height: i32) -> Option<DisplayImage> {
         let (w, h) = (self.image.width as i32, self.image.height as i32);
         let (x0, y0) = (x.max(0), y.max(0));
-        let (x1, y1) = (x.saturating_add(width).min(w), y.saturating_add(height).min(h));
+        let (x1, y1) = (
+            x.saturating_add(width).min(w),
+            y.saturating_add(height).min(h),
+        );
         if x0 >= x1 || y0 >= y1 {
             return None;
         }
@@ -452,8 +472,9 @@ mod tests {
         d.draw_line(0, 0, 6, 2);
         let mut got = lit(&d, WHITE);
         got.sort();
-        let expected: Vec<(i32, i32)> =
-            (0..=6).map(|x| (x, (f64::from(x) / 3.0).round() as i32)).collect();
+        let expected: Vec<(i32, i32)> = (0..=6)
+            .map(|x| (x, (f64::from(x) / 3.0).round() as i32))
+            .collect();
         assert_eq!(got, expected);
         let mut d = display(8, 6);
         d.fill_rectangle(1, 1, 3, 2);

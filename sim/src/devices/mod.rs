@@ -37,9 +37,7 @@ use crate::rng::SplitMix64;
 use crate::vehicle::VehicleId;
 use camera::solids::Solids;
 
-pub use camera::{
-    CameraSettings, CameraState, Occlusion, RecognitionObject, RecognitionSettings,
-};
+pub use camera::{CameraSettings, CameraState, Occlusion, RecognitionObject, RecognitionSettings};
 pub use display::{Display, DisplayImage, DisplaySettings, PixelFormat};
 pub use gps::{GpsReading, GpsSettings};
 pub use inertial_unit::{InertialUnitReading, InertialUnitSettings};
@@ -218,9 +216,9 @@ impl Device {
 
     /// True if a camera of it is to render at `now_ms` (its image or its Recognition due).
     fn renders_at(&self, now_ms: u64) -> bool {
-        self.camera.as_ref().is_some_and(|c| {
-            self.due(now_ms) || c.recognition_due(now_ms)
-        })
+        self.camera
+            .as_ref()
+            .is_some_and(|c| self.due(now_ms) || c.recognition_due(now_ms))
     }
 
     /// True if it is enabled and a full period has passed since its last sample.
@@ -257,7 +255,15 @@ impl Device {
                     self.last_ms = now_ms;
                 }
                 let pose = chassis.pose * self.mount;
-                camera.sample(settings, &pose, solids, Some(own), image, now_ms, &mut self.rng);
+                camera.sample(
+                    settings,
+                    &pose,
+                    solids,
+                    Some(own),
+                    image,
+                    now_ms,
+                    &mut self.rng,
+                );
             }
             return;
         }
@@ -496,7 +502,10 @@ impl CarDevices {
     /// the chassis.
     pub(crate) fn any_enabled(&self) -> bool {
         self.devices.iter().any(|d| {
-            d.period_ms != 0 || d.camera.as_ref().is_some_and(|c| c.recognition_period_ms() != 0)
+            d.period_ms != 0
+                || d.camera
+                    .as_ref()
+                    .is_some_and(|c| c.recognition_period_ms() != 0)
         })
     }
 

@@ -10,8 +10,9 @@ use vehicle_model::Model;
 use super::error::{NameSet, WorldFileError, WorldFileErrorKind};
 use super::read::{Section, as_f64, describe, missing};
 use crate::devices::{
-    Axes, CAR_DEVICE_NAMES, CameraSettings, DeviceKind, DisplaySettings, DeviceSettings, DeviceSpec, GpsSettings,
-    InertialUnitSettings, LookupTable, Occlusion, RecognitionSettings, TriaxialSettings,
+    Axes, CAR_DEVICE_NAMES, CameraSettings, DeviceKind, DeviceSettings, DeviceSpec,
+    DisplaySettings, GpsSettings, InertialUnitSettings, LookupTable, Occlusion,
+    RecognitionSettings, TriaxialSettings,
 };
 use crate::error::ParamError;
 

@@ -391,13 +391,21 @@ fn read_looks(
     let mut found = Vec::new();
     let obstacles = root.tables("box")?.into_iter().chain(root.tables("ramp")?);
     for (i, s) in obstacles.enumerate() {
-        found.push(looks::read_look(&s, SceneObject::Obstacle(i), OBSTACLE_COLOR)?);
+        found.push(looks::read_look(
+            &s,
+            SceneObject::Obstacle(i),
+            OBSTACLE_COLOR,
+        )?);
     }
     for (i, s) in root.tables("body")?.iter().enumerate() {
         found.push(looks::read_look(s, SceneObject::Body(i), BODY_COLOR)?);
     }
     for (i, s) in cars.iter().enumerate() {
-        found.push(looks::read_look(s, SceneObject::Car(i), PALETTE[i % PALETTE.len()])?);
+        found.push(looks::read_look(
+            s,
+            SceneObject::Car(i),
+            PALETTE[i % PALETTE.len()],
+        )?);
     }
     if let Some(s) = robot {
         let colour = PALETTE[cars.len() % PALETTE.len()];

@@ -133,9 +133,10 @@ pub(crate) fn recognise(
         }
         let (lo_y, hi_y) = extent(&corners, 1);
         let (lo_z, hi_z) = extent(&corners, 2);
-        let orientation = local.rotation.axis_angle().map_or([0.0, 0.0, 1.0, 0.0], |(a, t)| {
-            [a.x, a.y, a.z, t]
-        });
+        let orientation = local
+            .rotation
+            .axis_angle()
+            .map_or([0.0, 0.0, 1.0, 0.0], |(a, t)| [a.x, a.y, a.z, t]);
         let [u0, v0, u1, v1] = rect;
         found.push(RecognitionObject {
             id: s.id,
@@ -150,7 +151,9 @@ pub(crate) fn recognise(
     }
     if let Ok(n) = usize::try_from(settings.max_objects) {
         // The largest on the image first; ties keep the world's order.
-        found.sort_by_key(|o| std::cmp::Reverse(i64::from(o.size_on_image[0]) * i64::from(o.size_on_image[1])));
+        found.sort_by_key(|o| {
+            std::cmp::Reverse(i64::from(o.size_on_image[0]) * i64::from(o.size_on_image[1]))
+        });
         found.truncate(n);
     }
     found
@@ -158,9 +161,11 @@ pub(crate) fn recognise(
 
 /// The smallest and largest coordinate `axis` of `points`.
 fn extent(points: &[Point3<f64>], axis: usize) -> (f64, f64) {
-    points.iter().fold((f64::INFINITY, -f64::INFINITY), |(lo, hi), p| {
-        (lo.min(p[axis]), hi.max(p[axis]))
-    })
+    points
+        .iter()
+        .fold((f64::INFINITY, -f64::INFINITY), |(lo, hi), p| {
+            (lo.min(p[axis]), hi.max(p[axis]))
+        })
 }
 
 /// The pixel rectangle `[u0, v0, u1, v1)` the box of camera-frame `corners` covers on the

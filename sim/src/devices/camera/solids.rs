@@ -85,7 +85,8 @@ impl Solids {
         }
         for (i, (spec, pose)) in config.bodies.iter().zip(world.bodies()).enumerate() {
             let (corners, faces) = cuboid(Point3::origin(), spec.size / 2.0);
-            let pose = Isometry3::from_parts(Translation3::from(pose.position.coords), pose.rotation);
+            let pose =
+                Isometry3::from_parts(Translation3::from(pose.position.coords), pose.rotation);
             push(SceneObject::Body(i), BODY_COLOR, None, pose, corners, faces);
         }
         let vehicles = world.vehicles();
@@ -128,12 +129,16 @@ fn solid(
     faces: &[Vec<usize>],
     appearance: Appearance,
 ) -> Solid {
-    let (mut lo, mut hi) = (Vector3::repeat(f64::INFINITY), Vector3::repeat(-f64::INFINITY));
+    let (mut lo, mut hi) = (
+        Vector3::repeat(f64::INFINITY),
+        Vector3::repeat(-f64::INFINITY),
+    );
     for p in corners {
         lo = lo.inf(&p.coords);
         hi = hi.sup(&p.coords);
     }
-    let centroid = corners.iter().fold(Vector3::zeros(), |s, p| s + p.coords) / corners.len() as f64;
+    let centroid =
+        corners.iter().fold(Vector3::zeros(), |s, p| s + p.coords) / corners.len() as f64;
     let mut triangles = Vec::new();
     for face in faces {
         let Some(a) = face.first().and_then(|&k| corners.get(k)) else {
@@ -147,7 +152,11 @@ fn solid(
                 continue;
             };
             // Convex: the outward side is the one away from the centroid.
-            let n = if n.dot(&(a.coords - centroid)) < 0.0 { -n } else { n };
+            let n = if n.dot(&(a.coords - centroid)) < 0.0 {
+                -n
+            } else {
+                n
+            };
             triangles.push(([*a, *b, *c], n));
         }
     }
@@ -212,7 +221,9 @@ fn prism(radius: f64, height: f64) -> Polyhedron {
             Point3::new(radius * a.cos(), radius * a.sin(), z)
         })
         .collect();
-    let mut faces: Vec<Vec<usize>> = (0..n).map(|k| vec![k, (k + 1) % n, n + (k + 1) % n, n + k]).collect();
+    let mut faces: Vec<Vec<usize>> = (0..n)
+        .map(|k| vec![k, (k + 1) % n, n + (k + 1) % n, n + k])
+        .collect();
     faces.push((0..n).collect());
     faces.push((n..2 * n).collect());
     (corners, faces)
