@@ -46,13 +46,10 @@ pub const SPECIAL_KEYS: [(&str, i32); 14] = [
 pub fn parse_key(text: &str) -> Option<i32> {
     let mut code = 0;
     let mut rest = text;
-    loop {
-        let Some((modifier, tail)) = rest
-            .split_once('+')
-            .filter(|(m, t)| !m.is_empty() && !t.is_empty())
-        else {
-            break;
-        };
+    while let Some((modifier, tail)) = rest
+        .split_once('+')
+        .filter(|(m, t)| !m.is_empty() && !t.is_empty())
+    {
         code |= match modifier {
             "SHIFT" => SHIFT,
             "CONTROL" => CONTROL,

@@ -255,15 +255,12 @@ impl Device {
                     self.last_ms = now_ms;
                 }
                 let pose = chassis.pose * self.mount;
-                camera.sample(
-                    settings,
-                    &pose,
+                let view = camera::View {
+                    pose: &pose,
                     solids,
-                    Some(own),
-                    image,
-                    now_ms,
-                    &mut self.rng,
-                );
+                    own: Some(own),
+                };
+                camera.sample(settings, &view, image, now_ms, &mut self.rng);
             }
             return;
         }

@@ -51,6 +51,8 @@ pub struct CameraSettings {
 }
 
 impl Default for CameraSettings {
+    // Webots' `fieldOfView` default is this six-digit literal, not π/4.
+    #[allow(clippy::approx_constant)]
     fn default() -> Self {
         CameraSettings {
             field_of_view: 0.785398,
@@ -115,6 +117,15 @@ impl CameraSettings {
     }
 }
 
+/// Where a camera looks from: its pose (camera frame → world, m), the world's solids and the
+/// car it rides on (whose body it does not see).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct View<'a> {
+    pub pose: &'a Isometry3<f64>,
+    pub solids: &'a Solids,
+    pub own: Option<VehicleId>,
+}
+
 /// A camera's images and recognised objects, and its Recognition's sampling.
 #[derive(Debug, Clone)]
 pub struct CameraState {
@@ -172,19 +183,18 @@ impl CameraState {
             && now_ms - self.recognition_last_ms >= u64::from(self.recognition_period_ms)
     }
 
-    /// Renders what the camera of `settings` at `pose` (camera frame → world) on car `own`
-    /// sees of `solids`; keeps the image if `image` is due (with noise from `rng`), and
-    /// recognises the objects if Recognition is due at `now_ms`.
+    /// Renders what the camera of `settings` sees from `view`; keeps the image if `image` is
+    /// due (with noise from `rng`), and recognises the objects if Recognition is due at
+    /// `now_ms`.
     pub(crate) fn sample(
         &mut self,
         settings: &CameraSettings,
-        pose: &Isometry3<f64>,
-        solids: &Solids,
-        own: Option<VehicleId>,
+        view: &View<'_>,
         image: bool,
         now_ms: u64,
         rng: &mut SplitMix64,
     ) {
+        let View { pose, solids, own } = *view;
         let pin = settings.pinhole();
         self.frame.render(&pin, pose, &solids.all, own);
         if image {

@@ -198,5 +198,5 @@ fn rectangle(pin: &Pinhole, corners: &[Point3<f64>]) -> Option<[i32; 4]> {
     }
     let (u0, u1) = (lo_u.max(0.0).floor(), hi_u.min(w).ceil());
     let (v0, v1) = (lo_v.max(0.0).floor(), hi_v.min(h).ceil());
-    (u0 < u1 && v0 < v1).then(|| [u0 as i32, v0 as i32, u1 as i32, v1 as i32])
+    (u0 < u1 && v0 < v1).then_some([u0 as i32, v0 as i32, u1 as i32, v1 as i32])
 }
