@@ -6,9 +6,13 @@
 //! storage ([`crate::sensor::Buffers`]), rebuilt by each `wb_camera_recognition_get_objects`
 //! call.
 
-use std::ffi::{CString, c_char, c_int};
+use std::ffi::{CStr, CString, c_char, c_int};
+use std::path::Path;
 
-use sim::devices::{CameraSettings, Device, DeviceKind, DeviceSettings, RecognitionObject};
+use sim::devices::{
+    CameraSettings, Device, DeviceKind, DeviceSettings, DisplayImage, PixelFormat,
+    RecognitionObject, save_png,
+};
 
 use crate::abi::WbDeviceTag;
 use crate::guard::call_pointer;
@@ -330,4 +334,60 @@ pub extern "C" fn wb_camera_recognition_get_objects(
             Some(store.objects.as_ptr())
         })
     })
+}
+
+/// Saves the last image of the camera with `tag` as the PNG file `filename`; returns 0, or −1
+/// with an error (a wrong tag, a disabled camera, another extension than `.png`, a file that
+/// cannot be written). `quality` is for JPEG, which is not written here. Webots:
+/// `wb_camera_save_image`.
+///
+/// # Safety
+/// `filename` is null or points to a NUL-terminated string valid during the call.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn wb_camera_save_image(
+    tag: WbDeviceTag,
+    filename: *const c_char,
+    quality: c_int,
+) -> c_int {
+    let name = if filename.is_null() {
+        None
+    } else {
+        // SAFETY: non-null, and the caller guarantees a NUL-terminated string valid for the
+        // duration of the call; it is only read.
+        Some(unsafe { CStr::from_ptr(filename) }.to_string_lossy().into_owned())
+    };
+    crate::guard::call("wb_camera_save_image", move || {
+        let _ = quality;
+        with_robot(|r| save_image(r, tag, name.as_deref()))
+    })
+}
+
+/// [`wb_camera_save_image`]'s work: 0 or −1.
+pub(crate) fn save_image(robot: &Robot, tag: WbDeviceTag, filename: Option<&str>) -> c_int {
+    let function = "wb_camera_save_image";
+    let Some((_, d)) = camera(robot, tag, function) else {
+        return -1;
+    };
+    let (Some(s), Some(state)) = (settings(d), d.camera()) else {
+        return -1;
+    };
+    if d.period_ms() == 0 {
+        message::error(format_args!(
+            "{function}() called for a disabled device! Please use: wb_camera_enable()."
+        ));
+        return -1;
+    }
+    let Some(filename) = filename else {
+        message::error(format_args!("{function}(): NULL filename."));
+        return -1;
+    };
+    let image = DisplayImage::from_bytes(s.width, s.height, state.image(), PixelFormat::Bgra);
+    match image.map(|i| save_png(Path::new(filename), &i)) {
+        Some(Ok(())) => 0,
+        Some(Err(e)) => {
+            message::error(format_args!("{function}(): {e}."));
+            -1
+        }
+        None => -1,
+    }
 }

@@ -2,12 +2,13 @@
 //!
 //! Images (`WbImageRef`) are handles into the robot's table of images, never dereferenced
 //! memory: a handle is its key, cast to a pointer, so a stale or forged one finds nothing.
-//! Text, fonts, camera attachment and files (load, save) are not available (the crate
-//! README).
+//! Images are saved to and loaded from PNG files. Text, fonts and camera attachment are not
+//! available (the crate README).
 
-use std::ffi::{c_int, c_void};
+use std::ffi::{CStr, c_char, c_int, c_void};
+use std::path::Path;
 
-use sim::devices::{DeviceKind, Display, DisplayImage, PixelFormat};
+use sim::devices::{DeviceKind, Display, DisplayImage, PixelFormat, load_png, save_png};
 
 use crate::abi::WbDeviceTag;
 use crate::message;
@@ -288,4 +289,85 @@ pub extern "C" fn wb_display_image_delete(tag: WbDeviceTag, image: WbImageRef) {
             }
         })
     })
+}
+
+/// The string at `p` (`None` if null).
+///
+/// # Safety
+/// `p` is null or points to a NUL-terminated string valid during the call.
+unsafe fn text(p: *const c_char) -> Option<String> {
+    // SAFETY: non-null, and the caller guarantees a NUL-terminated string; it is only read.
+    (!p.is_null()).then(|| unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned())
+}
+
+/// Saves `image` (NULL: the display itself) as the PNG file `filename`; an error for another
+/// extension or a file that cannot be written. Webots: `wb_display_image_save`.
+///
+/// # Safety
+/// `filename` is null or points to a NUL-terminated string valid during the call.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn wb_display_image_save(
+    tag: WbDeviceTag,
+    image: WbImageRef,
+    filename: *const c_char,
+) {
+    let handle = image as usize;
+    // SAFETY: the caller's guarantee, passed on.
+    let name = unsafe { text(filename) };
+    crate::guard::call("wb_display_image_save", move || {
+        with_robot(|r| {
+            let function = "wb_display_image_save";
+            let Some(whole) = display(r, tag, function).map(|d| d.image().clone()) else {
+                return;
+            };
+            let picture = if handle == 0 {
+                whole
+            } else if let Some(i) = r.images.get(handle) {
+                i.clone()
+            } else {
+                message::error("wb_display_image_save(): invalid image reference.");
+                return;
+            };
+            let Some(name) = name else {
+                message::error("wb_display_image_save(): NULL filename.");
+                return;
+            };
+            if let Err(e) = save_png(Path::new(&name), &picture) {
+                message::error(format_args!("{function}(): {e}."));
+            }
+        })
+    })
+}
+
+/// The image of the PNG file `filename`; NULL with an error if it cannot be read. Webots:
+/// `wb_display_image_load`.
+///
+/// # Safety
+/// `filename` is null or points to a NUL-terminated string valid during the call.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn wb_display_image_load(
+    tag: WbDeviceTag,
+    filename: *const c_char,
+) -> WbImageRef {
+    // SAFETY: the caller's guarantee, passed on.
+    let name = unsafe { text(filename) };
+    let handle = crate::guard::call("wb_display_image_load", move || {
+        with_robot(|r| {
+            let function = "wb_display_image_load";
+            display(r, tag, function)?;
+            let Some(name) = name else {
+                message::error("wb_display_image_load(): NULL filename.");
+                return None;
+            };
+            match load_png(Path::new(&name)) {
+                Ok(image) => Some(r.images.insert(image)),
+                Err(e) => {
+                    message::error(format_args!("{function}(): {e}."));
+                    None
+                }
+            }
+        })
+        .unwrap_or(0)
+    });
+    as_ref(handle)
 }

@@ -95,6 +95,10 @@ int main(void) {
     check_true(objects[0].position_on_image[0] >= w / 2 - 1 && objects[0].position_on_image[0] <= w / 2 + 1,
                "object centred on the image (u = %d)", objects[0].position_on_image[0]);
   }
+  check_int("wb_camera_save_image (png)", wb_camera_save_image(camera, "/tmp/capi_camera_test.png", 100), 0);
+  call("wb_camera_save_image (jpg)",
+       "Error: wb_camera_save_image(): /tmp/capi_camera_test.jpg: only .png files are supported.");
+  check_int("wb_camera_save_image (jpg)", wb_camera_save_image(camera, "/tmp/capi_camera_test.jpg", 100), -1);
   wb_camera_disable(camera);
   check_int("sampling period after disable", wb_camera_get_sampling_period(camera), 0);
   wb_robot_cleanup();

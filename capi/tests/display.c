@@ -19,7 +19,7 @@ static void call(const char *what, const char *expected_stderr) {
 
 int main(void) {
   WbDeviceTag display;
-  WbImageRef copy, made;
+  WbImageRef copy, made, loaded;
   const unsigned char red[4] = {255, 0, 0, 255};
   int xs[3] = {0, 4, 0}, ys[3] = {0, 0, 4};
   wb_robot_init();
@@ -56,6 +56,15 @@ int main(void) {
   wb_display_image_delete(display, copy);
   call("wb_display_image_delete twice", "Error: wb_display_image_delete(): invalid image reference.");
   wb_display_image_delete(display, copy);
+  wb_display_image_save(display, made, "/tmp/capi_display_test.png");
+  loaded = wb_display_image_load(display, "/tmp/capi_display_test.png");
+  check_true(loaded != NULL, "a saved image loads back");
+  wb_display_image_save(display, NULL, "/tmp/capi_display_whole.png");
+  check_true(wb_display_image_load(display, "/tmp/capi_display_whole.png") != NULL, "the saved display loads back");
+  call("wb_display_image_load (missing)",
+       "Error: wb_display_image_load(): /tmp/capi_no_such_file.png: No such file or directory (os error 2).");
+  check_true(wb_display_image_load(display, "/tmp/capi_no_such_file.png") == NULL, "a missing file gives NULL");
+  wb_display_image_delete(display, loaded);
   wb_display_image_delete(display, made);
   wb_robot_step(10);
   wb_robot_cleanup();

@@ -44,6 +44,19 @@ fn wb_camera_get_optics(tag: u16) -> (f64, f64, f64, f64) {
     )
 }
 
+/// Saves the last image as a PNG file: 0, or −1 with Webots' error.
+#[pyfunction]
+fn wb_camera_save_image(tag: u16, filename: &str, quality: i32) -> i32 {
+    let Ok(name) = std::ffi::CString::new(filename) else {
+        return -1;
+    };
+    // SAFETY: `name` is a NUL-terminated string that outlives the call.
+    #[allow(unsafe_code)]
+    unsafe {
+        car::wb_camera_save_image(tag, name.as_ptr(), quality)
+    }
+}
+
 /// True if the camera has Recognition.
 #[pyfunction]
 fn wb_camera_has_recognition(tag: u16) -> bool {
@@ -114,6 +127,7 @@ pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(wb_camera_get_image, m)?)?;
     m.add_function(wrap_pyfunction!(wb_camera_get_size, m)?)?;
     m.add_function(wrap_pyfunction!(wb_camera_get_optics, m)?)?;
+    m.add_function(wrap_pyfunction!(wb_camera_save_image, m)?)?;
     m.add_function(wrap_pyfunction!(wb_camera_has_recognition, m)?)?;
     m.add_function(wrap_pyfunction!(wb_camera_recognition_enable, m)?)?;
     m.add_function(wrap_pyfunction!(

@@ -105,6 +105,31 @@ fn wb_display_image_delete(tag: u16, image: usize) {
     car::wb_display_image_delete(tag, image as car::WbImageRef);
 }
 
+/// Saves image `image` (0: the display itself) as a PNG file.
+#[pyfunction]
+fn wb_display_image_save(tag: u16, image: usize, filename: &str) {
+    let Ok(name) = std::ffi::CString::new(filename) else {
+        return;
+    };
+    // SAFETY: `name` is a NUL-terminated string that outlives the call.
+    #[allow(unsafe_code)]
+    unsafe {
+        car::wb_display_image_save(tag, image as car::WbImageRef, name.as_ptr());
+    }
+}
+
+/// The image of a PNG file; 0 (NULL) with Webots' error if it cannot be read.
+#[pyfunction]
+fn wb_display_image_load(tag: u16, filename: &str) -> usize {
+    let Ok(name) = std::ffi::CString::new(filename) else {
+        return 0;
+    };
+    // SAFETY: `name` is a NUL-terminated string that outlives the call.
+    #[allow(unsafe_code)]
+    let image = unsafe { car::wb_display_image_load(tag, name.as_ptr()) };
+    image as usize
+}
+
 /// Adds the display functions to the module.
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(wb_display_get_size, m)?)?;
@@ -117,5 +142,7 @@ pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(wb_display_image_copy, m)?)?;
     m.add_function(wrap_pyfunction!(wb_display_image_paste, m)?)?;
     m.add_function(wrap_pyfunction!(wb_display_image_delete, m)?)?;
+    m.add_function(wrap_pyfunction!(wb_display_image_save, m)?)?;
+    m.add_function(wrap_pyfunction!(wb_display_image_load, m)?)?;
     Ok(())
 }

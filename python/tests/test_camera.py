@@ -33,6 +33,7 @@ recognitionColors = [[0, 1, 1]]
 SCRIPT = """
 import json
 from controller import Camera, Robot
+from webots_vehicle import camera_image
 robot = Robot()
 camera = robot.getDevice("camera")
 print("call: disabled", flush=True)
@@ -45,6 +46,7 @@ image = camera.getImage()
 w, h = camera.getWidth(), camera.getHeight()
 objects = camera.getRecognitionObjects()
 array = camera.getImageArray()
+view = camera_image(camera)
 out = {
     "kind": type(camera).__name__,
     "before": before,
@@ -58,6 +60,7 @@ out = {
         Camera.imageGetGray(image, w, w // 2, h // 2),
     ],
     "array_centre": array[w // 2][h // 2],
+    "numpy": [list(view.shape), [int(c) for c in view[h // 2, w // 2]]],
     "count": camera.getRecognitionNumberOfObjects(),
     "objects": [
         {
@@ -96,6 +99,7 @@ def test_camera_image_and_recognition(tmp_path):
     # 0.5 x (0.8, 0.2, 0.1) x 255 rounded = (102, 26, 13); gray (102 + 26 + 13) // 3 = 47.
     assert r["centre"] == [102, 26, 13, 47]
     assert r["array_centre"] == [102, 26, 13]
+    assert r["numpy"] == [[32, 64, 4], [13, 26, 102, 255]]  # rows, columns, BGRA
     # The red box alone (the cyan one is behind the camera), 10.5 m ahead of the camera
     # (+- 5 cm: the car settles by millimetres), centred, 2 m x 2 m.
     assert r["count"] == 1 and len(r["objects"]) == 1

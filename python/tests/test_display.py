@@ -37,11 +37,16 @@ made = display.imageNew(bytes([255, 0, 0]), Display.RGB, 1, 1)
 display.imagePaste(copy, 12, 4, True)
 display.imagePaste(made, 0, 0)
 display.imageDelete(copy)
+import os
+path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "display.png")
+display.imageSave(None, path)
+loaded = display.imageLoad(path)
 print("call: bad colour", flush=True)
 display.setColor(-1)
 robot.step(10)
 print(json.dumps({"kind": type(display).__name__, "size": [display.getWidth(), display.getHeight()],
-                  "copy": copy is not None, "off": off is None, "made": made is not None}))
+                  "copy": copy is not None, "off": off is None, "made": made is not None,
+                  "loaded": loaded is not None}))
 """
 
 
@@ -58,4 +63,12 @@ def test_display_draws_and_reports_misuse(tmp_path):
     assert out.stderr.splitlines() == [
         "Error: wb_display_set_color(): color must be in [0, 0xFFFFFF]."
     ]
-    assert r == {"kind": "Display", "size": [16, 8], "copy": True, "off": True, "made": True}
+    assert r == {
+        "kind": "Display",
+        "size": [16, 8],
+        "copy": True,
+        "off": True,
+        "made": True,
+        "loaded": True,
+    }
+    assert (tmp_path / "display.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

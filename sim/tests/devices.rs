@@ -457,9 +457,16 @@ fn the_sensors_world_has_one_of_each_device() {
     for i in 0..kinds.len() {
         sim.enable_device(id, i, 20).unwrap();
     }
+    sim.enable_recognition(id, 5, 20).unwrap();
     for _ in 0..100 {
         sim.step().unwrap();
     }
+    // The camera recognises the red box straight ahead (its centre 15 m from the origin
+    // along the heading, the front slot a few metres ahead of the origin).
+    let camera = sim.devices(id).unwrap()[5].camera().unwrap();
+    assert_eq!(camera.objects().len(), 1);
+    let ahead = camera.objects()[0].position;
+    assert!(ahead.x > 10.0 && ahead.x < 15.0 && ahead.y.abs() < 0.05, "{ahead}");
     // The rear slot faces backward and the car heads north-east: north is behind-right,
     // (−sin π/4, −cos π/4, 0) in the compass' axes; 5e-3 for the body's pitch on its springs.
     let n = vector(&sim, id, "rear compass");

@@ -33,6 +33,9 @@ namespace webots {
     double getMinFov() const { return wb_camera_get_min_fov(getTag()); }
     double getMaxFov() const { return wb_camera_get_max_fov(getTag()); }
     double getNear() const { return wb_camera_get_near(getTag()); }
+    int saveImage(const std::string &filename, int quality) const {
+      return wb_camera_save_image(getTag(), filename.c_str(), quality);
+    }
 
     bool hasRecognition() const { return wb_camera_has_recognition(getTag()); }
     void recognitionEnable(int samplingPeriod) { wb_camera_recognition_enable(getTag(), samplingPeriod); }

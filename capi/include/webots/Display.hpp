@@ -3,7 +3,7 @@
 // Part of the `capi` crate. SPDX-License-Identifier: MIT OR Apache-2.0
 //
 // Same class, constants and method names as Webots' webots::Display, for the functions this
-// simulator has (no text, fonts, camera attachment or image files). Requires C++11.
+// simulator has (no text, fonts or camera attachment; PNG files only). Requires C++11.
 
 #ifndef WB_DISPLAY_HPP
 #define WB_DISPLAY_HPP
@@ -57,6 +57,13 @@ namespace webots {
     void imagePaste(ImageRef *ir, int x, int y, bool blend = false) {
       if (ir)
         wb_display_image_paste(getTag(), ir->getImageRef(), x, y, blend);
+    }
+    ImageRef *imageLoad(const std::string &filename) const {
+      WbImageRef r = wb_display_image_load(getTag(), filename.c_str());
+      return r ? new ImageRef(r) : nullptr;
+    }
+    void imageSave(ImageRef *ir, const std::string &filename) const {
+      wb_display_image_save(getTag(), ir ? ir->getImageRef() : nullptr, filename.c_str());
     }
     void imageDelete(ImageRef *ir) {
       if (ir) {

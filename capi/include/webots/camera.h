@@ -42,6 +42,8 @@ int wb_camera_recognition_get_sampling_period(WbDeviceTag tag);
 int wb_camera_recognition_get_number_of_objects(WbDeviceTag tag);
 /* NULL with an error without Recognition or while it is disabled. */
 const WbCameraRecognitionObject *wb_camera_recognition_get_objects(WbDeviceTag tag);
+/* 0, or -1 with an error; PNG only (quality is for JPEG, not written here). */
+int wb_camera_save_image(WbDeviceTag tag, const char *filename, int quality);
 /* Always false: no segmentation image is rendered. */
 bool wb_camera_recognition_has_segmentation(WbDeviceTag tag);
 

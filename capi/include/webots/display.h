@@ -6,8 +6,8 @@
  * Pixels (0, 0) top-left; the display starts opaque black; colour 0xRRGGBB (default white),
  * alpha and opacity in [0, 1] (default 1). Every drawing blends its pixels as Webots does:
  * c = ((255 - O) c_old + O c_draw) / 255 with O = (unsigned char)(opacity * 255). Calls take
- * effect at once. Not available here: text and fonts, attaching a camera, loading and saving
- * image files (see the capi README).
+ * effect at once. Image files are PNG only. Not available here: text and fonts, attaching a
+ * camera (see the capi README).
  */
 
 #ifndef WB_DISPLAY_H
@@ -43,6 +43,9 @@ WbImageRef wb_display_image_new(WbDeviceTag tag, int width, int height, const vo
 WbImageRef wb_display_image_copy(WbDeviceTag tag, int x, int y, int width, int height);
 void wb_display_image_paste(WbDeviceTag tag, WbImageRef ir, int x, int y, bool blend);
 void wb_display_image_delete(WbDeviceTag tag, WbImageRef ir);
+/* PNG files only; ir NULL saves the display itself. */
+void wb_display_image_save(WbDeviceTag tag, WbImageRef ir, const char *filename);
+WbImageRef wb_display_image_load(WbDeviceTag tag, const char *filename);
 
 #ifdef __cplusplus
 }

@@ -330,6 +330,11 @@ class Camera(Device):
         """The near plane (m)."""
         return _native.wb_camera_get_optics(self._tag)[3]
 
+    def saveImage(self, filename: str, quality: int) -> int:
+        """Saves the last image as a PNG file (``quality`` is for JPEG, not written here):
+        0, or -1 with Webots' error."""
+        return _native.wb_camera_save_image(self._tag, str(filename), _c_int(quality))
+
     def hasRecognition(self) -> bool:
         """True if the camera has a Recognition node."""
         return _native.wb_camera_has_recognition(self._tag)
@@ -395,7 +400,7 @@ class ImageRef:
 class Display(Device):
     """Webots' ``Display``: an image to draw into (pixels (0, 0) top-left, opaque black at
     first; colour ``0xRRGGBB``, alpha and opacity in [0, 1], blended as Webots does). No
-    text, fonts, camera attachment or image files."""
+    text, fonts or camera attachment; image files are PNG."""
 
     RGB = 3
     RGBA = 4
@@ -478,6 +483,15 @@ class Display(Device):
         """Pastes ``ir`` with its top-left pixel at (x, y), over what is there by its alpha
         if ``blend``."""
         _native.wb_display_image_paste(self._tag, ir._handle, _c_int(x), _c_int(y), bool(blend))
+
+    def imageSave(self, ir: Optional[ImageRef], filename: str) -> None:
+        """Saves ``ir`` (None: the display itself) as a PNG file."""
+        _native.wb_display_image_save(self._tag, ir._handle if ir else 0, str(filename))
+
+    def imageLoad(self, filename: str) -> Optional[ImageRef]:
+        """The image of a PNG file; None (with Webots' error) if it cannot be read."""
+        handle = _native.wb_display_image_load(self._tag, str(filename))
+        return ImageRef(handle) if handle else None
 
     def imageDelete(self, ir: ImageRef) -> None:
         """Frees ``ir``."""

@@ -22,6 +22,7 @@
 
 pub mod camera;
 pub mod display;
+mod png_file;
 mod gps;
 mod inertial_unit;
 mod lookup;
@@ -39,6 +40,7 @@ use camera::solids::Solids;
 
 pub use camera::{CameraSettings, CameraState, Occlusion, RecognitionObject, RecognitionSettings};
 pub use display::{Display, DisplayImage, DisplaySettings, PixelFormat};
+pub use png_file::{ImageFileError, load_png, save_png};
 pub use gps::{GpsReading, GpsSettings};
 pub use inertial_unit::{InertialUnitReading, InertialUnitSettings};
 pub use lookup::LookupTable;
