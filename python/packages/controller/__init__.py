@@ -17,10 +17,10 @@ makes ``step`` return -1. With ``VEHICLE_OUT=DIR`` the run is recorded and writt
 ``DIR`` (``telemetry.csv``, ``metrics.json``, ``replay.glb``) when it ends or the process exits.
 
 Only the calls a vehicle controller uses exist: ``step``, ``getTime``, ``getBasicTimeStep``,
-``getDevice``, ``getNumberOfDevices``, ``getDeviceByIndex`` and ``getName``. ``getDevice``
-returns the sensors a world file puts on the car (``[[vehicle.device]]``) as :class:`GPS`,
-:class:`InertialUnit`, :class:`Gyro`, :class:`Accelerometer`, :class:`Compass` and
-:class:`Camera`, with
+``getDevice``, ``getNumberOfDevices``, ``getDeviceByIndex``, ``getKeyboard`` and ``getName``. ``getDevice``
+returns the devices a world file puts on the car (``[[vehicle.device]]``) as :class:`GPS`,
+:class:`InertialUnit`, :class:`Gyro`, :class:`Accelerometer`, :class:`Compass`,
+:class:`Camera` and :class:`Display`, with
 Webots' method names, measured by the same engine code as the C API's; the car's own devices
 (motors, brakes, lights) as a plain :class:`Device` (names and node types only); ``None`` for
 names the robot does not have. Warnings and errors go to stderr with Webots' texts.
