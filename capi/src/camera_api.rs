@@ -354,7 +354,11 @@ pub unsafe extern "C" fn wb_camera_save_image(
     } else {
         // SAFETY: non-null, and the caller guarantees a NUL-terminated string valid for the
         // duration of the call; it is only read.
-        Some(unsafe { CStr::from_ptr(filename) }.to_string_lossy().into_owned())
+        Some(
+            unsafe { CStr::from_ptr(filename) }
+                .to_string_lossy()
+                .into_owned(),
+        )
     };
     crate::guard::call("wb_camera_save_image", move || {
         let _ = quality;

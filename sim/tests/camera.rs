@@ -260,3 +260,51 @@ fn camera_fields_are_checked() {
     .to_string();
     assert!(e.contains("color"), "{e}");
 }
+
+/// A box hidden behind a nearer one, both with recognition colours, 30 m and 15 m ahead.
+fn hidden_behind(occlusion: u8, max_objects: i32) -> String {
+    format!(
+        r#"
+[vehicle]
+model = "BmwX5"
+[[vehicle.device]]
+type = "Camera"
+translation = [4.5, 0, 0.6]
+width = 128
+height = 64
+fieldOfView = 1.0
+recognition = {{ maxRange = 50, occlusion = {occlusion}, maxObjects = {max_objects} }}
+
+[[box]]
+translation = [15, 0, 1]
+size = [1, 4, 3]
+recognitionColors = [[1, 0, 0]]
+
+[[box]]
+translation = [30, 0, 1]
+size = [1, 2, 2]
+recognitionColors = [[0, 0, 1]]
+"#
+    )
+}
+
+#[test]
+fn occlusion_hides_what_is_behind_and_max_objects_keeps_the_largest() {
+    // The far box (2 m × 2 m at 25.5 m from the camera) lies wholly behind the near one
+    // (4 m × 3 m at 10.5 m): with occlusion its centre's pixel shows the near box.
+    let colours = |occlusion: u8, max_objects: i32| {
+        let (mut sim, id) = world(&hidden_behind(occlusion, max_objects));
+        first_image(&mut sim, id, 50);
+        camera(&sim, id)
+            .objects()
+            .iter()
+            .map(|o| o.colors[0])
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(colours(1, -1), vec![[1.0, 0.0, 0.0]]);
+    assert_eq!(colours(2, -1), vec![[1.0, 0.0, 0.0]]);
+    assert_eq!(colours(0, -1), vec![[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]);
+    // Without occlusion but one object at most: the larger on the image, the near box.
+    assert_eq!(colours(0, 1), vec![[1.0, 0.0, 0.0]]);
+    assert_eq!(colours(0, 0), Vec::<[f64; 3]>::new());
+}

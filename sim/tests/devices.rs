@@ -466,7 +466,10 @@ fn the_sensors_world_has_one_of_each_device() {
     let camera = sim.devices(id).unwrap()[5].camera().unwrap();
     assert_eq!(camera.objects().len(), 1);
     let ahead = camera.objects()[0].position;
-    assert!(ahead.x > 10.0 && ahead.x < 15.0 && ahead.y.abs() < 0.05, "{ahead}");
+    assert!(
+        ahead.x > 10.0 && ahead.x < 15.0 && ahead.y.abs() < 0.05,
+        "{ahead}"
+    );
     // The rear slot faces backward and the car heads north-east: north is behind-right,
     // (−sin π/4, −cos π/4, 0) in the compass' axes; 5e-3 for the body's pitch on its springs.
     let n = vector(&sim, id, "rear compass");

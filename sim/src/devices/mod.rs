@@ -22,11 +22,11 @@
 
 pub mod camera;
 pub mod display;
-mod png_file;
 mod gps;
 mod inertial_unit;
 mod lookup;
 mod noise;
+mod png_file;
 mod spec;
 mod triaxial;
 
@@ -40,10 +40,10 @@ use camera::solids::Solids;
 
 pub use camera::{CameraSettings, CameraState, Occlusion, RecognitionObject, RecognitionSettings};
 pub use display::{Display, DisplayImage, DisplaySettings, PixelFormat};
-pub use png_file::{ImageFileError, load_png, save_png};
 pub use gps::{GpsReading, GpsSettings};
 pub use inertial_unit::{InertialUnitReading, InertialUnitSettings};
 pub use lookup::LookupTable;
+pub use png_file::{ImageFileError, load_png, save_png};
 pub use spec::{Axes, DeviceKind, DeviceSettings, DeviceSpec};
 pub use triaxial::TriaxialSettings;
 

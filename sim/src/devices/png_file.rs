@@ -91,7 +91,9 @@ pub fn load_png(path: &Path) -> Result<DisplayImage, ImageFileError> {
     let info = reader.info();
     let (width, height) = (info.width, info.height);
     if width > MAX_SIDE || height > MAX_SIDE {
-        return Err(fail(format!("{width} x {height} px: at most 4096 px a side")));
+        return Err(fail(format!(
+            "{width} x {height} px: at most 4096 px a side"
+        )));
     }
     let mut data = vec![0; size];
     let frame = reader
@@ -116,20 +118,19 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("sim-png-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join("frame.png");
-        let image = DisplayImage::from_bytes(
-            2,
-            1,
-            &[10, 20, 30, 255, 40, 50, 60, 128],
-            PixelFormat::Rgba,
-        )
-        .unwrap();
+        let image =
+            DisplayImage::from_bytes(2, 1, &[10, 20, 30, 255, 40, 50, 60, 128], PixelFormat::Rgba)
+                .unwrap();
         save_png(&path, &image).unwrap();
         assert_eq!(load_png(&path).unwrap(), image);
         assert!(matches!(
             save_png(&dir.join("frame.jpg"), &image),
             Err(ImageFileError::NotPng(_))
         ));
-        assert!(matches!(load_png(&dir.join("missing.png")), Err(ImageFileError::Io { .. })));
+        assert!(matches!(
+            load_png(&dir.join("missing.png")),
+            Err(ImageFileError::Io { .. })
+        ));
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }
