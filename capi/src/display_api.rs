@@ -173,7 +173,7 @@ pub extern "C" fn wb_display_image_copy(
     as_ref(handle)
 }
 
-/// Draws the closed polygon of the `size` corners (x[i], y[i]). Webots:
+/// Draws the closed polygon of the `size` corners (`x[i]`, `y[i]`). Webots:
 /// `wb_display_draw_polygon`.
 ///
 /// # Safety
@@ -192,7 +192,7 @@ pub unsafe extern "C" fn wb_display_draw_polygon(
     })
 }
 
-/// Fills the polygon of the `size` corners (x[i], y[i]). Webots: `wb_display_fill_polygon`.
+/// Fills the polygon of the `size` corners (`x[i]`, `y[i]`). Webots: `wb_display_fill_polygon`.
 ///
 /// # Safety
 /// `x` and `y` are null or point to `size` readable ints.

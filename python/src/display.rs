@@ -54,7 +54,7 @@ fn wb_display_draw(tag: u16, shape: &str, args: Vec<i32>) -> PyResult<()> {
     Ok(())
 }
 
-/// Draws (or with `fill` fills) the polygon of corners (x[i], y[i]).
+/// Draws (or with `fill` fills) the polygon of corners (`x[i]`, `y[i]`).
 #[pyfunction]
 fn wb_display_polygon(tag: u16, x: Vec<i32>, y: Vec<i32>, fill: bool) {
     let n = i32::try_from(x.len().min(y.len())).unwrap_or(i32::MAX);

@@ -90,7 +90,7 @@ fn check_channel(field: &'static str, c: f64) -> Result<(), ParamError> {
 }
 
 /// The looks of a world's things, by [`SceneObject`]; a thing without one has its default
-/// ([`Appearances::get`]).
+/// (the module's colour constants, no recognition colours).
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Appearances {
     set: Vec<(SceneObject, Appearance)>,

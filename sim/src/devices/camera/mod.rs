@@ -1,7 +1,7 @@
 //! Webots' `Camera` (spec §9): a BGRA image of the world through a planar pinhole, and its
 //! `Recognition`.
 //!
-//! The image is rendered from the world's geometry ([`solids`]: boxes, ramps, dynamic boxes,
+//! The image is rendered from the world's geometry (`solids.rs`: boxes, ramps, dynamic boxes,
 //! car bodies, robots, and the ground plane) with each thing's colour
 //! ([`crate::appearance`]) under a default light: an upward face shows its colour exactly,
 //! other faces are darker (at least half as bright), nothing casts shadows, the sky is
