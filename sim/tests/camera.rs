@@ -308,3 +308,31 @@ fn occlusion_hides_what_is_behind_and_max_objects_keeps_the_largest() {
     assert_eq!(colours(0, 1), vec![[1.0, 0.0, 0.0]]);
     assert_eq!(colours(0, 0), Vec::<[f64; 3]>::new());
 }
+
+#[test]
+fn a_saved_run_holds_the_last_image_of_each_camera_and_display() {
+    let (mut sim, id) = world(&format!(
+        "{BOX_AHEAD}\n[[vehicle.device]]\ntype = \"Display\"\nname = \"dash board\"\nwidth = 8\nheight = 4\n"
+    ));
+    sim.record("camera");
+    first_image(&mut sim, id, 50);
+    let dir = std::env::temp_dir().join(format!("sim-camera-save-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let written = sim.save("camera.toml", &[], &dir).unwrap();
+    let car = sim.car_name(id).unwrap().to_string();
+    let camera_png = dir.join(format!("{car}-camera.png"));
+    let display_png = dir.join(format!("{car}-dash_board.png"));
+    assert!(
+        written.contains(&camera_png) && written.contains(&display_png),
+        "{written:?}"
+    );
+    // The PNG holds the camera's BGRA image as RGBA.
+    let saved = sim::devices::load_png(&camera_png).unwrap();
+    let image = camera(&sim, id).image();
+    assert_eq!((saved.width, saved.height), (128, 64));
+    assert_eq!(saved.rgba()[..4], [image[2], image[1], image[0], image[3]]);
+    // The display is untouched: opaque black.
+    let display = sim::devices::load_png(&display_png).unwrap();
+    assert!(display.pixels.iter().all(|&p| p == 0xFF00_0000));
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -642,7 +642,9 @@ impl Simulation {
 
     /// Writes the run recorded so far into `dir` ([`report::write_data`](
     /// crate::report::write_data): `telemetry.csv`, `metrics.json` with `world_warnings`,
-    /// `replay.glb`), streaming the telemetry from the logs; `world` names the world in
+    /// `replay.glb`), streaming the telemetry from the logs, and the last image of every
+    /// camera that took one and every display as `<car>-<device>.png` (characters other
+    /// than letters, digits, `-` and `_` written `_`); `world` names the world in
     /// `metrics.json`. Returns the paths written; nothing if not recording.
     ///
     /// # Errors
@@ -653,9 +655,45 @@ impl Simulation {
         world_warnings: &[String],
         dir: &Path,
     ) -> Result<Vec<PathBuf>, OutputError> {
-        match &self.recording {
-            Some(r) => r.save(self, world, world_warnings, dir),
-            None => Ok(Vec::new()),
+        let Some(r) = &self.recording else {
+            return Ok(Vec::new());
+        };
+        let mut written = r.save(self, world, world_warnings, dir)?;
+        for car in &self.cars {
+            for d in car.devices.all() {
+                let image = match (d.settings(), d.camera(), d.display()) {
+                    (crate::devices::DeviceSettings::Camera(s), Some(c), _) if c.has_image() => {
+                        crate::devices::DisplayImage::from_bytes(
+                            s.width,
+                            s.height,
+                            c.image(),
+                            crate::devices::PixelFormat::Bgra,
+                        )
+                    }
+                    (_, _, Some(display)) => Some(display.image().clone()),
+                    _ => None,
+                };
+                let Some(image) = image else {
+                    continue;
+                };
+                let name: String = format!("{}-{}", car.name, d.name())
+                    .chars()
+                    .map(|c| {
+                        if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
+                            c
+                        } else {
+                            '_'
+                        }
+                    })
+                    .collect();
+                let path = dir.join(format!("{name}.png"));
+                crate::devices::save_png(&path, &image).map_err(|e| OutputError::Io {
+                    path: path.clone(),
+                    source: std::io::Error::other(e.to_string()),
+                })?;
+                written.push(path);
+            }
         }
+        Ok(written)
     }
 }

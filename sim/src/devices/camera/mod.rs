@@ -140,6 +140,8 @@ pub struct CameraState {
     recognition_last_ms: u64,
     /// The render buffers, kept between samples.
     frame: Frame,
+    /// True once an image was taken.
+    has_image: bool,
 }
 
 impl CameraState {
@@ -150,12 +152,18 @@ impl CameraState {
             recognition_period_ms: 0,
             recognition_last_ms: 0,
             frame: Frame::default(),
+            has_image: false,
         }
     }
 
     /// The last image (BGRA, row-major from the top-left; all zero before the first).
     pub fn image(&self) -> &[u8] {
         &self.image
+    }
+
+    /// True once the camera has taken an image.
+    pub fn has_image(&self) -> bool {
+        self.has_image
     }
 
     /// The objects of Recognition's last sample.
@@ -198,6 +206,7 @@ impl CameraState {
         let pin = settings.pinhole();
         self.frame.render(&pin, pose, &solids.all, own);
         if image {
+            self.has_image = true;
             for (px, rgb) in self.image.chunks_exact_mut(4).zip(&self.frame.rgb) {
                 let [r, g, b] = if settings.noise > 0.0 {
                     rgb.map(|c| {
