@@ -27,8 +27,12 @@ pub(crate) mod node {
     pub(crate) const ACCELEROMETER: i32 = 35;
     /// `WB_NODE_BRAKE`.
     pub(crate) const BRAKE: i32 = 37;
+    /// `WB_NODE_CAMERA`.
+    pub(crate) const CAMERA: i32 = 38;
     /// `WB_NODE_COMPASS`.
     pub(crate) const COMPASS: i32 = 39;
+    /// `WB_NODE_DISPLAY`.
+    pub(crate) const DISPLAY: i32 = 41;
     /// `WB_NODE_GPS`.
     pub(crate) const GPS: i32 = 44;
     /// `WB_NODE_GYRO`.
@@ -55,6 +59,8 @@ pub(crate) fn sensor_node_type(kind: DeviceKind) -> i32 {
         DeviceKind::Gyro => node::GYRO,
         DeviceKind::Accelerometer => node::ACCELEROMETER,
         DeviceKind::Compass => node::COMPASS,
+        DeviceKind::Camera => node::CAMERA,
+        DeviceKind::Display => node::DISPLAY,
     }
 }
 

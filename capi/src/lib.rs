@@ -24,7 +24,11 @@
 //! * `webots/gps.h`, `webots/inertial_unit.h`, `webots/gyro.h`, `webots/accelerometer.h`,
 //!   `webots/compass.h`: the sensors a world file puts on the car (`[[vehicle.device]]`),
 //!   measured by `sim::devices`; `webots/device.h` and `wb_robot_get_number_of_devices`,
-//!   `wb_robot_get_device_by_index` to list the robot's devices.
+//!   `wb_robot_get_device_by_index` to list the robot's devices;
+//! * `webots/camera.h` and `webots/camera_recognition_object.h`: the camera and its
+//!   Recognition, rendered by `sim::devices::camera`;
+//! * `webots/display.h`: drawing into a car's `Display` (`sim::devices::display`);
+//! * `webots/keyboard.h`: the keys the world's programme presses (`sim::keyboard`).
 //!
 //! Arguments and results follow the C ABI of the headers: C `bool` is one byte (any non-zero
 //! value is true; results are 0 or 1), enumerations are `int` (out-of-range values are refused
@@ -60,11 +64,14 @@
 mod guard;
 
 mod abi;
+mod camera_api;
 mod car_api;
 mod device_api;
 mod devices;
 mod differential_wheels_api;
+mod display_api;
 mod driver_api;
+mod keyboard_api;
 mod message;
 mod robot;
 mod robot_api;
@@ -73,10 +80,13 @@ mod sensor_api;
 mod session;
 
 pub use abi::WbDeviceTag;
+pub use camera_api::*;
 pub use car_api::*;
 pub use device_api::*;
 pub use differential_wheels_api::*;
+pub use display_api::*;
 pub use driver_api::*;
+pub use keyboard_api::*;
 pub use robot::WORLD_VARIABLE;
 pub use robot_api::*;
 pub use sensor_api::*;

@@ -5,11 +5,13 @@ use std::env::{self, VarError};
 use std::ffi::c_int;
 use std::path::PathBuf;
 
+use sim::keyboard::Keyboard;
 use sim::world_file::{self, WorldDescription};
 use sim::{RobotId, SimError, Simulation, VehicleId};
 
 use crate::abi::WbDeviceTag;
 use crate::devices::{self, CAR_TAGS, DeviceEntry};
+use crate::display_api::Images;
 use crate::sensor::Buffers;
 
 /// The environment variable that selects the world: a world file path or a shipped model name.
@@ -65,6 +67,11 @@ pub(crate) struct Robot {
     devices: Vec<Option<DeviceEntry>>,
     /// Where the sensor functions' `const double *` results live.
     pub(crate) buffers: Buffers,
+    /// The keyboard of a DifferentialWheels robot's controller: no programme presses its keys
+    /// (a car's keyboard is the simulation's).
+    pub(crate) robot_keyboard: Keyboard,
+    /// The images of `wb_display_image_*`, by handle.
+    pub(crate) images: Images,
 }
 
 impl Robot {
@@ -157,6 +164,8 @@ impl Robot {
             outputs,
             devices,
             buffers,
+            robot_keyboard: Keyboard::default(),
+            images: Images::default(),
         })
     }
 

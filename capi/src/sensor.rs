@@ -10,6 +10,7 @@ use sim::VehicleId;
 use sim::devices::{Device, DeviceKind, DeviceSettings, Reading};
 
 use crate::abi::WbDeviceTag;
+use crate::camera_api::RecognitionStore;
 use crate::message;
 use crate::robot::Robot;
 
@@ -33,6 +34,8 @@ pub(crate) struct Buffers {
     /// Each sensor's `lookupTable`, row after row (empty for none).
     tables: Vec<Box<[f64]>>,
     pub(crate) roll_pitch_yaw: Box<[f64; 3]>,
+    /// Each sensor's recognition objects (empty but for cameras).
+    recognition: Box<[RecognitionStore]>,
 }
 
 impl Buffers {
@@ -48,12 +51,21 @@ impl Buffers {
                 .collect(),
             tables: sensors.iter().map(|d| table_of(d.settings())).collect(),
             roll_pitch_yaw: Box::new([f64::NAN; 3]),
+            recognition: sensors
+                .iter()
+                .map(|_| RecognitionStore::default())
+                .collect(),
         }
     }
 
     /// The storage of sensor `index`.
     pub(crate) fn slot(&mut self, index: usize) -> Option<&mut Slot> {
         self.slots.get_mut(index)
+    }
+
+    /// The recognition storage of sensor `index`.
+    pub(crate) fn recognition(&mut self, index: usize) -> Option<&mut RecognitionStore> {
+        self.recognition.get_mut(index)
     }
 
     /// The lookup table of sensor `index` (empty if none).
@@ -68,7 +80,10 @@ fn table_of(settings: &DeviceSettings) -> Box<[f64]> {
         DeviceSettings::Gyro(s) | DeviceSettings::Accelerometer(s) | DeviceSettings::Compass(s) => {
             s.lookup_table.rows().iter().flatten().copied().collect()
         }
-        DeviceSettings::Gps(_) | DeviceSettings::InertialUnit(_) => Box::new([]),
+        DeviceSettings::Gps(_)
+        | DeviceSettings::InertialUnit(_)
+        | DeviceSettings::Camera(_)
+        | DeviceSettings::Display(_) => Box::new([]),
     }
 }
 
@@ -80,6 +95,8 @@ pub(crate) fn prefix(kind: DeviceKind) -> &'static str {
         DeviceKind::Gyro => "gyro",
         DeviceKind::Accelerometer => "accelerometer",
         DeviceKind::Compass => "compass",
+        DeviceKind::Camera => "camera",
+        DeviceKind::Display => "display",
     }
 }
 

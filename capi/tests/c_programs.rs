@@ -83,6 +83,27 @@ fn sensors() {
     run_announcing("sensors", Some(&sensors_world()), 9);
 }
 
+/// The camera of a world file's car, its Recognition and the camera misuse messages.
+#[test]
+fn camera() {
+    // 1 wrong tag, 1 disabled image, 1 negative period, 1 disabled Recognition, 1 JPEG.
+    run_announcing("camera", Some(&world_path("camera.toml")), 5);
+}
+
+/// The keys a world's programme presses, read through webots/keyboard.h.
+#[test]
+fn keyboard() {
+    // 1 disabled read, 1 negative period.
+    run_announcing("keyboard", Some(&world_path("keyboard.toml")), 2);
+}
+
+/// Drawing into a car's Display through webots/display.h, and the display misuse messages.
+#[test]
+fn display() {
+    // 1 wrong tag, 1 bad colour, 1 bad opacity, 1 bad format, 1 stale image, 1 missing file.
+    run_announcing("display", Some(&world_path("display.toml")), 6);
+}
+
 /// The C++ wrapper, linked with the libraries in the other order (`-lcar -ldriver`).
 #[test]
 fn cpp_wrapper() {

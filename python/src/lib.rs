@@ -12,6 +12,9 @@
 //!
 //! Units: m, rad (positive steers right), rad/s, s; km/h and ms where the Webots API uses them.
 
+mod camera;
+mod display;
+mod keyboard;
 mod sensors;
 mod simulation;
 mod sweep;
@@ -46,6 +49,9 @@ fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("SimulationError", m.py().get_type::<SimulationError>())?;
     webots::register(m)?;
     sensors::register(m)?;
+    camera::register(m)?;
+    display::register(m)?;
+    keyboard::register(m)?;
     simulation::register(m)?;
     sweep::register(m)?;
     Ok(())

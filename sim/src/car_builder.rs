@@ -7,6 +7,7 @@ use proto_geom::SensorSlots;
 use vehicle_model::{BrakeBalance, CarParams, Driver, Model, ParamReport};
 
 use crate::devices::{CarDevices, DeviceSpec};
+use crate::keyboard::{KeyPress, Keyboard};
 
 use crate::error::SimError;
 use crate::placement::car_placement;
@@ -51,6 +52,8 @@ pub struct CarBuilder {
     seed: u64,
     /// The frames of its model's sensor slots, `None` for a model without them.
     slots: Option<SensorSlots<f64>>,
+    /// The keys pressed for its controller's keyboard.
+    keys: Vec<KeyPress>,
 }
 
 /// A car built from a [`CarBuilder`]: its driver, its body and where it starts.
@@ -62,6 +65,7 @@ pub(crate) struct BuiltCar {
     pub name: Option<String>,
     pub default_name: &'static str,
     pub devices: CarDevices,
+    pub keyboard: Keyboard,
 }
 
 impl CarBuilder {
@@ -81,6 +85,7 @@ impl CarBuilder {
             devices: Vec::new(),
             seed: 0,
             slots: None,
+            keys: Vec::new(),
         }
     }
 
@@ -94,6 +99,13 @@ impl CarBuilder {
             slots: slots_of(model),
             ..CarBuilder::new(model.params())
         }
+    }
+
+    /// The keys its controller's keyboard reads, each at its time ([`crate::keyboard`]).
+    #[must_use]
+    pub fn key_presses(mut self, keys: Vec<KeyPress>) -> Self {
+        self.keys = keys;
+        self
     }
 
     /// The tyres it rolls on.
@@ -215,6 +227,7 @@ impl CarBuilder {
             name: self.name,
             default_name: self.default_name,
             devices,
+            keyboard: Keyboard::new(self.keys),
         })
     }
 }
@@ -234,6 +247,7 @@ impl From<&CarDescription> for CarBuilder {
             devices: car.devices.clone(),
             seed: car.seed,
             slots: slots_of(car.model),
+            keys: car.keys.clone(),
         }
     }
 }

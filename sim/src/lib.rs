@@ -78,12 +78,14 @@
 #[doc = include_str!("../README.md")]
 struct ReadmeDoctests;
 
+pub mod appearance;
 mod attitude;
 mod body;
 mod car_builder;
 #[cfg(feature = "app")]
 pub mod cli;
 pub mod devices;
+pub mod keyboard;
 pub mod motor;
 pub mod placement;
 pub mod programme;

@@ -457,9 +457,20 @@ fn the_sensors_world_has_one_of_each_device() {
     for i in 0..kinds.len() {
         sim.enable_device(id, i, 20).unwrap();
     }
+    sim.enable_recognition(id, 5, 20).unwrap();
     for _ in 0..100 {
         sim.step().unwrap();
     }
+    // The camera recognises the red box 15 m ahead of the origin along the heading and 5 m
+    // to the left (the front slot a few metres ahead of the origin on the car's centre line;
+    // 5 cm for the settling body).
+    let camera = sim.devices(id).unwrap()[5].camera().unwrap();
+    assert_eq!(camera.objects().len(), 1);
+    let seen = camera.objects()[0].position;
+    assert!(
+        seen.x > 10.0 && seen.x < 15.0 && (seen.y - 5.0).abs() < 0.05,
+        "{seen}"
+    );
     // The rear slot faces backward and the car heads north-east: north is behind-right,
     // (−sin π/4, −cos π/4, 0) in the compass' axes; 5e-3 for the body's pitch on its springs.
     let n = vector(&sim, id, "rear compass");

@@ -250,6 +250,11 @@ pub fn sensors_world() -> String {
         .to_string()
 }
 
+/// The path of `worlds/<name>`.
+pub fn world_path(name: &str) -> String {
+    tests_dir().join("worlds").join(name).display().to_string()
+}
+
 /// The path of `worlds/differential_wheels.toml`.
 pub fn differential_wheels_world() -> String {
     tests_dir()

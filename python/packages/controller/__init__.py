@@ -17,9 +17,10 @@ makes ``step`` return -1. With ``VEHICLE_OUT=DIR`` the run is recorded and writt
 ``DIR`` (``telemetry.csv``, ``metrics.json``, ``replay.glb``) when it ends or the process exits.
 
 Only the calls a vehicle controller uses exist: ``step``, ``getTime``, ``getBasicTimeStep``,
-``getDevice``, ``getNumberOfDevices``, ``getDeviceByIndex`` and ``getName``. ``getDevice``
-returns the sensors a world file puts on the car (``[[vehicle.device]]``) as :class:`GPS`,
-:class:`InertialUnit`, :class:`Gyro`, :class:`Accelerometer` and :class:`Compass`, with
+``getDevice``, ``getNumberOfDevices``, ``getDeviceByIndex``, ``getKeyboard`` and ``getName``. ``getDevice``
+returns the devices a world file puts on the car (``[[vehicle.device]]``) as :class:`GPS`,
+:class:`InertialUnit`, :class:`Gyro`, :class:`Accelerometer`, :class:`Compass`,
+:class:`Camera` and :class:`Display`, with
 Webots' method names, measured by the same engine code as the C API's; the car's own devices
 (motors, brakes, lights) as a plain :class:`Device` (names and node types only); ``None`` for
 names the robot does not have. Warnings and errors go to stderr with Webots' texts.
@@ -36,11 +37,15 @@ from webots_vehicle._native import WorldError
 
 __all__ = [
     "Accelerometer",
+    "Camera",
+    "CameraRecognitionObject",
     "Compass",
     "Device",
+    "Display",
     "GPS",
     "Gyro",
     "InertialUnit",
+    "Keyboard",
     "Node",
     "Robot",
     "Supervisor",
@@ -71,7 +76,9 @@ class Node:
     NO_NODE = 0
     ACCELEROMETER = 35
     BRAKE = 37
+    CAMERA = 38
     COMPASS = 39
+    DISPLAY = 41
     GPS = 44
     GYRO = 45
     INERTIAL_UNIT = 46
@@ -207,7 +214,336 @@ class Compass(_Triaxial):
     _kind = "compass"
 
 
+class CameraRecognitionObject:
+    """An object a camera's Recognition reports (Webots: ``CameraRecognitionObject``):
+    positions and sizes in m in the camera frame (x forward, y left, z up), the orientation as
+    axis-angle ``[x, y, z, angle]`` (rad), image values in pixels from the top-left corner."""
+
+    def __init__(self, fields: tuple) -> None:  # type: ignore[type-arg]
+        (
+            self._id,
+            self._position,
+            self._orientation,
+            self._size,
+            self._position_on_image,
+            self._size_on_image,
+            self._colors,
+            self._model,
+        ) = fields
+
+    def getId(self) -> int:
+        """The object's id."""
+        return self._id
+
+    def getPosition(self) -> List[float]:
+        """Its centre (m, camera frame)."""
+        return list(self._position)
+
+    def getOrientation(self) -> List[float]:
+        """Its orientation relative to the camera, ``[x, y, z, angle]``."""
+        return list(self._orientation)
+
+    def getSize(self) -> List[float]:
+        """Its extent along the camera's y and z (m)."""
+        return list(self._size)
+
+    def getPositionOnImage(self) -> List[int]:
+        """The centre of its rectangle on the image (px)."""
+        return list(self._position_on_image)
+
+    def getSizeOnImage(self) -> List[int]:
+        """The width and height of its rectangle on the image (px)."""
+        return list(self._size_on_image)
+
+    def getNumberOfColors(self) -> int:
+        """How many recognition colours it has."""
+        return len(self._colors)
+
+    def getColors(self) -> List[float]:
+        """Its recognition colours, flat: ``[r, g, b]`` after ``[r, g, b]``."""
+        return [c for rgb in self._colors for c in rgb]
+
+    def getModel(self) -> str:
+        """Its ``model``."""
+        return self._model
+
+    def __repr__(self) -> str:
+        return f"CameraRecognitionObject(id={self._id}, position={self._position})"
+
+
+class Camera(Device):
+    """Webots' ``Camera``: a BGRA image of the world through a planar pinhole, rendered by
+    the engine (the world's boxes, ramps, cars, robots and ground), and its Recognition."""
+
+    def enable(self, samplingPeriod: int) -> None:
+        """Renders every ``samplingPeriod`` ms; the first image comes one period later."""
+        _native.wb_camera_enable(self._tag, _c_int(samplingPeriod))
+
+    def disable(self) -> None:
+        """Stops rendering."""
+        _native.wb_camera_enable(self._tag, 0)
+
+    def getSamplingPeriod(self) -> int:
+        """The sampling period (ms), 0 when disabled."""
+        return _native.wb_camera_get_sampling_period(self._tag)
+
+    def getImage(self) -> Optional[bytes]:
+        """The last image: BGRA bytes, row-major from the top-left (``None``, with Webots'
+        error, while disabled)."""
+        return _native.wb_camera_get_image(self._tag)
+
+    def getImageArray(self) -> Optional[List[List[List[int]]]]:
+        """The last image as ``[x][y][r, g, b]`` (Webots' layout: column first)."""
+        image = self.getImage()
+        if image is None:
+            return None
+        w, h = self.getWidth(), self.getHeight()
+        return [
+            [
+                [image[4 * (y * w + x) + 2], image[4 * (y * w + x) + 1], image[4 * (y * w + x)]]
+                for y in range(h)
+            ]
+            for x in range(w)
+        ]
+
+    def getWidth(self) -> int:
+        """The image width (px)."""
+        return _native.wb_camera_get_size(self._tag)[0]
+
+    def getHeight(self) -> int:
+        """The image height (px)."""
+        return _native.wb_camera_get_size(self._tag)[1]
+
+    def getFov(self) -> float:
+        """The horizontal field of view (rad)."""
+        return _native.wb_camera_get_optics(self._tag)[0]
+
+    def getMinFov(self) -> float:
+        """The smallest field of view (rad): the field of view, there being no Zoom."""
+        return _native.wb_camera_get_optics(self._tag)[1]
+
+    def getMaxFov(self) -> float:
+        """The largest field of view (rad): the field of view, there being no Zoom."""
+        return _native.wb_camera_get_optics(self._tag)[2]
+
+    def getNear(self) -> float:
+        """The near plane (m)."""
+        return _native.wb_camera_get_optics(self._tag)[3]
+
+    def saveImage(self, filename: str, quality: int) -> int:
+        """Saves the last image as a PNG file (``quality`` is for JPEG, not written here):
+        0, or -1 with Webots' error."""
+        return _native.wb_camera_save_image(self._tag, str(filename), _c_int(quality))
+
+    def hasRecognition(self) -> bool:
+        """True if the camera has a Recognition node."""
+        return _native.wb_camera_has_recognition(self._tag)
+
+    def recognitionEnable(self, samplingPeriod: int) -> None:
+        """Recognises objects every ``samplingPeriod`` ms."""
+        _native.wb_camera_recognition_enable(self._tag, _c_int(samplingPeriod))
+
+    def recognitionDisable(self) -> None:
+        """Stops recognising."""
+        _native.wb_camera_recognition_enable(self._tag, 0)
+
+    def getRecognitionSamplingPeriod(self) -> int:
+        """Recognition's sampling period (ms), 0 when disabled."""
+        return _native.wb_camera_recognition_get_sampling_period(self._tag)
+
+    def getRecognitionNumberOfObjects(self) -> int:
+        """How many objects the last Recognition sample found."""
+        return _native.wb_camera_recognition_get_number_of_objects(self._tag)
+
+    def getRecognitionObjects(self) -> List[CameraRecognitionObject]:
+        """The objects of the last Recognition sample."""
+        return [
+            CameraRecognitionObject(o)
+            for o in _native.wb_camera_recognition_get_objects(self._tag)
+        ]
+
+    def hasRecognitionSegmentation(self) -> bool:
+        """False: no segmentation image is rendered."""
+        return _native.wb_camera_recognition_has_segmentation(self._tag)
+
+    @staticmethod
+    def imageGetRed(image: bytes, width: int, x: int, y: int) -> int:
+        """The red channel of pixel (x, y) of a BGRA image ``width`` pixels wide."""
+        return image[4 * (y * width + x) + 2]
+
+    @staticmethod
+    def imageGetGreen(image: bytes, width: int, x: int, y: int) -> int:
+        """The green channel of pixel (x, y)."""
+        return image[4 * (y * width + x) + 1]
+
+    @staticmethod
+    def imageGetBlue(image: bytes, width: int, x: int, y: int) -> int:
+        """The blue channel of pixel (x, y)."""
+        return image[4 * (y * width + x)]
+
+    @staticmethod
+    def imageGetGray(image: bytes, width: int, x: int, y: int) -> int:
+        """The mean of the three channels of pixel (x, y), truncated."""
+        k = 4 * (y * width + x)
+        return (image[k] + image[k + 1] + image[k + 2]) // 3
+
+    imageGetGrey = imageGetGray
+
+
+class ImageRef:
+    """An image held by the display library (Webots: ``ImageRef``)."""
+
+    def __init__(self, handle: int) -> None:
+        self._handle = handle
+
+
+class Display(Device):
+    """Webots' ``Display``: an image to draw into (pixels (0, 0) top-left, opaque black at
+    first; colour ``0xRRGGBB``, alpha and opacity in [0, 1], blended as Webots does). No
+    text, fonts or camera attachment; image files are PNG."""
+
+    RGB = 3
+    RGBA = 4
+    ARGB = 5
+    BGRA = 6
+    ABGR = 7
+
+    def getWidth(self) -> int:
+        """Width (px)."""
+        return _native.wb_display_get_size(self._tag)[0]
+
+    def getHeight(self) -> int:
+        """Height (px)."""
+        return _native.wb_display_get_size(self._tag)[1]
+
+    def setColor(self, color: int) -> None:
+        """The drawing colour, ``0xRRGGBB``."""
+        _native.wb_display_set_color(self._tag, _c_int(color))
+
+    def setAlpha(self, alpha: float) -> None:
+        """The alpha of what is drawn (0: transparent)."""
+        _native.wb_display_set_alpha(self._tag, _c_double(alpha))
+
+    def setOpacity(self, opacity: float) -> None:
+        """The weight of what is drawn against what was there."""
+        _native.wb_display_set_opacity(self._tag, _c_double(opacity))
+
+    def drawPixel(self, x: int, y: int) -> None:
+        """Draws pixel (x, y)."""
+        _native.wb_display_draw(self._tag, "pixel", [_c_int(x), _c_int(y)])
+
+    def drawLine(self, x1: int, y1: int, x2: int, y2: int) -> None:
+        """Draws a line (Bresenham)."""
+        _native.wb_display_draw(self._tag, "line", [_c_int(v) for v in (x1, y1, x2, y2)])
+
+    def drawRectangle(self, x: int, y: int, width: int, height: int) -> None:
+        """Draws a rectangle's outline, top-left (x, y)."""
+        _native.wb_display_draw(self._tag, "rectangle", [_c_int(v) for v in (x, y, width, height)])
+
+    def fillRectangle(self, x: int, y: int, width: int, height: int) -> None:
+        """Fills a rectangle, top-left (x, y)."""
+        _native.wb_display_draw(
+            self._tag, "fill_rectangle", [_c_int(v) for v in (x, y, width, height)]
+        )
+
+    def drawOval(self, cx: int, cy: int, a: int, b: int) -> None:
+        """Draws an ellipse's outline of centre (cx, cy) and radii a, b."""
+        _native.wb_display_draw(self._tag, "oval", [_c_int(v) for v in (cx, cy, a, b)])
+
+    def fillOval(self, cx: int, cy: int, a: int, b: int) -> None:
+        """Fills an ellipse of centre (cx, cy) and radii a, b."""
+        _native.wb_display_draw(self._tag, "fill_oval", [_c_int(v) for v in (cx, cy, a, b)])
+
+    def drawPolygon(self, x: List[int], y: List[int]) -> None:
+        """Draws the closed polygon of corners (x[i], y[i])."""
+        _native.wb_display_polygon(self._tag, [_c_int(v) for v in x], [_c_int(v) for v in y], False)
+
+    def fillPolygon(self, x: List[int], y: List[int]) -> None:
+        """Fills the polygon of corners (x[i], y[i])."""
+        _native.wb_display_polygon(self._tag, [_c_int(v) for v in x], [_c_int(v) for v in y], True)
+
+    def imageNew(
+        self, data: bytes, format: int, width: Optional[int] = None, height: Optional[int] = None
+    ) -> Optional[ImageRef]:
+        """An image from ``data`` (``width * height`` pixels of ``format``; without sizes:
+        the display's)."""
+        w = self.getWidth() if width is None else _c_int(width)
+        h = self.getHeight() if height is None else _c_int(height)
+        handle = _native.wb_display_image_new(self._tag, w, h, bytes(data), _c_int(format))
+        return ImageRef(handle) if handle else None
+
+    def imageCopy(self, x: int, y: int, width: int, height: int) -> Optional[ImageRef]:
+        """A copy of a rectangle of the display; None off the display."""
+        handle = _native.wb_display_image_copy(
+            self._tag, _c_int(x), _c_int(y), _c_int(width), _c_int(height)
+        )
+        return ImageRef(handle) if handle else None
+
+    def imagePaste(self, ir: ImageRef, x: int, y: int, blend: bool = False) -> None:
+        """Pastes ``ir`` with its top-left pixel at (x, y), over what is there by its alpha
+        if ``blend``."""
+        _native.wb_display_image_paste(self._tag, ir._handle, _c_int(x), _c_int(y), bool(blend))
+
+    def imageSave(self, ir: Optional[ImageRef], filename: str) -> None:
+        """Saves ``ir`` (None: the display itself) as a PNG file."""
+        _native.wb_display_image_save(self._tag, ir._handle if ir else 0, str(filename))
+
+    def imageLoad(self, filename: str) -> Optional[ImageRef]:
+        """The image of a PNG file; None (with Webots' error) if it cannot be read."""
+        handle = _native.wb_display_image_load(self._tag, str(filename))
+        return ImageRef(handle) if handle else None
+
+    def imageDelete(self, ir: ImageRef) -> None:
+        """Frees ``ir``."""
+        _native.wb_display_image_delete(self._tag, ir._handle)
+
+
+class Keyboard:
+    """Webots' ``Keyboard``: the keys the world's programme presses
+    (``[[vehicle.programme]] at = 2.0, key = "A"``); there is no window to type in. A press is
+    held by the keyboard's first sample at or after its time; ``getKey`` returns the keys of
+    the last sample in turn, then -1."""
+
+    END = 312
+    HOME = 313
+    LEFT = 314
+    UP = 315
+    RIGHT = 316
+    DOWN = 317
+    PAGEUP = 366
+    PAGEDOWN = 367
+    NUMPAD_HOME = 375
+    NUMPAD_LEFT = 376
+    NUMPAD_UP = 377
+    NUMPAD_RIGHT = 378
+    NUMPAD_DOWN = 379
+    NUMPAD_END = 382
+    KEY = 0x0000FFFF
+    SHIFT = 0x00010000
+    CONTROL = 0x00020000
+    ALT = 0x00040000
+
+    def enable(self, samplingPeriod: int) -> None:
+        """Samples the keys every ``samplingPeriod`` ms."""
+        _native.wb_keyboard_enable(_c_int(samplingPeriod))
+
+    def disable(self) -> None:
+        """Stops sampling the keys."""
+        _native.wb_keyboard_enable(0)
+
+    def getSamplingPeriod(self) -> int:
+        """The sampling period (ms), 0 when disabled."""
+        return _native.wb_keyboard_get_sampling_period()
+
+    def getKey(self) -> int:
+        """The next key (ASCII or a constant above, with the modifier bits), -1 when none
+        is left."""
+        return _native.wb_keyboard_get_key()
+
+
 _SENSOR_CLASSES = {
+    Node.CAMERA: Camera,
+    Node.DISPLAY: Display,
     Node.GPS: GPS,
     Node.INERTIAL_UNIT: InertialUnit,
     Node.GYRO: Gyro,
@@ -245,6 +581,7 @@ class Robot:
             atexit.register(_native.wb_robot_cleanup)
         Robot.created = self
         self._devices: Dict[str, Device] = {}
+        self._keyboard: Optional[Keyboard] = None
 
     def step(self, timestep: Optional[int] = None) -> int:
         """Advances the simulation by ``timestep`` ms (None: ``getBasicTimeStep()``), rounded
@@ -274,6 +611,12 @@ class Robot:
             device = _device(str(name), tag)
             self._devices[name] = device
         return device
+
+    def getKeyboard(self) -> Keyboard:
+        """The keyboard (one per robot)."""
+        if self._keyboard is None:
+            self._keyboard = Keyboard()
+        return self._keyboard
 
     def getNumberOfDevices(self) -> int:
         """The number of devices: a car's 27 car-library tags (those its model lacks

@@ -10,7 +10,8 @@ Two APIs in one package:
   (:class:`Telemetry`, ``to_pandas()``), and the ``vehicle-sim`` scenarios with their metrics
   (:meth:`Simulation.run`); sweeps: :class:`Sweep` (a sweep file's cases by index, each run
   into its row of ``vehicle-sim sweep``'s ``results.csv``), :func:`run_case` and
-  :func:`load_results` (``results.csv`` as a pandas DataFrame).
+  :func:`load_results` (``results.csv`` as a pandas DataFrame); :func:`camera_image`, a
+  controller camera's image as a numpy array.
 
 Units: m, m/s, rad (positive steering turns right), rad/s, N, s; km/h where the Webots driver
 API uses it (cruising speed, ``speed_kmh``); ms for ``basicTimeStep``. Frame: x forward, y
@@ -18,6 +19,7 @@ left, z up.
 """
 
 from webots_vehicle._native import SimulationError, WorldError
+from webots_vehicle.images import camera_image
 from webots_vehicle.simulation import SCENARIOS, RunResult, SimCar, Simulation, VehicleWarning
 from webots_vehicle.sweep import Sweep, load_results, run_case
 from webots_vehicle.telemetry import COLUMNS, Telemetry
@@ -33,6 +35,7 @@ __all__ = [
     "Telemetry",
     "VehicleWarning",
     "WorldError",
+    "camera_image",
     "load_results",
     "run_case",
 ]

@@ -1,5 +1,5 @@
-//! Webots sensor devices on a car: `GPS`, `InertialUnit`, `Gyro`, `Accelerometer` and
-//! `Compass`, mounted in the Car PROTO's sensor slots (or anywhere on the chassis), sampled as
+//! Webots sensor devices on a car: `GPS`, `InertialUnit`, `Gyro`, `Accelerometer`,
+//! `Compass`, `Camera` (with its `Recognition`) and `Display`, mounted in the Car PROTO's sensor slots (or anywhere on the chassis), sampled as
 //! Webots samples them. The measurements are written here once; the C API and Python only
 //! marshal them.
 //!
@@ -20,10 +20,13 @@
 //! * **World frame.** The world is Webots' default ENU: x east, y north, z up. The compass
 //!   points to world +y; the inertial unit's yaw is 0 with the device's x axis along world +x.
 
+pub mod camera;
+pub mod display;
 mod gps;
 mod inertial_unit;
 mod lookup;
 mod noise;
+mod png_file;
 mod spec;
 mod triaxial;
 
@@ -32,10 +35,15 @@ use proto_geom::{SensorSlot, SensorSlots};
 
 use crate::error::{ParamError, SimError};
 use crate::rng::SplitMix64;
+use crate::vehicle::VehicleId;
+use camera::solids::Solids;
 
+pub use camera::{CameraSettings, CameraState, Occlusion, RecognitionObject, RecognitionSettings};
+pub use display::{Display, DisplayImage, DisplaySettings, PixelFormat};
 pub use gps::{GpsReading, GpsSettings};
 pub use inertial_unit::{InertialUnitReading, InertialUnitSettings};
 pub use lookup::LookupTable;
+pub use png_file::{ImageFileError, load_png, save_png};
 pub use spec::{Axes, DeviceKind, DeviceSettings, DeviceSpec};
 pub use triaxial::TriaxialSettings;
 
@@ -106,6 +114,12 @@ pub enum DeviceError {
         /// The slot asked for.
         slot: SensorSlot,
     },
+    /// Recognition asked of a device that is no camera with a `recognition` node.
+    #[error("device '{0}' has no Recognition (a Camera with a `recognition` node)")]
+    NoRecognition(String),
+    /// A display asked of a device that is no `Display`.
+    #[error("device '{0}' is no Display")]
+    NotDisplay(String),
     /// A device index the car does not have.
     #[error("no device {index} on this car (it has {count})")]
     Unknown {
@@ -126,6 +140,10 @@ pub enum Reading {
     /// A gyro's angular velocity (rad/s), an accelerometer's specific force (m/s²) or a
     /// compass' north vector, device axes.
     Vector(Vector3<f64>),
+    /// A camera's: its image and objects are in [`Device::camera`].
+    Camera,
+    /// A display's: no measurement; its image is in [`Device::display`].
+    Display,
 }
 
 /// A device on a car: its fields, its frame on the chassis, its sampling state and its last
@@ -146,6 +164,10 @@ pub struct Device {
     /// An accelerometer's velocity at its previous sample.
     previous_velocity: PreviousVelocity,
     reading: Reading,
+    /// A camera's image, objects and Recognition sampling.
+    camera: Option<Box<CameraState>>,
+    /// A display's image and drawing context.
+    display: Option<Box<Display>>,
 }
 
 impl Device {
@@ -179,6 +201,33 @@ impl Device {
         &self.reading
     }
 
+    /// A camera's image and recognised objects (`None` for other devices).
+    pub fn camera(&self) -> Option<&CameraState> {
+        self.camera.as_deref()
+    }
+
+    /// A display's image and context (`None` for other devices).
+    pub fn display(&self) -> Option<&Display> {
+        self.display.as_deref()
+    }
+
+    /// A display to draw into (`None` for other devices).
+    pub fn display_mut(&mut self) -> Option<&mut Display> {
+        self.display.as_deref_mut()
+    }
+
+    /// True if a camera of it is to render at `now_ms` (its image or its Recognition due).
+    fn renders_at(&self, now_ms: u64) -> bool {
+        self.camera
+            .as_ref()
+            .is_some_and(|c| self.due(now_ms) || c.recognition_due(now_ms))
+    }
+
+    /// True if it is enabled and a full period has passed since its last sample.
+    fn due(&self, now_ms: u64) -> bool {
+        self.period_ms != 0 && now_ms - self.last_ms >= u64::from(self.period_ms)
+    }
+
     /// Enables it with a period of `period_ms` ms at time `now_ms` (0 disables). A new period
     /// (or enabling a disabled device) restarts the wait for a full period; enabling again
     /// with the period in force changes nothing, so a controller that enables in its loop
@@ -190,9 +239,34 @@ impl Device {
         }
     }
 
-    /// Samples if enabled and a full period has passed since the last sample.
-    fn refresh(&mut self, chassis: &ChassisMotion, now_ms: u64) {
-        if self.period_ms == 0 || now_ms - self.last_ms < u64::from(self.period_ms) {
+    /// Samples if enabled and a full period has passed since the last sample; a camera
+    /// renders `solids` (seen from car `own`) when its image or its Recognition is due.
+    fn refresh(
+        &mut self,
+        chassis: &ChassisMotion,
+        now_ms: u64,
+        solids: Option<&Solids>,
+        own: VehicleId,
+    ) {
+        if let (DeviceSettings::Camera(settings), Some(camera), Some(solids)) =
+            (&self.settings, self.camera.as_mut(), solids)
+        {
+            let image = self.period_ms != 0 && now_ms - self.last_ms >= u64::from(self.period_ms);
+            if image || camera.recognition_due(now_ms) {
+                if image {
+                    self.last_ms = now_ms;
+                }
+                let pose = chassis.pose * self.mount;
+                let view = camera::View {
+                    pose: &pose,
+                    solids,
+                    own: Some(own),
+                };
+                camera.sample(settings, &view, image, now_ms, &mut self.rng);
+            }
+            return;
+        }
+        if !self.due(now_ms) {
             return;
         }
         // Whole ms: exact in f64.
@@ -218,6 +292,8 @@ impl Device {
             DeviceSettings::Gyro(s) => vector(Quantity::AngularVelocity, previous, s, rng),
             DeviceSettings::Accelerometer(s) => vector(Quantity::SpecificForce, previous, s, rng),
             DeviceSettings::Compass(s) => vector(Quantity::North, previous, s, rng),
+            DeviceSettings::Camera(_) => Reading::Camera,
+            DeviceSettings::Display(_) => Reading::Display,
         };
     }
 }
@@ -338,6 +414,16 @@ impl CarDevices {
                 DeviceKind::Gyro | DeviceKind::Accelerometer | DeviceKind::Compass => {
                     Reading::Vector(Vector3::repeat(f64::NAN))
                 }
+                DeviceKind::Camera => Reading::Camera,
+                DeviceKind::Display => Reading::Display,
+            };
+            let display = match &spec.settings {
+                DeviceSettings::Display(s) => Some(Box::new(Display::new(s))),
+                _ => None,
+            };
+            let camera = match &spec.settings {
+                DeviceSettings::Camera(s) => Some(Box::new(CameraState::new(s))),
+                _ => None,
             };
             devices.push(Device {
                 name,
@@ -349,6 +435,8 @@ impl CarDevices {
                 gps_noise: GpsNoise::default(),
                 previous_velocity: PreviousVelocity::default(),
                 reading,
+                camera,
+                display,
             });
         }
         Ok(CarDevices { devices })
@@ -375,15 +463,67 @@ impl CarDevices {
         Ok(())
     }
 
-    /// True if a device is enabled (else a step need not measure the chassis).
-    pub(crate) fn any_enabled(&self) -> bool {
-        self.devices.iter().any(|d| d.period_ms != 0)
+    /// Display `index`, to draw into.
+    pub(crate) fn display_mut(&mut self, index: usize) -> Result<&mut Display, DeviceError> {
+        let count = self.devices.len();
+        let device = self
+            .devices
+            .get_mut(index)
+            .ok_or(DeviceError::Unknown { index, count })?;
+        let name = device.name.clone();
+        device.display_mut().ok_or(DeviceError::NotDisplay(name))
     }
 
-    /// Samples every device whose period has come, at `now_ms`, on `chassis`.
-    pub(crate) fn refresh(&mut self, chassis: &ChassisMotion, now_ms: u64) {
+    /// Enables the Recognition of camera `index` with a period of `period_ms` ms (0
+    /// disables) at `now_ms`.
+    pub(crate) fn enable_recognition(
+        &mut self,
+        index: usize,
+        period_ms: u32,
+        now_ms: u64,
+    ) -> Result<(), DeviceError> {
+        let count = self.devices.len();
+        let device = self
+            .devices
+            .get_mut(index)
+            .ok_or(DeviceError::Unknown { index, count })?;
+        let has = matches!(&device.settings, DeviceSettings::Camera(s) if s.recognition.is_some());
+        match device.camera.as_mut() {
+            Some(c) if has => {
+                c.enable_recognition(period_ms, now_ms);
+                Ok(())
+            }
+            _ => Err(DeviceError::NoRecognition(device.name.clone())),
+        }
+    }
+
+    /// True if a device (or a camera's Recognition) is enabled: else a step need not measure
+    /// the chassis.
+    pub(crate) fn any_enabled(&self) -> bool {
+        self.devices.iter().any(|d| {
+            d.period_ms != 0
+                || d.camera
+                    .as_ref()
+                    .is_some_and(|c| c.recognition_period_ms() != 0)
+        })
+    }
+
+    /// True if a camera renders at `now_ms`: the world's solids are then needed.
+    pub(crate) fn renders_at(&self, now_ms: u64) -> bool {
+        self.devices.iter().any(|d| d.renders_at(now_ms))
+    }
+
+    /// Samples every device whose period has come, at `now_ms`, on `chassis` of car `own`;
+    /// cameras render `solids` (given whenever [`CarDevices::renders_at`] is true).
+    pub(crate) fn refresh(
+        &mut self,
+        chassis: &ChassisMotion,
+        now_ms: u64,
+        solids: Option<&Solids>,
+        own: VehicleId,
+    ) {
         for d in &mut self.devices {
-            d.refresh(chassis, now_ms);
+            d.refresh(chassis, now_ms, solids, own);
         }
     }
 }

@@ -6,9 +6,9 @@ use proto_geom::nalgebra::{UnitQuaternion, Vector3};
 
 use crate::error::ParamError;
 
-use super::{GpsSettings, InertialUnitSettings, TriaxialSettings};
+use super::{CameraSettings, DisplaySettings, GpsSettings, InertialUnitSettings, TriaxialSettings};
 
-/// The kinds of device of this phase.
+/// The kinds of device.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum DeviceKind {
     /// Webots `GPS`.
@@ -21,16 +21,22 @@ pub enum DeviceKind {
     Accelerometer,
     /// Webots `Compass`.
     Compass,
+    /// Webots `Camera`.
+    Camera,
+    /// Webots `Display`.
+    Display,
 }
 
 impl DeviceKind {
     /// Every kind.
-    pub const ALL: [DeviceKind; 5] = [
+    pub const ALL: [DeviceKind; 7] = [
         DeviceKind::Gps,
         DeviceKind::InertialUnit,
         DeviceKind::Gyro,
         DeviceKind::Accelerometer,
         DeviceKind::Compass,
+        DeviceKind::Camera,
+        DeviceKind::Display,
     ];
 
     /// The Webots node name (`"GPS"`, `"InertialUnit"`, …).
@@ -41,6 +47,8 @@ impl DeviceKind {
             DeviceKind::Gyro => "Gyro",
             DeviceKind::Accelerometer => "Accelerometer",
             DeviceKind::Compass => "Compass",
+            DeviceKind::Camera => "Camera",
+            DeviceKind::Display => "Display",
         }
     }
 
@@ -59,6 +67,8 @@ impl DeviceKind {
             DeviceKind::Gyro => "gyro",
             DeviceKind::Accelerometer => "accelerometer",
             DeviceKind::Compass => "compass",
+            DeviceKind::Camera => "camera",
+            DeviceKind::Display => "display",
         }
     }
 }
@@ -112,6 +122,10 @@ pub enum DeviceSettings {
     Accelerometer(TriaxialSettings),
     /// A `Compass` (unitless).
     Compass(TriaxialSettings),
+    /// A `Camera` (and its `Recognition`).
+    Camera(CameraSettings),
+    /// A `Display`.
+    Display(DisplaySettings),
 }
 
 impl DeviceSettings {
@@ -123,6 +137,8 @@ impl DeviceSettings {
             DeviceSettings::Gyro(_) => DeviceKind::Gyro,
             DeviceSettings::Accelerometer(_) => DeviceKind::Accelerometer,
             DeviceSettings::Compass(_) => DeviceKind::Compass,
+            DeviceSettings::Camera(_) => DeviceKind::Camera,
+            DeviceSettings::Display(_) => DeviceKind::Display,
         }
     }
 
@@ -136,6 +152,8 @@ impl DeviceSettings {
             DeviceKind::Gyro => DeviceSettings::Gyro(TriaxialSettings::default()),
             DeviceKind::Accelerometer => DeviceSettings::Accelerometer(TriaxialSettings::default()),
             DeviceKind::Compass => DeviceSettings::Compass(TriaxialSettings::default()),
+            DeviceKind::Camera => DeviceSettings::Camera(CameraSettings::default()),
+            DeviceKind::Display => DeviceSettings::Display(DisplaySettings::default()),
         }
     }
 
@@ -150,6 +168,8 @@ impl DeviceSettings {
             DeviceSettings::Gyro(s)
             | DeviceSettings::Accelerometer(s)
             | DeviceSettings::Compass(s) => s.validate(),
+            DeviceSettings::Camera(s) => s.validate(),
+            DeviceSettings::Display(s) => s.validate(),
         }
     }
 }

@@ -8,18 +8,19 @@
 //! wheels), physics-only steps (`wb_robot_step` without the driver), and, when asked, the
 //! recording of every vehicle that gives a run's telemetry, metrics and replay.
 
+mod devices;
 mod recording;
 
 use std::path::{Path, PathBuf};
 
-use proto_geom::nalgebra::{Isometry3, Translation3};
-
 use vehicle_model::{ControlMode, Driver, Gear, ParamReport, Sensors};
 
+use crate::appearance::Appearances;
 use crate::car_builder::CarBuilder;
-use crate::devices::{CarDevices, ChassisMotion, Device};
+use crate::devices::CarDevices;
 use crate::diff_wheels::{DifferentialWheelsParams, RobotId, RobotMode, RobotPlacement};
 use crate::error::{ParamError, SimError};
+use crate::keyboard::Keyboard;
 use crate::report::OutputError;
 use crate::scenario::RunReport;
 use crate::telemetry::TelemetryLog;
@@ -52,6 +53,7 @@ struct Controlled {
     name: String,
     sampled: bool,
     devices: CarDevices,
+    keyboard: Keyboard,
 }
 
 /// A robot's handle and name.
@@ -113,6 +115,8 @@ pub struct Simulation {
     /// Simulated time after which the run is over (s).
     duration: Option<f64>,
     recording: Option<Recording>,
+    /// How the world's things look to the cameras.
+    appearances: Appearances,
 }
 
 impl Simulation {
@@ -126,6 +130,7 @@ impl Simulation {
             robots: Vec::new(),
             duration: None,
             recording: None,
+            appearances: Appearances::default(),
         }
     }
 
@@ -168,6 +173,9 @@ impl Simulation {
         if let Some(robot) = &description.robot {
             sim.add_robot(robot)?;
         }
+        for (object, appearance) in description.appearances.iter() {
+            sim.set_appearance(*object, appearance.clone())?;
+        }
         Ok((sim, reports))
     }
 
@@ -190,6 +198,7 @@ impl Simulation {
             name,
             sampled: false,
             devices: built.devices,
+            keyboard: built.keyboard,
         });
         Ok((id, built.report))
     }
@@ -403,6 +412,10 @@ impl Simulation {
         }
         let result = self.world.step();
         if result.is_ok() {
+            let now_ms = self.world.time_ms();
+            for car in &mut self.cars {
+                car.keyboard.refresh(now_ms);
+            }
             self.refresh_devices()?;
             if let Some(mut recording) = self.recording.take() {
                 recording.sample(self);
@@ -410,71 +423,6 @@ impl Simulation {
             }
         }
         result
-    }
-
-    /// Samples every enabled device whose period has come, on its car's chassis as the step
-    /// left it (Webots refreshes its sensors at the end of each step).
-    fn refresh_devices(&mut self) -> Result<(), SimError> {
-        let now_ms = self.world.time_ms();
-        let gravity = self.world.config().gravity;
-        for car in &mut self.cars {
-            if !car.devices.any_enabled() {
-                continue;
-            }
-            let s = self.world.vehicle(car.id)?.state();
-            let chassis = ChassisMotion {
-                pose: Isometry3::from_parts(Translation3::from(s.position.coords), s.orientation),
-                velocity: s.velocity,
-                angular_velocity: s.angular_velocity,
-                gravity,
-            };
-            car.devices.refresh(&chassis, now_ms);
-        }
-        Ok(())
-    }
-
-    /// The sensor devices of car `id`, in the order its builder (or world file) lists them,
-    /// each with its name, kind, sampling period and last sample.
-    ///
-    /// ```
-    /// use sim::devices::{DeviceKind, DeviceSettings, DeviceSpec, Reading};
-    /// use sim::{CarBuilder, Simulation, World, WorldConfig};
-    /// use vehicle_model::Model;
-    /// let mut sim = Simulation::new(World::new(WorldConfig::default())?);
-    /// let gyro = DeviceSpec::new(DeviceSettings::default_of(DeviceKind::Gyro));
-    /// let (car, _) = sim.add_car(CarBuilder::of_model(Model::BmwX5).device(gyro))?;
-    /// sim.enable_device(car, 0, 20)?; // ms
-    /// sim.step()?;
-    /// let Reading::Vector(w) = *sim.devices(car)?[0].reading() else { unreachable!() };
-    /// assert!(w.x.is_nan()); // no sample before one full period
-    /// sim.step()?;
-    /// let Reading::Vector(w) = *sim.devices(car)?[0].reading() else { unreachable!() };
-    /// assert!(w.z.abs() < 1e-3); // rad/s: a parked car hardly turns
-    /// # Ok::<(), sim::SimError>(())
-    /// ```
-    pub fn devices(&self, id: VehicleId) -> Result<&[Device], SimError> {
-        self.car(id).map(|c| c.devices.all())
-    }
-
-    /// Enables device `index` of car `id` with a sampling period of `period_ms` ms (Webots:
-    /// `wb_<device>_enable`; 0 disables, as `wb_<device>_disable`). Its first sample comes one
-    /// full period from now ([`crate::devices`]).
-    ///
-    /// # Errors
-    /// [`SimError::UnknownVehicle`]; [`SimError::Device`] for an index the car does not have.
-    pub fn enable_device(
-        &mut self,
-        id: VehicleId,
-        index: usize,
-        period_ms: u32,
-    ) -> Result<(), SimError> {
-        let now_ms = self.world.time_ms();
-        let car = self
-            .cars
-            .iter_mut()
-            .find(|c| c.id == id)
-            .ok_or(SimError::UnknownVehicle(id.index()))?;
-        Ok(car.devices.enable(index, period_ms, now_ms)?)
     }
 
     /// The telemetry of car `id` after the last step.
@@ -527,7 +475,9 @@ impl Simulation {
 
     /// Writes the run recorded so far into `dir` ([`report::write_data`](
     /// crate::report::write_data): `telemetry.csv`, `metrics.json` with `world_warnings`,
-    /// `replay.glb`), streaming the telemetry from the logs; `world` names the world in
+    /// `replay.glb`), streaming the telemetry from the logs, and the last image of every
+    /// camera that took one and every display as `<car>-<device>.png` (characters other
+    /// than letters, digits, `-` and `_` written `_`); `world` names the world in
     /// `metrics.json`. Returns the paths written; nothing if not recording.
     ///
     /// # Errors
@@ -538,9 +488,11 @@ impl Simulation {
         world_warnings: &[String],
         dir: &Path,
     ) -> Result<Vec<PathBuf>, OutputError> {
-        match &self.recording {
-            Some(r) => r.save(self, world, world_warnings, dir),
-            None => Ok(Vec::new()),
-        }
+        let Some(r) = &self.recording else {
+            return Ok(Vec::new());
+        };
+        let mut written = r.save(self, world, world_warnings, dir)?;
+        written.extend(self.save_images(dir)?);
+        Ok(written)
     }
 }

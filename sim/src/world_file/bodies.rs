@@ -11,7 +11,15 @@ use super::read::Section;
 use super::read::{missing, yaw_of};
 
 /// Keys of each `[[body]]`.
-pub(crate) const BODY_KEYS: [&str; 5] = ["translation", "size", "mass", "rotation", "friction"];
+pub(crate) const BODY_KEYS: [&str; 7] = [
+    "translation",
+    "size",
+    "mass",
+    "rotation",
+    "friction",
+    "color",
+    "recognitionColors",
+];
 
 /// Reads every `[[body]]` into `config.bodies`, each validated on its own so that an error
 /// names the key of the section at fault.

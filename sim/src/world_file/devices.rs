@@ -10,8 +10,9 @@ use vehicle_model::Model;
 use super::error::{NameSet, WorldFileError, WorldFileErrorKind};
 use super::read::{Section, as_f64, describe, missing};
 use crate::devices::{
-    Axes, CAR_DEVICE_NAMES, DeviceKind, DeviceSettings, DeviceSpec, GpsSettings,
-    InertialUnitSettings, LookupTable, TriaxialSettings,
+    Axes, CAR_DEVICE_NAMES, CameraSettings, DeviceKind, DeviceSettings, DeviceSpec,
+    DisplaySettings, GpsSettings, InertialUnitSettings, LookupTable, Occlusion,
+    RecognitionSettings, TriaxialSettings,
 };
 use crate::error::ParamError;
 
@@ -32,6 +33,22 @@ const GPS: [&str; 5] = [
 const INERTIAL_UNIT: [&str; 5] = ["noise", "xAxis", "yAxis", "zAxis", "resolution"];
 /// The `Gyro`, `Accelerometer` and `Compass` fields.
 const TRIAXIAL: [&str; 5] = ["lookupTable", "xAxis", "yAxis", "zAxis", "resolution"];
+
+/// The `Camera` fields (`recognition`: an inline table of the `Recognition` fields).
+const CAMERA: [&str; 8] = [
+    "fieldOfView",
+    "width",
+    "height",
+    "near",
+    "far",
+    "noise",
+    "projection",
+    "recognition",
+];
+/// The `Display` fields.
+const DISPLAY: [&str; 2] = ["width", "height"];
+/// The `Recognition` fields.
+const RECOGNITION: [&str; 3] = ["maxRange", "maxObjects", "occlusion"];
 
 /// The slots by their names in a world file.
 const SLOTS: [(&str, SensorSlot); 4] = [
@@ -79,6 +96,8 @@ fn read_device(d: &Section<'_, '_>, model: Model) -> Result<DeviceSpec, WorldFil
         DeviceKind::Gps => &GPS,
         DeviceKind::InertialUnit => &INERTIAL_UNIT,
         DeviceKind::Gyro | DeviceKind::Accelerometer | DeviceKind::Compass => &TRIAXIAL,
+        DeviceKind::Camera => &CAMERA,
+        DeviceKind::Display => &DISPLAY,
     };
     let allowed: Vec<&str> = COMMON.iter().chain(fields).copied().collect();
     d.check_keys(&allowed)?;
@@ -88,6 +107,14 @@ fn read_device(d: &Section<'_, '_>, model: Model) -> Result<DeviceSpec, WorldFil
         DeviceKind::Gyro => DeviceSettings::Gyro(read_triaxial(d)?),
         DeviceKind::Accelerometer => DeviceSettings::Accelerometer(read_triaxial(d)?),
         DeviceKind::Compass => DeviceSettings::Compass(read_triaxial(d)?),
+        DeviceKind::Camera => DeviceSettings::Camera(read_camera(d)?),
+        DeviceKind::Display => {
+            let defaults = DisplaySettings::default();
+            DeviceSettings::Display(DisplaySettings {
+                width: pixels(d, "width")?.unwrap_or(defaults.width),
+                height: pixels(d, "height")?.unwrap_or(defaults.height),
+            })
+        }
     };
     settings.validate().map_err(|e| invalid(d, &e))?;
     let mut spec = DeviceSpec::new(settings);
@@ -168,6 +195,88 @@ fn read_gps(d: &Section<'_, '_>) -> Result<GpsSettings, WorldFileError> {
         resolution: d.number("resolution")?.unwrap_or(g.resolution),
         speed_noise: d.number("speedNoise")?.unwrap_or(g.speed_noise),
         speed_resolution: d.number("speedResolution")?.unwrap_or(g.speed_resolution),
+    })
+}
+
+fn read_camera(d: &Section<'_, '_>) -> Result<CameraSettings, WorldFileError> {
+    let c = CameraSettings::default();
+    if let Some(p) = d.string("projection")?
+        && p != "planar"
+    {
+        return Err(d.error(
+            "projection",
+            WorldFileErrorKind::InvalidValue(format!(
+                "\"{p}\": only the \"planar\" projection is rendered"
+            )),
+        ));
+    }
+    let recognition = match d.table("recognition")? {
+        None => None,
+        Some(r) => Some(read_recognition(&r)?),
+    };
+    Ok(CameraSettings {
+        field_of_view: d.number("fieldOfView")?.unwrap_or(c.field_of_view),
+        width: pixels(d, "width")?.unwrap_or(c.width),
+        height: pixels(d, "height")?.unwrap_or(c.height),
+        near: d.number("near")?.unwrap_or(c.near),
+        far: d.number("far")?.unwrap_or(c.far),
+        noise: d.number("noise")?.unwrap_or(c.noise),
+        recognition,
+    })
+}
+
+/// A whole number of pixels at `key` (1 to 4096: the range is checked with the others).
+fn pixels(d: &Section<'_, '_>, key: &str) -> Result<Option<u32>, WorldFileError> {
+    let Some(v) = d.number(key)? else {
+        return Ok(None);
+    };
+    if v.fract() != 0.0 || !(1.0..=f64::from(crate::devices::camera::MAX_SIDE)).contains(&v) {
+        return Err(d.error(
+            key,
+            WorldFileErrorKind::InvalidValue(format!(
+                "{} px: must be a whole number from 1 to 4096",
+                Compact(v)
+            )),
+        ));
+    }
+    Ok(Some(v as u32))
+}
+
+fn read_recognition(r: &Section<'_, '_>) -> Result<RecognitionSettings, WorldFileError> {
+    r.check_keys(&RECOGNITION)?;
+    let d = RecognitionSettings::default();
+    let max_objects = match r.number("maxObjects")? {
+        None => d.max_objects,
+        Some(n) if n.fract() == 0.0 && n >= -1.0 && n <= f64::from(i32::MAX) => n as i32,
+        Some(n) => {
+            return Err(r.error(
+                "maxObjects",
+                WorldFileErrorKind::InvalidValue(format!(
+                    "{}: must be -1 (all) or a whole number >= 0",
+                    Compact(n)
+                )),
+            ));
+        }
+    };
+    let occlusion = match r.number("occlusion")? {
+        None => d.occlusion,
+        Some(0.0) => Occlusion::Off,
+        Some(1.0) => Occlusion::Centre,
+        Some(2.0) => Occlusion::Outline,
+        Some(n) => {
+            return Err(r.error(
+                "occlusion",
+                WorldFileErrorKind::InvalidValue(format!(
+                    "{}: must be 0 (off), 1 (centre visible) or 2 (outline)",
+                    Compact(n)
+                )),
+            ));
+        }
+    };
+    Ok(RecognitionSettings {
+        max_range: r.number("maxRange")?.unwrap_or(d.max_range),
+        max_objects,
+        occlusion,
     })
 }
 

@@ -32,6 +32,7 @@
 mod bodies;
 mod devices;
 mod error;
+mod looks;
 mod overrides;
 mod programme;
 pub(crate) mod read;
@@ -47,6 +48,7 @@ use proto_geom::plausible::Compact;
 use toml::de::{DeTable, DeValue};
 use vehicle_model::Model;
 
+use crate::appearance::{Appearances, BODY_COLOR, OBSTACLE_COLOR, PALETTE, SceneObject};
 use crate::config::WorldConfig;
 use crate::simulation::{DURATION_RULE, is_duration};
 
@@ -111,6 +113,9 @@ pub struct WorldDescription {
     pub cars: Vec<CarDescription>,
     /// The DifferentialWheels robot (`[differential_wheels]`), if any.
     pub robot: Option<RobotDescription>,
+    /// The colours, recognition colours and models the file gives its boxes, ramps, dynamic
+    /// boxes, cars and robot (`color`, `recognitionColors`, `model`).
+    pub appearances: Appearances,
     /// Values that were accepted with a warning (e.g. an invalid car field replaced by its
     /// default, as Webots does), in file order.
     pub warnings: Vec<WorldWarning>,
@@ -193,6 +198,7 @@ pub fn with_model(model: Model) -> WorldDescription {
         duration: None,
         cars,
         robot: None,
+        appearances: Appearances::default(),
         warnings,
     }
 }
@@ -335,6 +341,7 @@ pub(crate) fn parse_with(
     }
     let robot_section = root.table("differential_wheels")?;
     let robot = robot_section.as_ref().map(robot::read_robot).transpose()?;
+    let appearances = read_looks(&root, &car_sections, robot_section.as_ref())?;
     if cars.is_empty() && robot.is_none() {
         return Err(src.error(
             None,
@@ -369,8 +376,47 @@ pub(crate) fn parse_with(
         duration,
         cars,
         robot,
+        appearances,
         warnings,
     })
+}
+
+/// The looks of the boxes, ramps (in `config.obstacles`' order: boxes first), dynamic boxes,
+/// cars and robot.
+fn read_looks(
+    root: &Section<'_, '_>,
+    cars: &[Section<'_, '_>],
+    robot: Option<&Section<'_, '_>>,
+) -> Result<Appearances, WorldFileError> {
+    let mut found = Vec::new();
+    let obstacles = root.tables("box")?.into_iter().chain(root.tables("ramp")?);
+    for (i, s) in obstacles.enumerate() {
+        found.push(looks::read_look(
+            &s,
+            SceneObject::Obstacle(i),
+            OBSTACLE_COLOR,
+        )?);
+    }
+    for (i, s) in root.tables("body")?.iter().enumerate() {
+        found.push(looks::read_look(s, SceneObject::Body(i), BODY_COLOR)?);
+    }
+    for (i, s) in cars.iter().enumerate() {
+        found.push(looks::read_look(
+            s,
+            SceneObject::Car(i),
+            PALETTE[i % PALETTE.len()],
+        )?);
+    }
+    if let Some(s) = robot {
+        let colour = PALETTE[cars.len() % PALETTE.len()];
+        found.push(looks::read_look(s, SceneObject::Robot(0), colour)?);
+    }
+    let mut appearances = Appearances::default();
+    for (object, look) in found.into_iter().flatten() {
+        // Validated by `read_look`.
+        let _ = appearances.set(object, look);
+    }
+    Ok(appearances)
 }
 
 /// Gives every car without a `name` its model's name, numbered `-1`, `-2`… (in file order)

@@ -5,6 +5,7 @@ use vehicle_model::{IndicatorState, WiperMode};
 
 use proto_geom::plausible::Compact;
 
+use crate::keyboard::{KeyPress, check_code, parse_key};
 use crate::programme::{DriverCommand, Programme, Step, WheelSpeeds};
 use crate::simulation::MAX_DURATION;
 
@@ -15,6 +16,8 @@ use super::read::Section;
 pub(crate) const PROGRAMME: &str = "programme";
 /// The key of a step's time.
 const AT: &str = "at";
+/// The key of a step's key press (the controller's keyboard).
+const KEY: &str = "key";
 
 const INDICATORS: [(&str, IndicatorState); 3] = [
     ("off", IndicatorState::Off),
@@ -118,13 +121,13 @@ pub(crate) fn read_car_programme(
     s: &Section<'_, '_>,
     gears: i32,
 ) -> Result<Programme<DriverCommand>, WorldFileError> {
-    let keys: Vec<&str> = [AT].into_iter().chain(DriverCommand::KEYS).collect();
+    let keys: Vec<&str> = [AT, KEY].into_iter().chain(DriverCommand::KEYS).collect();
     let mut out = Vec::new();
     for (at, step) in steps(s, &keys)? {
         let mut commands = Vec::new();
         for (key, ..) in step.entries() {
             let command = match key {
-                AT => continue,
+                AT | KEY => continue,
                 "cruising_speed" => {
                     DriverCommand::CruisingSpeed(number_in(&step, key, f64::MIN, f64::MAX)?)
                 }
@@ -160,9 +163,47 @@ pub(crate) fn read_car_programme(
             };
             commands.push(command);
         }
-        out.push(Step { at, commands });
+        // A step that only presses a key drives nothing.
+        if !commands.is_empty() {
+            out.push(Step { at, commands });
+        }
     }
     Ok(Programme::new(out))
+}
+
+/// The keys the programme of car section `s` presses (`key = "A"`, `"CONTROL+UP"` … or a
+/// Webots key code), in file order.
+pub(crate) fn read_car_keys(s: &Section<'_, '_>) -> Result<Vec<KeyPress>, WorldFileError> {
+    let keys: Vec<&str> = [AT, KEY].into_iter().chain(DriverCommand::KEYS).collect();
+    let mut out = Vec::new();
+    for (at, step) in steps(s, &keys)? {
+        let code = match (step.string(KEY), step.number(KEY)) {
+            (Ok(None), _) => continue,
+            (Ok(Some(text)), _) => parse_key(text).ok_or_else(|| {
+                step.error(
+                    KEY,
+                    WorldFileErrorKind::InvalidValue(format!(
+                        "\"{text}\": must be one printable character, or a key name (UP, DOWN, \
+                         LEFT, RIGHT, HOME, END, PAGEUP, PAGEDOWN, NUMPAD_…), after any of \
+                         SHIFT+, CONTROL+, ALT+"
+                    )),
+                )
+            })?,
+            (Err(_), Ok(Some(n))) if n.fract() == 0.0 => check_code(n as i64).map_err(|e| {
+                step.error(
+                    KEY,
+                    WorldFileErrorKind::InvalidValue(format!("{}: must be {}", Compact(n), e.rule)),
+                )
+            })?,
+            (Err(e), _) => return Err(e),
+        };
+        // `at` is from 0 to a day (checked by `steps`): whole ms fit.
+        out.push(KeyPress {
+            at_ms: (at * 1000.0).round() as u64,
+            code,
+        });
+    }
+    Ok(out)
 }
 
 /// Reads the programme of the robot section `s`: `speed = [left, right]` in speed units,

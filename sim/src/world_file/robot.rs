@@ -25,8 +25,10 @@ pub(crate) const NODE_FIELDS: [&str; 10] = [
 ];
 
 /// The keys of `[differential_wheels]` that are the simulator's own, not node fields.
-const SIM_KEYS: [&str; 9] = [
+const SIM_KEYS: [&str; 11] = [
     NAME,
+    "color",
+    "recognitionColors",
     PROGRAMME,
     "physics",
     "seed",

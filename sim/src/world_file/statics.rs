@@ -11,10 +11,25 @@ use super::read::{Section, missing, yaw_of};
 /// Keys of `[ground]`.
 pub(crate) const GROUND_KEYS: [&str; 1] = ["friction"];
 /// Keys of each `[[box]]`.
-pub(crate) const BOX_KEYS: [&str; 4] = ["translation", "size", "rotation", "friction"];
+pub(crate) const BOX_KEYS: [&str; 6] = [
+    "translation",
+    "size",
+    "rotation",
+    "friction",
+    "color",
+    "recognitionColors",
+];
 /// Keys of each `[[ramp]]`.
-pub(crate) const RAMP_KEYS: [&str; 6] =
-    ["start", "rotation", "length", "width", "height", "friction"];
+pub(crate) const RAMP_KEYS: [&str; 8] = [
+    "start",
+    "rotation",
+    "length",
+    "width",
+    "height",
+    "friction",
+    "color",
+    "recognitionColors",
+];
 
 /// Reads `basicTimeStep`, `gravity`, `[ground]`, `[[box]]` and `[[ramp]]` into a validated
 /// [`WorldConfig`]; absent keys keep the defaults of [`WorldConfig::default`].

@@ -15,11 +15,12 @@ use super::devices::{DEVICE, read_devices};
 use super::error::{
     NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, closest, model_names,
 };
-use super::programme::{PROGRAMME, read_car_programme};
+use super::programme::{PROGRAMME, read_car_keys, read_car_programme};
 use super::read::{Section, as_f64, describe};
 use super::tyre;
 use crate::devices::DeviceSpec;
 use crate::error::ParamError;
+use crate::keyboard::KeyPress;
 use crate::programme::Programme;
 use crate::vehicle::{Mounting, TyreChoice, VehicleSpec};
 
@@ -38,8 +39,10 @@ const BRAKE_BALANCES: [(&str, BrakeBalance<f64>); 2] = [
 ];
 
 /// The keys of `[vehicle]` that are neither Webots fields nor wheel slots.
-const OWN_KEYS: [&str; 8] = [
+const OWN_KEYS: [&str; 10] = [
     "model",
+    "color",
+    "recognitionColors",
     "tyre",
     MOUNTING,
     BRAKE_BALANCE,
@@ -78,6 +81,8 @@ pub struct CarDescription {
     pub name: String,
     /// Its timed driver commands (`[[vehicle.programme]]`), empty if none.
     pub programme: Programme,
+    /// The keys its programme presses for the controller's keyboard (`key`).
+    pub keys: Vec<KeyPress>,
     /// Its sensor devices (`[[vehicle.device]]`), in file order, empty if none.
     pub devices: Vec<DeviceSpec>,
     /// The seed of its devices' noise (`seed`, default 0).
@@ -104,6 +109,7 @@ impl CarDescription {
                 brake_balance: BrakeBalance::Equal,
                 name: model.webots_name().to_string(),
                 programme: Programme::default(),
+                keys: Vec::new(),
                 devices: Vec::new(),
                 seed: 0,
             },
@@ -250,6 +256,7 @@ pub(crate) fn read_vehicle(
     let name = s.string(NAME)?.unwrap_or("").to_string();
     let gears = i32::try_from(params.gear_ratios.len().saturating_sub(1)).unwrap_or(i32::MAX);
     let programme = read_car_programme(s, gears)?;
+    let keys = read_car_keys(s)?;
     let devices = read_devices(s, model)?;
     let seed = s.unsigned(SEED)?.unwrap_or(0);
     Ok(CarDescription {
@@ -260,6 +267,7 @@ pub(crate) fn read_vehicle(
         brake_balance,
         name,
         programme,
+        keys,
         devices,
         seed,
     })

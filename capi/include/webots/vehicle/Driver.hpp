@@ -10,7 +10,7 @@
 //   no Supervisor or Robot C++ classes, so Driver derives from nothing; of the Robot methods it
 //   offers getTime(), getBasicTimeStep(), getNumberOfDevices() and the typed device getters of
 //   the sensors this simulator has (getGPS, getInertialUnit, getGyro, getAccelerometer,
-//   getCompass; nullptr for a name the car lacks or a device of another type).
+//   getCompass, getCamera, getDisplay, getKeyboard; nullptr for a name the car lacks or a device of another type).
 // * Header-only: every method is inline and calls the C function of the same meaning, so only
 //   libdriver.so and libcar.so are needed at link time (no libCppDriver).
 // * The destructor releases the singleton, so a new Driver may be created after the previous
@@ -30,10 +30,13 @@
 #include <webots/vehicle/driver.h>
 #undef WB_VEHICLE_DRIVER_HPP_NO_ENUMERATORS
 #include <webots/Accelerometer.hpp>
+#include <webots/Camera.hpp>
 #include <webots/Compass.hpp>
+#include <webots/Display.hpp>
 #include <webots/GPS.hpp>
 #include <webots/Gyro.hpp>
 #include <webots/InertialUnit.hpp>
+#include <webots/Keyboard.hpp>
 #include <webots/nodes.h>
 #include <webots/robot.h>
 
@@ -110,6 +113,14 @@ namespace webots {
     Gyro *getGyro(const std::string &name) { return device<Gyro>(name, WB_NODE_GYRO); }
     Accelerometer *getAccelerometer(const std::string &name) { return device<Accelerometer>(name, WB_NODE_ACCELEROMETER); }
     Compass *getCompass(const std::string &name) { return device<Compass>(name, WB_NODE_COMPASS); }
+    Camera *getCamera(const std::string &name) { return device<Camera>(name, WB_NODE_CAMERA); }
+    Display *getDisplay(const std::string &name) { return device<Display>(name, WB_NODE_DISPLAY); }
+    // The keyboard, owned by the Driver (its keys: the world's programme's).
+    Keyboard *getKeyboard() {
+      if (!keyboard_)
+        keyboard_.reset(new Keyboard());
+      return keyboard_.get();
+    }
 
     // Steers with Ackermann geometry: rad, positive right, negative left.
     void setSteeringAngle(double steeringAngle) { wbu_driver_set_steering_angle(steeringAngle); }
@@ -203,6 +214,7 @@ namespace webots {
     }
 
     std::vector<std::unique_ptr<Device>> devices_;
+    std::unique_ptr<Keyboard> keyboard_;
 
     // The driver step takes no duration (it always runs one basic time step); as in Webots,
     // step(int) cannot be called on a Driver.

@@ -1,0 +1,206 @@
+//! The devices of the cars as the `Simulation` runs them: their sampling after each step,
+//! enabling, the cameras' Recognition, the displays, the keyboards, the looks of the world's
+//! things for the cameras, and the last images a recorded run saves.
+
+use std::path::{Path, PathBuf};
+
+use proto_geom::nalgebra::{Isometry3, Translation3};
+
+use super::{Controlled, Simulation};
+use crate::appearance::{Appearance, SceneObject};
+use crate::devices::camera::solids::Solids;
+use crate::devices::{
+    ChassisMotion, Device, DeviceSettings, Display, DisplayImage, PixelFormat, save_png,
+};
+use crate::error::SimError;
+use crate::keyboard::Keyboard;
+use crate::report::OutputError;
+use crate::vehicle::VehicleId;
+
+impl Simulation {
+    /// Car `id`, to change.
+    fn car_mut(&mut self, id: VehicleId) -> Result<&mut Controlled, SimError> {
+        self.cars
+            .iter_mut()
+            .find(|c| c.id == id)
+            .ok_or(SimError::UnknownVehicle(id.index()))
+    }
+
+    /// Samples every enabled device whose period has come, on its car's chassis as the step
+    /// left it (Webots refreshes its sensors at the end of each step). The world's solids are
+    /// gathered once, and only when a camera renders.
+    pub(super) fn refresh_devices(&mut self) -> Result<(), SimError> {
+        let now_ms = self.world.time_ms();
+        let gravity = self.world.config().gravity;
+        let solids = self
+            .cars
+            .iter()
+            .any(|c| c.devices.renders_at(now_ms))
+            .then(|| Solids::of(&self.world, &self.appearances));
+        for car in &mut self.cars {
+            if !car.devices.any_enabled() {
+                continue;
+            }
+            let s = self.world.vehicle(car.id)?.state();
+            let chassis = ChassisMotion {
+                pose: Isometry3::from_parts(Translation3::from(s.position.coords), s.orientation),
+                velocity: s.velocity,
+                angular_velocity: s.angular_velocity,
+                gravity,
+            };
+            car.devices
+                .refresh(&chassis, now_ms, solids.as_ref(), car.id);
+        }
+        Ok(())
+    }
+
+    /// The sensor devices of car `id`, in the order its builder (or world file) lists them,
+    /// each with its name, kind, sampling period and last sample.
+    ///
+    /// ```
+    /// use sim::devices::{DeviceKind, DeviceSettings, DeviceSpec, Reading};
+    /// use sim::{CarBuilder, Simulation, World, WorldConfig};
+    /// use vehicle_model::Model;
+    /// let mut sim = Simulation::new(World::new(WorldConfig::default())?);
+    /// let gyro = DeviceSpec::new(DeviceSettings::default_of(DeviceKind::Gyro));
+    /// let (car, _) = sim.add_car(CarBuilder::of_model(Model::BmwX5).device(gyro))?;
+    /// sim.enable_device(car, 0, 20)?; // ms
+    /// sim.step()?;
+    /// let Reading::Vector(w) = *sim.devices(car)?[0].reading() else { unreachable!() };
+    /// assert!(w.x.is_nan()); // no sample before one full period
+    /// sim.step()?;
+    /// let Reading::Vector(w) = *sim.devices(car)?[0].reading() else { unreachable!() };
+    /// assert!(w.z.abs() < 1e-3); // rad/s: a parked car hardly turns
+    /// # Ok::<(), sim::SimError>(())
+    /// ```
+    pub fn devices(&self, id: VehicleId) -> Result<&[Device], SimError> {
+        self.car(id).map(|c| c.devices.all())
+    }
+
+    /// Display `index` of car `id`, to draw into (Webots: the `wb_display_*` functions).
+    ///
+    /// # Errors
+    /// [`SimError::UnknownVehicle`]; [`SimError::Device`] for an index the car does not have
+    /// or a device that is no display.
+    pub fn display_mut(&mut self, id: VehicleId, index: usize) -> Result<&mut Display, SimError> {
+        let car = self.car_mut(id)?;
+        Ok(car.devices.display_mut(index)?)
+    }
+
+    /// The keyboard of car `id`'s controller: the keys its programme presses
+    /// ([`crate::keyboard`]).
+    ///
+    /// # Errors
+    /// [`SimError::UnknownVehicle`].
+    pub fn keyboard(&self, id: VehicleId) -> Result<&Keyboard, SimError> {
+        self.car(id).map(|c| &c.keyboard)
+    }
+
+    /// Enables car `id`'s keyboard with a period of `period_ms` ms (0 disables) (Webots:
+    /// `wb_keyboard_enable`).
+    ///
+    /// # Errors
+    /// [`SimError::UnknownVehicle`].
+    pub fn enable_keyboard(&mut self, id: VehicleId, period_ms: u32) -> Result<(), SimError> {
+        let now_ms = self.world.time_ms();
+        let car = self.car_mut(id)?;
+        car.keyboard.enable(period_ms, now_ms);
+        Ok(())
+    }
+
+    /// The next key car `id`'s keyboard holds, −1 when none is left (Webots:
+    /// `wb_keyboard_get_key`).
+    ///
+    /// # Errors
+    /// [`SimError::UnknownVehicle`].
+    pub fn next_key(&mut self, id: VehicleId) -> Result<i32, SimError> {
+        let car = self.car_mut(id)?;
+        Ok(car.keyboard.next_key())
+    }
+
+    /// Gives `object` the look `appearance`: its colour in camera images, its recognition
+    /// colours and model for a camera's Recognition ([`crate::appearance`]).
+    ///
+    /// # Errors
+    /// [`SimError::Param`] for a colour out of [0, 1].
+    pub fn set_appearance(
+        &mut self,
+        object: SceneObject,
+        appearance: Appearance,
+    ) -> Result<(), SimError> {
+        self.appearances.set(object, appearance)?;
+        Ok(())
+    }
+
+    /// Enables the Recognition of camera `index` of car `id` with a sampling period of
+    /// `period_ms` ms (Webots: `wb_camera_recognition_enable`; 0 disables). The camera itself
+    /// need not be enabled.
+    ///
+    /// # Errors
+    /// [`SimError::UnknownVehicle`]; [`SimError::Device`] for an index the car does not have
+    /// or a device without Recognition.
+    pub fn enable_recognition(
+        &mut self,
+        id: VehicleId,
+        index: usize,
+        period_ms: u32,
+    ) -> Result<(), SimError> {
+        let now_ms = self.world.time_ms();
+        let car = self.car_mut(id)?;
+        Ok(car.devices.enable_recognition(index, period_ms, now_ms)?)
+    }
+
+    /// Enables device `index` of car `id` with a sampling period of `period_ms` ms (Webots:
+    /// `wb_<device>_enable`; 0 disables, as `wb_<device>_disable`). Its first sample comes one
+    /// full period from now ([`crate::devices`]).
+    ///
+    /// # Errors
+    /// [`SimError::UnknownVehicle`]; [`SimError::Device`] for an index the car does not have.
+    pub fn enable_device(
+        &mut self,
+        id: VehicleId,
+        index: usize,
+        period_ms: u32,
+    ) -> Result<(), SimError> {
+        let now_ms = self.world.time_ms();
+        let car = self.car_mut(id)?;
+        Ok(car.devices.enable(index, period_ms, now_ms)?)
+    }
+
+    /// Writes the last image of every camera that took one and every display into `dir` as
+    /// `<car>-<device>.png` (characters other than letters, digits, `-` and `_` written `_`).
+    pub(super) fn save_images(&self, dir: &Path) -> Result<Vec<PathBuf>, OutputError> {
+        let mut written = Vec::new();
+        for car in &self.cars {
+            for d in car.devices.all() {
+                let image = match (d.settings(), d.camera(), d.display()) {
+                    (DeviceSettings::Camera(s), Some(c), _) if c.has_image() => {
+                        DisplayImage::from_bytes(s.width, s.height, c.image(), PixelFormat::Bgra)
+                    }
+                    (_, _, Some(display)) => Some(display.image().clone()),
+                    _ => None,
+                };
+                let Some(image) = image else {
+                    continue;
+                };
+                let name: String = format!("{}-{}", car.name, d.name())
+                    .chars()
+                    .map(|c| {
+                        if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
+                            c
+                        } else {
+                            '_'
+                        }
+                    })
+                    .collect();
+                let path = dir.join(format!("{name}.png"));
+                save_png(&path, &image).map_err(|e| OutputError::Io {
+                    path: path.clone(),
+                    source: std::io::Error::other(e.to_string()),
+                })?;
+                written.push(path);
+            }
+        }
+        Ok(written)
+    }
+}
