@@ -23,7 +23,8 @@
 //! * `webots/differential_wheels.h`: every `wb_differential_wheels_*` function;
 //! * `webots/gps.h`, `webots/inertial_unit.h`, `webots/gyro.h`, `webots/accelerometer.h`,
 //!   `webots/compass.h`: the sensors a world file puts on the car (`[[vehicle.device]]`),
-//!   measured by `sim::devices`; `webots/device.h` and `wb_robot_get_number_of_devices`,
+//!   measured by `sim::devices`; `webots/distance_sensor.h`, `webots/radar.h`
+//!   (`WbRadarTarget`), `webots/lidar.h` (`WbLidarPoint`): the ray devices; `webots/device.h` and `wb_robot_get_number_of_devices`,
 //!   `wb_robot_get_device_by_index` to list the robot's devices.
 //!
 //! Arguments and results follow the C ABI of the headers: C `bool` is one byte (any non-zero
@@ -64,8 +65,11 @@ mod car_api;
 mod device_api;
 mod devices;
 mod differential_wheels_api;
+mod distance_sensor_api;
 mod driver_api;
+mod lidar_api;
 mod message;
+mod radar_api;
 mod robot;
 mod robot_api;
 mod sensor;
@@ -76,8 +80,13 @@ pub use abi::WbDeviceTag;
 pub use car_api::*;
 pub use device_api::*;
 pub use differential_wheels_api::*;
+pub use distance_sensor_api::*;
 pub use driver_api::*;
+pub use lidar_api::*;
+pub use radar_api::*;
 pub use robot::WORLD_VARIABLE;
 pub use robot_api::*;
+pub use sensor::WbRadarTarget;
 pub use sensor_api::*;
 pub use session::load_world;
+pub use sim::devices::LidarPoint as WbLidarPoint;

@@ -8,7 +8,7 @@ use vehicle_model::{BrakeBalance, CarParams, Driver, Model, ParamReport};
 
 use crate::devices::{CarDevices, DeviceSpec};
 
-use crate::error::SimError;
+use crate::error::{ParamError, SimError};
 use crate::placement::car_placement;
 use crate::vehicle::{Mounting, TyreChoice, VehiclePlacement, VehicleSpec};
 use crate::world_file::CarDescription;
@@ -49,6 +49,8 @@ pub struct CarBuilder {
     devices: Vec<DeviceSpec>,
     /// The seed of its devices' noise.
     seed: u64,
+    /// Its `radarCrossSection` (m²).
+    radar_cross_section: f64,
     /// The frames of its model's sensor slots, `None` for a model without them.
     slots: Option<SensorSlots<f64>>,
 }
@@ -62,6 +64,7 @@ pub(crate) struct BuiltCar {
     pub name: Option<String>,
     pub default_name: &'static str,
     pub devices: CarDevices,
+    pub radar_cross_section: f64,
 }
 
 impl CarBuilder {
@@ -80,6 +83,7 @@ impl CarBuilder {
             default_name: Model::Car.webots_name(),
             devices: Vec::new(),
             seed: 0,
+            radar_cross_section: 0.0,
             slots: None,
         }
     }
@@ -146,6 +150,14 @@ impl CarBuilder {
         self
     }
 
+    /// Its `radarCrossSection` (m², finite and ≥ 0, checked when the car is added; default 0
+    /// as in Webots: radars do not see it).
+    #[must_use]
+    pub fn radar_cross_section(mut self, rcs: f64) -> Self {
+        self.radar_cross_section = rcs;
+        self
+    }
+
     /// The sensor-slot frames its devices may sit in (those of a shipped model by default;
     /// none for [`CarBuilder::new`]).
     #[must_use]
@@ -200,6 +212,7 @@ impl CarBuilder {
     /// for a device that cannot be built.
     pub(crate) fn build(self, step_ms: u32) -> Result<BuiltCar, SimError> {
         let placement = self.start();
+        ParamError::non_negative("radarCrossSection", self.radar_cross_section)?;
         let devices = CarDevices::build(&self.devices, self.slots.as_ref(), self.seed)?;
         let (mut driver, report) = Driver::new(self.params, step_ms);
         driver
@@ -215,6 +228,7 @@ impl CarBuilder {
             name: self.name,
             default_name: self.default_name,
             devices,
+            radar_cross_section: self.radar_cross_section,
         })
     }
 }
@@ -233,6 +247,7 @@ impl From<&CarDescription> for CarBuilder {
             default_name: car.model.webots_name(),
             devices: car.devices.clone(),
             seed: car.seed,
+            radar_cross_section: car.radar_cross_section,
             slots: slots_of(car.model),
         }
     }

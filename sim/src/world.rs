@@ -12,6 +12,7 @@ use rapier3d::prelude::{
 
 use crate::body::{self, BodyPose};
 use crate::config::{Obstacle, WorldConfig, ramp_corners};
+use crate::devices::rays::{RadarEcho, Scene};
 use crate::diff_wheels::{
     DifferentialWheels, DifferentialWheelsParams, RobotId, RobotMode, RobotPlacement,
 };
@@ -188,6 +189,31 @@ impl World {
     /// All cars in insertion order.
     pub fn vehicles(&self) -> &[Vehicle] {
         &self.vehicles
+    }
+
+    /// The world as the ray devices of car `own` see it after the last step (its own bodies
+    /// transparent), with the other cars of `radarCrossSection` > 0 as radar targets when
+    /// `radar` is true.
+    pub(crate) fn scene(&self, own: VehicleId, radar: bool) -> Result<Scene<'_>, SimError> {
+        let echoes = if radar {
+            self.vehicles
+                .iter()
+                .filter(|v| v.id() != own && v.radar_cross_section() > 0.0)
+                .map(|v| RadarEcho {
+                    position: v.state().position,
+                    velocity: v.state().velocity,
+                    cross_section: v.radar_cross_section(),
+                    bodies: v.bodies(),
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        Ok(Scene::new(
+            &self.physics,
+            self.vehicle(own)?.bodies(),
+            echoes,
+        ))
     }
 
     /// The colliders of car `id`'s bodies.

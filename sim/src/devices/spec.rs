@@ -6,9 +6,12 @@ use proto_geom::nalgebra::{UnitQuaternion, Vector3};
 
 use crate::error::ParamError;
 
-use super::{GpsSettings, InertialUnitSettings, TriaxialSettings};
+use super::{
+    DistanceSensorSettings, GpsSettings, InertialUnitSettings, LidarSettings, RadarSettings,
+    TriaxialSettings,
+};
 
-/// The kinds of device of this phase.
+/// The kinds of device.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum DeviceKind {
     /// Webots `GPS`.
@@ -21,16 +24,25 @@ pub enum DeviceKind {
     Accelerometer,
     /// Webots `Compass`.
     Compass,
+    /// Webots `DistanceSensor`.
+    DistanceSensor,
+    /// Webots `Radar`.
+    Radar,
+    /// Webots `Lidar`.
+    Lidar,
 }
 
 impl DeviceKind {
     /// Every kind.
-    pub const ALL: [DeviceKind; 5] = [
+    pub const ALL: [DeviceKind; 8] = [
         DeviceKind::Gps,
         DeviceKind::InertialUnit,
         DeviceKind::Gyro,
         DeviceKind::Accelerometer,
         DeviceKind::Compass,
+        DeviceKind::DistanceSensor,
+        DeviceKind::Radar,
+        DeviceKind::Lidar,
     ];
 
     /// The Webots node name (`"GPS"`, `"InertialUnit"`, …).
@@ -41,6 +53,9 @@ impl DeviceKind {
             DeviceKind::Gyro => "Gyro",
             DeviceKind::Accelerometer => "Accelerometer",
             DeviceKind::Compass => "Compass",
+            DeviceKind::DistanceSensor => "DistanceSensor",
+            DeviceKind::Radar => "Radar",
+            DeviceKind::Lidar => "Lidar",
         }
     }
 
@@ -59,7 +74,19 @@ impl DeviceKind {
             DeviceKind::Gyro => "gyro",
             DeviceKind::Accelerometer => "accelerometer",
             DeviceKind::Compass => "compass",
+            DeviceKind::DistanceSensor => "distance sensor",
+            DeviceKind::Radar => "radar",
+            DeviceKind::Lidar => "lidar",
         }
+    }
+
+    /// True for the devices that cast rays through the world (`DistanceSensor`, `Radar`,
+    /// `Lidar`).
+    pub const fn casts_rays(self) -> bool {
+        matches!(
+            self,
+            DeviceKind::DistanceSensor | DeviceKind::Radar | DeviceKind::Lidar
+        )
     }
 }
 
@@ -112,6 +139,12 @@ pub enum DeviceSettings {
     Accelerometer(TriaxialSettings),
     /// A `Compass` (unitless).
     Compass(TriaxialSettings),
+    /// A `DistanceSensor`.
+    DistanceSensor(DistanceSensorSettings),
+    /// A `Radar`.
+    Radar(RadarSettings),
+    /// A `Lidar`.
+    Lidar(LidarSettings),
 }
 
 impl DeviceSettings {
@@ -123,6 +156,9 @@ impl DeviceSettings {
             DeviceSettings::Gyro(_) => DeviceKind::Gyro,
             DeviceSettings::Accelerometer(_) => DeviceKind::Accelerometer,
             DeviceSettings::Compass(_) => DeviceKind::Compass,
+            DeviceSettings::DistanceSensor(_) => DeviceKind::DistanceSensor,
+            DeviceSettings::Radar(_) => DeviceKind::Radar,
+            DeviceSettings::Lidar(_) => DeviceKind::Lidar,
         }
     }
 
@@ -136,6 +172,11 @@ impl DeviceSettings {
             DeviceKind::Gyro => DeviceSettings::Gyro(TriaxialSettings::default()),
             DeviceKind::Accelerometer => DeviceSettings::Accelerometer(TriaxialSettings::default()),
             DeviceKind::Compass => DeviceSettings::Compass(TriaxialSettings::default()),
+            DeviceKind::DistanceSensor => {
+                DeviceSettings::DistanceSensor(DistanceSensorSettings::default())
+            }
+            DeviceKind::Radar => DeviceSettings::Radar(RadarSettings::default()),
+            DeviceKind::Lidar => DeviceSettings::Lidar(LidarSettings::default()),
         }
     }
 
@@ -150,6 +191,9 @@ impl DeviceSettings {
             DeviceSettings::Gyro(s)
             | DeviceSettings::Accelerometer(s)
             | DeviceSettings::Compass(s) => s.validate(),
+            DeviceSettings::DistanceSensor(s) => s.validate(),
+            DeviceSettings::Radar(s) => s.validate(),
+            DeviceSettings::Lidar(s) => s.validate(),
         }
     }
 }

@@ -184,6 +184,9 @@ impl Simulation {
         let name = self.unique_name(built.name, built.default_name)?;
         self.refuse_while_recording(&name)?;
         let id = self.world.add_vehicle(built.spec, built.placement)?;
+        self.world
+            .vehicle_mut(id)?
+            .set_radar_cross_section(built.radar_cross_section)?;
         self.cars.push(Controlled {
             id,
             driver: built.driver,
@@ -428,7 +431,11 @@ impl Simulation {
                 angular_velocity: s.angular_velocity,
                 gravity,
             };
-            car.devices.refresh(&chassis, now_ms);
+            let scene = match car.devices.scene_needed(now_ms) {
+                Some(radar) => Some(self.world.scene(car.id, radar)?),
+                None => None,
+            };
+            car.devices.refresh(&chassis, scene.as_ref(), now_ms);
         }
         Ok(())
     }
@@ -475,6 +482,26 @@ impl Simulation {
             .find(|c| c.id == id)
             .ok_or(SimError::UnknownVehicle(id.index()))?;
         Ok(car.devices.enable(index, period_ms, now_ms)?)
+    }
+
+    /// Enables (`true`) or disables the point cloud of lidar `index` of car `id` (Webots:
+    /// `wb_lidar_enable_point_cloud`, `wb_lidar_disable_point_cloud`); another device is left
+    /// as it is.
+    ///
+    /// # Errors
+    /// [`SimError::UnknownVehicle`]; [`SimError::Device`] for an index the car does not have.
+    pub fn enable_point_cloud(
+        &mut self,
+        id: VehicleId,
+        index: usize,
+        enabled: bool,
+    ) -> Result<(), SimError> {
+        let car = self
+            .cars
+            .iter_mut()
+            .find(|c| c.id == id)
+            .ok_or(SimError::UnknownVehicle(id.index()))?;
+        Ok(car.devices.enable_point_cloud(index, enabled)?)
     }
 
     /// The telemetry of car `id` after the last step.

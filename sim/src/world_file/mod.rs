@@ -34,6 +34,7 @@ mod devices;
 mod error;
 mod overrides;
 mod programme;
+mod ray_devices;
 pub(crate) mod read;
 mod robot;
 mod statics;
