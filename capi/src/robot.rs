@@ -5,6 +5,7 @@ use std::env::{self, VarError};
 use std::ffi::c_int;
 use std::path::PathBuf;
 
+use sim::programme::Programme;
 use sim::world_file::{self, WorldDescription};
 use sim::{RobotId, SimError, Simulation, VehicleId};
 
@@ -65,6 +66,15 @@ pub(crate) struct Robot {
     devices: Vec<Option<DeviceEntry>>,
     /// Where the sensor functions' `const double *` results live.
     pub(crate) buffers: Buffers,
+    /// The world's other cars, each running its programme.
+    others: Vec<Programmed>,
+}
+
+/// A car the controller does not drive: its programme and the next step due.
+struct Programmed {
+    id: VehicleId,
+    programme: Programme,
+    next: usize,
 }
 
 impl Robot {
@@ -95,33 +105,72 @@ impl Robot {
         Robot::build(&description, outputs)
     }
 
-    /// Builds the world of `description` with its car or robot: one vehicle, the one the
-    /// controller drives; records it if `outputs` names a directory.
+    /// Builds the world of `description` with its car or robot, the one the controller
+    /// drives: the robot, the only car, or, of several cars, the one without a programme (the
+    /// others run theirs); records it if `outputs` names a directory.
     fn build(description: &WorldDescription, outputs: Option<PathBuf>) -> Result<Robot, String> {
-        let vehicles = (description.cars.len(), description.robot.is_some());
-        if !matches!(vehicles, (1, false) | (0, true)) {
-            return Err(format!(
-                "cannot drive the world {}: it holds {}, and a controller drives exactly \
-                 one car or robot",
-                description.source,
-                description.vehicles_label()
-            ));
-        }
+        let cars = &description.cars;
+        let driven = match (cars.len(), description.robot.is_some()) {
+            (1, false) | (0, true) => 0,
+            (n, false) if n > 1 => {
+                let free: Vec<usize> = (0..n).filter(|&i| cars[i].programme.is_empty()).collect();
+                match free[..] {
+                    [one] => one,
+                    _ => {
+                        return Err(format!(
+                            "cannot drive the world {}: of its {n} cars {} have no programme, \
+                             and a controller drives the one car without a programme (the \
+                             others run theirs)",
+                            description.source,
+                            free.len()
+                        ));
+                    }
+                }
+            }
+            _ => {
+                return Err(format!(
+                    "cannot drive the world {}: it holds {}, and a controller drives exactly \
+                     one car or robot",
+                    description.source,
+                    description.vehicles_label()
+                ));
+            }
+        };
         let (mut simulation, reports) = Simulation::from_description(description)
             .map_err(|e| format!("cannot build the world {}: {e}", description.source))?;
         // The loader validated the fields already; anything left is still reported.
         for w in reports.iter().flatten() {
             eprintln!("Warning: {}: {w}", description.source);
         }
-        // Nothing the world says is dropped silently: its programme is vehicle-sim's to run.
-        if description.has_programme() {
+        // Nothing the world says is dropped silently: the driven vehicle's programme is
+        // vehicle-sim's to run.
+        let driven_programme = match cars.get(driven) {
+            Some(car) => !car.programme.is_empty(),
+            None => description
+                .robot
+                .as_ref()
+                .is_some_and(|r| !r.programme.is_empty()),
+        };
+        if driven_programme {
             eprintln!(
                 "Warning: {}: the world's programme is not run: the controller drives (vehicle-sim \
                  runs programmes).",
                 description.source
             );
         }
-        let body = match (simulation.car_ids().next(), simulation.robot_ids().next()) {
+        let ids: Vec<VehicleId> = simulation.car_ids().collect();
+        let others = ids
+            .iter()
+            .zip(cars)
+            .enumerate()
+            .filter(|&(i, _)| i != driven)
+            .map(|(_, (&id, car))| Programmed {
+                id,
+                programme: car.programme.clone(),
+                next: 0,
+            })
+            .collect();
+        let body = match (ids.get(driven).copied(), simulation.robot_ids().next()) {
             (Some(id), _) => Body::Car {
                 id,
                 libraries: Libraries::None,
@@ -157,7 +206,22 @@ impl Robot {
             outputs,
             devices,
             buffers,
+            others,
         })
+    }
+
+    /// Gives the other cars' drivers the commands of their programmes due now.
+    fn run_programmes(&mut self) {
+        let t = self.simulation.world().time();
+        for other in &mut self.others {
+            let mut cursor = other.programme.cursor_at(other.next);
+            if let Ok(driver) = self.simulation.driver_mut(other.id) {
+                for (_, warning) in cursor.apply_due(t, driver) {
+                    crate::message::warning(&warning);
+                }
+            }
+            other.next = cursor.position();
+        }
     }
 
     /// The world's `basicTimeStep` (ms).
@@ -193,7 +257,13 @@ impl Robot {
             if self.simulation.is_over() {
                 break;
             }
-            if let Err(e) = self.simulation.step_physics() {
+            self.run_programmes();
+            // The other cars' drivers run; the controller's car only moves by its commands.
+            let stepped = match (&self.body, self.others.is_empty()) {
+                (Body::Car { id, .. }, false) => self.simulation.step_others(*id),
+                _ => self.simulation.step_physics(),
+            };
+            if let Err(e) = stepped {
                 Robot::fail(&e);
             }
         }
@@ -204,10 +274,11 @@ impl Robot {
     /// readings into commands, then the world advances one basic time step. Returns 0, or -1
     /// once the simulation is over (the driver does not run then).
     pub(crate) fn driver_step(&mut self) -> c_int {
-        if !self.simulation.is_over()
-            && let Err(e) = self.simulation.step()
-        {
-            Robot::fail(&e);
+        if !self.simulation.is_over() {
+            self.run_programmes();
+            if let Err(e) = self.simulation.step() {
+                Robot::fail(&e);
+            }
         }
         self.status()
     }

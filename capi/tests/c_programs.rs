@@ -83,6 +83,14 @@ fn sensors() {
     run_announcing("sensors", Some(&sensors_world()), 9);
 }
 
+/// The radar, lidars and distance sensor of a world file's car, and their misuse messages.
+#[test]
+fn ray_sensors() {
+    // 1 frequency out of range, 1 disabled read, 1 negative period, 1 disabled cloud, 2 bad
+    // layers, 3 wrong tags, 1 layer of a disabled lidar.
+    run_announcing("ray_sensors", Some(&rays_world()), 10);
+}
+
 /// The C++ wrapper, linked with the libraries in the other order (`-lcar -ldriver`).
 #[test]
 fn cpp_wrapper() {

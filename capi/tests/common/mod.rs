@@ -72,6 +72,8 @@ pub fn shared_link_flags() -> Vec<String> {
         "-ldriver".into(),
         "-lcar".into(),
         format!("-Wl,-rpath,{lib}"),
+        // The C maths library, for the programs that compute their expected values.
+        "-lm".into(),
     ]
 }
 
@@ -248,6 +250,11 @@ pub fn sensors_world() -> String {
         .join("worlds/sensors.toml")
         .display()
         .to_string()
+}
+
+/// The path of `worlds/rays.toml`.
+pub fn rays_world() -> String {
+    tests_dir().join("worlds/rays.toml").display().to_string()
 }
 
 /// The path of `worlds/differential_wheels.toml`.
