@@ -380,19 +380,26 @@ mod tests {
     }
 
     #[test]
-    fn a_controller_drives_one_vehicle() {
-        let description = world_file::parse_str(
-            "w.toml",
-            "[[vehicle]]\n[[vehicle]]\ntranslation = [0, 10, 0]\n",
-        )
-        .unwrap();
+    fn a_controller_drives_the_one_car_without_a_programme() {
+        let two = "[[vehicle]]\n[[vehicle]]\ntranslation = [0, 10, 0]\n";
+        let description = world_file::parse_str("w.toml", two).unwrap();
         let Err(e) = Robot::build(&description, None) else {
-            panic!("a world of two cars was accepted");
+            panic!("a world of two cars without programmes was accepted");
         };
         assert_eq!(
             e,
-            "cannot drive the world w.toml: it holds 2 vehicles (Car-1, Car-2), and a \
-             controller drives exactly one car or robot"
+            "cannot drive the world w.toml: of its 2 cars 2 have no programme, and a controller \
+             drives the one car without a programme (the others run theirs)"
         );
+        let programme = "[[vehicle.programme]]\nat = 0\ncruising_speed = 20\n";
+        let description = world_file::parse_str("w.toml", &format!("{two}{programme}")).unwrap();
+        let mut robot = Robot::build(&description, None).unwrap();
+        let ids: Vec<VehicleId> = robot.simulation.car_ids().collect();
+        assert!(matches!(robot.body, Body::Car { id, .. } if id == ids[0]));
+        // The other car runs its programme (20 km/h) even through physics-only steps.
+        robot.advance(200);
+        let speed = robot.simulation.telemetry(ids[1]).unwrap().speed;
+        assert!(speed > 2.0, "{speed} m/s");
+        assert!(robot.simulation.telemetry(ids[0]).unwrap().speed.abs() < 0.1);
     }
 }

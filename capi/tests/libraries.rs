@@ -74,15 +74,18 @@ fn exported_symbols_match_the_headers() {
         "gyro.h",
         "accelerometer.h",
         "compass.h",
+        "distance_sensor.h",
+        "radar.h",
+        "lidar.h",
     ]
     .iter()
     .flat_map(|h| declared_functions(h))
     .collect();
     // car 21, robot 8, DifferentialWheels 11, device 3, GPS 8, inertial unit 6, gyro,
-    // accelerometer and compass 6 each.
+    // accelerometer and compass 6 each, distance sensor 10, radar 9, lidar 21.
     assert_eq!(
         expected.len(),
-        21 + 8 + 11 + 3 + 8 + 6 + 3 * 6,
+        21 + 8 + 11 + 3 + 8 + 6 + 3 * 6 + 10 + 9 + 21,
         "{expected:?}"
     );
     expected.extend(
