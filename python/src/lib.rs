@@ -12,6 +12,7 @@
 //!
 //! Units: m, rad (positive steers right), rad/s, s; km/h and ms where the Webots API uses them.
 
+mod ray_sensors;
 mod sensors;
 mod simulation;
 mod sweep;
@@ -34,6 +35,7 @@ fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("WorldError", m.py().get_type::<WorldError>())?;
     webots::register(m)?;
     sensors::register(m)?;
+    ray_sensors::register(m)?;
     simulation::register(m)?;
     sweep::register(m)?;
     Ok(())
