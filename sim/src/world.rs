@@ -199,11 +199,17 @@ impl World {
             self.vehicles
                 .iter()
                 .filter(|v| v.id() != own && v.radar_cross_section() > 0.0)
-                .map(|v| RadarEcho {
-                    position: v.state().position,
-                    velocity: v.state().velocity,
-                    cross_section: v.radar_cross_section(),
-                    bodies: v.bodies(),
+                .map(|v| {
+                    let (s, chassis) = (v.state(), &v.spec().chassis);
+                    RadarEcho {
+                        position: s.position,
+                        velocity: s.velocity,
+                        cross_section: v.radar_cross_section(),
+                        centre: s.position + s.orientation * chassis.box_center.coords,
+                        radius: chassis.box_half_extents.norm(),
+                        half_length: chassis.box_half_extents.x,
+                        bodies: v.bodies(),
+                    }
                 })
                 .collect()
         } else {

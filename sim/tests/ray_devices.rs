@@ -156,29 +156,43 @@ fn radar_world(radar: &str, positions: &[[f64; 2]], extra: &str) -> (Simulation,
 
 #[test]
 fn radar_field_of_view() {
-    // The default field of view is 0.78 rad: ±0.39 rad. Targets at 0.38 rad (left, 40 m) and
-    // −0.38 rad (right, 20 m) are seen, at ±0.40 (30 m) not; at different ranges so that the
-    // cars stand apart.
-    let at = |r: f64, angle: f64| [r * angle.cos(), r * angle.sin()];
+    // A target is a candidate when the sphere around its collision box meets the field of
+    // view (±0.39 rad by default): its centre within 0.39 rad plus the angle the sphere
+    // subtends. Centres 0.01 rad inside that edge (left at 40 m, right at 20 m) are seen,
+    // 0.01 rad outside (30 m) not; at different ranges so that the cars stand apart. The
+    // cars settle by a few mrad: 0.01 rad is well above that.
+    let spec = sim::VehicleSpec::from_car(&vehicle_model::Model::BmwX5.params())
+        .unwrap()
+        .chassis;
+    let (radius, bx) = (spec.box_half_extents.norm(), spec.box_center.x);
+    let at = |r: f64, side: f64, inside: bool| {
+        let edge = 0.39 + (radius / r).asin();
+        let angle = side * if inside { edge - 0.01 } else { edge + 0.01 };
+        // The car's origin, so that its box centre is at `r`, `angle`.
+        [r * angle.cos() - bx, r * angle.sin()]
+    };
     let places = [
-        at(40.0, 0.38),
-        at(30.0, 0.40),
-        at(20.0, -0.38),
-        at(30.0, -0.40),
+        at(40.0, 1.0, true),
+        at(30.0, 1.0, false),
+        at(20.0, -1.0, true),
+        at(30.0, -1.0, false),
     ];
     let (sim, ids) = radar_world("", &places, "");
     let t = targets(&sim, ids[0], "radar");
     assert_eq!(t.len(), 2, "{t:?}");
-    // In scene order, as the truth has them (azimuth > 0 to the right), to f32 positions.
+    // In scene order; the azimuth of the target's origin, clamped to the field of view.
     let (left, right) = (truth(&sim, ids[0], ids[1]), truth(&sim, ids[0], ids[3]));
-    assert!((t[0].azimuth - left.2).abs() < 1e-9 && (left.2 + 0.38).abs() < 0.005);
-    assert!((t[1].azimuth - right.2).abs() < 1e-9 && (right.2 - 0.38).abs() < 0.005);
-    for k in [2, 4] {
-        let outside = truth(&sim, ids[0], ids[k]).2.abs();
-        assert!((outside - 0.40).abs() < 0.005, "{outside}");
-    }
-    // Beyond maxRange (50 m by default) nothing is seen.
-    let (sim, ids) = radar_world("", &[[51.0, 0.0]], "");
+    assert!(
+        (t[0].azimuth - left.2.clamp(-0.39, 0.39)).abs() < 1e-9,
+        "{t:?} {left:?}"
+    );
+    assert!(
+        (t[1].azimuth - right.2.clamp(-0.39, 0.39)).abs() < 1e-9,
+        "{t:?} {right:?}"
+    );
+    assert!((t[0].distance - left.0).abs() < 1e-9);
+    // Beyond maxRange (50 m by default, the sphere's near side) nothing is seen.
+    let (sim, ids) = radar_world("", &[[51.0 + radius - bx, 0.0]], "");
     assert!(targets(&sim, ids[0], "radar").is_empty());
 }
 

@@ -4,6 +4,8 @@
 
 use core::f64::consts::{FRAC_PI_2, PI};
 
+use proto_geom::nalgebra::Vector3;
+
 use crate::error::ParamError;
 use crate::rng::SplitMix64;
 
@@ -191,6 +193,27 @@ pub struct RadarTarget {
     pub azimuth: f64,
 }
 
+/// True if a sphere of `radius` (m) centred at `centre` (m, device axes) meets the radar's
+/// field of view: its centre within the fields of view widened by the angle the sphere
+/// subtends, and its near side within `maxRange`. (Webots intersects the target's bounding
+/// object with the radar's frustum: a car close ahead stays seen though its origin is below
+/// the narrow vertical field of view.)
+fn in_view(s: &RadarSettings, centre: &Vector3<f64>, radius: f64) -> bool {
+    let distance = centre.norm();
+    if distance - radius > s.max_range {
+        return false;
+    }
+    if distance <= radius {
+        // The radar is inside the sphere.
+        return centre.x + radius > 0.0;
+    }
+    let margin = (radius / distance).asin();
+    let azimuth = centre.y.atan2(centre.x).abs();
+    let elevation = centre.z.atan2(centre.x.hypot(centre.y)).abs();
+    azimuth <= s.horizontal_field_of_view / 2.0 + margin
+        && elevation <= s.vertical_field_of_view / 2.0 + margin
+}
+
 /// The targets of the radar at `point` in `scene`, in the scene's order and merged by cell;
 /// the power still in W.
 fn detect(
@@ -205,19 +228,20 @@ fn detect(
     let noisy = |sd: f64, rng: &mut SplitMix64| if sd > 0.0 { sd * gaussian(rng) } else { 0.0 };
     let mut out = Vec::new();
     for echo in scene.echoes() {
+        if !in_view(
+            s,
+            &(to_device * (echo.centre - point.position)),
+            echo.radius,
+        ) {
+            continue;
+        }
         let world = echo.position - point.position;
         let range = world.norm();
-        if !(range > 0.0) || range > s.max_range {
+        if !(range > 0.0) {
             continue;
         }
         let local = to_device * world;
         let left = local.y.atan2(local.x);
-        let elevation = local.z.atan2(local.x.hypot(local.y));
-        if left.abs() > s.horizontal_field_of_view / 2.0
-            || elevation.abs() > s.vertical_field_of_view / 2.0
-        {
-            continue;
-        }
         let line = world / range;
         if s.occlusion
             && scene
@@ -227,9 +251,10 @@ fn detect(
             continue;
         }
         let d = range + noisy(s.range_noise, rng);
-        if d < s.min_range {
+        if d < s.min_range - echo.half_length {
             continue;
         }
+        let d = d.max(s.min_range);
         let d = d.min(s.max_range);
         let power = s.received_power(echo.cross_section, d);
         if power < threshold {

@@ -30,6 +30,14 @@ pub(crate) struct RadarEcho {
     pub velocity: Vector3<f64>,
     /// `radarCrossSection` (m², > 0).
     pub cross_section: f64,
+    /// The centre of the sphere around its collision box (m, world): a target is a candidate
+    /// when this sphere meets the radar's field of view.
+    pub centre: Point3<f64>,
+    /// That sphere's radius (m).
+    pub radius: f64,
+    /// Half its length along its own x axis (m): a target nearer than `minRange` by more than
+    /// this is not reported.
+    pub half_length: f64,
     /// Its rapier bodies: a ray stopping on one of them reached it.
     pub bodies: Vec<RigidBodyHandle>,
 }
