@@ -366,3 +366,60 @@ fn distance_sensors_and_their_lookup_tables() {
     assert!((distance(&sim, id, "laser") - 500.0 * d).abs() < 0.05);
     assert_eq!(distance(&sim, id, "back"), 1000.0);
 }
+
+/// The error of a world that must be refused: its key and text.
+fn refused(text: &str) -> (String, String) {
+    let e = world_file::parse_str("w.toml", text).expect_err("the world should be refused");
+    (e.key.clone().unwrap_or_default(), e.to_string())
+}
+
+#[test]
+fn ray_device_fields_are_read_and_checked() {
+    use sim::devices::{DeviceSettings, DistanceSensorType, LidarSettings};
+    let d = world_file::parse_str(
+        "w.toml",
+        "[vehicle]\nmodel = \"BmwX5\"\nradarCrossSection = 8.5\n\
+         [[vehicle.device]]\ntype = \"Lidar\"\npreset = \"VelodyneVlp16\"\nhorizontalResolution = 1800\n\
+         [[vehicle.device]]\ntype = \"Radar\"\npreset = \"DelphiEsr\"\nmaxRange = 80\n\
+         [[vehicle.device]]\ntype = \"DistanceSensor\"\nsensorType = \"sonar\"\nnumberOfRays = 4\n",
+    )
+    .unwrap();
+    let car = &d.cars[0];
+    assert_eq!(car.radar_cross_section, 8.5);
+    // A preset, then the fields given after it.
+    let DeviceSettings::Lidar(l) = &car.devices[0].settings else {
+        panic!()
+    };
+    assert_eq!(
+        *l,
+        LidarSettings {
+            horizontal_resolution: 1800,
+            ..LidarSettings::velodyne_vlp16()
+        }
+    );
+    let DeviceSettings::Radar(r) = &car.devices[1].settings else {
+        panic!()
+    };
+    assert_eq!((r.max_range, r.frequency), (80.0, 76.5));
+    let DeviceSettings::DistanceSensor(s) = &car.devices[2].settings else {
+        panic!()
+    };
+    assert_eq!((s.sensor_type, s.number_of_rays), (DistanceSensorType::Sonar, 4));
+    assert_eq!(car.devices[2].device_name(), "distance sensor");
+
+    let head = "[vehicle]\nmodel = \"BmwX5\"\n[[vehicle.device]]\n";
+    let (key, text) = refused(&format!("{head}type = \"DistanceSensor\"\nsensorType = \"infra-red\"\n"));
+    assert_eq!(key, "vehicle.device[1].sensorType");
+    assert!(text.contains("colours"), "{text}");
+    let (key, text) = refused(&format!("{head}type = \"Lidar\"\npreset = \"SickLms29\"\n"));
+    assert_eq!(key, "vehicle.device[1].preset");
+    assert!(text.contains("SickLms291"), "{text}");
+    let (key, _) = refused(&format!("{head}type = \"Radar\"\nminRange = 10\nmaxRange = 5\n"));
+    assert_eq!(key, "vehicle.device[1].maxRange");
+    let (key, _) = refused(&format!("{head}type = \"Lidar\"\nnear = 0.5\nminRange = 0.1\n"));
+    assert_eq!(key, "vehicle.device[1].minRange");
+    let (key, _) = refused(&format!("{head}type = \"Lidar\"\nhorizontalResolution = 0\n"));
+    assert_eq!(key, "vehicle.device[1].horizontalResolution");
+    let (key, _) = refused("[vehicle]\nradarCrossSection = -1\n");
+    assert_eq!(key, "vehicle.radarCrossSection");
+}
