@@ -110,7 +110,7 @@ pub extern "C" fn wb_radar_get_targets(tag: WbDeviceTag) -> *const WbRadarTarget
             let (i, t) = targets(r, "wb_radar_get_targets", tag)?;
             let slot = r.buffers.slot(i)?;
             slot.targets = t;
-            (!slot.targets.is_empty()).then(|| slot.targets.as_ptr())
+            (!slot.targets.is_empty()).then_some(slot.targets.as_ptr())
         })
     })
 }

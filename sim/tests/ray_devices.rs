@@ -404,21 +404,32 @@ fn ray_device_fields_are_read_and_checked() {
     let DeviceSettings::DistanceSensor(s) = &car.devices[2].settings else {
         panic!()
     };
-    assert_eq!((s.sensor_type, s.number_of_rays), (DistanceSensorType::Sonar, 4));
+    assert_eq!(
+        (s.sensor_type, s.number_of_rays),
+        (DistanceSensorType::Sonar, 4)
+    );
     assert_eq!(car.devices[2].device_name(), "distance sensor");
 
     let head = "[vehicle]\nmodel = \"BmwX5\"\n[[vehicle.device]]\n";
-    let (key, text) = refused(&format!("{head}type = \"DistanceSensor\"\nsensorType = \"infra-red\"\n"));
+    let (key, text) = refused(&format!(
+        "{head}type = \"DistanceSensor\"\nsensorType = \"infra-red\"\n"
+    ));
     assert_eq!(key, "vehicle.device[1].sensorType");
     assert!(text.contains("colours"), "{text}");
     let (key, text) = refused(&format!("{head}type = \"Lidar\"\npreset = \"SickLms29\"\n"));
     assert_eq!(key, "vehicle.device[1].preset");
     assert!(text.contains("SickLms291"), "{text}");
-    let (key, _) = refused(&format!("{head}type = \"Radar\"\nminRange = 10\nmaxRange = 5\n"));
+    let (key, _) = refused(&format!(
+        "{head}type = \"Radar\"\nminRange = 10\nmaxRange = 5\n"
+    ));
     assert_eq!(key, "vehicle.device[1].maxRange");
-    let (key, _) = refused(&format!("{head}type = \"Lidar\"\nnear = 0.5\nminRange = 0.1\n"));
+    let (key, _) = refused(&format!(
+        "{head}type = \"Lidar\"\nnear = 0.5\nminRange = 0.1\n"
+    ));
     assert_eq!(key, "vehicle.device[1].minRange");
-    let (key, _) = refused(&format!("{head}type = \"Lidar\"\nhorizontalResolution = 0\n"));
+    let (key, _) = refused(&format!(
+        "{head}type = \"Lidar\"\nhorizontalResolution = 0\n"
+    ));
     assert_eq!(key, "vehicle.device[1].horizontalResolution");
     let (key, _) = refused("[vehicle]\nradarCrossSection = -1\n");
     assert_eq!(key, "vehicle.radarCrossSection");

@@ -82,12 +82,20 @@ impl Default for DistanceSensorSettings {
                 .unwrap_or_default(),
             sensor_type: DistanceSensorType::Generic,
             number_of_rays: 1,
-            aperture: 1.5708,
+            aperture: WEBOTS_APERTURE,
             gaussian_width: 1.0,
             resolution: -1.0,
         }
     }
 }
+
+/// Webots' default `aperture` (rad): the node's value as written in `DistanceSensor.wrl`, a
+/// rounded π/2 kept as Webots has it.
+#[allow(
+    clippy::approx_constant,
+    reason = "Webots' literal field value, not π/2"
+)]
+const WEBOTS_APERTURE: f64 = 1.5708;
 
 /// The most rays a distance sensor may cast: Webots sets no bound, but each ray is a cast per
 /// sample and real sensors model their cone with a few dozen.

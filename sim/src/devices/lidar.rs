@@ -32,6 +32,23 @@ impl LidarProjection {
     }
 }
 
+/// Angles (rad) as Webots writes them in `Lidar.wrl` and the `SickLms291` and `VelodynePuck`
+/// PROTOs (spec §12): rounded multiples of π, kept as Webots has them.
+#[allow(
+    clippy::approx_constant,
+    reason = "Webots' literal field values, not π"
+)]
+mod webots {
+    /// `Lidar.fieldOfView`'s default.
+    pub(super) const DEFAULT_FOV: f64 = 1.5708;
+    /// The SICK LMS 291's `fieldOfView`.
+    pub(super) const SICK_FOV: f64 = 3.14159;
+    /// The VLP-16's `fieldOfView`.
+    pub(super) const VLP16_FOV: f64 = 6.28318;
+    /// The VLP-16's `verticalFieldOfView` (±15°).
+    pub(super) const VLP16_VERTICAL_FOV: f64 = 0.5236;
+}
+
 /// The most rays per layer (`horizontalResolution`): 0.01° over a full turn. More is a typo.
 pub const MAX_LIDAR_RESOLUTION: u32 = 36_000;
 /// The most layers (`numberOfLayers`): real lidars have at most a few hundred.
@@ -78,7 +95,7 @@ impl Default for LidarSettings {
         LidarSettings {
             tilt_angle: 0.0,
             horizontal_resolution: 512,
-            field_of_view: 1.5708,
+            field_of_view: webots::DEFAULT_FOV,
             vertical_field_of_view: 0.2,
             number_of_layers: 4,
             near: 0.01,
@@ -100,8 +117,8 @@ impl LidarSettings {
     pub fn sick_lms_291() -> Self {
         LidarSettings {
             horizontal_resolution: 180,
-            field_of_view: 3.14159,
-            vertical_field_of_view: 3.14159 / 180.0,
+            field_of_view: webots::SICK_FOV,
+            vertical_field_of_view: webots::SICK_FOV / 180.0,
             number_of_layers: 1,
             max_range: 80.0,
             ..LidarSettings::default()
@@ -114,8 +131,8 @@ impl LidarSettings {
     pub fn velodyne_vlp16() -> Self {
         LidarSettings {
             horizontal_resolution: 3600,
-            field_of_view: 6.28318,
-            vertical_field_of_view: 0.5236,
+            field_of_view: webots::VLP16_FOV,
+            vertical_field_of_view: webots::VLP16_VERTICAL_FOV,
             number_of_layers: 16,
             near: 0.01,
             min_range: 1.0,
@@ -345,9 +362,10 @@ mod tests {
         // Layer 0 at +vFOV/2, layer 15 at −vFOV/2; columns half a step inside ±fov/2.
         assert!((s.elevation(0) - 0.2618).abs() < 1e-12);
         assert!((s.elevation(15) + 0.2618).abs() < 1e-12);
-        let step = 6.28318 / 3600.0;
-        assert!((s.azimuth(0) - (3.14159 - step / 2.0)).abs() < 1e-12);
-        assert!((s.azimuth(3599) + (3.14159 - step / 2.0)).abs() < 1e-12);
+        let step = webots::VLP16_FOV / 3600.0;
+        let edge = webots::VLP16_FOV / 2.0 - step / 2.0;
+        assert!((s.azimuth(0) - edge).abs() < 1e-12);
+        assert!((s.azimuth(3599) + edge).abs() < 1e-12);
     }
 
     #[test]

@@ -237,7 +237,7 @@ fn detect(
         }
         let world = echo.position - point.position;
         let range = world.norm();
-        if !(range > 0.0) {
+        if range.is_nan() || range <= 0.0 {
             continue;
         }
         let local = to_device * world;

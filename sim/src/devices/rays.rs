@@ -84,7 +84,7 @@ impl<'a> Scene<'a> {
     /// (world axes) within `max` (m); the own car's colliders are transparent. A ray starting
     /// inside a shape stops at once (distance 0), as a sensor buried in an obstacle reads 0.
     pub(crate) fn cast(&self, origin: &Point3<f64>, dir: &Vector3<f64>, max: f64) -> Option<Hit> {
-        if !(max > 0.0) {
+        if max.is_nan() || max <= 0.0 {
             return None;
         }
         let own = &self.own;

@@ -60,13 +60,16 @@ pub(super) const LIDAR: [&str; 15] = [
     "maxFrequency",
 ];
 
+/// A preset: its name and the settings it makes.
+type Preset<T> = (&'static str, fn() -> T);
+
 /// The radar presets: Webots' `DelphiEsr` PROTO in its two modes.
-const RADAR_PRESETS: [(&str, fn() -> RadarSettings); 2] = [
+const RADAR_PRESETS: [Preset<RadarSettings>; 2] = [
     ("DelphiEsr", RadarSettings::delphi_esr),
     ("DelphiEsrLongRange", RadarSettings::delphi_esr_long_range),
 ];
 /// The lidar presets: Webots' `SickLms291` and `VelodynePuck` PROTOs.
-const LIDAR_PRESETS: [(&str, fn() -> LidarSettings); 2] = [
+const LIDAR_PRESETS: [Preset<LidarSettings>; 2] = [
     ("SickLms291", LidarSettings::sick_lms_291),
     ("VelodyneVlp16", LidarSettings::velodyne_vlp16),
 ];
@@ -74,7 +77,7 @@ const LIDAR_PRESETS: [(&str, fn() -> LidarSettings); 2] = [
 /// The settings of `preset` (default: the node's defaults).
 fn preset<T>(
     d: &Section<'_, '_>,
-    presets: &[(&str, fn() -> T)],
+    presets: &[Preset<T>],
     default: fn() -> T,
 ) -> Result<T, WorldFileError> {
     let Some(name) = d.string("preset")? else {
