@@ -17,9 +17,9 @@
 //!   car lists them) draws from the car's `seed` stream starting at draw `k·2⁴⁰`, so devices
 //!   never share draws, adding a device leaves the others' noise unchanged, and the same
 //!   world gives the same readings on every run.
-//! * **Rays.** The ray devices see the world through [`rays`]: every collider (ground, ramps,
-//!   boxes, other cars, robots) but their own car's, after the step. The radar's targets are
-//!   the other cars whose `radarCrossSection` (m²) is above 0.
+//! * **Rays.** The ray devices see the world through one module, `rays`: every collider
+//!   (ground, ramps, boxes, other cars, robots) but their own car's, after the step. The
+//!   radar's targets are the other cars whose `radarCrossSection` (m²) is above 0.
 //! * **World frame.** The world is Webots' default ENU: x east, y north, z up. The compass
 //!   points to world +y; the inertial unit's yaw is 0 with the device's x axis along world +x.
 
