@@ -367,6 +367,47 @@ fn distance_sensors_and_their_lookup_tables() {
     assert_eq!(distance(&sim, id, "back"), 1000.0);
 }
 
+#[test]
+fn sonar_hears_only_surfaces_it_meets_square_on() {
+    // Two rays at ±aperture/2 about +z, in the x–y plane, towards the wall (normal −x): they
+    // meet it at an incidence of aperture/2. A sonar hears the nearer of those within π/8
+    // (0.39 rad): with an aperture of 0.6 (0.3 rad) it reads the rays' distance, with 1.0
+    // (0.5 rad) nothing (the table's last row). A generic sensor of the same two rays reads
+    // their weighted mean (equal weights, same distance).
+    let table = "lookupTable = [[0, 0, 0], [4, 4, 0]]"; // m → m
+    let sensor = |name: &str, kind: &str, aperture: f64| {
+        format!(
+            "[[vehicle.device]]\ntype = \"DistanceSensor\"\nname = \"{name}\"\nsensorType = \"{kind}\"\n\
+             numberOfRays = 2\naperture = {aperture}\ntranslation = [2.5, 0, 0]\n{table}\n"
+        )
+    };
+    let devices = [
+        sensor("narrow sonar", "sonar", 0.6),
+        sensor("wide sonar", "sonar", 1.0),
+        sensor("narrow generic", "generic", 0.6),
+    ]
+    .concat();
+    let (mut sim, id) = wall_world(&devices);
+    for name in ["narrow sonar", "wide sonar", "narrow generic"] {
+        enable(&mut sim, id, name, 20);
+    }
+    for _ in 0..50 {
+        sim.step().unwrap();
+    }
+    let (p, q) = origin(&sim, id);
+    let at = p + q * Vector3::new(2.5, 0.0, 0.0);
+    let along = |theta: f64| {
+        let dir = q * Vector3::new(theta.cos(), theta.sin(), 0.0);
+        (WALL_X - at.x) / dir.x
+    };
+    let expected = along(0.3).min(along(-0.3));
+    // Tolerance: f32 rays, 1e-4 m.
+    assert!((distance(&sim, id, "narrow sonar") - expected).abs() < 1e-4);
+    assert_eq!(distance(&sim, id, "wide sonar"), 4.0);
+    let mean = 0.5 * (along(0.3) + along(-0.3));
+    assert!((distance(&sim, id, "narrow generic") - mean).abs() < 1e-4);
+}
+
 /// The error of a world that must be refused: its key and text.
 fn refused(text: &str) -> (String, String) {
     let e = world_file::parse_str("w.toml", text).expect_err("the world should be refused");
