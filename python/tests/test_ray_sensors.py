@@ -52,6 +52,15 @@ out = {
     "type": left.getType(),
     "table": left.getLookupTable(),
 }
+from webots_vehicle import devices
+image = devices.range_image(lidar)
+points = devices.point_cloud(lidar)
+found = devices.radar_targets(radar)
+out["numpy"] = {
+    "image": [list(image.shape), image.dtype.str, image[0].tolist() == out["image"]],
+    "points": [points.dtype.itemsize, points["z"].tolist() == [p[2] for p in out["cloud"]]],
+    "targets": [found.shape[0], found["distance"].tolist() == [t[0] for t in out["targets"]]],
+}
 print(json.dumps(out))
 """
 
@@ -101,3 +110,9 @@ def test_ray_devices(tmp_path):
     # The distance sensor: 100·(5 − y) by its table (1 cm of roll: ±1).
     assert abs(r["distance"] - 100.0 * (5.0 - r["gps"][1])) < 1.0
     assert r["type"] == 0 and r["table"] == [0.0, 0.0, 0.0, 10.0, 1000.0, 0.0]
+    # webots_vehicle.devices: the same samples as numpy arrays.
+    assert r["numpy"] == {
+        "image": [[1, 9], "<f4", True],
+        "points": [20, True],
+        "targets": [1, True],
+    }
