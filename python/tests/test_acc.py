@@ -8,9 +8,8 @@ from conftest import ROOT, run_controller
 
 
 def test_acc_example_keeps_the_time_gap(tmp_path):
-    out = run_controller(
-        ROOT / "examples" / "acc" / "acc.py", str(ROOT / "sim" / "worlds" / "acc.toml"), out=tmp_path
-    )
+    world = str(ROOT / "sim" / "worlds" / "acc.toml")
+    out = run_controller(ROOT / "examples" / "acc" / "acc.py", world, out=tmp_path)
     assert out.returncode == 0, out.stderr
     assert out.stderr == ""
     log = [[float(x) for x in line.split()[1:]] for line in out.stdout.splitlines()]

@@ -192,10 +192,27 @@ impl World {
     }
 
     /// The world as the ray devices of car `own` see it after the last step (its own bodies
-    /// transparent), with the other cars of `radarCrossSection` > 0 as radar targets when
-    /// `radar` is true.
+    /// transparent), with the other cars and the boxes of `radarCrossSection` > 0 as radar
+    /// targets, in that order, when `radar` is true.
     pub(crate) fn scene(&self, own: VehicleId, radar: bool) -> Result<Scene<'_>, SimError> {
         let echoes = if radar {
+            let boxes = self
+                .bodies
+                .iter()
+                .zip(&self.config.bodies)
+                .filter(|(_, spec)| spec.radar_cross_section > 0.0)
+                .filter_map(|(&h, spec)| {
+                    let pose = body::pose(&self.physics, h)?;
+                    Some(RadarEcho {
+                        position: pose.position,
+                        velocity: pose.velocity,
+                        cross_section: spec.radar_cross_section,
+                        centre: pose.position,
+                        radius: spec.size.norm() / 2.0,
+                        half_length: spec.size.x / 2.0,
+                        bodies: vec![h],
+                    })
+                });
             self.vehicles
                 .iter()
                 .filter(|v| v.id() != own && v.radar_cross_section() > 0.0)
@@ -211,6 +228,7 @@ impl World {
                         bodies: v.bodies(),
                     }
                 })
+                .chain(boxes)
                 .collect()
         } else {
             Vec::new()

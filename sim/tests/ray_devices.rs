@@ -475,3 +475,25 @@ fn ray_device_fields_are_read_and_checked() {
     let (key, _) = refused("[vehicle]\nradarCrossSection = -1\n");
     assert_eq!(key, "vehicle.radarCrossSection");
 }
+
+#[test]
+fn radar_sees_boxes_with_a_cross_section() {
+    // A 1 m box of 2 m² 20 m ahead is a target at its centre; one of 0 m² (the default) at
+    // 30 m is not (its ray still occludes nothing here: occlusion is off).
+    let boxes = "[[body]]\ntranslation = [20, 0, 0.5]\nsize = [1, 1, 1]\nmass = 100\nradarCrossSection = 2\n\
+                 [[body]]\ntranslation = [30, 3, 0.5]\nsize = [1, 1, 1]\nmass = 100\n";
+    let (sim, ids) = radar_world("", &[], boxes);
+    let t = targets(&sim, ids[0], "radar");
+    assert_eq!(t.len(), 1, "{t:?}");
+    let (p, _) = origin(&sim, ids[0]);
+    let centre = sim.world().bodies()[0].position;
+    // Tolerance: the same f64 arithmetic on the same positions.
+    assert!((t[0].distance - (centre - p).norm()).abs() < 1e-9);
+    assert!((t[0].received_power - default_power_dbm(2.0, t[0].distance)).abs() < 1e-9);
+    // A negative cross-section is refused at its key.
+    let (key, _) = refused(&format!(
+        "{}radarCrossSection = -2\n",
+        &boxes[..boxes.find("radarCrossSection").unwrap()]
+    ));
+    assert_eq!(key, "body[1].radarCrossSection");
+}

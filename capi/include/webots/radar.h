@@ -3,7 +3,7 @@
  *
  * Part of the `capi` crate (libcar.so / libdriver.so). SPDX-License-Identifier: MIT OR Apache-2.0
  *
- * Sampling periods are in milliseconds (ms). The targets are the other cars whose
+ * Sampling periods are in milliseconds (ms). The targets are the other cars and boxes whose
  * radarCrossSection is above 0, seen from the radar's origin within its field of view and
  * range. The pointers returned point into library storage valid until the next call; do not
  * free them.

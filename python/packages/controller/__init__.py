@@ -21,9 +21,9 @@ Only the calls a vehicle controller uses exist: ``step``, ``getTime``, ``getBasi
 returns the sensors a world file puts on the car (``[[vehicle.device]]``) as :class:`GPS`,
 :class:`InertialUnit`, :class:`Gyro`, :class:`Accelerometer`, :class:`Compass`,
 :class:`DistanceSensor`, :class:`Radar` (with :class:`RadarTarget`) and :class:`Lidar` (with
-:class:`LidarPoint`), with Webots' method names, measured by the same engine code as the C API's; the car's own devices
-(motors, brakes, lights) as a plain :class:`Device` (names and node types only); ``None`` for
-names the robot does not have. Warnings and errors go to stderr with Webots' texts.
+:class:`LidarPoint`), with Webots' method names, measured by the same engine code as the C
+API's; the car's own devices (motors, brakes, lights) as a plain :class:`Device` (names and
+node types only); ``None`` for names the robot does not have. Warnings and errors go to stderr with Webots' texts.
 """
 
 import atexit
@@ -273,7 +273,8 @@ class RadarTarget:
 
 
 class Radar(_Sensor):
-    """Webots' ``Radar``: the other cars with a ``radarCrossSection`` in its field of view."""
+    """Webots' ``Radar``: the other cars and boxes with a ``radarCrossSection`` in its field of
+    view."""
 
     _kind = "radar"
 
@@ -318,7 +319,10 @@ class LidarPoint:
         """When the ray was cast (s)."""
 
     def __repr__(self) -> str:
-        return f"LidarPoint(x={self.x}, y={self.y}, z={self.z}, layer_id={self.layer_id}, time={self.time})"
+        return (
+            f"LidarPoint(x={self.x}, y={self.y}, z={self.z}, layer_id={self.layer_id}, "
+            f"time={self.time})"
+        )
 
 
 #: The C layout of ``WbLidarPoint``: three floats, an int, a float (20 bytes).
@@ -383,7 +387,8 @@ class Lidar(_Sensor):
 
     def getLayerPointCloud(self, layer: int, data_type: str = "list"):
         """The points of ``layer``."""
-        return self._points(_native.wb_lidar_get_layer_point_cloud(self._tag, _c_int(layer)), data_type)
+        points = _native.wb_lidar_get_layer_point_cloud(self._tag, _c_int(layer))
+        return self._points(points, data_type)
 
     def getNumberOfPoints(self) -> int:
         """``horizontalResolution · numberOfLayers`` (0 if the lidar or its cloud is disabled)."""

@@ -19,7 +19,8 @@
 //!   world gives the same readings on every run.
 //! * **Rays.** The ray devices see the world through one module, `rays`: every collider
 //!   (ground, ramps, boxes, other cars, robots) but their own car's, after the step. The
-//!   radar's targets are the other cars whose `radarCrossSection` (m²) is above 0.
+//!   radar's targets are the other cars and the dynamic boxes whose `radarCrossSection` (m²)
+//!   is above 0.
 //! * **World frame.** The world is Webots' default ENU: x east, y north, z up. The compass
 //!   points to world +y; the inertial unit's yaw is 0 with the device's x axis along world +x.
 

@@ -47,7 +47,7 @@ pub(crate) struct Scene<'a> {
     physics: &'a PhysicsWorld,
     /// The bodies of the car the devices ride on, invisible to them.
     own: Vec<RigidBodyHandle>,
-    /// The radar targets other than the car itself, in the order of the world's vehicles.
+    /// The radar targets other than the car itself: the world's vehicles, then its boxes.
     echoes: Vec<RadarEcho>,
 }
 

@@ -11,7 +11,14 @@ use super::read::Section;
 use super::read::{missing, yaw_of};
 
 /// Keys of each `[[body]]`.
-pub(crate) const BODY_KEYS: [&str; 5] = ["translation", "size", "mass", "rotation", "friction"];
+pub(crate) const BODY_KEYS: [&str; 6] = [
+    "translation",
+    "size",
+    "mass",
+    "rotation",
+    "friction",
+    "radarCrossSection",
+];
 
 /// Reads every `[[body]]` into `config.bodies`, each validated on its own so that an error
 /// names the key of the section at fault.
@@ -32,6 +39,7 @@ pub(crate) fn read_bodies(
             yaw: yaw_of(&b)?,
             mass,
             friction: b.number("friction")?,
+            radar_cross_section: b.number("radarCrossSection")?.unwrap_or(0.0),
         };
         spec.validate().map_err(|e| {
             let key = match e.field {
@@ -39,6 +47,7 @@ pub(crate) fn read_bodies(
                 "body.size" => "size",
                 "body.mass" => "mass",
                 "body.yaw" => "rotation",
+                "body.radarCrossSection" => "radarCrossSection",
                 _ => "friction",
             };
             b.error(
