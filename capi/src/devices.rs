@@ -33,6 +33,8 @@ pub(crate) mod node {
     pub(crate) const COMPASS: i32 = 39;
     /// `WB_NODE_DISPLAY`.
     pub(crate) const DISPLAY: i32 = 41;
+    /// `WB_NODE_DISTANCE_SENSOR`.
+    pub(crate) const DISTANCE_SENSOR: i32 = 42;
     /// `WB_NODE_GPS`.
     pub(crate) const GPS: i32 = 44;
     /// `WB_NODE_GYRO`.
@@ -41,8 +43,12 @@ pub(crate) mod node {
     pub(crate) const INERTIAL_UNIT: i32 = 46;
     /// `WB_NODE_LED`.
     pub(crate) const LED: i32 = 47;
+    /// `WB_NODE_LIDAR`.
+    pub(crate) const LIDAR: i32 = 48;
     /// `WB_NODE_POSITION_SENSOR`.
     pub(crate) const POSITION_SENSOR: i32 = 52;
+    /// `WB_NODE_RADAR`.
+    pub(crate) const RADAR: i32 = 54;
     /// `WB_NODE_ROTATIONAL_MOTOR`.
     pub(crate) const ROTATIONAL_MOTOR: i32 = 57;
     /// `WB_NODE_SPEAKER`.
@@ -61,6 +67,9 @@ pub(crate) fn sensor_node_type(kind: DeviceKind) -> i32 {
         DeviceKind::Compass => node::COMPASS,
         DeviceKind::Camera => node::CAMERA,
         DeviceKind::Display => node::DISPLAY,
+        DeviceKind::DistanceSensor => node::DISTANCE_SENSOR,
+        DeviceKind::Radar => node::RADAR,
+        DeviceKind::Lidar => node::LIDAR,
     }
 }
 

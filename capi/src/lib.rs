@@ -25,6 +25,8 @@
 //!   `webots/compass.h`: the sensors a world file puts on the car (`[[vehicle.device]]`),
 //!   measured by `sim::devices`; `webots/device.h` and `wb_robot_get_number_of_devices`,
 //!   `wb_robot_get_device_by_index` to list the robot's devices;
+//! * `webots/distance_sensor.h`, `webots/radar.h` (`WbRadarTarget`), `webots/lidar.h`
+//!   (`WbLidarPoint`): the ray devices (`sim::devices::rays`);
 //! * `webots/camera.h` and `webots/camera_recognition_object.h`: the camera and its
 //!   Recognition, rendered by `sim::devices::camera`;
 //! * `webots/display.h`: drawing into a car's `Display` (`sim::devices::display`);
@@ -70,9 +72,12 @@ mod device_api;
 mod devices;
 mod differential_wheels_api;
 mod display_api;
+mod distance_sensor_api;
 mod driver_api;
 mod keyboard_api;
+mod lidar_api;
 mod message;
+mod radar_api;
 mod robot;
 mod robot_api;
 mod sensor;
@@ -85,9 +90,14 @@ pub use car_api::*;
 pub use device_api::*;
 pub use differential_wheels_api::*;
 pub use display_api::*;
+pub use distance_sensor_api::*;
 pub use driver_api::*;
 pub use keyboard_api::*;
+pub use lidar_api::*;
+pub use radar_api::*;
 pub use robot::WORLD_VARIABLE;
 pub use robot_api::*;
+pub use sensor::WbRadarTarget;
 pub use sensor_api::*;
 pub use session::load_world;
+pub use sim::devices::LidarPoint as WbLidarPoint;

@@ -6,6 +6,7 @@ use std::ffi::c_int;
 use std::path::PathBuf;
 
 use sim::keyboard::Keyboard;
+use sim::programme::Programme;
 use sim::world_file::{self, WorldDescription};
 use sim::{RobotId, SimError, Simulation, VehicleId};
 
@@ -72,6 +73,15 @@ pub(crate) struct Robot {
     pub(crate) robot_keyboard: Keyboard,
     /// The images of `wb_display_image_*`, by handle.
     pub(crate) images: Images,
+    /// The world's other cars, each running its programme.
+    others: Vec<Programmed>,
+}
+
+/// A car the controller does not drive: its programme and the next step due.
+struct Programmed {
+    id: VehicleId,
+    programme: Programme,
+    next: usize,
 }
 
 impl Robot {
@@ -102,33 +112,72 @@ impl Robot {
         Robot::build(&description, outputs)
     }
 
-    /// Builds the world of `description` with its car or robot: one vehicle, the one the
-    /// controller drives; records it if `outputs` names a directory.
+    /// Builds the world of `description` with its car or robot, the one the controller
+    /// drives: the robot, the only car, or, of several cars, the one without a programme (the
+    /// others run theirs); records it if `outputs` names a directory.
     fn build(description: &WorldDescription, outputs: Option<PathBuf>) -> Result<Robot, String> {
-        let vehicles = (description.cars.len(), description.robot.is_some());
-        if !matches!(vehicles, (1, false) | (0, true)) {
-            return Err(format!(
-                "cannot drive the world {}: it holds {}, and a controller drives exactly \
-                 one car or robot",
-                description.source,
-                description.vehicles_label()
-            ));
-        }
+        let cars = &description.cars;
+        let driven = match (cars.len(), description.robot.is_some()) {
+            (1, false) | (0, true) => 0,
+            (n, false) if n > 1 => {
+                let free: Vec<usize> = (0..n).filter(|&i| cars[i].programme.is_empty()).collect();
+                match free[..] {
+                    [one] => one,
+                    _ => {
+                        return Err(format!(
+                            "cannot drive the world {}: of its {n} cars {} have no programme, \
+                             and a controller drives the one car without a programme (the \
+                             others run theirs)",
+                            description.source,
+                            free.len()
+                        ));
+                    }
+                }
+            }
+            _ => {
+                return Err(format!(
+                    "cannot drive the world {}: it holds {}, and a controller drives exactly \
+                     one car or robot",
+                    description.source,
+                    description.vehicles_label()
+                ));
+            }
+        };
         let (mut simulation, reports) = Simulation::from_description(description)
             .map_err(|e| format!("cannot build the world {}: {e}", description.source))?;
         // The loader validated the fields already; anything left is still reported.
         for w in reports.iter().flatten() {
             eprintln!("Warning: {}: {w}", description.source);
         }
-        // Nothing the world says is dropped silently: its programme is vehicle-sim's to run.
-        if description.has_programme() {
+        // Nothing the world says is dropped silently: the driven vehicle's programme is
+        // vehicle-sim's to run.
+        let driven_programme = match cars.get(driven) {
+            Some(car) => !car.programme.is_empty(),
+            None => description
+                .robot
+                .as_ref()
+                .is_some_and(|r| !r.programme.is_empty()),
+        };
+        if driven_programme {
             eprintln!(
                 "Warning: {}: the world's programme is not run: the controller drives (vehicle-sim \
                  runs programmes).",
                 description.source
             );
         }
-        let body = match (simulation.car_ids().next(), simulation.robot_ids().next()) {
+        let ids: Vec<VehicleId> = simulation.car_ids().collect();
+        let others = ids
+            .iter()
+            .zip(cars)
+            .enumerate()
+            .filter(|&(i, _)| i != driven)
+            .map(|(_, (&id, car))| Programmed {
+                id,
+                programme: car.programme.clone(),
+                next: 0,
+            })
+            .collect();
+        let body = match (ids.get(driven).copied(), simulation.robot_ids().next()) {
             (Some(id), _) => Body::Car {
                 id,
                 libraries: Libraries::None,
@@ -166,7 +215,22 @@ impl Robot {
             buffers,
             robot_keyboard: Keyboard::default(),
             images: Images::default(),
+            others,
         })
+    }
+
+    /// Gives the other cars' drivers the commands of their programmes due now.
+    fn run_programmes(&mut self) {
+        let t = self.simulation.world().time();
+        for other in &mut self.others {
+            let mut cursor = other.programme.cursor_at(other.next);
+            if let Ok(driver) = self.simulation.driver_mut(other.id) {
+                for (_, warning) in cursor.apply_due(t, driver) {
+                    crate::message::warning(&warning);
+                }
+            }
+            other.next = cursor.position();
+        }
     }
 
     /// The world's `basicTimeStep` (ms).
@@ -202,7 +266,13 @@ impl Robot {
             if self.simulation.is_over() {
                 break;
             }
-            if let Err(e) = self.simulation.step_physics() {
+            self.run_programmes();
+            // The other cars' drivers run; the controller's car only moves by its commands.
+            let stepped = match (&self.body, self.others.is_empty()) {
+                (Body::Car { id, .. }, false) => self.simulation.step_others(*id),
+                _ => self.simulation.step_physics(),
+            };
+            if let Err(e) = stepped {
                 Robot::fail(&e);
             }
         }
@@ -213,10 +283,11 @@ impl Robot {
     /// readings into commands, then the world advances one basic time step. Returns 0, or -1
     /// once the simulation is over (the driver does not run then).
     pub(crate) fn driver_step(&mut self) -> c_int {
-        if !self.simulation.is_over()
-            && let Err(e) = self.simulation.step()
-        {
-            Robot::fail(&e);
+        if !self.simulation.is_over() {
+            self.run_programmes();
+            if let Err(e) = self.simulation.step() {
+                Robot::fail(&e);
+            }
         }
         self.status()
     }
@@ -318,19 +389,26 @@ mod tests {
     }
 
     #[test]
-    fn a_controller_drives_one_vehicle() {
-        let description = world_file::parse_str(
-            "w.toml",
-            "[[vehicle]]\n[[vehicle]]\ntranslation = [0, 10, 0]\n",
-        )
-        .unwrap();
+    fn a_controller_drives_the_one_car_without_a_programme() {
+        let two = "[[vehicle]]\n[[vehicle]]\ntranslation = [0, 10, 0]\n";
+        let description = world_file::parse_str("w.toml", two).unwrap();
         let Err(e) = Robot::build(&description, None) else {
-            panic!("a world of two cars was accepted");
+            panic!("a world of two cars without programmes was accepted");
         };
         assert_eq!(
             e,
-            "cannot drive the world w.toml: it holds 2 vehicles (Car-1, Car-2), and a \
-             controller drives exactly one car or robot"
+            "cannot drive the world w.toml: of its 2 cars 2 have no programme, and a controller \
+             drives the one car without a programme (the others run theirs)"
         );
+        let programme = "[[vehicle.programme]]\nat = 0\ncruising_speed = 20\n";
+        let description = world_file::parse_str("w.toml", &format!("{two}{programme}")).unwrap();
+        let mut robot = Robot::build(&description, None).unwrap();
+        let ids: Vec<VehicleId> = robot.simulation.car_ids().collect();
+        assert!(matches!(robot.body, Body::Car { id, .. } if id == ids[0]));
+        // The other car runs its programme (20 km/h) even through physics-only steps.
+        robot.advance(200);
+        let speed = robot.simulation.telemetry(ids[1]).unwrap().speed;
+        assert!(speed > 2.0, "{speed} m/s");
+        assert!(robot.simulation.telemetry(ids[0]).unwrap().speed.abs() < 0.1);
     }
 }

@@ -7,7 +7,7 @@
 use std::ffi::c_int;
 
 use sim::VehicleId;
-use sim::devices::{Device, DeviceKind, DeviceSettings, Reading};
+use sim::devices::{Device, DeviceKind, DeviceSettings, LidarPoint, Reading};
 
 use crate::abi::WbDeviceTag;
 use crate::camera_api::RecognitionStore;
@@ -22,6 +22,28 @@ pub(crate) struct Slot {
     pub(crate) values: [f64; 4],
     /// A GPS's speed vector (m/s).
     pub(crate) speed_vector: [f64; 3],
+    /// A radar's targets, as the last `wb_radar_get_targets` copied them.
+    pub(crate) targets: Vec<WbRadarTarget>,
+    /// A lidar's range image (m), as the last getter copied it.
+    pub(crate) range_image: Vec<f32>,
+    /// A lidar's point cloud (m), as the last getter converted it.
+    pub(crate) point_cloud: Vec<LidarPoint>,
+    /// A lidar's frequency (Hz): `defaultFrequency` until `wb_lidar_set_frequency`.
+    pub(crate) frequency: f64,
+}
+
+/// Webots' `WbRadarTarget` (`webots/radar_target.h`): 32 bytes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[repr(C)]
+pub struct WbRadarTarget {
+    /// Distance (m).
+    pub distance: f64,
+    /// Received power (dBm).
+    pub received_power: f64,
+    /// Radial speed (m/s, > 0 receding).
+    pub speed: f64,
+    /// Azimuth (rad, > 0 to the right).
+    pub azimuth: f64,
 }
 
 /// The storage of every sensor of the robot, and the one roll/pitch/yaw array that Webots
@@ -44,9 +66,14 @@ impl Buffers {
         Buffers {
             slots: sensors
                 .iter()
-                .map(|_| Slot {
+                .map(|d| Slot {
                     values: [f64::NAN; 4],
                     speed_vector: [f64::NAN; 3],
+                    frequency: match d.settings() {
+                        DeviceSettings::Lidar(s) => s.default_frequency,
+                        _ => f64::NAN,
+                    },
+                    ..Slot::default()
                 })
                 .collect(),
             tables: sensors.iter().map(|d| table_of(d.settings())).collect(),
@@ -74,16 +101,21 @@ impl Buffers {
     }
 }
 
-/// A three-axis sensor's lookup table, row-major.
+/// A three-axis or distance sensor's lookup table, row-major.
 fn table_of(settings: &DeviceSettings) -> Box<[f64]> {
     match settings {
         DeviceSettings::Gyro(s) | DeviceSettings::Accelerometer(s) | DeviceSettings::Compass(s) => {
             s.lookup_table.rows().iter().flatten().copied().collect()
         }
+        DeviceSettings::DistanceSensor(s) => {
+            s.lookup_table.rows().iter().flatten().copied().collect()
+        }
         DeviceSettings::Gps(_)
         | DeviceSettings::InertialUnit(_)
         | DeviceSettings::Camera(_)
-        | DeviceSettings::Display(_) => Box::new([]),
+        | DeviceSettings::Display(_)
+        | DeviceSettings::Radar(_)
+        | DeviceSettings::Lidar(_) => Box::new([]),
     }
 }
 
@@ -97,6 +129,9 @@ pub(crate) fn prefix(kind: DeviceKind) -> &'static str {
         DeviceKind::Compass => "compass",
         DeviceKind::Camera => "camera",
         DeviceKind::Display => "display",
+        DeviceKind::DistanceSensor => "distance_sensor",
+        DeviceKind::Radar => "radar",
+        DeviceKind::Lidar => "lidar",
     }
 }
 
@@ -177,5 +212,5 @@ pub(crate) fn read(
             prefix(kind)
         ));
     }
-    Some((found.1, *d.reading()))
+    Some((found.1, d.reading().clone()))
 }

@@ -104,6 +104,14 @@ fn display() {
     run_announcing("display", Some(&world_path("display.toml")), 6);
 }
 
+/// The radar, lidars and distance sensor of a world file's car, and their misuse messages.
+#[test]
+fn ray_sensors() {
+    // 1 frequency out of range, 1 disabled read, 1 negative period, 1 disabled cloud, 2 bad
+    // layers, 3 wrong tags, 1 layer of a disabled lidar.
+    run_announcing("ray_sensors", Some(&rays_world()), 10);
+}
+
 /// The C++ wrapper, linked with the libraries in the other order (`-lcar -ldriver`).
 #[test]
 fn cpp_wrapper() {
@@ -239,4 +247,59 @@ fn a_controller_run_writes_the_outputs_of_the_same_programme() {
     assert!(metrics.contains("\"distance_m\""), "{metrics}");
     let glb = std::fs::read(out.join("replay.glb")).unwrap();
     assert_eq!(&glb[..4], b"glTF");
+}
+
+/// The adaptive cruise controller example (`examples/acc/acc.c`) in `sim/worlds/acc.toml`:
+/// the lead car drives at 20 m/s, slows to 15 m/s at 20 s and stops from 40 s.
+#[test]
+fn acc_example() {
+    let root = capi_dir().join("..");
+    let exe = compile(
+        "cc",
+        "c99",
+        &root.join("examples/acc/acc.c"),
+        "acc",
+        &shared_link_flags(),
+    );
+    let world = root.join("sim/worlds/acc.toml").display().to_string();
+    let r = run(&exe, Some(&world));
+    assert!(r.status.success(), "{}{}", r.stdout, r.stderr);
+    assert_eq!(r.stderr, "", "no warning");
+    let log: Vec<[f64; 3]> = r
+        .stdout
+        .lines()
+        .filter_map(|l| l.strip_prefix("acc: "))
+        .map(|l| {
+            let v: Vec<f64> = l.split(' ').map(|x| x.parse().unwrap()).collect();
+            [v[0], v[1], v[2]]
+        })
+        .collect();
+    // One line per 0.5 s; the step that ends the 60 s returns -1 before the last.
+    assert_eq!(log.len(), 119);
+    check_time_gap(&log);
+}
+
+/// The time gap the ACC examples keep (`TIME_GAP` 1.5 s beyond `STANDSTILL` 7 m): within
+/// 10 % over the last 5 s before each of the lead car's speed steps (20 m/s until 20 s, 15 m/s
+/// until 40 s, its target always in sight), and stopped behind it at the end: between
+/// `STANDSTILL` and the distance where the command falls below `CREEP` (7 + 0.5/0.4 m), as the
+/// radar measures it (1.5 m: three standard deviations of the Delphi ESR's range noise).
+fn check_time_gap(log: &[[f64; 3]]) {
+    for &[t, v, d] in log {
+        let settled = (15.0..=20.0).contains(&t) || (35.0..=40.0).contains(&t);
+        if settled {
+            let gap = (d - 7.0) / v;
+            assert!(
+                (gap - 1.5).abs() <= 0.15,
+                "time gap {gap} s at {t} s ({v} m/s, {d} m)"
+            );
+        }
+    }
+    let [t, v, d] = log[log.len() - 1];
+    assert_eq!(t, 59.5);
+    assert!(v.abs() < 0.1, "still moving at {v} m/s");
+    assert!(
+        (7.0 - 1.5..=8.25 + 1.5).contains(&d),
+        "stopped {d} m behind"
+    );
 }

@@ -80,9 +80,11 @@ supports() {
 
 C_HEADERS=(webots/types.h webots/robot.h webots/differential_wheels.h webots/vehicle/driver.h webots/vehicle/car.h
   webots/driver.h webots/car.h webots/nodes.h webots/device.h webots/gps.h webots/inertial_unit.h webots/gyro.h
-  webots/accelerometer.h webots/compass.h)
+  webots/accelerometer.h webots/compass.h webots/distance_sensor.h webots/radar_target.h webots/radar.h
+  webots/lidar_point.h webots/lidar.h)
 CPP_HEADERS=(webots/vehicle/Driver.hpp webots/vehicle/Car.hpp webots/Device.hpp webots/GPS.hpp webots/InertialUnit.hpp
-  webots/Gyro.hpp webots/Accelerometer.hpp webots/Compass.hpp)
+  webots/Gyro.hpp webots/Accelerometer.hpp webots/Compass.hpp webots/DistanceSensor.hpp webots/Radar.hpp
+  webots/Lidar.hpp)
 
 C_STDS=(c89 c99 c11 c17)
 for std in c2x gnu89; do
@@ -252,6 +254,9 @@ ALL_C='#include <webots/types.h>
 #include <webots/gyro.h>
 #include <webots/accelerometer.h>
 #include <webots/compass.h>
+#include <webots/distance_sensor.h>
+#include <webots/radar.h>
+#include <webots/lidar.h>
 void use(bool b);
 void use(bool b) { wbu_driver_set_hazard_flashers(b && true); }'
 for std in c99 c11 c17; do
@@ -277,6 +282,9 @@ typedef char inertial_unit_46[(WB_NODE_INERTIAL_UNIT == 46) ? 1 : -1];
 typedef char rotational_motor_57[(WB_NODE_ROTATIONAL_MOTOR == 57) ? 1 : -1];
 typedef char vacuum_gripper_61[(WB_NODE_VACUUM_GRIPPER == 61) ? 1 : -1];
 typedef char solid_80[(WB_NODE_SOLID == 80) ? 1 : -1];
+typedef char distance_sensor_42[(WB_NODE_DISTANCE_SENSOR == 42) ? 1 : -1];
+typedef char lidar_48[(WB_NODE_LIDAR == 48) ? 1 : -1];
+typedef char radar_54[(WB_NODE_RADAR == 54) ? 1 : -1];
 typedef char radio_87[(WB_NODE_RADIO == 87) ? 1 : -1];
 typedef char wgs84_1[(WB_GPS_WGS84_COORDINATE == 1) ? 1 : -1];'
 check "WbNodeType and WbGpsCoordinateSystem values, c89" c c89 "$NODES"

@@ -79,15 +79,19 @@ fn exported_symbols_match_the_headers() {
         "camera.h",
         "display.h",
         "keyboard.h",
+        "distance_sensor.h",
+        "radar.h",
+        "lidar.h",
     ]
     .iter()
     .flat_map(|h| declared_functions(h))
     .collect();
     // car 21, robot 8, DifferentialWheels 11, device 3, GPS 8, inertial unit 6, gyro,
-    // accelerometer and compass 6 each, camera 18, display 19, keyboard 4.
+    // accelerometer and compass 6 each, camera 18, display 19, keyboard 4, distance sensor 10,
+    // radar 9, lidar 21.
     assert_eq!(
         expected.len(),
-        21 + 8 + 11 + 3 + 8 + 6 + 3 * 6 + 18 + 19 + 4,
+        21 + 8 + 11 + 3 + 8 + 6 + 3 * 6 + 18 + 19 + 4 + 10 + 9 + 21,
         "{expected:?}"
     );
     expected.extend(

@@ -15,6 +15,7 @@
 mod camera;
 mod display;
 mod keyboard;
+mod ray_sensors;
 mod sensors;
 mod simulation;
 mod sweep;
@@ -52,6 +53,7 @@ fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     camera::register(m)?;
     display::register(m)?;
     keyboard::register(m)?;
+    ray_sensors::register(m)?;
     simulation::register(m)?;
     sweep::register(m)?;
     Ok(())

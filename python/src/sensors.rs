@@ -1,5 +1,6 @@
 //! The sensor functions of the Webots C API (`webots/gps.h`, `inertial_unit.h`, `gyro.h`,
-//! `accelerometer.h`, `compass.h`, `device.h`) for the Python `controller` module.
+//! `accelerometer.h`, `compass.h`, `device.h`) for the Python `controller` module, and the
+//! enabling of every sensor (the ray devices' other functions are in `ray_sensors`).
 //!
 //! Scalar functions are the C entry points themselves; those whose C result is a pointer call
 //! the C API's Rust twins (`car::values`), which print the same messages and return the
@@ -21,12 +22,16 @@ fn triaxial(kind: &str) -> PyResult<DeviceKind> {
 }
 
 /// Enables (period in ms; 0 disables, negative: Webots' error) the sensor `kind` ("gps",
-/// "inertial_unit", "gyro", "accelerometer", "compass") with `tag`.
+/// "inertial_unit", "gyro", "accelerometer", "compass", "distance_sensor", "radar", "lidar")
+/// with `tag`.
 #[pyfunction]
 fn sensor_enable(kind: &str, tag: u16, period: i32) -> PyResult<()> {
     match kind {
         "gps" => car::wb_gps_enable(tag, period),
         "inertial_unit" => car::wb_inertial_unit_enable(tag, period),
+        "distance_sensor" => car::wb_distance_sensor_enable(tag, period),
+        "radar" => car::wb_radar_enable(tag, period),
+        "lidar" => car::wb_lidar_enable(tag, period),
         _ => match triaxial(kind)? {
             DeviceKind::Gyro => car::wb_gyro_enable(tag, period),
             DeviceKind::Accelerometer => car::wb_accelerometer_enable(tag, period),
@@ -42,6 +47,9 @@ fn sensor_disable(kind: &str, tag: u16) -> PyResult<()> {
     match kind {
         "gps" => car::wb_gps_disable(tag),
         "inertial_unit" => car::wb_inertial_unit_disable(tag),
+        "distance_sensor" => car::wb_distance_sensor_disable(tag),
+        "radar" => car::wb_radar_disable(tag),
+        "lidar" => car::wb_lidar_disable(tag),
         _ => match triaxial(kind)? {
             DeviceKind::Gyro => car::wb_gyro_disable(tag),
             DeviceKind::Accelerometer => car::wb_accelerometer_disable(tag),
@@ -57,6 +65,9 @@ fn sensor_get_sampling_period(kind: &str, tag: u16) -> PyResult<i32> {
     Ok(match kind {
         "gps" => car::wb_gps_get_sampling_period(tag),
         "inertial_unit" => car::wb_inertial_unit_get_sampling_period(tag),
+        "distance_sensor" => car::wb_distance_sensor_get_sampling_period(tag),
+        "radar" => car::wb_radar_get_sampling_period(tag),
+        "lidar" => car::wb_lidar_get_sampling_period(tag),
         _ => match triaxial(kind)? {
             DeviceKind::Gyro => car::wb_gyro_get_sampling_period(tag),
             DeviceKind::Accelerometer => car::wb_accelerometer_get_sampling_period(tag),

@@ -23,6 +23,7 @@ use crate::geom::{DEFAULT_FRICTION, ground_rectangle};
 ///     yaw: 0.0,
 ///     mass: 200.0,
 ///     friction: None,
+///     radar_cross_section: 0.0,
 /// };
 /// let mut world = World::new(WorldConfig { bodies: vec![cube], ..WorldConfig::default() })?;
 /// world.step()?;
@@ -45,12 +46,14 @@ pub struct BodySpec {
     /// a chassis' 1, another box's); `None` = [`DEFAULT_FRICTION`] (1), so that on the ground
     /// the box slides with the ground's friction.
     pub friction: Option<f64>,
+    /// Webots' `radarCrossSection` of the box (m², ≥ 0; 0, the default, hides it from radars).
+    pub radar_cross_section: f64,
 }
 
 impl BodySpec {
     /// Checks every field: a finite centre and heading, sizes and mass within their ranges and
-    /// a friction from 0 to 100. Fields are named `body.center`, `body.size`, `body.yaw`,
-    /// `body.mass` and `body.friction`.
+    /// a friction from 0 to 100, a radar cross-section ≥ 0. Fields are named `body.center`,
+    /// `body.size`, `body.yaw`, `body.mass`, `body.friction` and `body.radarCrossSection`.
     pub fn validate(&self) -> Result<(), ParamError> {
         for &c in self.center.iter() {
             ParamError::within("body.center", c, plausible::POSITION)?;
@@ -63,6 +66,7 @@ impl BodySpec {
         if let Some(f) = self.friction {
             ParamError::friction("body.friction", f)?;
         }
+        ParamError::non_negative("body.radarCrossSection", self.radar_cross_section)?;
         Ok(())
     }
 
@@ -139,6 +143,7 @@ mod tests {
             yaw: 0.0,
             mass: 200.0,
             friction: None,
+            radar_cross_section: 0.0,
         }
     }
 

@@ -9,7 +9,7 @@ use vehicle_model::{BrakeBalance, CarParams, Driver, Model, ParamReport};
 use crate::devices::{CarDevices, DeviceSpec};
 use crate::keyboard::{KeyPress, Keyboard};
 
-use crate::error::SimError;
+use crate::error::{ParamError, SimError};
 use crate::placement::car_placement;
 use crate::vehicle::{Mounting, TyreChoice, VehiclePlacement, VehicleSpec};
 use crate::world_file::CarDescription;
@@ -50,6 +50,8 @@ pub struct CarBuilder {
     devices: Vec<DeviceSpec>,
     /// The seed of its devices' noise.
     seed: u64,
+    /// Its `radarCrossSection` (m²).
+    radar_cross_section: f64,
     /// The frames of its model's sensor slots, `None` for a model without them.
     slots: Option<SensorSlots<f64>>,
     /// The keys pressed for its controller's keyboard.
@@ -66,6 +68,7 @@ pub(crate) struct BuiltCar {
     pub default_name: &'static str,
     pub devices: CarDevices,
     pub keyboard: Keyboard,
+    pub radar_cross_section: f64,
 }
 
 impl CarBuilder {
@@ -84,6 +87,7 @@ impl CarBuilder {
             default_name: Model::Car.webots_name(),
             devices: Vec::new(),
             seed: 0,
+            radar_cross_section: 0.0,
             slots: None,
             keys: Vec::new(),
         }
@@ -158,6 +162,14 @@ impl CarBuilder {
         self
     }
 
+    /// Its `radarCrossSection` (m², finite and ≥ 0, checked when the car is added; default 0
+    /// as in Webots: radars do not see it).
+    #[must_use]
+    pub fn radar_cross_section(mut self, rcs: f64) -> Self {
+        self.radar_cross_section = rcs;
+        self
+    }
+
     /// The sensor-slot frames its devices may sit in (those of a shipped model by default;
     /// none for [`CarBuilder::new`]).
     #[must_use]
@@ -212,6 +224,7 @@ impl CarBuilder {
     /// for a device that cannot be built.
     pub(crate) fn build(self, step_ms: u32) -> Result<BuiltCar, SimError> {
         let placement = self.start();
+        ParamError::non_negative("radarCrossSection", self.radar_cross_section)?;
         let devices = CarDevices::build(&self.devices, self.slots.as_ref(), self.seed)?;
         let (mut driver, report) = Driver::new(self.params, step_ms);
         driver
@@ -228,6 +241,7 @@ impl CarBuilder {
             default_name: self.default_name,
             devices,
             keyboard: Keyboard::new(self.keys),
+            radar_cross_section: self.radar_cross_section,
         })
     }
 }
@@ -246,6 +260,7 @@ impl From<&CarDescription> for CarBuilder {
             default_name: car.model.webots_name(),
             devices: car.devices.clone(),
             seed: car.seed,
+            radar_cross_section: car.radar_cross_section,
             slots: slots_of(car.model),
             keys: car.keys.clone(),
         }

@@ -434,6 +434,7 @@ mod tests {
                 yaw: 0.0,
                 mass: 10.0,
                 friction: None,
+                radar_cross_section: 0.0,
             }],
             ..WorldConfig::default()
         };

@@ -184,6 +184,15 @@ impl<C> Programme<C> {
             next: 0,
         }
     }
+
+    /// A cursor at step `next` (a [`Cursor::position`]), for a runner that keeps the
+    /// programme and its position apart.
+    pub fn cursor_at(&self, next: usize) -> Cursor<'_, C> {
+        Cursor {
+            steps: &self.steps,
+            next: next.min(self.steps.len()),
+        }
+    }
 }
 
 /// Where a run is in a [`Programme`].
@@ -194,6 +203,11 @@ pub struct Cursor<'p, C> {
 }
 
 impl<'p, C> Cursor<'p, C> {
+    /// The index of the next step to fall due.
+    pub fn position(&self) -> usize {
+        self.next
+    }
+
     /// The commands that have come due at time `t` (s) since the last call, in order.
     pub fn due(&mut self, t: f64) -> impl Iterator<Item = (f64, &'p C)> + use<'p, C> {
         let start = self.next;

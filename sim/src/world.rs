@@ -12,6 +12,7 @@ use rapier3d::prelude::{
 
 use crate::body::{self, BodyPose};
 use crate::config::{Obstacle, WorldConfig, ramp_corners};
+use crate::devices::rays::{RadarEcho, Scene};
 use crate::diff_wheels::{
     DifferentialWheels, DifferentialWheelsParams, RobotId, RobotMode, RobotPlacement,
 };
@@ -249,6 +250,55 @@ impl World {
             }
         }
         Ok(energy)
+    }
+
+    /// The world as the ray devices of car `own` see it after the last step (its own bodies
+    /// transparent), with the other cars and the boxes of `radarCrossSection` > 0 as radar
+    /// targets, in that order, when `radar` is true.
+    pub(crate) fn scene(&self, own: VehicleId, radar: bool) -> Result<Scene<'_>, SimError> {
+        let echoes = if radar {
+            let boxes = self
+                .bodies
+                .iter()
+                .zip(&self.config.bodies)
+                .filter(|(_, spec)| spec.radar_cross_section > 0.0)
+                .filter_map(|(&h, spec)| {
+                    let pose = body::pose(&self.physics, h)?;
+                    Some(RadarEcho {
+                        position: pose.position,
+                        velocity: pose.velocity,
+                        cross_section: spec.radar_cross_section,
+                        centre: pose.position,
+                        radius: spec.size.norm() / 2.0,
+                        half_length: spec.size.x / 2.0,
+                        bodies: vec![h],
+                    })
+                });
+            self.vehicles
+                .iter()
+                .filter(|v| v.id() != own && v.radar_cross_section() > 0.0)
+                .map(|v| {
+                    let (s, chassis) = (v.state(), &v.spec().chassis);
+                    RadarEcho {
+                        position: s.position,
+                        velocity: s.velocity,
+                        cross_section: v.radar_cross_section(),
+                        centre: s.position + s.orientation * chassis.box_center.coords,
+                        radius: chassis.box_half_extents.norm(),
+                        half_length: chassis.box_half_extents.x,
+                        bodies: v.bodies(),
+                    }
+                })
+                .chain(boxes)
+                .collect()
+        } else {
+            Vec::new()
+        };
+        Ok(Scene::new(
+            &self.physics,
+            self.vehicle(own)?.bodies(),
+            echoes,
+        ))
     }
 
     /// The colliders of car `id`'s bodies.

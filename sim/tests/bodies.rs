@@ -35,6 +35,7 @@ fn world_file_reads_bodies() {
                 yaw: 0.3,
                 mass: 200.0,
                 friction: Some(0.8),
+                radar_cross_section: 0.0,
             },
             BodySpec {
                 center: Point3::new(0.0, 9.0, 0.5),
@@ -42,6 +43,7 @@ fn world_file_reads_bodies() {
                 yaw: 0.0,
                 mass: 1.0,
                 friction: None,
+                radar_cross_section: 0.0,
             },
         ]
     );
@@ -96,6 +98,7 @@ fn world_rejects_bad_bodies_without_panicking() {
         yaw: 0.0,
         mass: f64::INFINITY,
         friction: None,
+        radar_cross_section: 0.0,
     };
     let Err(sim::SimError::Param(e)) = World::new(WorldConfig {
         bodies: vec![bad],
@@ -115,6 +118,7 @@ fn dropped_box_falls_freely_then_rests_on_the_ground() {
         yaw: 0.0,
         mass: 200.0,
         friction: None,
+        radar_cross_section: 0.0,
     };
     let mut world = World::new(WorldConfig {
         bodies: vec![cube],
@@ -161,6 +165,7 @@ fn car_pushes_a_box_ahead_of_it() {
         yaw: 0.0,
         mass: 200.0,
         friction: Some(0.8),
+        radar_cross_section: 0.0,
     };
     let world = World::new(WorldConfig {
         bodies: vec![cube],

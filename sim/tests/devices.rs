@@ -19,7 +19,7 @@ fn world(text: &str) -> (Simulation, VehicleId) {
 fn reading(sim: &Simulation, id: VehicleId, name: &str) -> (usize, Reading) {
     let devices = sim.devices(id).unwrap();
     let i = devices.iter().position(|d| d.name() == name).unwrap();
-    (i, *devices[i].reading())
+    (i, devices[i].reading().clone())
 }
 
 fn enable(sim: &mut Simulation, id: VehicleId, name: &str, period_ms: u32) {

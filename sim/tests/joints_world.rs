@@ -174,6 +174,7 @@ fn a_car_pushes_a_200_kg_box_with_its_front_wheels() {
         yaw: 0.0,
         mass: 200.0,
         friction: None,
+        radar_cross_section: 0.0,
     };
     let mut sim = Simulation::new(
         World::new(WorldConfig {

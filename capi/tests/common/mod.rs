@@ -72,6 +72,8 @@ pub fn shared_link_flags() -> Vec<String> {
         "-ldriver".into(),
         "-lcar".into(),
         format!("-Wl,-rpath,{lib}"),
+        // The C maths library, for the programs that compute their expected values.
+        "-lm".into(),
     ]
 }
 
@@ -253,6 +255,11 @@ pub fn sensors_world() -> String {
 /// The path of `worlds/<name>`.
 pub fn world_path(name: &str) -> String {
     tests_dir().join("worlds").join(name).display().to_string()
+}
+
+/// The path of `worlds/rays.toml`.
+pub fn rays_world() -> String {
+    tests_dir().join("worlds/rays.toml").display().to_string()
 }
 
 /// The path of `worlds/differential_wheels.toml`.

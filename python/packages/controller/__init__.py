@@ -20,7 +20,8 @@ Only the calls a vehicle controller uses exist: ``step``, ``getTime``, ``getBasi
 ``getDevice``, ``getNumberOfDevices``, ``getDeviceByIndex``, ``getKeyboard`` and ``getName``. ``getDevice``
 returns the devices a world file puts on the car (``[[vehicle.device]]``) as :class:`GPS`,
 :class:`InertialUnit`, :class:`Gyro`, :class:`Accelerometer`, :class:`Compass`,
-:class:`Camera` and :class:`Display`, with
+:class:`DistanceSensor`, :class:`Radar` (with :class:`RadarTarget`), :class:`Lidar` (with
+:class:`LidarPoint`), :class:`Camera` and :class:`Display`, with
 Webots' method names, measured by the same engine code as the C API's; the car's own devices
 (motors, brakes, lights) as a plain :class:`Device` (names and node types only); ``None`` for
 names the robot does not have. Warnings and errors go to stderr with Webots' texts.
@@ -29,8 +30,9 @@ names the robot does not have. Warnings and errors go to stderr with Webots' tex
 import atexit
 import numbers
 import operator
+import struct
 import sys
-from typing import Dict, List, Optional
+from typing import Dict, List, Optional, Union
 
 from webots_vehicle import _native
 from webots_vehicle._native import WorldError
@@ -42,11 +44,17 @@ __all__ = [
     "Compass",
     "Device",
     "Display",
+    "DistanceSensor",
     "GPS",
     "Gyro",
+    "ImageRef",
     "InertialUnit",
     "Keyboard",
+    "Lidar",
+    "LidarPoint",
     "Node",
+    "Radar",
+    "RadarTarget",
     "Robot",
     "Supervisor",
     "WorldError",
@@ -79,11 +87,14 @@ class Node:
     CAMERA = 38
     COMPASS = 39
     DISPLAY = 41
+    DISTANCE_SENSOR = 42
     GPS = 44
     GYRO = 45
     INERTIAL_UNIT = 46
     LED = 47
+    LIDAR = 48
     POSITION_SENSOR = 52
+    RADAR = 54
     ROTATIONAL_MOTOR = 57
     SPEAKER = 59
     SOLID = 80
@@ -540,6 +551,223 @@ class Keyboard:
         is left."""
         return _native.wb_keyboard_get_key()
 
+class DistanceSensor(_Sensor):
+    """Webots' ``DistanceSensor``: the ``lookupTable``'s value for the distance (m) its rays
+    measure (types generic, sonar, laser)."""
+
+    _kind = "distance_sensor"
+    GENERIC = 0
+    INFRA_RED = 1
+    SONAR = 2
+    LASER = 3
+
+    def getValue(self) -> float:
+        """The value (NaN before the first sample)."""
+        return _native.wb_distance_sensor_get_value(self._tag)
+
+    def getMaxValue(self) -> float:
+        """The largest value of the lookup table (0 if empty)."""
+        return _native.wb_distance_sensor_get_max_value(self._tag)
+
+    def getMinValue(self) -> float:
+        """The smallest value of the lookup table (0 if empty)."""
+        return _native.wb_distance_sensor_get_min_value(self._tag)
+
+    def getAperture(self) -> float:
+        """The ``aperture`` field (rad)."""
+        return _native.wb_distance_sensor_get_aperture(self._tag)
+
+    def getLookupTable(self) -> List[float]:
+        """The ``lookupTable``, flat: ``[distance, value, noise]`` row after row."""
+        return _native.wb_distance_sensor_get_lookup_table(self._tag)
+
+    def getType(self) -> int:
+        """The ``type`` (``DistanceSensor.GENERIC``, ``SONAR``, ``LASER``)."""
+        return _native.wb_distance_sensor_get_type(self._tag)
+
+
+class RadarTarget:
+    """A target of a :class:`Radar` (Webots: ``controller.RadarTarget``)."""
+
+    def __init__(self, distance: float, received_power: float, speed: float, azimuth: float):
+        self.distance = distance
+        """Distance (m)."""
+        self.received_power = received_power
+        """Received power (dBm)."""
+        self.speed = speed
+        """Radial speed (m/s, positive when the target moves away)."""
+        self.azimuth = azimuth
+        """Azimuth (rad, positive to the right)."""
+
+    def __repr__(self) -> str:
+        return (
+            f"RadarTarget(distance={self.distance}, received_power={self.received_power}, "
+            f"speed={self.speed}, azimuth={self.azimuth})"
+        )
+
+
+class Radar(_Sensor):
+    """Webots' ``Radar``: the other cars and boxes with a ``radarCrossSection`` in its field of
+    view."""
+
+    _kind = "radar"
+
+    def getNumberOfTargets(self) -> int:
+        """The number of targets of the last sample (0 before the first)."""
+        return _native.wb_radar_get_number_of_targets(self._tag)
+
+    def getTargets(self) -> List[RadarTarget]:
+        """The targets of the last sample."""
+        return [RadarTarget(*t) for t in _native.wb_radar_get_targets(self._tag)]
+
+    def getMinRange(self) -> float:
+        """``minRange`` (m)."""
+        return _native.radar_get_field("min_range", self._tag)
+
+    def getMaxRange(self) -> float:
+        """``maxRange`` (m)."""
+        return _native.radar_get_field("max_range", self._tag)
+
+    def getHorizontalFov(self) -> float:
+        """``horizontalFieldOfView`` (rad)."""
+        return _native.radar_get_field("horizontal_fov", self._tag)
+
+    def getVerticalFov(self) -> float:
+        """``verticalFieldOfView`` (rad)."""
+        return _native.radar_get_field("vertical_fov", self._tag)
+
+
+class LidarPoint:
+    """A point of a :class:`Lidar`'s point cloud (Webots: ``controller.LidarPoint``)."""
+
+    def __init__(self, x: float, y: float, z: float, layer_id: int, time: float):
+        self.x = x
+        """Position along the lidar's x axis (m; inf where there is no return)."""
+        self.y = y
+        """Along its y axis (m)."""
+        self.z = z
+        """Along its z axis (m)."""
+        self.layer_id = layer_id
+        """The layer (0 the highest)."""
+        self.time = time
+        """When the ray was cast (s)."""
+
+    def __repr__(self) -> str:
+        return (
+            f"LidarPoint(x={self.x}, y={self.y}, z={self.z}, layer_id={self.layer_id}, "
+            f"time={self.time})"
+        )
+
+
+#: The C layout of ``WbLidarPoint``: three floats, an int, a float (20 bytes).
+_POINT = struct.Struct("=fffif")
+
+
+class Lidar(_Sensor):
+    """Webots' ``Lidar`` (fixed type): range images (m, ``inf`` where nothing lies within
+    ``[minRange, maxRange)``), layer 0 the highest, column 0 the leftmost; and point clouds."""
+
+    _kind = "lidar"
+
+    def enablePointCloud(self) -> None:
+        """Computes the point cloud from each range image."""
+        _native.lidar_set_point_cloud(self._tag, True)
+
+    def disablePointCloud(self) -> None:
+        """Stops computing the point cloud."""
+        _native.lidar_set_point_cloud(self._tag, False)
+
+    def isPointCloudEnabled(self) -> bool:
+        """True if the point cloud is computed."""
+        return _native.wb_lidar_is_point_cloud_enabled(self._tag)
+
+    def getRangeImage(self, data_type: str = "list") -> Union[List[float], bytes, None]:
+        """The range image, ``horizontalResolution`` values per layer: a list, or with
+        ``data_type="buffer"`` the C array's bytes (floats)."""
+        image = _native.wb_lidar_get_range_image(self._tag)
+        if image is None or data_type == "list":
+            return image
+        if data_type == "buffer":
+            return struct.pack(f"={len(image)}f", *image)
+        raise ValueError(f"data_type must be 'list' or 'buffer', not {data_type!r}")
+
+    def getRangeImageArray(self) -> Optional[List[List[float]]]:
+        """The range image as one list per layer."""
+        image = _native.wb_lidar_get_range_image(self._tag)
+        if image is None:
+            return None
+        width = self.getHorizontalResolution()
+        return [image[i : i + width] for i in range(0, len(image), width)]
+
+    def getLayerRangeImage(self, layer: int) -> Optional[List[float]]:
+        """The range image of ``layer`` (None, with Webots' error, for a layer it lacks or a
+        disabled lidar)."""
+        return _native.wb_lidar_get_layer_range_image(self._tag, _c_int(layer))
+
+    @staticmethod
+    def _points(points, data_type: str):
+        if points is None:
+            return None
+        if data_type == "list":
+            return [LidarPoint(*p) for p in points]
+        if data_type == "buffer":
+            return b"".join(_POINT.pack(*p) for p in points)
+        raise ValueError(f"data_type must be 'list' or 'buffer', not {data_type!r}")
+
+    def getPointCloud(self, data_type: str = "list"):
+        """The point cloud: :class:`LidarPoint` objects, or with ``data_type="buffer"`` the C
+        array's bytes (``WbLidarPoint``); None if the lidar or its cloud is disabled."""
+        return self._points(_native.wb_lidar_get_point_cloud(self._tag), data_type)
+
+    def getLayerPointCloud(self, layer: int, data_type: str = "list"):
+        """The points of ``layer``."""
+        points = _native.wb_lidar_get_layer_point_cloud(self._tag, _c_int(layer))
+        return self._points(points, data_type)
+
+    def getNumberOfPoints(self) -> int:
+        """``horizontalResolution · numberOfLayers`` (0 if the lidar or its cloud is disabled)."""
+        return _native.lidar_get_count("number_of_points", self._tag)
+
+    def getHorizontalResolution(self) -> int:
+        """``horizontalResolution``."""
+        return _native.lidar_get_count("horizontal_resolution", self._tag)
+
+    def getNumberOfLayers(self) -> int:
+        """``numberOfLayers``."""
+        return _native.lidar_get_count("number_of_layers", self._tag)
+
+    def getFrequency(self) -> float:
+        """The frequency (Hz)."""
+        return _native.lidar_get_field("frequency", self._tag)
+
+    def setFrequency(self, frequency: float) -> None:
+        """Sets the frequency (Hz), within ``[minFrequency, maxFrequency]``."""
+        _native.wb_lidar_set_frequency(self._tag, _c_double(frequency))
+
+    def getMinFrequency(self) -> float:
+        """``minFrequency`` (Hz)."""
+        return _native.lidar_get_field("min_frequency", self._tag)
+
+    def getMaxFrequency(self) -> float:
+        """``maxFrequency`` (Hz)."""
+        return _native.lidar_get_field("max_frequency", self._tag)
+
+    def getFov(self) -> float:
+        """``fieldOfView`` (rad)."""
+        return _native.lidar_get_field("fov", self._tag)
+
+    def getVerticalFov(self) -> float:
+        """``verticalFieldOfView`` (rad)."""
+        return _native.lidar_get_field("vertical_fov", self._tag)
+
+    def getMinRange(self) -> float:
+        """``minRange`` (m)."""
+        return _native.lidar_get_field("min_range", self._tag)
+
+    def getMaxRange(self) -> float:
+        """``maxRange`` (m)."""
+        return _native.lidar_get_field("max_range", self._tag)
+
 
 _SENSOR_CLASSES = {
     Node.CAMERA: Camera,
@@ -549,6 +777,9 @@ _SENSOR_CLASSES = {
     Node.GYRO: Gyro,
     Node.ACCELEROMETER: Accelerometer,
     Node.COMPASS: Compass,
+    Node.DISTANCE_SENSOR: DistanceSensor,
+    Node.RADAR: Radar,
+    Node.LIDAR: Lidar,
 }
 
 

@@ -11,7 +11,8 @@ Two APIs in one package:
   (:meth:`Simulation.run`); sweeps: :class:`Sweep` (a sweep file's cases by index, each run
   into its row of ``vehicle-sim sweep``'s ``results.csv``), :func:`run_case` and
   :func:`load_results` (``results.csv`` as a pandas DataFrame); :func:`camera_image`, a
-  controller camera's image as a numpy array.
+  controller camera's image as a numpy array; the ray devices' samples as numpy arrays:
+  :mod:`webots_vehicle.devices`.
 
 Units: m, m/s, rad (positive steering turns right), rad/s, N, s; km/h where the Webots driver
 API uses it (cruising speed, ``speed_kmh``); ms for ``basicTimeStep``. Frame: x forward, y

@@ -1,5 +1,5 @@
 //! Webots sensor devices on a car: `GPS`, `InertialUnit`, `Gyro`, `Accelerometer`,
-//! `Compass`, `Camera` (with its `Recognition`) and `Display`, mounted in the Car PROTO's sensor slots (or anywhere on the chassis), sampled as
+//! `Compass`, the ray-based `DistanceSensor`, `Radar` and `Lidar`, `Camera` (with its `Recognition`) and `Display`, mounted in the Car PROTO's sensor slots (or anywhere on the chassis), sampled as
 //! Webots samples them. The measurements are written here once; the C API and Python only
 //! marshal them.
 //!
@@ -17,16 +17,24 @@
 //!   car lists them) draws from the car's `seed` stream starting at draw `k·2⁴⁰`, so devices
 //!   never share draws, adding a device leaves the others' noise unchanged, and the same
 //!   world gives the same readings on every run.
+//! * **Rays.** The ray devices see the world through one module, `rays`: every collider
+//!   (ground, ramps, boxes, other cars, robots) but their own car's, after the step. The
+//!   radar's targets are the other cars and the dynamic boxes whose `radarCrossSection` (m²)
+//!   is above 0.
 //! * **World frame.** The world is Webots' default ENU: x east, y north, z up. The compass
 //!   points to world +y; the inertial unit's yaw is 0 with the device's x axis along world +x.
 
 pub mod camera;
 pub mod display;
+mod distance_sensor;
 mod gps;
 mod inertial_unit;
+mod lidar;
 mod lookup;
 mod noise;
 mod png_file;
+mod radar;
+pub(crate) mod rays;
 mod spec;
 mod triaxial;
 
@@ -40,14 +48,21 @@ use camera::solids::Solids;
 
 pub use camera::{CameraSettings, CameraState, Occlusion, RecognitionObject, RecognitionSettings};
 pub use display::{Display, DisplayImage, DisplaySettings, PixelFormat};
+pub use distance_sensor::{DistanceSensorSettings, DistanceSensorType, MAX_DISTANCE_SENSOR_RAYS};
 pub use gps::{GpsReading, GpsSettings};
 pub use inertial_unit::{InertialUnitReading, InertialUnitSettings};
+pub use lidar::{
+    LidarPoint, LidarProjection, LidarReading, LidarSettings, MAX_LIDAR_LAYERS,
+    MAX_LIDAR_RESOLUTION,
+};
 pub use lookup::LookupTable;
 pub use png_file::{ImageFileError, load_png, save_png};
+pub use radar::{RadarSettings, RadarTarget};
 pub use spec::{Axes, DeviceKind, DeviceSettings, DeviceSpec};
 pub use triaxial::TriaxialSettings;
 
 use gps::GpsNoise;
+use rays::Scene;
 use spec::check_resolution;
 use triaxial::{PreviousVelocity, Quantity};
 
@@ -131,7 +146,7 @@ pub enum DeviceError {
 }
 
 /// A sample of a device, by kind.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum Reading {
     /// A GPS's position and speed.
     Gps(GpsReading),
@@ -144,6 +159,12 @@ pub enum Reading {
     Camera,
     /// A display's: no measurement; its image is in [`Device::display`].
     Display,
+    /// A distance sensor's value (the lookup table's unit; NaN before the first sample).
+    Distance(f64),
+    /// A radar's targets, `None` before the first sample.
+    Radar(Option<Vec<RadarTarget>>),
+    /// A lidar's range image.
+    Lidar(LidarReading),
 }
 
 /// A device on a car: its fields, its frame on the chassis, its sampling state and its last
@@ -163,6 +184,8 @@ pub struct Device {
     gps_noise: GpsNoise,
     /// An accelerometer's velocity at its previous sample.
     previous_velocity: PreviousVelocity,
+    /// A lidar's point cloud is enabled (Webots computes it only then).
+    point_cloud: bool,
     reading: Reading,
     /// A camera's image, objects and Recognition sampling.
     camera: Option<Box<CameraState>>,
@@ -223,7 +246,26 @@ impl Device {
             .is_some_and(|c| self.due(now_ms) || c.recognition_due(now_ms))
     }
 
-    /// True if it is enabled and a full period has passed since its last sample.
+    /// True if its point cloud is enabled (a lidar; always false for the others).
+    pub fn point_cloud_enabled(&self) -> bool {
+        self.point_cloud
+    }
+
+    /// A lidar's point cloud (device axes, m) converted from its last range image, if the
+    /// lidar and its cloud are enabled (Webots' `wb_lidar_get_point_cloud`); `None`
+    /// otherwise.
+    pub fn point_cloud(&self) -> Option<Vec<LidarPoint>> {
+        match (&self.settings, &self.reading) {
+            (DeviceSettings::Lidar(s), Reading::Lidar(r))
+                if self.point_cloud && self.period_ms != 0 =>
+            {
+                Some(r.point_cloud(s, self.period_ms))
+            }
+            _ => None,
+        }
+    }
+
+    /// True if it samples at `now_ms`: enabled, and a full period has passed.
     fn due(&self, now_ms: u64) -> bool {
         self.period_ms != 0 && now_ms - self.last_ms >= u64::from(self.period_ms)
     }
@@ -240,11 +282,13 @@ impl Device {
     }
 
     /// Samples if enabled and a full period has passed since the last sample; a camera
-    /// renders `solids` (seen from car `own`) when its image or its Recognition is due.
+    /// renders `solids` (seen from car `own`) when its image or its Recognition is due; a ray
+    /// device measures in `scene` (and keeps its sample without one).
     fn refresh(
         &mut self,
         chassis: &ChassisMotion,
         now_ms: u64,
+        scene: Option<&Scene<'_>>,
         solids: Option<&Solids>,
         own: VehicleId,
     ) {
@@ -266,7 +310,7 @@ impl Device {
             }
             return;
         }
-        if !self.due(now_ms) {
+        if !self.due(now_ms) || (self.kind().casts_rays() && scene.is_none()) {
             return;
         }
         // Whole ms: exact in f64.
@@ -294,6 +338,21 @@ impl Device {
             DeviceSettings::Compass(s) => vector(Quantity::North, previous, s, rng),
             DeviceSettings::Camera(_) => Reading::Camera,
             DeviceSettings::Display(_) => Reading::Display,
+            DeviceSettings::DistanceSensor(s) => match scene {
+                Some(scene) => Reading::Distance(distance_sensor::measure(s, scene, &point, rng)),
+                None => return,
+            },
+            DeviceSettings::Radar(s) => match scene {
+                Some(scene) => Reading::Radar(Some(radar::measure(s, scene, &point, rng))),
+                None => return,
+            },
+            DeviceSettings::Lidar(s) => match scene {
+                Some(scene) => {
+                    let time = now_ms as f64 / 1000.0;
+                    Reading::Lidar(lidar::measure(s, scene, &point, time, rng))
+                }
+                None => return,
+            },
         };
     }
 }
@@ -408,14 +467,19 @@ impl CarDevices {
             let own = Isometry3::from_parts(Translation3::from(spec.translation), spec.rotation);
             let mut rng = SplitMix64::new(seed);
             rng.advance((k as u64).wrapping_mul(STREAM_SPACING));
-            let reading = match spec.kind() {
-                DeviceKind::Gps => Reading::Gps(GpsReading::unsampled()),
-                DeviceKind::InertialUnit => Reading::InertialUnit(InertialUnitReading::unsampled()),
-                DeviceKind::Gyro | DeviceKind::Accelerometer | DeviceKind::Compass => {
-                    Reading::Vector(Vector3::repeat(f64::NAN))
+            let reading = match &spec.settings {
+                DeviceSettings::Gps(_) => Reading::Gps(GpsReading::unsampled()),
+                DeviceSettings::InertialUnit(_) => {
+                    Reading::InertialUnit(InertialUnitReading::unsampled())
                 }
-                DeviceKind::Camera => Reading::Camera,
-                DeviceKind::Display => Reading::Display,
+                DeviceSettings::Gyro(_)
+                | DeviceSettings::Accelerometer(_)
+                | DeviceSettings::Compass(_) => Reading::Vector(Vector3::repeat(f64::NAN)),
+                DeviceSettings::DistanceSensor(_) => Reading::Distance(f64::NAN),
+                DeviceSettings::Radar(_) => Reading::Radar(None),
+                DeviceSettings::Lidar(s) => Reading::Lidar(LidarReading::unsampled(s)),
+                DeviceSettings::Camera(_) => Reading::Camera,
+                DeviceSettings::Display(_) => Reading::Display,
             };
             let display = match &spec.settings {
                 DeviceSettings::Display(s) => Some(Box::new(Display::new(s))),
@@ -434,6 +498,7 @@ impl CarDevices {
                 rng,
                 gps_noise: GpsNoise::default(),
                 previous_velocity: PreviousVelocity::default(),
+                point_cloud: false,
                 reading,
                 camera,
                 display,
@@ -497,6 +562,22 @@ impl CarDevices {
         }
     }
 
+    /// Enables or disables the point cloud of device `index` (a lidar; the others have
+    /// none, and are left as they are).
+    pub(crate) fn enable_point_cloud(
+        &mut self,
+        index: usize,
+        enabled: bool,
+    ) -> Result<(), DeviceError> {
+        let count = self.devices.len();
+        let device = self
+            .devices
+            .get_mut(index)
+            .ok_or(DeviceError::Unknown { index, count })?;
+        device.point_cloud = enabled && device.kind() == DeviceKind::Lidar;
+        Ok(())
+    }
+
     /// True if a device (or a camera's Recognition) is enabled: else a step need not measure
     /// the chassis.
     pub(crate) fn any_enabled(&self) -> bool {
@@ -513,17 +594,31 @@ impl CarDevices {
         self.devices.iter().any(|d| d.renders_at(now_ms))
     }
 
+    /// What the devices sampling at `now_ms` need of the world: `None` if no ray device
+    /// samples (no scene to build), else whether a radar does (the scene's targets).
+    pub(crate) fn scene_needed(&self, now_ms: u64) -> Option<bool> {
+        let mut due = self
+            .devices
+            .iter()
+            .filter(|d| d.kind().casts_rays() && d.due(now_ms))
+            .peekable();
+        due.peek()?;
+        Some(due.any(|d| d.kind() == DeviceKind::Radar))
+    }
+
     /// Samples every device whose period has come, at `now_ms`, on `chassis` of car `own`;
-    /// cameras render `solids` (given whenever [`CarDevices::renders_at`] is true).
+    /// cameras render `solids` (given whenever [`CarDevices::renders_at`] is true), the ray
+    /// devices measure in `scene` (given whenever [`CarDevices::scene_needed`] is `Some`).
     pub(crate) fn refresh(
         &mut self,
         chassis: &ChassisMotion,
         now_ms: u64,
+        scene: Option<&Scene<'_>>,
         solids: Option<&Solids>,
         own: VehicleId,
     ) {
         for d in &mut self.devices {
-            d.refresh(chassis, now_ms, solids, own);
+            d.refresh(chassis, now_ms, scene, solids, own);
         }
     }
 }

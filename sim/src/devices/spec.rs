@@ -6,7 +6,10 @@ use proto_geom::nalgebra::{UnitQuaternion, Vector3};
 
 use crate::error::ParamError;
 
-use super::{CameraSettings, DisplaySettings, GpsSettings, InertialUnitSettings, TriaxialSettings};
+use super::{
+    CameraSettings, DisplaySettings, DistanceSensorSettings, GpsSettings, InertialUnitSettings,
+    LidarSettings, RadarSettings, TriaxialSettings,
+};
 
 /// The kinds of device.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -25,11 +28,17 @@ pub enum DeviceKind {
     Camera,
     /// Webots `Display`.
     Display,
+    /// Webots `DistanceSensor`.
+    DistanceSensor,
+    /// Webots `Radar`.
+    Radar,
+    /// Webots `Lidar`.
+    Lidar,
 }
 
 impl DeviceKind {
     /// Every kind.
-    pub const ALL: [DeviceKind; 7] = [
+    pub const ALL: [DeviceKind; 10] = [
         DeviceKind::Gps,
         DeviceKind::InertialUnit,
         DeviceKind::Gyro,
@@ -37,6 +46,9 @@ impl DeviceKind {
         DeviceKind::Compass,
         DeviceKind::Camera,
         DeviceKind::Display,
+        DeviceKind::DistanceSensor,
+        DeviceKind::Radar,
+        DeviceKind::Lidar,
     ];
 
     /// The Webots node name (`"GPS"`, `"InertialUnit"`, …).
@@ -49,6 +61,9 @@ impl DeviceKind {
             DeviceKind::Compass => "Compass",
             DeviceKind::Camera => "Camera",
             DeviceKind::Display => "Display",
+            DeviceKind::DistanceSensor => "DistanceSensor",
+            DeviceKind::Radar => "Radar",
+            DeviceKind::Lidar => "Lidar",
         }
     }
 
@@ -69,7 +84,19 @@ impl DeviceKind {
             DeviceKind::Compass => "compass",
             DeviceKind::Camera => "camera",
             DeviceKind::Display => "display",
+            DeviceKind::DistanceSensor => "distance sensor",
+            DeviceKind::Radar => "radar",
+            DeviceKind::Lidar => "lidar",
         }
+    }
+
+    /// True for the devices that cast rays through the world (`DistanceSensor`, `Radar`,
+    /// `Lidar`).
+    pub const fn casts_rays(self) -> bool {
+        matches!(
+            self,
+            DeviceKind::DistanceSensor | DeviceKind::Radar | DeviceKind::Lidar
+        )
     }
 }
 
@@ -126,6 +153,12 @@ pub enum DeviceSettings {
     Camera(CameraSettings),
     /// A `Display`.
     Display(DisplaySettings),
+    /// A `DistanceSensor`.
+    DistanceSensor(DistanceSensorSettings),
+    /// A `Radar`.
+    Radar(RadarSettings),
+    /// A `Lidar`.
+    Lidar(LidarSettings),
 }
 
 impl DeviceSettings {
@@ -139,6 +172,9 @@ impl DeviceSettings {
             DeviceSettings::Compass(_) => DeviceKind::Compass,
             DeviceSettings::Camera(_) => DeviceKind::Camera,
             DeviceSettings::Display(_) => DeviceKind::Display,
+            DeviceSettings::DistanceSensor(_) => DeviceKind::DistanceSensor,
+            DeviceSettings::Radar(_) => DeviceKind::Radar,
+            DeviceSettings::Lidar(_) => DeviceKind::Lidar,
         }
     }
 
@@ -154,6 +190,11 @@ impl DeviceSettings {
             DeviceKind::Compass => DeviceSettings::Compass(TriaxialSettings::default()),
             DeviceKind::Camera => DeviceSettings::Camera(CameraSettings::default()),
             DeviceKind::Display => DeviceSettings::Display(DisplaySettings::default()),
+            DeviceKind::DistanceSensor => {
+                DeviceSettings::DistanceSensor(DistanceSensorSettings::default())
+            }
+            DeviceKind::Radar => DeviceSettings::Radar(RadarSettings::default()),
+            DeviceKind::Lidar => DeviceSettings::Lidar(LidarSettings::default()),
         }
     }
 
@@ -170,6 +211,9 @@ impl DeviceSettings {
             | DeviceSettings::Compass(s) => s.validate(),
             DeviceSettings::Camera(s) => s.validate(),
             DeviceSettings::Display(s) => s.validate(),
+            DeviceSettings::DistanceSensor(s) => s.validate(),
+            DeviceSettings::Radar(s) => s.validate(),
+            DeviceSettings::Lidar(s) => s.validate(),
         }
     }
 }

@@ -28,7 +28,8 @@ impl Simulation {
 
     /// Samples every enabled device whose period has come, on its car's chassis as the step
     /// left it (Webots refreshes its sensors at the end of each step). The world's solids are
-    /// gathered once, and only when a camera renders.
+    /// gathered once, and only when a camera renders; a car's ray scene is built only when one
+    /// of its ray devices samples.
     pub(super) fn refresh_devices(&mut self) -> Result<(), SimError> {
         let now_ms = self.world.time_ms();
         let gravity = self.world.config().gravity;
@@ -48,8 +49,12 @@ impl Simulation {
                 angular_velocity: s.angular_velocity,
                 gravity,
             };
+            let scene = match car.devices.scene_needed(now_ms) {
+                Some(radar) => Some(self.world.scene(car.id, radar)?),
+                None => None,
+            };
             car.devices
-                .refresh(&chassis, now_ms, solids.as_ref(), car.id);
+                .refresh(&chassis, now_ms, scene.as_ref(), solids.as_ref(), car.id);
         }
         Ok(())
     }
@@ -165,6 +170,22 @@ impl Simulation {
         let now_ms = self.world.time_ms();
         let car = self.car_mut(id)?;
         Ok(car.devices.enable(index, period_ms, now_ms)?)
+    }
+
+    /// Enables (`true`) or disables the point cloud of lidar `index` of car `id` (Webots:
+    /// `wb_lidar_enable_point_cloud`, `wb_lidar_disable_point_cloud`); another device is left
+    /// as it is.
+    ///
+    /// # Errors
+    /// [`SimError::UnknownVehicle`]; [`SimError::Device`] for an index the car does not have.
+    pub fn enable_point_cloud(
+        &mut self,
+        id: VehicleId,
+        index: usize,
+        enabled: bool,
+    ) -> Result<(), SimError> {
+        let car = self.car_mut(id)?;
+        Ok(car.devices.enable_point_cloud(index, enabled)?)
     }
 
     /// Writes the last image of every camera that took one and every display into `dir` as

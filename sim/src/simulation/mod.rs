@@ -192,6 +192,9 @@ impl Simulation {
         let name = self.unique_name(built.name, built.default_name)?;
         self.refuse_while_recording(&name)?;
         let id = self.world.add_vehicle(built.spec, built.placement)?;
+        self.world
+            .vehicle_mut(id)?
+            .set_radar_cross_section(built.radar_cross_section)?;
         self.cars.push(Controlled {
             id,
             driver: built.driver,
@@ -373,8 +376,26 @@ impl Simulation {
     /// # Errors
     /// The [`SimError`] of a physics failure, then the same error at every step.
     pub fn step(&mut self) -> Result<(), SimError> {
+        self.run_drivers(|_| true)?;
+        self.step_physics()
+    }
+
+    /// Runs the drivers of every car but `own`, then advances the world by one
+    /// `basicTimeStep`: a `wb_robot_step` of the controller of car `own` (whose driver does
+    /// not run) in a world whose other cars are driven.
+    ///
+    /// # Errors
+    /// As [`Simulation::step`].
+    pub fn step_others(&mut self, own: VehicleId) -> Result<(), SimError> {
+        self.run_drivers(|id| id != own)?;
+        self.step_physics()
+    }
+
+    /// Runs the drivers of the cars `which` selects with the current sensor readings and
+    /// applies their commands.
+    fn run_drivers(&mut self, which: impl Fn(VehicleId) -> bool) -> Result<(), SimError> {
         let t = self.world.time();
-        for car in &mut self.cars {
+        for car in self.cars.iter_mut().filter(|c| which(c.id)) {
             let sensors = if car.sampled {
                 self.world.vehicle(car.id)?.sensors(t)
             } else {
@@ -385,7 +406,7 @@ impl Simulation {
             let commands = *car.driver.step(&sensors);
             self.world.vehicle_mut(car.id)?.set_commands(&commands);
         }
-        self.step_physics()
+        Ok(())
     }
 
     /// Advances the world by one `basicTimeStep` with the commands in force, without running

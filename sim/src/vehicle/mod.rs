@@ -138,6 +138,8 @@ pub struct Vehicle {
     joint_space_mass_ready: bool,
     state: VehicleState,
     steering_servo: PositionServo,
+    /// Webots' `radarCrossSection` of the car's solid (m², ≥ 0; 0: radars do not see it).
+    radar_cross_section: f64,
 }
 
 impl Vehicle {
@@ -195,7 +197,22 @@ impl Vehicle {
                 spec.steering.min_angle,
                 spec.steering.max_angle,
             ),
+            radar_cross_section: 0.0,
         })
+    }
+
+    /// Its `radarCrossSection` (m²): 0 (the default, as in Webots) hides it from radars.
+    pub fn radar_cross_section(&self) -> f64 {
+        self.radar_cross_section
+    }
+
+    /// Sets its `radarCrossSection` (m², finite and ≥ 0).
+    ///
+    /// # Errors
+    /// [`ParamError`] naming `radarCrossSection` and the value.
+    pub fn set_radar_cross_section(&mut self, rcs: f64) -> Result<(), ParamError> {
+        self.radar_cross_section = ParamError::non_negative("radarCrossSection", rcs)?;
+        Ok(())
     }
 
     /// This car's handle.

@@ -93,6 +93,7 @@ fn a_box_has_its_own_friction_and_a_car_the_grounds() {
         yaw: 0.0,
         mass: 200.0,
         friction,
+        radar_cross_section: 0.0,
     };
     let config = WorldConfig {
         ground_friction: 0.45,

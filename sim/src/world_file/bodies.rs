@@ -11,7 +11,7 @@ use super::read::Section;
 use super::read::{missing, yaw_of};
 
 /// Keys of each `[[body]]`.
-pub(crate) const BODY_KEYS: [&str; 7] = [
+pub(crate) const BODY_KEYS: [&str; 8] = [
     "translation",
     "size",
     "mass",
@@ -19,6 +19,7 @@ pub(crate) const BODY_KEYS: [&str; 7] = [
     "friction",
     "color",
     "recognitionColors",
+    "radarCrossSection",
 ];
 
 /// Reads every `[[body]]` into `config.bodies`, each validated on its own so that an error
@@ -40,6 +41,7 @@ pub(crate) fn read_bodies(
             yaw: yaw_of(&b)?,
             mass,
             friction: b.number("friction")?,
+            radar_cross_section: b.number("radarCrossSection")?.unwrap_or(0.0),
         };
         spec.validate().map_err(|e| {
             let key = match e.field {
@@ -47,6 +49,7 @@ pub(crate) fn read_bodies(
                 "body.size" => "size",
                 "body.mass" => "mass",
                 "body.yaw" => "rotation",
+                "body.radarCrossSection" => "radarCrossSection",
                 _ => "friction",
             };
             b.error(

@@ -8,6 +8,9 @@ use toml::de::DeValue;
 use vehicle_model::Model;
 
 use super::error::{NameSet, WorldFileError, WorldFileErrorKind};
+use super::ray_devices::{
+    DISTANCE_SENSOR, LIDAR, RADAR, read_distance_sensor, read_lidar, read_radar,
+};
 use super::read::{Section, as_f64, describe, missing};
 use crate::devices::{
     Axes, CAR_DEVICE_NAMES, CameraSettings, DeviceKind, DeviceSettings, DeviceSpec,
@@ -98,6 +101,9 @@ fn read_device(d: &Section<'_, '_>, model: Model) -> Result<DeviceSpec, WorldFil
         DeviceKind::Gyro | DeviceKind::Accelerometer | DeviceKind::Compass => &TRIAXIAL,
         DeviceKind::Camera => &CAMERA,
         DeviceKind::Display => &DISPLAY,
+        DeviceKind::DistanceSensor => &DISTANCE_SENSOR,
+        DeviceKind::Radar => &RADAR,
+        DeviceKind::Lidar => &LIDAR,
     };
     let allowed: Vec<&str> = COMMON.iter().chain(fields).copied().collect();
     d.check_keys(&allowed)?;
@@ -115,6 +121,9 @@ fn read_device(d: &Section<'_, '_>, model: Model) -> Result<DeviceSpec, WorldFil
                 height: pixels(d, "height")?.unwrap_or(defaults.height),
             })
         }
+        DeviceKind::DistanceSensor => DeviceSettings::DistanceSensor(read_distance_sensor(d)?),
+        DeviceKind::Radar => DeviceSettings::Radar(read_radar(d)?),
+        DeviceKind::Lidar => DeviceSettings::Lidar(read_lidar(d)?),
     };
     settings.validate().map_err(|e| invalid(d, &e))?;
     let mut spec = DeviceSpec::new(settings);
@@ -180,7 +189,7 @@ fn read_device(d: &Section<'_, '_>, model: Model) -> Result<DeviceSpec, WorldFil
 }
 
 /// The file error of a field out of its range, at its key.
-fn invalid(d: &Section<'_, '_>, e: &ParamError) -> WorldFileError {
+pub(super) fn invalid(d: &Section<'_, '_>, e: &ParamError) -> WorldFileError {
     d.error(
         e.field,
         WorldFileErrorKind::InvalidValue(format!("{}: must be {}", Compact(e.value), e.rule)),
@@ -297,11 +306,16 @@ fn read_inertial_unit(d: &Section<'_, '_>) -> Result<InertialUnitSettings, World
     })
 }
 
+/// The `lookupTable` of `d` (present).
+pub(super) fn read_table(d: &Section<'_, '_>) -> Result<LookupTable, WorldFileError> {
+    match d.value("lookupTable") {
+        None => Ok(LookupTable::default()),
+        Some(v) => LookupTable::new(read_rows(d, v)?).map_err(|e| invalid(d, &e)),
+    }
+}
+
 fn read_triaxial(d: &Section<'_, '_>) -> Result<TriaxialSettings, WorldFileError> {
-    let lookup_table = match d.value("lookupTable") {
-        None => LookupTable::default(),
-        Some(v) => LookupTable::new(read_rows(d, v)?).map_err(|e| invalid(d, &e))?,
-    };
+    let lookup_table = read_table(d)?;
     Ok(TriaxialSettings {
         lookup_table,
         axes: read_axes(d)?,

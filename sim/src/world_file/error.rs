@@ -105,10 +105,17 @@ pub enum NameSet {
     Scenario,
     /// A sweep file's `combine`: `product`, `zip`.
     Combine,
-    /// `[[vehicle.device]] type`: `GPS`, `InertialUnit`, `Gyro`, `Accelerometer`, `Compass`.
+    /// `[[vehicle.device]] type`: `GPS`, `InertialUnit`, `Gyro`, `Accelerometer`, `Compass`,
+    /// `DistanceSensor`, `Radar`, `Lidar`.
     DeviceType,
     /// `[[vehicle.device]] slot`: `front`, `top`, `rear`, `center`.
     SensorSlot,
+    /// `[[vehicle.device]] preset`: the real devices of a `Radar` or `Lidar`.
+    DevicePreset,
+    /// A `DistanceSensor`'s `type`: `generic`, `sonar`, `laser`.
+    DistanceSensorType,
+    /// A `Lidar`'s `projection`: `cylindrical`, `planar`.
+    LidarProjection,
 }
 
 impl fmt::Display for NameSet {
@@ -124,6 +131,9 @@ impl fmt::Display for NameSet {
             NameSet::Combine => "way to combine the axes",
             NameSet::DeviceType => "device type",
             NameSet::SensorSlot => "sensor slot",
+            NameSet::DevicePreset => "device preset",
+            NameSet::DistanceSensorType => "distance sensor type",
+            NameSet::LidarProjection => "lidar projection",
         })
     }
 }

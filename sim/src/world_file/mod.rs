@@ -35,6 +35,7 @@ mod error;
 mod looks;
 mod overrides;
 mod programme;
+mod ray_devices;
 pub(crate) mod read;
 mod robot;
 mod statics;

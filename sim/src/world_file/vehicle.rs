@@ -39,7 +39,7 @@ const BRAKE_BALANCES: [(&str, BrakeBalance<f64>); 2] = [
 ];
 
 /// The keys of `[vehicle]` that are neither Webots fields nor wheel slots.
-const OWN_KEYS: [&str; 10] = [
+const OWN_KEYS: [&str; 11] = [
     "model",
     "color",
     "recognitionColors",
@@ -50,7 +50,11 @@ const OWN_KEYS: [&str; 10] = [
     PROGRAMME,
     DEVICE,
     SEED,
+    RADAR_CROSS_SECTION,
 ];
+
+/// The key of the car solid's `radarCrossSection` (m²) in `[vehicle]`.
+const RADAR_CROSS_SECTION: &str = "radarCrossSection";
 
 /// The key of the seed of the car's device noise in `[vehicle]`.
 const SEED: &str = "seed";
@@ -87,6 +91,8 @@ pub struct CarDescription {
     pub devices: Vec<DeviceSpec>,
     /// The seed of its devices' noise (`seed`, default 0).
     pub seed: u64,
+    /// Its `radarCrossSection` (m², ≥ 0; default 0 as in Webots: radars do not see it).
+    pub radar_cross_section: f64,
 }
 
 impl CarDescription {
@@ -112,6 +118,7 @@ impl CarDescription {
                 keys: Vec::new(),
                 devices: Vec::new(),
                 seed: 0,
+                radar_cross_section: 0.0,
             },
             messages,
         ))
@@ -259,6 +266,13 @@ pub(crate) fn read_vehicle(
     let keys = read_car_keys(s)?;
     let devices = read_devices(s, model)?;
     let seed = s.unsigned(SEED)?.unwrap_or(0);
+    let radar_cross_section = s.number(RADAR_CROSS_SECTION)?.unwrap_or(0.0);
+    ParamError::non_negative(RADAR_CROSS_SECTION, radar_cross_section).map_err(|e| {
+        s.error(
+            RADAR_CROSS_SECTION,
+            WorldFileErrorKind::InvalidValue(format!("{}: must be {}", Compact(e.value), e.rule)),
+        )
+    })?;
     Ok(CarDescription {
         model,
         params,
@@ -270,6 +284,7 @@ pub(crate) fn read_vehicle(
         keys,
         devices,
         seed,
+        radar_cross_section,
     })
 }
 

@@ -10,7 +10,8 @@
 //   no Supervisor or Robot C++ classes, so Driver derives from nothing; of the Robot methods it
 //   offers getTime(), getBasicTimeStep(), getNumberOfDevices() and the typed device getters of
 //   the sensors this simulator has (getGPS, getInertialUnit, getGyro, getAccelerometer,
-//   getCompass, getCamera, getDisplay, getKeyboard; nullptr for a name the car lacks or a device of another type).
+//   getCompass, getDistanceSensor, getRadar, getLidar, getCamera, getDisplay, getKeyboard;
+//   nullptr for a name the car lacks or a device of another type).
 // * Header-only: every method is inline and calls the C function of the same meaning, so only
 //   libdriver.so and libcar.so are needed at link time (no libCppDriver).
 // * The destructor releases the singleton, so a new Driver may be created after the previous
@@ -33,10 +34,13 @@
 #include <webots/Camera.hpp>
 #include <webots/Compass.hpp>
 #include <webots/Display.hpp>
+#include <webots/DistanceSensor.hpp>
 #include <webots/GPS.hpp>
 #include <webots/Gyro.hpp>
 #include <webots/InertialUnit.hpp>
 #include <webots/Keyboard.hpp>
+#include <webots/Lidar.hpp>
+#include <webots/Radar.hpp>
 #include <webots/nodes.h>
 #include <webots/robot.h>
 
@@ -121,6 +125,11 @@ namespace webots {
         keyboard_.reset(new Keyboard());
       return keyboard_.get();
     }
+    DistanceSensor *getDistanceSensor(const std::string &name) {
+      return device<DistanceSensor>(name, WB_NODE_DISTANCE_SENSOR);
+    }
+    Radar *getRadar(const std::string &name) { return device<Radar>(name, WB_NODE_RADAR); }
+    Lidar *getLidar(const std::string &name) { return device<Lidar>(name, WB_NODE_LIDAR); }
 
     // Steers with Ackermann geometry: rad, positive right, negative left.
     void setSteeringAngle(double steeringAngle) { wbu_driver_set_steering_angle(steeringAngle); }

@@ -1,0 +1,104 @@
+//! The world as the ray-based devices (`DistanceSensor`, `Radar`, `Lidar`) see it: rays cast
+//! through rapier's query pipeline against every collider (ground, ramps, boxes, other cars,
+//! robots) except those of the device's own car, and the radar targets. Every ray device
+//! measures through this one module.
+
+use proto_geom::nalgebra::{Point3, Vector3};
+use rapier3d::prelude::{
+    Collider, ColliderHandle, PhysicsWorld, QueryFilter, Ray, RigidBodyHandle,
+};
+
+use crate::geom;
+
+/// Where a ray stopped.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Hit {
+    /// Distance from the ray's origin (m).
+    pub distance: f64,
+    /// The surface's outward unit normal at the hit (world axes).
+    pub normal: Vector3<f64>,
+    /// The collider hit.
+    pub collider: ColliderHandle,
+}
+
+/// A solid with a `radarCrossSection` above 0, as a radar sees it.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct RadarEcho {
+    /// Its origin (m, world): Webots measures a target at the position of its solid.
+    pub position: Point3<f64>,
+    /// Its origin's velocity (m/s, world axes).
+    pub velocity: Vector3<f64>,
+    /// `radarCrossSection` (m², > 0).
+    pub cross_section: f64,
+    /// The centre of the sphere around its collision box (m, world): a target is a candidate
+    /// when this sphere meets the radar's field of view.
+    pub centre: Point3<f64>,
+    /// That sphere's radius (m).
+    pub radius: f64,
+    /// Half its length along its own x axis (m): a target nearer than `minRange` by more than
+    /// this is not reported.
+    pub half_length: f64,
+    /// Its rapier bodies: a ray stopping on one of them reached it.
+    pub bodies: Vec<RigidBodyHandle>,
+}
+
+/// The world without one car: what that car's ray devices see after a step.
+pub(crate) struct Scene<'a> {
+    physics: &'a PhysicsWorld,
+    /// The bodies of the car the devices ride on, invisible to them.
+    own: Vec<RigidBodyHandle>,
+    /// The radar targets other than the car itself: the world's vehicles, then its boxes.
+    echoes: Vec<RadarEcho>,
+}
+
+impl<'a> Scene<'a> {
+    /// The scene of `physics` seen from the car of bodies `own`, with the radar targets
+    /// `echoes` (left empty when no radar is enabled: they cost a pass over the vehicles).
+    pub(crate) fn new(
+        physics: &'a PhysicsWorld,
+        own: Vec<RigidBodyHandle>,
+        echoes: Vec<RadarEcho>,
+    ) -> Self {
+        Scene {
+            physics,
+            own,
+            echoes,
+        }
+    }
+
+    /// The radar targets.
+    pub(crate) fn echoes(&self) -> &[RadarEcho] {
+        &self.echoes
+    }
+
+    /// True if `collider` belongs to one of `bodies`.
+    pub(crate) fn belongs(&self, collider: ColliderHandle, bodies: &[RigidBodyHandle]) -> bool {
+        self.physics
+            .colliders
+            .get(collider)
+            .and_then(Collider::parent)
+            .is_some_and(|p| bodies.contains(&p))
+    }
+
+    /// The first surface along the ray from `origin` (m, world) in the unit direction `dir`
+    /// (world axes) within `max` (m); the own car's colliders are transparent. A ray starting
+    /// inside a shape stops at once (distance 0), as a sensor buried in an obstacle reads 0.
+    pub(crate) fn cast(&self, origin: &Point3<f64>, dir: &Vector3<f64>, max: f64) -> Option<Hit> {
+        if max.is_nan() || max <= 0.0 {
+            return None;
+        }
+        let own = &self.own;
+        let visible =
+            |_: ColliderHandle, c: &Collider| c.parent().is_none_or(|p| !own.contains(&p));
+        let filter = QueryFilter::default().predicate(&visible);
+        let ray = Ray::new(geom::point(origin), geom::vector(dir));
+        let (collider, hit) = self
+            .physics
+            .cast_ray_and_get_normal(&ray, max as f32, true, filter)?;
+        Some(Hit {
+            distance: f64::from(hit.time_of_impact),
+            normal: geom::to_vector(hit.normal),
+            collider,
+        })
+    }
+}
