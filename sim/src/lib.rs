@@ -90,6 +90,7 @@ pub mod programme;
 pub mod replay;
 pub mod report;
 pub mod rng;
+pub mod road;
 pub mod scenario;
 pub mod sweep;
 pub mod telemetry;
