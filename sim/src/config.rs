@@ -4,6 +4,7 @@
 use crate::body::BodySpec;
 use crate::error::ParamError;
 use crate::geom::{DEFAULT_FRICTION, ground_rectangle};
+use crate::road::RoadNetwork;
 use proto_geom::nalgebra::{Point2, Point3, Vector3};
 use proto_geom::plausible;
 
@@ -218,6 +219,9 @@ pub struct WorldConfig {
     pub bodies: Vec<BodySpec>,
     /// Solver settings.
     pub solver: SolverSettings,
+    /// The roads on the ground (none by default), validated when the world is built
+    /// ([`RoadNetwork::validate`]).
+    pub roads: RoadNetwork,
 }
 
 impl Default for WorldConfig {
@@ -229,6 +233,7 @@ impl Default for WorldConfig {
             obstacles: Vec::new(),
             bodies: Vec::new(),
             solver: SolverSettings::default(),
+            roads: RoadNetwork::default(),
         }
     }
 }

@@ -7,7 +7,7 @@ use rapier3d::na::Unit;
 use rapier3d::parry::query::distance;
 use rapier3d::prelude::{
     CoefficientCombineRule, ColliderBuilder, ColliderHandle, IntegrationParameters, PhysicsWorld,
-    RigidBodyHandle, Vector,
+    RigidBodyHandle, TriMeshFlags, Vector,
 };
 
 use crate::body::{self, BodyPose};
@@ -18,6 +18,7 @@ use crate::diff_wheels::{
 use crate::error::{BodyOwner, BodyPart, SimError, panic_message};
 use crate::geom::{self, G_STATIC};
 use crate::ground::{Ground, Surface};
+use crate::road::RoadError;
 use crate::vehicle::{Vehicle, VehicleId, VehiclePlacement, VehicleSpec, WheelRoadHooks};
 
 /// A physics world with a flat ground at z = 0, static obstacles, cars and DifferentialWheels
@@ -61,6 +62,7 @@ impl World {
     /// Builds the ground and obstacles of `config`, or names the first invalid field.
     pub fn new(config: WorldConfig) -> Result<World, SimError> {
         config.validate()?;
+        config.roads.validate()?;
         let mut physics = PhysicsWorld::new();
         physics.gravity = geom::vector(&config.gravity);
         physics.integration_parameters = integration_parameters(&config);
@@ -76,7 +78,7 @@ impl World {
             stepping: BodyOwner::World,
             config,
         };
-        world.build_static();
+        world.build_static()?;
         // The ground and obstacles enter rapier's query structure in a step; the car wheels
         // look for them before the first one. Nothing moves in this step: the dynamic boxes
         // come after it, so that they start falling at time 0.
@@ -95,7 +97,7 @@ impl World {
         Ok(world)
     }
 
-    fn build_static(&mut self) {
+    fn build_static(&mut self) -> Result<(), SimError> {
         let mu = self.config.ground_friction;
         let statics = |b: ColliderBuilder, friction: f64| {
             b.friction(friction as f32)
@@ -137,6 +139,28 @@ impl World {
             let handle = self.physics.insert_collider(collider, None);
             self.ground.add(handle, Surface::Uniform(friction));
         }
+        // Each lane of each lane section is a collider of its own with its own friction: the
+        // wheels' code asks the ground for the collider's friction and does not change.
+        for road in &self.config.roads.roads {
+            for mesh in road.lane_meshes(ROAD_LIFT) {
+                let vertices = mesh.vertices.iter().map(geom::point).collect();
+                let builder = ColliderBuilder::trimesh_with_flags(
+                    vertices,
+                    mesh.triangles,
+                    TriMeshFlags::FIX_INTERNAL_EDGES,
+                )
+                .map_err(|e| RoadError {
+                    road: road.id.clone(),
+                    field: format!("lane section {} lane {}", mesh.section + 1, mesh.lane),
+                    message: format!("its surface is no triangle mesh: {e}"),
+                })?;
+                let handle = self
+                    .physics
+                    .insert_collider(statics(builder, mesh.friction), None);
+                self.ground.add(handle, Surface::Uniform(mesh.friction));
+            }
+        }
+        Ok(())
     }
 
     /// The configuration this world was built from.
@@ -431,6 +455,12 @@ impl World {
         Ok(())
     }
 }
+
+/// Height (m) of a road's colliders above its profile: where a road lies on the flat ground
+/// (z = 0) the wheels' shape casts and contacts meet the road, with its lanes' friction,
+/// rather than the ground plane at the same height. The geometry ([`crate::road`]) answers
+/// the profile's exact heights.
+pub const ROAD_LIFT: f64 = 1e-3;
 
 /// Largest wheel rotation (rad) per rapier step before the world splits its steps.
 pub const MAX_WHEEL_ROTATION_PER_SUBSTEP: f64 = 1.0;
