@@ -26,6 +26,7 @@ mod fresnel;
 mod lanes;
 mod mesh;
 mod network;
+pub mod opendrive;
 mod plan;
 mod profile;
 
@@ -314,7 +315,7 @@ impl Road {
             if !(g.start.x.is_finite() && g.start.y.is_finite() && g.heading.is_finite()) {
                 return Err(err(field("start"), "must be finite".into()));
             }
-            if (g.s - s).abs() > 1e-6 * (1.0 + s) {
+            if (g.s - s).abs() > 1e-3 + 1e-9 * s {
                 return Err(err(
                     field("s"),
                     format!("{} m: must be {s} m, where the last segment ends", g.s),

@@ -109,6 +109,12 @@ pub enum NameSet {
     DeviceType,
     /// `[[vehicle.device]] slot`: `front`, `top`, `rear`, `center`.
     SensorSlot,
+    /// `[[road.segment]] type`: `straight`, `arc`, `clothoid`.
+    SegmentType,
+    /// `[[road.line]] type`: `continuous`, `dashed`, `double`, `none`.
+    LineType,
+    /// A junction connection's `contactPoint`: `start`, `end`.
+    ContactPoint,
 }
 
 impl fmt::Display for NameSet {
@@ -124,6 +130,9 @@ impl fmt::Display for NameSet {
             NameSet::Combine => "way to combine the axes",
             NameSet::DeviceType => "device type",
             NameSet::SensorSlot => "sensor slot",
+            NameSet::SegmentType => "road segment type",
+            NameSet::LineType => "road line type",
+            NameSet::ContactPoint => "contact point",
         })
     }
 }
