@@ -471,7 +471,9 @@ impl<'d> Reader<'_, 'd> {
                     "right" if l.id < 0 => section.right.push(l),
                     "center" => section.centre_marks = l.marks,
                     _ => {
-                        return Err(self.error(lane, format!("lane id {} on the {name} side", l.id)));
+                        return Err(
+                            self.error(lane, format!("lane id {} on the {name} side", l.id))
+                        );
                     }
                 }
             }
