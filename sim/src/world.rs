@@ -16,7 +16,7 @@ use crate::diff_wheels::{
     DifferentialWheels, DifferentialWheelsParams, RobotId, RobotMode, RobotPlacement,
 };
 use crate::error::{BodyOwner, BodyPart, SimError, panic_message};
-use crate::geom::{self, G_STATIC};
+use crate::geom::{self, G_ROAD, G_STATIC};
 use crate::ground::{Ground, Surface};
 use crate::road::RoadError;
 use crate::vehicle::{Vehicle, VehicleId, VehiclePlacement, VehicleSpec, WheelRoadHooks};
@@ -154,9 +154,8 @@ impl World {
                     field: format!("lane section {} lane {}", mesh.section + 1, mesh.lane),
                     message: format!("its surface is no triangle mesh: {e}"),
                 })?;
-                let handle = self
-                    .physics
-                    .insert_collider(statics(builder, mesh.friction), None);
+                let collider = statics(builder, mesh.friction).collision_groups(geom::groups(G_ROAD));
+                let handle = self.physics.insert_collider(collider, None);
                 self.ground.add(handle, Surface::Uniform(mesh.friction));
             }
         }
