@@ -154,7 +154,8 @@ impl World {
                     field: format!("lane section {} lane {}", mesh.section + 1, mesh.lane),
                     message: format!("its surface is no triangle mesh: {e}"),
                 })?;
-                let collider = statics(builder, mesh.friction).collision_groups(geom::groups(G_ROAD));
+                let collider =
+                    statics(builder, mesh.friction).collision_groups(geom::groups(G_ROAD));
                 let handle = self.physics.insert_collider(collider, None);
                 self.ground.add(handle, Surface::Uniform(mesh.friction));
             }

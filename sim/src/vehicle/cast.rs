@@ -89,8 +89,11 @@ fn find_contact(
     };
     // Everything static but the roads by the shape cast; the roads by `road_contact`; the
     // nearer of the two is the ground.
-    let others = QueryFilter::exclude_dynamic()
-        .groups(InteractionGroups::new(Group::ALL, !G_ROAD, InteractionTestMode::And));
+    let others = QueryFilter::exclude_dynamic().groups(InteractionGroups::new(
+        Group::ALL,
+        !G_ROAD,
+        InteractionTestMode::And,
+    ));
     let cast = world
         .cast_shape(&start, -up, &tyre, options, others)
         .map(|(c, hit)| (c, hit.time_of_impact, hit.normal1));
@@ -195,15 +198,23 @@ fn road_contact(
     tyre: &Cylinder,
     max: f32,
 ) -> Option<(ColliderHandle, f32, Vector)> {
-    let roads = QueryFilter::exclude_dynamic()
-        .groups(InteractionGroups::new(Group::ALL, G_ROAD, InteractionTestMode::And));
-    let local = |d: Vector| start.transform_point(tyre.local_support_point(start.rotation.inverse() * d));
+    let roads = QueryFilter::exclude_dynamic().groups(InteractionGroups::new(
+        Group::ALL,
+        G_ROAD,
+        InteractionTestMode::And,
+    ));
+    let local =
+        |d: Vector| start.transform_point(tyre.local_support_point(start.rotation.inverse() * d));
     let low = local(-up);
     let ray = Ray::new(low + up * max, -up);
-    let (collider, hit) = world.cast_ray_and_get_normal(&ray, 2.0 * max, true, roads)?;
+    let (collider, hit) = world.cast_ray_and_get_normal(&ray, 2.0 * max, false, roads)?;
     let q = ray.point_at(hit.time_of_impact);
     // The mesh is not oriented: its normal may come out of either face.
-    let n = if hit.normal.dot(up) < 0.0 { -hit.normal } else { hit.normal };
+    let n = if hit.normal.dot(up) < 0.0 {
+        -hit.normal
+    } else {
+        hit.normal
+    };
     let cos = n.dot(up);
     if cos < MIN_GROUND_COSINE {
         return None;
