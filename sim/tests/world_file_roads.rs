@@ -214,3 +214,42 @@ fn an_opendrive_file_is_read_relative_to_the_world_file() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn the_replay_shows_the_road_and_its_lines() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("worlds");
+    let w = load(dir.join("city-loop.toml").to_str().unwrap()).unwrap();
+    let (mut sim, _) = sim::Simulation::from_description(&w).unwrap();
+    sim.record("programme");
+    for _ in 0..10 {
+        sim.step().unwrap();
+    }
+    let out = std::env::temp_dir().join(format!("roads-replay-{}", std::process::id()));
+    sim.save("city-loop", &[], &out).unwrap();
+    let glb = std::fs::read(out.join("replay.glb")).unwrap();
+    let doc = gltf::Gltf::from_slice(&glb).unwrap();
+    let names: Vec<&str> = doc.nodes().filter_map(|n| n.name()).collect();
+    // The two lanes and two borders of the one section, and the line's two strands, dashed
+    // into no pieces (a double continuous line).
+    for n in [
+        "road_loop",
+        "road_loop_section_1_lane_-1",
+        "road_loop_section_1_lane_1",
+        "road_loop_section_1_lane_-2",
+        "road_loop_line_0",
+        "road_loop_line_1",
+    ] {
+        assert!(names.contains(&n), "{n}: {names:?}");
+    }
+    assert!(!names.contains(&"road_loop_line_2"));
+    // The line's colour is its paint's.
+    let paint = doc
+        .materials()
+        .find(|m| m.name() == Some("paint_0"))
+        .unwrap();
+    assert_eq!(
+        paint.pbr_metallic_roughness().base_color_factor()[..3],
+        [1.0, 0.8, 0.0]
+    );
+    std::fs::remove_dir_all(&out).unwrap();
+}
