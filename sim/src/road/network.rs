@@ -113,16 +113,16 @@ impl RoadNetwork {
                             ));
                         }
                     }
-                    Some(RoadLink::Junction { id }) => {
-                        if !self.junctions.iter().any(|j| j.id == *id) {
-                            return Err(error(
-                                &r.id,
-                                field,
-                                &format!("no junction has the id '{id}'"),
-                            ));
-                        }
+                    Some(RoadLink::Junction { id })
+                        if !self.junctions.iter().any(|j| j.id == *id) =>
+                    {
+                        return Err(error(
+                            &r.id,
+                            field,
+                            &format!("no junction has the id '{id}'"),
+                        ));
                     }
-                    None => {}
+                    Some(RoadLink::Junction { .. }) | None => {}
                 }
             }
         }
