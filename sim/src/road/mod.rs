@@ -50,6 +50,10 @@ pub const MAX_SUPERELEVATION: f64 = core::f64::consts::FRAC_PI_3;
 pub const MAX_LANE_WIDTH: f64 = 100.0;
 /// Largest Coulomb friction of a road or lane (dimensionless), as for the ground.
 pub const MAX_FRICTION: f64 = 100.0;
+/// Longest segment of a reference line (m): 100 km.
+pub const MAX_SEGMENT_LENGTH: f64 = 1e5;
+/// Farthest a segment may start from the origin (m): 10,000 km.
+pub const MAX_COORDINATE: f64 = 1e7;
 /// Widest painted line (m).
 pub const MAX_MARK_WIDTH: f64 = 2.0;
 
@@ -310,6 +314,18 @@ impl Road {
                 return Err(err(
                     field("length"),
                     format!("{} m: must be finite and > 0", g.length),
+                ));
+            }
+            if g.length > MAX_SEGMENT_LENGTH {
+                return Err(err(
+                    field("length"),
+                    format!("{} m: must be at most {MAX_SEGMENT_LENGTH} m", g.length),
+                ));
+            }
+            if g.start.x.abs().max(g.start.y.abs()) > MAX_COORDINATE {
+                return Err(err(
+                    field("start"),
+                    format!("must be within ±{MAX_COORDINATE} m of the origin"),
                 ));
             }
             if !(g.start.x.is_finite() && g.start.y.is_finite() && g.heading.is_finite()) {

@@ -165,6 +165,9 @@ fn implausible_values_are_refused() {
         bad.to_string(),
         "road 'zero': segment 1 length: 0 m: must be finite and > 0"
     );
+    let long =
+        Road::two_way("long", Point2::origin(), 0.0, &[(1e6, Curve::Line)], 3.0).unwrap_err();
+    assert_eq!(long.message, "1000000 m: must be at most 100000 m");
     let mut road = arc_road(40.0);
     road.superelevation = Profile::constant(1.2);
     assert_eq!(road.validate().unwrap_err().field, "superelevation");
