@@ -253,3 +253,27 @@ fn the_replay_shows_the_road_and_its_lines() {
     );
     std::fs::remove_dir_all(&out).unwrap();
 }
+
+#[test]
+fn the_trajectory_plot_has_the_road_edges_and_lane_lines() {
+    use sim::report::{Outline, OutlineKind};
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("worlds");
+    let w = load(dir.join("city-loop.toml").to_str().unwrap()).unwrap();
+    let outlines = Outline::of_world(&w.config);
+    let kinds: Vec<OutlineKind> = outlines.iter().map(|o| o.kind).collect();
+    // The centre line, and the outer edges of the two borders.
+    assert_eq!(
+        kinds,
+        [
+            OutlineKind::LaneLine,
+            OutlineKind::RoadEdge,
+            OutlineKind::RoadEdge
+        ]
+    );
+    let road = &w.config.roads.roads[0];
+    // The right edge starts 3.5 + 0.8 m right of the reference line's start.
+    assert_eq!(outlines[4].points[0], [0.0, -4.3]);
+    let last = outlines[4].points.last().unwrap();
+    let end = road.surface_point(road.length(), -4.3);
+    assert!((last[0] - end.x).abs() < 1e-9 && (last[1] - end.y).abs() < 1e-9);
+}
