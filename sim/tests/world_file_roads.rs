@@ -261,15 +261,10 @@ fn the_trajectory_plot_has_the_road_edges_and_lane_lines() {
     let w = load(dir.join("city-loop.toml").to_str().unwrap()).unwrap();
     let outlines = Outline::of_world(&w.config);
     let kinds: Vec<OutlineKind> = outlines.iter().map(|o| o.kind).collect();
-    // The centre line, and the outer edges of the two borders.
-    assert_eq!(
-        kinds,
-        [
-            OutlineKind::LaneLine,
-            OutlineKind::RoadEdge,
-            OutlineKind::RoadEdge
-        ]
-    );
+    // The centre line, then on each side the line between the lane and its border and the
+    // border's outer edge.
+    use OutlineKind::{LaneLine, RoadEdge};
+    assert_eq!(kinds, [LaneLine, LaneLine, RoadEdge, LaneLine, RoadEdge]);
     let road = &w.config.roads.roads[0];
     // The right edge starts 3.5 + 0.8 m right of the reference line's start.
     assert_eq!(outlines[4].points[0], [0.0, -4.3]);
