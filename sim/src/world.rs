@@ -3,6 +3,7 @@
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
+use proto_geom::nalgebra::Point2;
 use rapier3d::na::Unit;
 use rapier3d::parry::query::distance;
 use rapier3d::prelude::{
@@ -190,6 +191,19 @@ impl World {
         placement: VehiclePlacement,
     ) -> Result<VehicleId, SimError> {
         let id = VehicleId(self.vehicles.len());
+        let mut placement = placement;
+        // A car given no height starts on what is under it: a road's surface, else the
+        // ground.
+        if placement.z.is_none()
+            && let Some((i, at)) = self
+                .config
+                .roads
+                .locate(&Point2::new(placement.x, placement.y))
+        {
+            let road = &self.config.roads.roads[i];
+            let surface = road.surface_point(at.s, at.t).z + ROAD_LIFT;
+            placement.z = Some(surface + crate::vehicle::rest_height(&spec));
+        }
         let vehicle = Vehicle::new(id, &mut self.physics, spec, placement)?;
         self.vehicles.push(vehicle);
         Ok(id)

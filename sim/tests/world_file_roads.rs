@@ -272,3 +272,34 @@ fn the_trajectory_plot_has_the_road_edges_and_lane_lines() {
     let end = road.surface_point(road.length(), -4.3);
     assert!((last[0] - end.x).abs() < 1e-9 && (last[1] - end.y).abs() < 1e-9);
 }
+
+#[test]
+fn the_shipped_hilly_road_and_highway_load_and_their_cars_stand_on_their_lanes() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("worlds");
+    for (world, lanes) in [
+        ("hilly-road.toml", vec![-1]),
+        ("highway.toml", vec![-3, -2, -1]),
+    ] {
+        let w = load(dir.join(world).to_str().unwrap()).unwrap();
+        assert!(w.warnings.is_empty(), "{world}: {:?}", w.warnings);
+        let (mut sim, _) = sim::Simulation::from_description(&w).unwrap();
+        for _ in 0..200 {
+            sim.step().unwrap();
+        }
+        let road = &w.config.roads.roads[0];
+        for (v, lane) in sim.world().vehicles().iter().zip(lanes) {
+            let p = v.state().position;
+            let at = road.locate(&Point2::new(p.x, p.y)).unwrap();
+            assert_eq!(at.lane, lane, "{world}");
+            // The car origin (wheel-centre height) stands one wheel radius or so above the
+            // road's surface, not on the ground under it: between 0.2 and 0.6 m.
+            let above = p.z - road.surface_point(at.s, at.t).z;
+            assert!((0.2..0.6).contains(&above), "{world}: {above}");
+        }
+    }
+    let hill = load(dir.join("hilly-road.toml").to_str().unwrap()).unwrap();
+    let road = &hill.config.roads.roads[0];
+    // The curve is banked by −0.1 rad and the crest is 8 m up.
+    assert!((road.superelevation.value(200.0) + 0.1).abs() < 1e-12);
+    assert!((road.elevation.value(200.0) - 8.0).abs() < 1e-12);
+}
