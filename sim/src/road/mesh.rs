@@ -39,7 +39,7 @@ pub struct MarkStrip {
 
 impl Road {
     /// The stations (m) from `from` to `to` at which a mesh has cross-sections: at most
-    /// [`MAX_STEP`] apart, closer where the plan or the height profiles curve.
+    /// 1 m apart, closer where the plan or the height profiles curve.
     pub fn stations(&self, from: f64, to: f64) -> Vec<f64> {
         let mut out = vec![from];
         let mut s = from;

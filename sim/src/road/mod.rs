@@ -2,7 +2,7 @@
 //! with polynomial widths and painted lines, elevation (grade) and superelevation (banking),
 //! per-road and per-lane friction, and the conversions between a world point and a road's
 //! station and lateral offset (s, t). The geometry is f64 and closed-form; no rapier here
-//! (the world builds its road colliders from [`Road::lane_mesh`]).
+//! (the world builds its road colliders from [`Road::lane_meshes`]).
 //!
 //! Conventions are OpenDRIVE's: s (m) runs along the reference line measured in the xy
 //! plane; t (m) is across it, positive to the left, measured in the banked road surface;
@@ -36,7 +36,9 @@ use proto_geom::nalgebra::{Point2, Point3, Vector2};
 
 pub use lanes::{Lane, LaneKind, LaneSection, LineStyle, RoadMark};
 pub use mesh::{LaneMesh, MarkStrip};
-pub use network::{ContactPoint, Junction, JunctionConnection, RoadLink, RoadNetwork};
+pub use network::{
+    ContactPoint, Junction, JunctionConnection, LINK_TOLERANCE, RoadLink, RoadNetwork,
+};
 pub use plan::{Curve, ParamRange, PlanPose, Segment};
 pub use profile::{Cubic, Profile};
 
