@@ -31,6 +31,33 @@ pub fn flat_world() -> Result<World, SimError> {
     })
 }
 
+/// [`flat_world`] with a closed ring road under the first car's circle: a right-turning arc
+/// of the circle's radius (L/tan δ) through the origin heading +x, two 6 m lanes each side of
+/// it, so that all four wheels of that car stand on the road's triangle meshes at every step.
+///
+/// # Errors
+/// [`SimError`] if `sim` rejects the configuration (never for these constants).
+pub fn ring_road_world() -> Result<World, SimError> {
+    use sim::nalgebra::Point2;
+    use sim::road::{Curve, Road, RoadNetwork};
+    let radius = CAR_MODEL.params::<f64>().wheelbase / STEERING.tan();
+    let circle = [(
+        radius * core::f64::consts::TAU,
+        Curve::Arc {
+            curvature: -1.0 / radius,
+        },
+    )];
+    let road = Road::two_way("ring", Point2::origin(), 0.0, &circle, 6.0)?;
+    World::new(WorldConfig {
+        basic_time_step_ms: BASIC_TIME_STEP_MS,
+        roads: RoadNetwork {
+            roads: vec![road],
+            junctions: Vec::new(),
+        },
+        ..WorldConfig::default()
+    })
+}
+
 /// The car of the simulation benches: Webots' BMW X5 (2000 kg, wheelbase 2.995 m, front-wheel
 /// drive), the same size and mass as the peer.
 pub const CAR_MODEL: Model = Model::BmwX5;
@@ -109,7 +136,21 @@ impl CarScene {
         tyre: &TyreChoice,
         mounting: Mounting,
     ) -> Result<Self, SceneError> {
-        let mut sim = Simulation::new(flat_world()?);
+        Self::in_world(flat_world()?, count, mode, tyre, mounting)
+    }
+
+    /// As [`CarScene::mounted`], in `world` (e.g. [`ring_road_world`]).
+    ///
+    /// # Errors
+    /// [`SceneError`] if the model or `sim` rejects something (never for these constants).
+    pub fn in_world(
+        world: World,
+        count: usize,
+        mode: LoopMode,
+        tyre: &TyreChoice,
+        mounting: Mounting,
+    ) -> Result<Self, SceneError> {
+        let mut sim = Simulation::new(world);
         let mut cars = Vec::with_capacity(count);
         for i in 0..count {
             let placement = VehiclePlacement {

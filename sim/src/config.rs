@@ -4,6 +4,7 @@
 use crate::body::BodySpec;
 use crate::error::ParamError;
 use crate::geom::{DEFAULT_FRICTION, ground_rectangle};
+use crate::road::{Lane, RoadNetwork};
 use proto_geom::nalgebra::{Point2, Point3, Vector3};
 use proto_geom::plausible;
 
@@ -218,6 +219,9 @@ pub struct WorldConfig {
     pub bodies: Vec<BodySpec>,
     /// Solver settings.
     pub solver: SolverSettings,
+    /// The roads on the ground (none by default), validated when the world is built
+    /// ([`RoadNetwork::validate`]).
+    pub roads: RoadNetwork,
 }
 
 impl Default for WorldConfig {
@@ -229,6 +233,7 @@ impl Default for WorldConfig {
             obstacles: Vec::new(),
             bodies: Vec::new(),
             solver: SolverSettings::default(),
+            roads: RoadNetwork::default(),
         }
     }
 }
@@ -289,6 +294,10 @@ pub enum OutlineKind {
     Ramp,
     /// A dynamic `[[body]]` box, where it starts.
     Body,
+    /// A road's outer edge (an open line along the road).
+    RoadEdge,
+    /// A line between two lanes of a road (an open line along the road).
+    LaneLine,
 }
 
 impl OutlineKind {
@@ -298,11 +307,14 @@ impl OutlineKind {
             OutlineKind::Box => "boxes",
             OutlineKind::Ramp => "ramps",
             OutlineKind::Body => "dynamic boxes (start)",
+            OutlineKind::RoadEdge => "road edges",
+            OutlineKind::LaneLine => "lane lines",
         }
     }
 }
 
-/// An obstacle's footprint seen from above (m, world frame): a closed polygon.
+/// An obstacle's footprint seen from above (m, world frame), a closed polygon; or a road's
+/// edge or lane line, an open line.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Outline {
     /// What it is.
@@ -312,7 +324,8 @@ pub struct Outline {
 }
 
 impl Outline {
-    /// The footprints of the boxes, ramps and dynamic boxes (at their start) of `config`.
+    /// The footprints of the boxes, ramps and dynamic boxes (at their start) of `config`,
+    /// then its roads' edges and lane lines (sampled at most 2,000 times along a road).
     pub fn of_world(config: &WorldConfig) -> Vec<Outline> {
         let outline = |kind, corners: [Point2<f64>; 4]| Outline {
             kind,
@@ -329,7 +342,54 @@ impl Outline {
             .bodies
             .iter()
             .map(|b| outline(OutlineKind::Body, b.footprint()));
-        obstacles.chain(bodies).collect()
+        let mut out: Vec<Outline> = obstacles.chain(bodies).collect();
+        for road in &config.roads.roads {
+            let length = road.length();
+            let stations = road.stations(0.0, length);
+            let keep = stations.len().div_ceil(2000).max(1);
+            let mut lines: Vec<Outline> = Vec::new();
+            for (i, s) in stations.iter().enumerate() {
+                if i % keep != 0 && i + 1 != stations.len() {
+                    continue;
+                }
+                let (t0, edges) = road.lane_edges(*s);
+                let (left, right): (Vec<&(&Lane, f64, f64)>, Vec<_>) =
+                    edges.iter().partition(|e| e.0.id > 0);
+                // The reference line between the two directions, each lane's outer edge; the
+                // outermost of each side is the road's edge.
+                let mut ts = vec![(OutlineKind::LaneLine, t0)];
+                for side in [&left, &right] {
+                    for (k, e) in side.iter().enumerate() {
+                        let kind = if k + 1 == side.len() {
+                            OutlineKind::RoadEdge
+                        } else {
+                            OutlineKind::LaneLine
+                        };
+                        ts.push((kind, e.2));
+                    }
+                }
+                if left.is_empty() || right.is_empty() {
+                    ts[0].0 = OutlineKind::RoadEdge;
+                }
+                if lines.len() != ts.len() {
+                    // Another number of lanes: the lines so far end here.
+                    out.append(&mut lines);
+                    lines = ts
+                        .iter()
+                        .map(|&(kind, _)| Outline {
+                            kind,
+                            points: Vec::new(),
+                        })
+                        .collect();
+                }
+                for (line, (_, t)) in lines.iter_mut().zip(&ts) {
+                    let p = road.surface_point(*s, *t);
+                    line.points.push([p.x, p.y]);
+                }
+            }
+            out.extend(lines);
+        }
+        out
     }
 }
 

@@ -196,6 +196,10 @@ pub enum SimError {
     /// A parameter was rejected; nothing was created.
     #[error("{0}")]
     Param(#[from] ParamError),
+    /// A road of the world's configuration is not a road (see [`RoadNetwork::validate`](crate::road::RoadNetwork::validate)),
+    /// or its surface could not be made a collider; nothing was created.
+    #[error("{0}")]
+    Road(#[from] crate::road::RoadError),
     /// A vehicle handle that this world did not issue.
     #[error("no vehicle with index {0} in this world")]
     UnknownVehicle(usize),

@@ -111,6 +111,10 @@ pub(crate) fn unwrap_delta(previous: f64, current: f64, predicted: f64) -> f64 {
 
 /// Collision group of the ground and the static obstacles.
 pub(crate) const G_STATIC: Group = Group::GROUP_1;
+/// Collision group of the road surfaces: static like [`G_STATIC`] (everything that meets the
+/// ground meets them), apart so that a cast car's wheels find them by a ray and the triangle's
+/// plane instead of a shape cast against each triangle (see `vehicle::cast`).
+pub(crate) const G_ROAD: Group = Group::GROUP_7;
 /// Collision group of car chassis.
 pub(crate) const G_CAR_BODY: Group = Group::GROUP_2;
 /// Collision group of the wheels of cars on joints.
@@ -130,14 +134,15 @@ pub(crate) const G_ROBOT_WHEEL: Group = Group::GROUP_5;
 /// self-contacts are off). The wheels of cast cars are shape casts that see static geometry
 /// only, not colliders.
 pub(crate) fn groups(g: Group) -> InteractionGroups {
-    let filter = if g == G_STATIC {
+    let statics = G_STATIC | G_ROAD;
+    let filter = if g == G_STATIC || g == G_ROAD {
         Group::ALL
     } else if g == G_DYNAMIC {
-        G_STATIC | G_CAR_BODY | G_ROBOT_BODY | G_ROBOT_WHEEL | G_DYNAMIC | G_CAR_WHEEL
+        statics | G_CAR_BODY | G_ROBOT_BODY | G_ROBOT_WHEEL | G_DYNAMIC | G_CAR_WHEEL
     } else if g == G_CAR_BODY || g == G_ROBOT_BODY || g == G_CAR_WHEEL {
-        G_STATIC | G_CAR_BODY | G_ROBOT_BODY | G_DYNAMIC | G_CAR_WHEEL
+        statics | G_CAR_BODY | G_ROBOT_BODY | G_DYNAMIC | G_CAR_WHEEL
     } else {
-        G_STATIC | G_DYNAMIC
+        statics | G_DYNAMIC
     };
     InteractionGroups::new(g, filter, InteractionTestMode::And)
 }

@@ -19,9 +19,10 @@
 //! shape-cast wheels of a cast car meet only static surfaces; the wheel bodies of a car on
 //! joints meet everything.
 //!
-//! A surface whose friction changes over it (a road whose lanes have their own) is another
-//! [`Surface`] variant answering for the point: the wheels' code asks
-//! [`Ground::friction_at`] and does not change.
+//! A road's lanes each have their own friction: the world makes each lane of each lane
+//! section a collider of its own, registered as a uniform surface, so the wheels' code asks
+//! [`Ground::friction_at`] and does not change. A surface whose friction changed within one
+//! collider would be another [`Surface`] variant answering for the point.
 
 use proto_geom::nalgebra::Point3;
 use rapier3d::prelude::ColliderHandle;

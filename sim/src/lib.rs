@@ -13,6 +13,9 @@
 //! * [`world_file`]: TOML worlds in Webots vocabulary (`basicTimeStep`, `[vehicle]` or several
 //!   `[[vehicle]]` with any `Car` field and a driving programme, `[differential_wheels]`,
 //!   obstacles), loaded by path or model name;
+//! * [`road`]: roads (reference lines of lines, arcs, clothoids and cubics; lanes, lines,
+//!   grade and banking; station ↔ position) and the OpenDRIVE import; the world's roads
+//!   ([`WorldConfig::roads`]) are rapier triangle meshes both wheel mountings drive on;
 //! * [`programme`]: timed driver commands named after the Webots driver setters;
 //! * [`scenario`], [`telemetry`], [`report`]: the `vehicle-sim` command's driving
 //!   programmes, metrics, CSV and JSON (see `README.md`); the report takes any run, also one
@@ -92,6 +95,7 @@ pub mod programme;
 pub mod replay;
 pub mod report;
 pub mod rng;
+pub mod road;
 pub mod scenario;
 pub mod sweep;
 pub mod telemetry;
@@ -126,4 +130,4 @@ pub use vehicle::{
     ChassisSpec, Mounting, SpringDamper, SteeringSpec, TyreChoice, TyreSpec, TyreTelemetry,
     Vehicle, VehicleId, VehiclePlacement, VehicleSpec, VehicleState, WheelSpec,
 };
-pub use world::{MAX_SUBSTEPS, MAX_WHEEL_ROTATION_PER_SUBSTEP, World};
+pub use world::{MAX_SUBSTEPS, MAX_WHEEL_ROTATION_PER_SUBSTEP, ROAD_LIFT, World};

@@ -3,11 +3,12 @@
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
+use proto_geom::nalgebra::Point2;
 use rapier3d::na::Unit;
 use rapier3d::parry::query::distance;
 use rapier3d::prelude::{
     CoefficientCombineRule, ColliderBuilder, ColliderHandle, IntegrationParameters, PhysicsWorld,
-    RigidBodyHandle, Vector,
+    RigidBodyHandle, TriMeshFlags, Vector,
 };
 
 use crate::body::{self, BodyPose};
@@ -17,8 +18,9 @@ use crate::diff_wheels::{
     DifferentialWheels, DifferentialWheelsParams, RobotId, RobotMode, RobotPlacement,
 };
 use crate::error::{BodyOwner, BodyPart, SimError, panic_message};
-use crate::geom::{self, G_STATIC};
+use crate::geom::{self, G_ROAD, G_STATIC};
 use crate::ground::{Ground, Surface};
+use crate::road::RoadError;
 use crate::vehicle::{Vehicle, VehicleId, VehiclePlacement, VehicleSpec, WheelRoadHooks};
 
 /// A physics world with a flat ground at z = 0, static obstacles, cars and DifferentialWheels
@@ -62,6 +64,7 @@ impl World {
     /// Builds the ground and obstacles of `config`, or names the first invalid field.
     pub fn new(config: WorldConfig) -> Result<World, SimError> {
         config.validate()?;
+        config.roads.validate()?;
         let mut physics = PhysicsWorld::new();
         physics.gravity = geom::vector(&config.gravity);
         physics.integration_parameters = integration_parameters(&config);
@@ -77,7 +80,7 @@ impl World {
             stepping: BodyOwner::World,
             config,
         };
-        world.build_static();
+        world.build_static()?;
         // The ground and obstacles enter rapier's query structure in a step; the car wheels
         // look for them before the first one. Nothing moves in this step: the dynamic boxes
         // come after it, so that they start falling at time 0.
@@ -96,7 +99,7 @@ impl World {
         Ok(world)
     }
 
-    fn build_static(&mut self) {
+    fn build_static(&mut self) -> Result<(), SimError> {
         let mu = self.config.ground_friction;
         let statics = |b: ColliderBuilder, friction: f64| {
             b.friction(friction as f32)
@@ -138,6 +141,28 @@ impl World {
             let handle = self.physics.insert_collider(collider, None);
             self.ground.add(handle, Surface::Uniform(friction));
         }
+        // Each lane of each lane section is a collider of its own with its own friction: the
+        // wheels' code asks the ground for the collider's friction and does not change.
+        for road in &self.config.roads.roads {
+            for mesh in road.lane_meshes(ROAD_LIFT) {
+                let vertices = mesh.vertices.iter().map(geom::point).collect();
+                let builder = ColliderBuilder::trimesh_with_flags(
+                    vertices,
+                    mesh.triangles,
+                    TriMeshFlags::FIX_INTERNAL_EDGES,
+                )
+                .map_err(|e| RoadError {
+                    road: road.id.clone(),
+                    field: format!("lane section {} lane {}", mesh.section + 1, mesh.lane),
+                    message: format!("its surface is no triangle mesh: {e}"),
+                })?;
+                let collider =
+                    statics(builder, mesh.friction).collision_groups(geom::groups(G_ROAD));
+                let handle = self.physics.insert_collider(collider, None);
+                self.ground.add(handle, Surface::Uniform(mesh.friction));
+            }
+        }
+        Ok(())
     }
 
     /// The configuration this world was built from.
@@ -170,6 +195,19 @@ impl World {
             return Err(e.clone());
         }
         let id = VehicleId(self.vehicles.len());
+        let mut placement = placement;
+        // A car given no height starts on what is under it: a road's surface, else the
+        // ground.
+        if placement.z.is_none()
+            && let Some((i, at)) = self
+                .config
+                .roads
+                .locate(&Point2::new(placement.x, placement.y))
+        {
+            let road = &self.config.roads.roads[i];
+            let surface = road.surface_point(at.s, at.t).z + ROAD_LIFT;
+            placement.z = Some(surface + crate::vehicle::rest_height(&spec));
+        }
         // Built under the same guard as a step (see `step`): shapes and joints go through
         // parry's and rapier's assertions.
         let built = catch_unwind(AssertUnwindSafe(|| {
@@ -555,6 +593,12 @@ impl World {
         Ok(())
     }
 }
+
+/// Height (m) of a road's colliders above its profile: where a road lies on the flat ground
+/// (z = 0) the wheels' shape casts and contacts meet the road, with its lanes' friction,
+/// rather than the ground plane at the same height. The geometry ([`crate::road`]) answers
+/// the profile's exact heights.
+pub const ROAD_LIFT: f64 = 1e-3;
 
 /// Largest wheel rotation (rad) per rapier step before the world splits its steps.
 pub const MAX_WHEEL_ROTATION_PER_SUBSTEP: f64 = 1.0;

@@ -11,6 +11,7 @@ use crate::attitude::RollPitchYaw;
 use crate::body::{BodyPose, BodySpec};
 use crate::config::Obstacle;
 use crate::diff_wheels::DifferentialWheelsParams;
+use crate::road::RoadNetwork;
 use crate::simulation::Simulation;
 use crate::vehicle::{Vehicle, VehicleSpec};
 use crate::world::World;
@@ -184,6 +185,8 @@ impl Frame {
 pub struct Recording {
     /// The static obstacles.
     pub obstacles: Vec<Obstacle>,
+    /// The roads, drawn with their lanes and painted lines.
+    pub roads: RoadNetwork,
     /// The dynamic boxes as built.
     pub bodies: Vec<BodySpec>,
     /// One per car, in [`World::vehicles`] order.
@@ -262,6 +265,7 @@ impl Recorder {
         Recorder {
             recording: Recording {
                 obstacles: world.config().obstacles.clone(),
+                roads: world.config().roads.clone(),
                 bodies: world.config().bodies.clone(),
                 cars: world
                     .vehicles()

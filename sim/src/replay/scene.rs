@@ -111,6 +111,15 @@ fn extent(parts: &[Part<'_>], first: &Recording) -> Rect {
             add(p[0], p[1], shapes::CONE_RADIUS);
         }
     }
+    for road in &first.roads.roads {
+        for s in road.stations(0.0, road.length()) {
+            let (_, edges) = road.lane_edges(s);
+            for (_, _, t) in edges {
+                let p = road.surface_point(s, t);
+                add(p.x, p.y, 0.0);
+            }
+        }
+    }
     let footprints = first.obstacles.iter().map(Obstacle::footprint);
     for corner in footprints
         .chain(first.bodies.iter().map(BodySpec::footprint))
@@ -166,6 +175,7 @@ pub(crate) fn build(parts: &[Part<'_>]) -> (Scene, Nodes) {
     scene.add_node(Some(ground), "grid", Isometry3::identity(), Some(mesh));
 
     add_obstacles(&mut scene, world, first);
+    add_roads(&mut scene, world, first, lift);
     let bodies = add_bodies(&mut scene, world, first);
     let cars = first
         .cars
@@ -192,6 +202,72 @@ pub(crate) fn build(parts: &[Part<'_>]) -> (Scene, Nodes) {
             parts,
         },
     )
+}
+
+/// Each road's lanes (asphalt, a lighter grey for shoulders and borders) and its painted
+/// lines in their colours, the lines `lift` (m) above the lanes so that they never flicker
+/// into them.
+fn add_roads(scene: &mut Scene, world: usize, first: &Recording, lift: f64) {
+    if first.roads.is_empty() {
+        return;
+    }
+    let asphalt = scene.add_material(Material::new("asphalt", [0.18, 0.18, 0.19], 0.9, 0.0));
+    let verge = scene.add_material(Material::new("road_border", [0.45, 0.45, 0.43], 0.9, 0.0));
+    let mut paints: Vec<([f64; 3], usize)> = Vec::new();
+    for road in &first.roads.roads {
+        let node = scene.add_node(
+            Some(world),
+            &format!("road_{}", road.id),
+            Isometry3::identity(),
+            None,
+        );
+        for m in road.lane_meshes(crate::ROAD_LIFT) {
+            let kind = road
+                .sections
+                .get(m.section)
+                .and_then(|s| s.lanes().find(|l| l.id == m.lane))
+                .map(|l| l.kind);
+            let material = if kind == Some(crate::road::LaneKind::Driving) {
+                asphalt
+            } else {
+                verge
+            };
+            let name = format!("road_{}_section_{}_lane_{}", road.id, m.section + 1, m.lane);
+            let mesh = scene.add_mesh(
+                &name,
+                shapes::surface(&m.vertices, &m.triangles, 0.0),
+                material,
+            );
+            scene.add_node(Some(node), &name, Isometry3::identity(), Some(mesh));
+        }
+        for (i, strip) in road
+            .mark_strips(crate::ROAD_LIFT + lift)
+            .into_iter()
+            .enumerate()
+        {
+            let paint = match paints.iter().find(|(c, _)| *c == strip.colour) {
+                Some(&(_, m)) => m,
+                None => {
+                    let colour = strip.colour.map(|c| c as f32);
+                    let m = scene.add_material(Material::new(
+                        &format!("paint_{}", paints.len()),
+                        colour,
+                        0.6,
+                        0.0,
+                    ));
+                    paints.push((strip.colour, m));
+                    m
+                }
+            };
+            let name = format!("road_{}_line_{i}", road.id);
+            let mesh = scene.add_mesh(
+                &name,
+                shapes::surface(&strip.vertices, &strip.triangles, 0.0),
+                paint,
+            );
+            scene.add_node(Some(node), &name, Isometry3::identity(), Some(mesh));
+        }
+    }
 }
 
 fn add_obstacles(scene: &mut Scene, world: usize, first: &Recording) {

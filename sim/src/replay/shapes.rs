@@ -143,6 +143,25 @@ pub(crate) fn cone() -> RenderMesh {
     mesh
 }
 
+/// A triangle mesh of `vertices` (m) and `triangles` (indices, counter-clockwise seen from
+/// above), flat-shaded, lifted by `lift` (m).
+pub(crate) fn surface(
+    vertices: &[proto_geom::nalgebra::Point3<f64>],
+    triangles: &[[u32; 3]],
+    lift: f64,
+) -> RenderMesh {
+    let mut mesh = RenderMesh::default();
+    for tri in triangles {
+        let corners = tri.map(|i| {
+            vertices
+                .get(i as usize)
+                .map_or([0.0; 3], |p| [p.x, p.y, p.z + lift])
+        });
+        push_face(&mut mesh, &corners);
+    }
+    mesh
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

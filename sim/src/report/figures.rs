@@ -218,7 +218,13 @@ fn course(r: &ScenarioResult) -> Vec<Series> {
 /// Every vehicle's path over the world's obstacles and the scenarios' courses.
 fn trajectory(report: &RunReport, title: String) -> Figure {
     let mut series = Vec::new();
-    for kind in [OutlineKind::Box, OutlineKind::Ramp, OutlineKind::Body] {
+    for kind in [
+        OutlineKind::RoadEdge,
+        OutlineKind::LaneLine,
+        OutlineKind::Box,
+        OutlineKind::Ramp,
+        OutlineKind::Body,
+    ] {
         let outlines: Vec<&Vec<[f64; 2]>> = report
             .obstacles
             .iter()
@@ -229,7 +235,11 @@ fn trajectory(report: &RunReport, title: String) -> Figure {
             series.push(Series {
                 name: kind.legend().into(),
                 points: joined(outlines),
-                kind: SeriesKind::Outline,
+                // Roads' lines are open lines, drawn as guides under the paths.
+                kind: match kind {
+                    OutlineKind::RoadEdge | OutlineKind::LaneLine => SeriesKind::Guide,
+                    _ => SeriesKind::Outline,
+                },
             });
         }
     }

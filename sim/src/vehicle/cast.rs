@@ -8,12 +8,15 @@ use rapier3d::prelude::{
     RigidBodyBuilder, RigidBodyHandle, Rotation, Vector,
 };
 
+use rapier3d::parry::shape::SupportMap;
+use rapier3d::prelude::{ColliderHandle, Group, InteractionGroups, InteractionTestMode, Ray};
+
 use super::contact::{Body, Contact, Spring, Support};
 use super::inertia::mass_properties;
 use super::spec::VehicleSpec;
 use super::step::{Found, Mount, Solved, Touch};
 use super::{Frame, MIN_GROUND_COSINE, Vehicle};
-use crate::geom::{self, G_CAR_BODY};
+use crate::geom::{self, G_CAR_BODY, G_ROAD};
 
 /// The rapier side of one car: its single rigid body.
 #[derive(Debug, Clone)]
@@ -84,13 +87,31 @@ fn find_contact(
         stop_at_penetration: true,
         compute_impact_geometry_on_penetration: true,
     };
-    let (collider, hit) =
-        world.cast_shape(&start, -up, &tyre, options, QueryFilter::exclude_dynamic())?;
-    let n = hit.normal1;
+    // Everything static but the roads by the shape cast; the roads by `road_contact`; the
+    // nearer of the two is the ground.
+    let others = QueryFilter::exclude_dynamic().groups(InteractionGroups::new(
+        Group::ALL,
+        !G_ROAD,
+        InteractionTestMode::And,
+    ));
+    let cast = world
+        .cast_shape(&start, -up, &tyre, options, others)
+        .map(|(c, hit)| (c, hit.time_of_impact, hit.normal1));
+    let road = road_contact(world, &start, up, &tyre, radius);
+    let (collider, toi, n) = match (cast, road) {
+        (Some(a), Some(b)) => {
+            if b.1 <= a.1 {
+                b
+            } else {
+                a
+            }
+        }
+        (a, b) => a.or(b)?,
+    };
     if n.dot(up) < MIN_GROUND_COSINE {
         return None;
     }
-    let compression = radius - hit.time_of_impact;
+    let compression = radius - toi;
     let centre = hard_point + up * compression;
     let spring = Spring {
         hardpoint_arm: hard_point - frame.com,
@@ -159,4 +180,45 @@ impl Vehicle {
         let steer = Rotation::from_rotation_z(-delta as f32);
         (steer, frame.pose.rotation * (steer * Vector::Y))
     }
+}
+
+/// The road under the tyre `tyre` at `start` swept down `up` by at most `max` (m): the road
+/// collider, the sweep's length to the touch (0 to `max`) and the road's normal there.
+///
+/// A shape cast of the cylinder against a road's triangle mesh runs a GJK sweep per nearby
+/// triangle, ten times the cost of the cast on the flat ground. A road is locally a plane:
+/// one ray down from the tyre's lowest point finds the triangle and its plane, and the sweep
+/// to that plane is closed-form (the tyre's support point along −n reaches it after
+/// `(s − q)·n / (up·n)`). The ray starts `max` above that point, so that a tyre sunk into
+/// the road (the shape cast's penetration) is found with a sweep of 0.
+fn road_contact(
+    world: &PhysicsWorld,
+    start: &Pose,
+    up: Vector,
+    tyre: &Cylinder,
+    max: f32,
+) -> Option<(ColliderHandle, f32, Vector)> {
+    let roads = QueryFilter::exclude_dynamic().groups(InteractionGroups::new(
+        Group::ALL,
+        G_ROAD,
+        InteractionTestMode::And,
+    ));
+    let local =
+        |d: Vector| start.transform_point(tyre.local_support_point(start.rotation.inverse() * d));
+    let low = local(-up);
+    let ray = Ray::new(low + up * max, -up);
+    let (collider, hit) = world.cast_ray_and_get_normal(&ray, 2.0 * max, false, roads)?;
+    let q = ray.point_at(hit.time_of_impact);
+    // The mesh is not oriented: its normal may come out of either face.
+    let n = if hit.normal.dot(up) < 0.0 {
+        -hit.normal
+    } else {
+        hit.normal
+    };
+    let cos = n.dot(up);
+    if cos < MIN_GROUND_COSINE {
+        return None;
+    }
+    let toi = (local(-n) - q).dot(n) / cos;
+    (toi <= max).then_some((collider, toi.max(0.0), n))
 }

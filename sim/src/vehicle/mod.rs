@@ -107,6 +107,14 @@ enum Parts {
     Joints(multibody::Parts),
 }
 
+/// The height (m) of the origin of a car of `spec` whose rear wheels stand on z = 0 with
+/// unloaded springs.
+pub(crate) fn rest_height(spec: &VehicleSpec) -> f64 {
+    let [rr, rl] = [Wheel::RearRight, Wheel::RearLeft]
+        .map(|w| spec.wheels[w].radius - spec.wheels[w].position.z);
+    0.5 * (rr + rl)
+}
+
 /// Smallest cosine between the ground normal under a wheel and the chassis' up axis for the
 /// wheel to stand on it (about 84°): a steeper face (a wall beside the tyre) is no ground.
 const MIN_GROUND_COSINE: f32 = 0.1;
@@ -155,11 +163,7 @@ impl Vehicle {
         ParamError::finite("placement.yaw", placement.yaw)?;
         let z = match placement.z {
             Some(z) => ParamError::within("placement.z", z, plausible::POSITION)?,
-            None => {
-                let [rr, rl] = [Wheel::RearRight, Wheel::RearLeft]
-                    .map(|w| spec.wheels[w].radius - spec.wheels[w].position.z);
-                0.5 * (rr + rl)
-            }
+            None => rest_height(&spec),
         };
         let start = Point3::new(placement.x, placement.y, z);
         let origin = geom::pose_xyz_yaw(&start, placement.yaw);

@@ -25,9 +25,9 @@ pub struct VehiclePlacement {
     pub y: f64,
     /// Heading (rad, counter-clockwise about +z from +x).
     pub yaw: f64,
-    /// Height of the car origin (m); `None` puts the rear wheels on the ground (z = 0) with
-    /// unloaded springs: the body then settles by the static deflection of the springs in about
-    /// half a second.
+    /// Height of the car origin (m); `None` puts the rear wheels on the ground (z = 0), or on
+    /// the surface of the road under the car origin if there is one, with unloaded springs:
+    /// the body then settles by the static deflection of the springs in about half a second.
     pub z: Option<f64>,
 }
 

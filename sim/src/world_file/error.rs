@@ -116,6 +116,12 @@ pub enum NameSet {
     DistanceSensorType,
     /// A `Lidar`'s `projection`: `cylindrical`, `planar`.
     LidarProjection,
+    /// `[[road.segment]] type`: `straight`, `arc`, `clothoid`.
+    SegmentType,
+    /// `[[road.line]] type`: `continuous`, `dashed`, `double`, `none`.
+    LineType,
+    /// A junction connection's `contactPoint`: `start`, `end`.
+    ContactPoint,
 }
 
 impl fmt::Display for NameSet {
@@ -134,6 +140,9 @@ impl fmt::Display for NameSet {
             NameSet::DevicePreset => "device preset",
             NameSet::DistanceSensorType => "distance sensor type",
             NameSet::LidarProjection => "lidar projection",
+            NameSet::SegmentType => "road segment type",
+            NameSet::LineType => "road line type",
+            NameSet::ContactPoint => "contact point",
         })
     }
 }

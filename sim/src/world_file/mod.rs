@@ -37,6 +37,7 @@ mod overrides;
 mod programme;
 mod ray_devices;
 pub(crate) mod read;
+mod roads;
 mod robot;
 mod statics;
 mod tyre;
@@ -86,7 +87,7 @@ pub fn model_world_text(model: Model) -> String {
 }
 
 /// Top-level keys of a world file.
-const ROOT_KEYS: [&str; 9] = [
+const ROOT_KEYS: [&str; 11] = [
     "basicTimeStep",
     "duration",
     "gravity",
@@ -96,6 +97,8 @@ const ROOT_KEYS: [&str; 9] = [
     "box",
     "ramp",
     "body",
+    "road",
+    "junction",
 ];
 
 /// A loaded world: everything needed to build a [`World`](crate::World) and put its cars and
@@ -318,7 +321,9 @@ pub(crate) fn parse_with(
     }
     let root = Section::root(src, doc.get_ref());
     root.check_keys(&ROOT_KEYS)?;
-    let config = statics::read_world(&root)?;
+    let mut config = statics::read_world(&root)?;
+    let mut warnings = Vec::new();
+    config.roads = roads::read_roads(&root, file, &mut warnings)?;
     let duration = match root.number("duration")? {
         Some(d) if !is_duration(d) => {
             return Err(root.error(
@@ -331,7 +336,6 @@ pub(crate) fn parse_with(
         }
         d => d,
     };
-    let mut warnings = Vec::new();
     let car_sections = match root.value("vehicle") {
         Some(DeValue::Array(_)) => root.tables("vehicle")?,
         _ => root.table("vehicle")?.into_iter().collect(),
