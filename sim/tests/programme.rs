@@ -298,6 +298,10 @@ fn programme_errors_name_file_line_and_key() {
 fn the_shipped_worlds_load_and_the_overtaking_world_overtakes() {
     for entry in std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/worlds")).unwrap() {
         let path = entry.unwrap().path();
+        // The worlds, not the OpenDRIVE files they read.
+        if path.extension().is_none_or(|e| e != "toml") {
+            continue;
+        }
         let w = sim::world_file::load_file(&path);
         assert!(w.is_ok(), "{}: {}", path.display(), w.unwrap_err());
     }
