@@ -512,6 +512,14 @@ impl CarDevices {
         &self.devices
     }
 
+    /// Device `index`, to change.
+    fn device_mut(&mut self, index: usize) -> Result<&mut Device, DeviceError> {
+        let count = self.devices.len();
+        self.devices
+            .get_mut(index)
+            .ok_or(DeviceError::Unknown { index, count })
+    }
+
     /// Enables device `index` with a period of `period_ms` ms (0 disables) at `now_ms`.
     pub(crate) fn enable(
         &mut self,
@@ -519,22 +527,14 @@ impl CarDevices {
         period_ms: u32,
         now_ms: u64,
     ) -> Result<(), DeviceError> {
-        let count = self.devices.len();
-        let device = self
-            .devices
-            .get_mut(index)
-            .ok_or(DeviceError::Unknown { index, count })?;
+        let device = self.device_mut(index)?;
         device.enable(period_ms, now_ms);
         Ok(())
     }
 
     /// Display `index`, to draw into.
     pub(crate) fn display_mut(&mut self, index: usize) -> Result<&mut Display, DeviceError> {
-        let count = self.devices.len();
-        let device = self
-            .devices
-            .get_mut(index)
-            .ok_or(DeviceError::Unknown { index, count })?;
+        let device = self.device_mut(index)?;
         let name = device.name.clone();
         device.display_mut().ok_or(DeviceError::NotDisplay(name))
     }
@@ -547,11 +547,7 @@ impl CarDevices {
         period_ms: u32,
         now_ms: u64,
     ) -> Result<(), DeviceError> {
-        let count = self.devices.len();
-        let device = self
-            .devices
-            .get_mut(index)
-            .ok_or(DeviceError::Unknown { index, count })?;
+        let device = self.device_mut(index)?;
         let has = matches!(&device.settings, DeviceSettings::Camera(s) if s.recognition.is_some());
         match device.camera.as_mut() {
             Some(c) if has => {
@@ -569,11 +565,7 @@ impl CarDevices {
         index: usize,
         enabled: bool,
     ) -> Result<(), DeviceError> {
-        let count = self.devices.len();
-        let device = self
-            .devices
-            .get_mut(index)
-            .ok_or(DeviceError::Unknown { index, count })?;
+        let device = self.device_mut(index)?;
         device.point_cloud = enabled && device.kind() == DeviceKind::Lidar;
         Ok(())
     }

@@ -4,14 +4,13 @@
 use proto_geom::SensorSlot;
 use proto_geom::nalgebra::{Unit, UnitQuaternion, Vector3};
 use proto_geom::plausible::{self, Compact};
-use toml::de::DeValue;
 use vehicle_model::Model;
 
 use super::error::{NameSet, WorldFileError, WorldFileErrorKind};
 use super::ray_devices::{
     DISTANCE_SENSOR, LIDAR, RADAR, read_distance_sensor, read_lidar, read_radar,
 };
-use super::read::{Section, as_f64, describe, missing};
+use super::read::{Section, missing};
 use crate::devices::{
     Axes, CAR_DEVICE_NAMES, CameraSettings, DeviceKind, DeviceSettings, DeviceSpec,
     DisplaySettings, GpsSettings, InertialUnitSettings, LookupTable, Occlusion,
@@ -310,7 +309,15 @@ fn read_inertial_unit(d: &Section<'_, '_>) -> Result<InertialUnitSettings, World
 pub(super) fn read_table(d: &Section<'_, '_>) -> Result<LookupTable, WorldFileError> {
     match d.value("lookupTable") {
         None => Ok(LookupTable::default()),
-        Some(v) => LookupTable::new(read_rows(d, v)?).map_err(|e| invalid(d, &e)),
+        Some(v) => {
+            let rows = d.triples(
+                "lookupTable",
+                v,
+                "a list of [input, output, noise] rows",
+                "row",
+            )?;
+            LookupTable::new(rows).map_err(|e| invalid(d, &e))
+        }
     }
 }
 
@@ -321,38 +328,4 @@ fn read_triaxial(d: &Section<'_, '_>) -> Result<TriaxialSettings, WorldFileError
         axes: read_axes(d)?,
         resolution: d.number("resolution")?.unwrap_or(-1.0),
     })
-}
-
-/// The rows of a `lookupTable`: a list of `[input, output, noise]` lists.
-fn read_rows(d: &Section<'_, '_>, v: &DeValue<'_>) -> Result<Vec<[f64; 3]>, WorldFileError> {
-    let wrong = |found: String| {
-        d.error(
-            "lookupTable",
-            WorldFileErrorKind::WrongType {
-                expected: "a list of [input, output, noise] rows".to_string(),
-                found,
-            },
-        )
-    };
-    let DeValue::Array(rows) = v else {
-        return Err(wrong(describe(v)));
-    };
-    let mut out = Vec::with_capacity(rows.len());
-    for (i, row) in rows.iter().enumerate() {
-        let numbers: Option<Vec<f64>> = match row.get_ref() {
-            DeValue::Array(items) => items.iter().map(|x| as_f64(x.get_ref())).collect(),
-            _ => None,
-        };
-        match numbers.and_then(|n| <[f64; 3]>::try_from(n).ok()) {
-            Some(r) => out.push(r),
-            None => {
-                return Err(wrong(format!(
-                    "{} at row {}",
-                    describe(row.get_ref()),
-                    i + 1
-                )));
-            }
-        }
-    }
-    Ok(out)
 }

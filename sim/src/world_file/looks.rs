@@ -2,10 +2,9 @@
 //! (see [`crate::appearance`]).
 
 use proto_geom::plausible::Compact;
-use toml::de::DeValue;
 
 use super::error::{WorldFileError, WorldFileErrorKind};
-use super::read::{Section, as_f64, describe};
+use super::read::Section;
 use crate::appearance::{Appearance, SceneObject};
 
 /// The look section `s` gives `object` (whose default colour is `default`), if it gives one.
@@ -17,7 +16,12 @@ pub(crate) fn read_look(
     let color = s.array::<3>("color")?;
     let recognition_colors = match s.value("recognitionColors") {
         None => None,
-        Some(v) => Some(read_colors(s, v)?),
+        Some(v) => Some(s.triples(
+            "recognitionColors",
+            v,
+            "a list of [red, green, blue] colours",
+            "colour",
+        )?),
     };
     if color.is_none() && recognition_colors.is_none() {
         return Ok(None);
@@ -34,38 +38,4 @@ pub(crate) fn read_look(
         )
     })?;
     Ok(Some((object, look)))
-}
-
-/// A list of `[r, g, b]` colours.
-fn read_colors(s: &Section<'_, '_>, v: &DeValue<'_>) -> Result<Vec<[f64; 3]>, WorldFileError> {
-    let wrong = |found: String| {
-        s.error(
-            "recognitionColors",
-            WorldFileErrorKind::WrongType {
-                expected: "a list of [red, green, blue] colours".to_string(),
-                found,
-            },
-        )
-    };
-    let DeValue::Array(rows) = v else {
-        return Err(wrong(describe(v)));
-    };
-    let mut out = Vec::with_capacity(rows.len());
-    for (i, row) in rows.iter().enumerate() {
-        let numbers: Option<Vec<f64>> = match row.get_ref() {
-            DeValue::Array(items) => items.iter().map(|x| as_f64(x.get_ref())).collect(),
-            _ => None,
-        };
-        match numbers.and_then(|n| <[f64; 3]>::try_from(n).ok()) {
-            Some(c) => out.push(c),
-            None => {
-                return Err(wrong(format!(
-                    "{} at colour {}",
-                    describe(row.get_ref()),
-                    i + 1
-                )));
-            }
-        }
-    }
-    Ok(out)
 }

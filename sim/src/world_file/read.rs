@@ -286,6 +286,48 @@ impl<'a, 'i> Section<'a, 'i> {
             .and_then(|v| <[f64; N]>::try_from(v).ok()))
     }
 
+    /// `v`, the value at `key`, as a list of three-number lists (a `lookupTable`'s rows,
+    /// `recognitionColors`). A wrong shape is an error at `key` expecting `expected`, naming
+    /// the first bad entry as `item` and its 1-based position.
+    pub(crate) fn triples(
+        &self,
+        key: &str,
+        v: &DeValue<'_>,
+        expected: &str,
+        item: &str,
+    ) -> Result<Vec<[f64; 3]>, WorldFileError> {
+        let wrong = |found: String| {
+            self.error(
+                key,
+                WorldFileErrorKind::WrongType {
+                    expected: expected.to_string(),
+                    found,
+                },
+            )
+        };
+        let DeValue::Array(rows) = v else {
+            return Err(wrong(describe(v)));
+        };
+        let mut out = Vec::with_capacity(rows.len());
+        for (i, row) in rows.iter().enumerate() {
+            let numbers: Option<Vec<f64>> = match row.get_ref() {
+                DeValue::Array(items) => items.iter().map(|x| as_f64(x.get_ref())).collect(),
+                _ => None,
+            };
+            match numbers.and_then(|n| <[f64; 3]>::try_from(n).ok()) {
+                Some(r) => out.push(r),
+                None => {
+                    return Err(wrong(format!(
+                        "{} at {item} {}",
+                        describe(row.get_ref()),
+                        i + 1
+                    )));
+                }
+            }
+        }
+        Ok(out)
+    }
+
     /// The string at `key`, if present.
     pub(crate) fn string(&self, key: &str) -> Result<Option<&'a str>, WorldFileError> {
         match self.get(key) {
