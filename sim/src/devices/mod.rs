@@ -35,6 +35,7 @@ mod noise;
 mod png_file;
 mod radar;
 pub(crate) mod rays;
+mod record;
 mod spec;
 mod triaxial;
 
@@ -58,6 +59,7 @@ pub use lidar::{
 pub use lookup::LookupTable;
 pub use png_file::{ImageFileError, load_png, save_png};
 pub use radar::{RadarSettings, RadarTarget};
+pub use record::RecordedQuantity;
 pub use spec::{Axes, DeviceKind, DeviceSettings, DeviceSpec};
 pub use triaxial::TriaxialSettings;
 
