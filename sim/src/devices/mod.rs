@@ -48,7 +48,7 @@ use crate::vehicle::VehicleId;
 use camera::solids::Solids;
 
 pub use camera::{CameraSettings, CameraState, Occlusion, RecognitionObject, RecognitionSettings};
-pub use display::{Display, DisplayImage, DisplaySettings, PixelFormat};
+pub use display::{Display, DisplayImage, DisplaySettings, FONT_FAMILIES, FontError, PixelFormat};
 pub use distance_sensor::{DistanceSensorSettings, DistanceSensorType, MAX_DISTANCE_SENSOR_RAYS};
 pub use gps::{GpsReading, GpsSettings};
 pub use inertial_unit::{InertialUnitReading, InertialUnitSettings};
