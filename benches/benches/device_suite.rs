@@ -54,7 +54,12 @@ enum Case {
 }
 
 impl Case {
-    const ALL: [Case; 4] = [Case::Enabled, Case::Recorded, Case::Disabled, Case::NoDevices];
+    const ALL: [Case; 4] = [
+        Case::Enabled,
+        Case::Recorded,
+        Case::Disabled,
+        Case::NoDevices,
+    ];
 
     fn name(self) -> &'static str {
         match self {
@@ -130,9 +135,11 @@ fn summary(medians: &Medians) {
             );
         }
     }
-    if let (Some(on), Some(off), Some(none)) =
-        (get(Case::Enabled), get(Case::Disabled), get(Case::NoDevices))
-    {
+    if let (Some(on), Some(off), Some(none)) = (
+        get(Case::Enabled),
+        get(Case::Disabled),
+        get(Case::NoDevices),
+    ) {
         println!(
             "  enabling the suite costs {} per 50 ms; devices present but disabled {}",
             format_ns(on - off),

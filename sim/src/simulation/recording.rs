@@ -260,9 +260,14 @@ impl Recording {
             path: path.clone(),
             source,
         })?;
+        // The indices are the simulation's own (cars are not added while recording).
         let names = |car: u32, device: u32| {
-            let c = &sim.cars[car as usize];
-            (c.name.as_str(), c.devices.all()[device as usize].name())
+            let c = sim.cars.get(car as usize);
+            let d = c.and_then(|c| c.devices.all().get(device as usize));
+            (
+                c.map_or("", |c| c.name.as_str()),
+                d.map_or("", |d| d.name()),
+            )
         };
         self.devices
             .write_csv(std::io::BufWriter::new(file), names)

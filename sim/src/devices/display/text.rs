@@ -145,7 +145,7 @@ impl DrawTarget for Target<'_> {
 
 impl Display {
     /// Sets the font: `family` one of [`FONT_FAMILIES`], `size` the character height (px, > 0);
-    /// `anti_aliasing` is accepted and changes nothing (module documentation).
+    /// Webots' `anti_aliasing` flag is accepted and changes nothing (module documentation).
     ///
     /// # Errors
     /// [`FontError::UnknownFamily`] naming the family; [`FontError::Size`] naming a size ≤ 0
@@ -154,9 +154,8 @@ impl Display {
         &mut self,
         family: &str,
         size: i32,
-        anti_aliasing: bool,
+        _anti_aliasing: bool,
     ) -> Result<(), FontError> {
-        let _ = anti_aliasing;
         if !FONT_FAMILIES.contains(&family) {
             return Err(FontError::UnknownFamily(family.to_string()));
         }
