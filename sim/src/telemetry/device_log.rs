@@ -202,7 +202,7 @@ mod tests {
             device: (i % 5) as u32,
             quantity: RecordedQuantity {
                 name: names[i % 3],
-                target: (i % 2 == 0).then_some((i % 7) as u16),
+                target: i.is_multiple_of(2).then_some((i % 7) as u16),
             },
             value: (i as f64).sqrt() - 1e-300,
         }
