@@ -2,8 +2,8 @@
 //!
 //! Images (`WbImageRef`) are handles into the robot's table of images, never dereferenced
 //! memory: a handle is its key, cast to a pointer, so a stale or forged one finds nothing.
-//! Images are saved to and loaded from PNG files. Text, fonts and camera attachment are not
-//! available (the crate README).
+//! Images are saved to and loaded from PNG files. Text draws with a bitmap font
+//! (`sim::devices::display`'s `text`); camera attachment is not available (the crate README).
 
 use std::ffi::{CStr, c_char, c_int, c_void};
 use std::path::Path;
@@ -286,6 +286,60 @@ pub extern "C" fn wb_display_image_delete(tag: WbDeviceTag, image: WbImageRef) {
         with_robot(|r| {
             if display(r, tag, "wb_display_image_delete").is_some() && !r.images.remove(handle) {
                 message::error("wb_display_image_delete(): invalid image reference.");
+            }
+        })
+    })
+}
+
+/// Sets the font: `font` one of Webots' 13 families (all draw with the same bitmap font),
+/// `size` the character height (px, > 0); `anti_aliasing` changes nothing on a bitmap font.
+/// A null or unknown family or a size ≤ 0 is refused with an error. Webots:
+/// `wb_display_set_font`.
+///
+/// # Safety
+/// `font` is null or points to a NUL-terminated string valid during the call.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn wb_display_set_font(
+    tag: WbDeviceTag,
+    font: *const c_char,
+    size: c_int,
+    anti_aliasing: bool,
+) {
+    // SAFETY: the caller's guarantee, passed on.
+    let font = unsafe { text(font) };
+    crate::guard::call("wb_display_set_font", move || {
+        draw(tag, "wb_display_set_font", |d| {
+            let set = match &font {
+                Some(f) => d
+                    .set_font(f, size, anti_aliasing)
+                    .map_err(|e| e.to_string()),
+                None => Err("NULL font".to_string()),
+            };
+            if let Err(e) = set {
+                message::error(format!("wb_display_set_font(): {e}."));
+            }
+        })
+    })
+}
+
+/// Draws `text` with its top-left corner at (`x`, `y`) in the font and the drawing colour,
+/// alpha and opacity (nothing for a null `text`). Webots: `wb_display_draw_text`.
+///
+/// # Safety
+/// `text` is null or points to a NUL-terminated string valid during the call.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn wb_display_draw_text(
+    tag: WbDeviceTag,
+    text: *const c_char,
+    x: c_int,
+    y: c_int,
+) {
+    // SAFETY: the caller's guarantee, passed on.
+    let text = unsafe { self::text(text) };
+    crate::guard::call("wb_display_draw_text", move || {
+        draw(tag, "wb_display_draw_text", |d| {
+            if let Some(t) = &text {
+                d.draw_text(t, x, y);
             }
         })
     })

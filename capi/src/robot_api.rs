@@ -6,6 +6,7 @@
 use std::ffi::{CStr, c_char, c_int};
 
 use crate::abi::WbDeviceTag;
+use crate::message;
 use crate::session::{self, with_robot};
 
 entry_points! {
@@ -58,22 +59,29 @@ entry_points! {
 /// The tag of the robot's device `name` (e.g. `"right_steer"`, `"engine_speaker"`, or
 /// `"left wheel"` on a DifferentialWheels robot), 0 if it has none or `name` is null or not
 /// UTF-8. Tags are stable: the same name gives the same tag in every world. Webots:
-/// `wb_robot_get_device`.
+/// `wb_robot_get_device`, with its messages: `Error: wb_robot_get_device() called with NULL
+/// or empty argument.` for a null or empty name, `Warning: "<name>" device not found.` for a
+/// name no device has.
 ///
 /// # Safety
 /// `name` is null or points to a NUL-terminated string that stays valid during the call.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn wb_robot_get_device(name: *const c_char) -> WbDeviceTag {
     crate::guard::call("wb_robot_get_device", move || {
-        if name.is_null() {
-            return 0;
-        }
         // SAFETY: non-null, and the caller guarantees a NUL-terminated string valid for the
         // duration of the call; it is only read.
-        let name = unsafe { CStr::from_ptr(name) };
-        match name.to_str() {
+        let name = (!name.is_null()).then(|| unsafe { CStr::from_ptr(name) });
+        let Some(name) = name.filter(|n| !n.is_empty()) else {
+            message::error("wb_robot_get_device() called with NULL or empty argument.");
+            return 0;
+        };
+        let tag = match name.to_str() {
             Ok(name) => with_robot(|robot| robot.device(name)),
             Err(_) => 0,
+        };
+        if tag == 0 {
+            eprintln!("Warning: \"{}\" device not found.", name.to_string_lossy());
         }
+        tag
     })
 }

@@ -14,7 +14,12 @@ use common::*;
 
 #[test]
 fn cruise_bmw() {
-    run_exact("cruise_bmw", None, &shared_link_flags(), &[]);
+    run_exact(
+        "cruise_bmw",
+        None,
+        &shared_link_flags(),
+        &["Warning: \"no such device\" device not found."],
+    );
 }
 
 #[test]
@@ -72,7 +77,7 @@ fn bad_input() {
 
 #[test]
 fn differential_wheels() {
-    run_announcing("differential_wheels", Some(&differential_wheels_world()), 8);
+    run_announcing("differential_wheels", Some(&differential_wheels_world()), 9);
 }
 
 /// The sensors of a world file's car, the device enumeration and the sensor misuse messages.
@@ -100,8 +105,9 @@ fn keyboard() {
 /// Drawing into a car's Display through webots/display.h, and the display misuse messages.
 #[test]
 fn display() {
-    // 1 wrong tag, 1 bad colour, 1 bad opacity, 1 bad format, 1 stale image, 1 missing file.
-    run_announcing("display", Some(&world_path("display.toml")), 6);
+    // 1 wrong tag, 1 bad colour, 1 bad opacity, 1 bad format, 1 stale image, 1 missing file,
+    // 1 bad font size, 1 NULL font.
+    run_announcing("display", Some(&world_path("display.toml")), 8);
 }
 
 /// The radar, lidars and distance sensor of a world file's car, and their misuse messages.
@@ -135,6 +141,8 @@ fn cpp_wrapper() {
     assert_eq!(
         lines,
         [
+            // Driver::getGPS("gps") on a car without one, as in Webots.
+            "Warning: \"gps\" device not found.",
             "Warning: Deprecated 'setWipersMode' use 'setWiperMode' instead.",
             "Warning: Deprecated 'getWipersMode' use 'getWiperMode' instead.",
             "Warning: Deprecated 'setBrake' use 'setBrakeIntensity' instead.",
@@ -247,6 +255,15 @@ fn a_controller_run_writes_the_outputs_of_the_same_programme() {
     assert!(metrics.contains("\"distance_m\""), "{metrics}");
     let glb = std::fs::read(out.join("replay.glb")).unwrap();
     assert_eq!(&glb[..4], b"glTF");
+    // The GPS the controller enabled: 80 samples in 4 s at 50 ms, 7 values each.
+    let devices = std::fs::read_to_string(out.join("devices.csv")).unwrap();
+    let mut lines = devices.lines();
+    assert_eq!(lines.next(), Some("time,car,device,quantity,value"));
+    assert_eq!(lines.clone().count(), 80 * 7);
+    assert!(
+        lines.next().unwrap().starts_with("0.05,BmwX5,gps,x,"),
+        "{devices}"
+    );
 }
 
 /// The adaptive cruise controller example (`examples/acc/acc.c`) in `sim/worlds/acc.toml`:

@@ -78,6 +78,7 @@ int main(void) {
   check_close("wb_robot_get_basic_time_step() (ms)", wb_robot_get_basic_time_step(), 32.0, 0.0);
   check_close("wb_differential_wheels_get_max_speed() (rad/s)", wb_differential_wheels_get_max_speed(), 6.28, 1e-12);
   check_close("wb_differential_wheels_get_speed_unit() (rad/s)", wb_differential_wheels_get_speed_unit(), 1.0, 1e-12);
+  call("wb_robot_get_device(\"no such device\")", "Warning: \"no such device\" device not found.");
   check_int("wb_robot_get_device(\"no such device\")", wb_robot_get_device("no such device"), 0);
   check_int("initial wb_differential_wheels_get_encoders_sampling_period() (ms)",
             wb_differential_wheels_get_encoders_sampling_period(), 0);

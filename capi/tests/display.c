@@ -66,6 +66,15 @@ int main(void) {
   check_true(wb_display_image_load(display, "/tmp/capi_no_such_file.png") == NULL, "a missing file gives NULL");
   wb_display_image_delete(display, loaded);
   wb_display_image_delete(display, made);
+  /* Text: its pixels are checked by sim's tests and Python's; here the calls and messages. */
+  wb_display_set_font(display, "Lucida Console", 10, true);
+  wb_display_draw_text(display, "Ab\n1", 2, 1);
+  wb_display_draw_text(display, NULL, 0, 0); /* nothing */
+  call("wb_display_set_font(size 0)",
+       "Error: wb_display_set_font(): font size 0 must be > 0 and at most 4096 px.");
+  wb_display_set_font(display, "Arial", 0, false);
+  call("wb_display_set_font(NULL)", "Error: wb_display_set_font(): NULL font.");
+  wb_display_set_font(display, NULL, 8, false);
   wb_robot_step(10);
   wb_robot_cleanup();
   return check_finish();

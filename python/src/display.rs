@@ -130,6 +130,37 @@ fn wb_display_image_load(tag: u16, filename: &str) -> usize {
     image as usize
 }
 
+/// `s` as a C string; a `ValueError` naming `what` if it holds a NUL character.
+fn c_string(s: &str, what: &str) -> PyResult<std::ffi::CString> {
+    std::ffi::CString::new(s).map_err(|_| {
+        pyo3::exceptions::PyValueError::new_err(format!("{what} {s:?} holds a NUL character"))
+    })
+}
+
+/// Sets the font (one of Webots' 13 families, size in px > 0); Webots' error otherwise.
+#[pyfunction]
+fn wb_display_set_font(tag: u16, font: &str, size: i32, anti_aliasing: bool) -> PyResult<()> {
+    let font = c_string(font, "font")?;
+    // SAFETY: `font` is a NUL-terminated string that outlives the call.
+    #[allow(unsafe_code)]
+    unsafe {
+        car::wb_display_set_font(tag, font.as_ptr(), size, anti_aliasing);
+    }
+    Ok(())
+}
+
+/// Draws `text` with its top-left corner at (`x`, `y`) (px).
+#[pyfunction]
+fn wb_display_draw_text(tag: u16, text: &str, x: i32, y: i32) -> PyResult<()> {
+    let text = c_string(text, "text")?;
+    // SAFETY: `text` is a NUL-terminated string that outlives the call.
+    #[allow(unsafe_code)]
+    unsafe {
+        car::wb_display_draw_text(tag, text.as_ptr(), x, y);
+    }
+    Ok(())
+}
+
 /// Adds the display functions to the module.
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(wb_display_get_size, m)?)?;
@@ -138,6 +169,8 @@ pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(wb_display_set_opacity, m)?)?;
     m.add_function(wrap_pyfunction!(wb_display_draw, m)?)?;
     m.add_function(wrap_pyfunction!(wb_display_polygon, m)?)?;
+    m.add_function(wrap_pyfunction!(wb_display_set_font, m)?)?;
+    m.add_function(wrap_pyfunction!(wb_display_draw_text, m)?)?;
     m.add_function(wrap_pyfunction!(wb_display_image_new, m)?)?;
     m.add_function(wrap_pyfunction!(wb_display_image_copy, m)?)?;
     m.add_function(wrap_pyfunction!(wb_display_image_paste, m)?)?;

@@ -70,6 +70,7 @@ def test_a_driver_controller_with_vehicle_out_writes_the_outputs_of_its_programm
     script.write_text(
         "from vehicle import Driver\n"
         "driver = Driver()\n"
+        "driver.getDevice('gps').enable(50)\n"
         "done = set()\n"
         "while True:\n"
         "    t = driver.getTime()\n"
@@ -101,3 +102,9 @@ def test_a_driver_controller_with_vehicle_out_writes_the_outputs_of_its_programm
     metrics = json.loads((tmp_path / "controller" / "metrics.json").read_text())
     assert metrics["scenario"] == "controller"
     assert (tmp_path / "controller" / "replay.glb").read_bytes()[:4] == b"glTF"
+    # The GPS the controller enabled: 80 samples in 4 s at 50 ms, 7 values each.
+    with open(tmp_path / "controller" / "devices.csv", newline="") as f:
+        rows = list(csv.reader(f))
+    assert rows[0] == ["time", "car", "device", "quantity", "value"]
+    assert len(rows) == 1 + 80 * 7
+    assert rows[1][:4] == ["0.05", "BmwX5", "gps", "x"]

@@ -180,9 +180,13 @@ def test_save_writes_the_run_as_vehicle_sim_writes_one(tmp_path):
     written = sim.save(tmp_path / "run")
     assert [os.path.basename(p) for p in written] == [
         "telemetry.csv",
+        "devices.csv",
         "metrics.json",
         "replay.glb",
     ]
+    # The car has no device: the readings' file is its header alone.
+    devices = (tmp_path / "run" / "devices.csv").read_text()
+    assert devices == "time,car,device,quantity,value\n"
     with open(tmp_path / "run" / "telemetry.csv", newline="") as f:
         rows = list(csv.reader(f))
     # The header, the start and 100 steps; the values are the telemetry's, rounded to 1e-6.

@@ -3,7 +3,7 @@
 // Part of the `capi` crate. SPDX-License-Identifier: MIT OR Apache-2.0
 //
 // Same class, constants and method names as Webots' webots::Display, for the functions this
-// simulator has (no text, fonts or camera attachment; PNG files only). Requires C++11.
+// simulator has (no camera attachment; PNG files only; text in a bitmap font). Requires C++11.
 
 #ifndef WB_DISPLAY_HPP
 #define WB_DISPLAY_HPP
@@ -45,6 +45,8 @@ namespace webots {
     void fillOval(int cx, int cy, int a, int b) { wb_display_fill_oval(getTag(), cx, cy, a, b); }
     void drawPolygon(const int *x, const int *y, int size) { wb_display_draw_polygon(getTag(), x, y, size); }
     void fillPolygon(const int *x, const int *y, int size) { wb_display_fill_polygon(getTag(), x, y, size); }
+    void setFont(const std::string &font, int size, bool antiAliasing) { wb_display_set_font(getTag(), font.c_str(), size, antiAliasing); }
+    void drawText(const std::string &text, int x, int y) { wb_display_draw_text(getTag(), text.c_str(), x, y); }
     // The caller deletes the returned reference (imageDelete), as in Webots.
     ImageRef *imageNew(int width, int height, const void *data, int format) const {
       WbImageRef r = wb_display_image_new(getTag(), width, height, data, format);

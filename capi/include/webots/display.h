@@ -6,8 +6,8 @@
  * Pixels (0, 0) top-left; the display starts opaque black; colour 0xRRGGBB (default white),
  * alpha and opacity in [0, 1] (default 1). Every drawing blends its pixels as Webots does:
  * c = ((255 - O) c_old + O c_draw) / 255 with O = (unsigned char)(opacity * 255). Calls take
- * effect at once. Image files are PNG only. Not available here: text and fonts, attaching a
- * camera (see the capi README).
+ * effect at once. Image files are PNG only. Text draws with a bitmap font whatever the family
+ * (see the capi README). Not available here: attaching a camera.
  */
 
 #ifndef WB_DISPLAY_H
@@ -37,6 +37,10 @@ void wb_display_draw_oval(WbDeviceTag tag, int cx, int cy, int a, int b);
 void wb_display_fill_oval(WbDeviceTag tag, int cx, int cy, int a, int b);
 void wb_display_draw_polygon(WbDeviceTag tag, const int *x, const int *y, int size);
 void wb_display_fill_polygon(WbDeviceTag tag, const int *x, const int *y, int size);
+/* font: one of Webots' 13 families; size: character height (px, > 0). */
+void wb_display_set_font(WbDeviceTag tag, const char *font, int size, bool anti_aliasing);
+/* (x, y): the text's top-left corner; '\n' starts a new line. */
+void wb_display_draw_text(WbDeviceTag tag, const char *text, int x, int y);
 /* data: width * height pixels of format (WB_IMAGE_*); NULL for a bad format or data. */
 WbImageRef wb_display_image_new(WbDeviceTag tag, int width, int height, const void *data, int format);
 /* NULL if the rectangle is off the display. */

@@ -410,8 +410,9 @@ class ImageRef:
 
 class Display(Device):
     """Webots' ``Display``: an image to draw into (pixels (0, 0) top-left, opaque black at
-    first; colour ``0xRRGGBB``, alpha and opacity in [0, 1], blended as Webots does). No
-    text, fonts or camera attachment; image files are PNG."""
+    first; colour ``0xRRGGBB``, alpha and opacity in [0, 1], blended as Webots does). Text
+    draws with a bitmap font whatever the family; no camera attachment; image files are
+    PNG."""
 
     RGB = 3
     RGBA = 4
@@ -472,6 +473,16 @@ class Display(Device):
     def fillPolygon(self, x: List[int], y: List[int]) -> None:
         """Fills the polygon of corners (x[i], y[i])."""
         _native.wb_display_polygon(self._tag, [_c_int(v) for v in x], [_c_int(v) for v in y], True)
+
+    def setFont(self, font: str, size: int, antiAliasing: bool) -> None:
+        """The font of ``drawText``: one of Webots' 13 families (all drawn with the same
+        bitmap font), ``size`` the character height (px, > 0); ``antiAliasing`` changes
+        nothing on a bitmap font."""
+        _native.wb_display_set_font(self._tag, str(font), _c_int(size), bool(antiAliasing))
+
+    def drawText(self, text: str, x: int, y: int) -> None:
+        """Draws ``text`` with its top-left corner at (x, y); ``\\n`` starts a new line."""
+        _native.wb_display_draw_text(self._tag, str(text), _c_int(x), _c_int(y))
 
     def imageNew(
         self, data: bytes, format: int, width: Optional[int] = None, height: Optional[int] = None

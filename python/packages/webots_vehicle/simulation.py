@@ -274,7 +274,8 @@ class Simulation:
 
     def save(self, directory: Union[str, "os.PathLike[str]"]) -> List[str]:
         """Writes the run so far into ``directory`` (created if needed) as ``vehicle-sim``
-        writes a run: ``telemetry.csv``, ``metrics.json`` and ``replay.glb`` (the SVG plots
+        writes a run: ``telemetry.csv``, ``devices.csv`` (the enabled devices' readings),
+        ``metrics.json`` and ``replay.glb`` (the SVG plots
         are drawn from them by ``vehicle-sim plot DIRECTORY``). Returns the paths written;
         none before the first step."""
         return [str(p) for p in self._core.save(os.fspath(directory))]

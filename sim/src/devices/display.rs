@@ -7,7 +7,10 @@
 //! (truncated); pixels off the image are skipped. Calls take effect at once (Webots queues
 //! them until the next step: only a copy taken in the same step as a drawing differs).
 
+mod text;
+
 use crate::error::ParamError;
+pub use text::{FONT_FAMILIES, FontError};
 
 /// The largest display side (px).
 pub const MAX_SIDE: u32 = 4096;
@@ -144,6 +147,8 @@ pub struct Display {
     opacity: u8,
     /// `A`: alpha·255, truncated.
     alpha: u8,
+    /// The font of [`Display::draw_text`].
+    font: text::Font,
 }
 
 impl Display {
@@ -159,6 +164,7 @@ impl Display {
             color: 0xFF_FFFF,
             opacity: 255,
             alpha: 255,
+            font: text::Font::default(),
         }
     }
 

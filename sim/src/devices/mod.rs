@@ -35,6 +35,7 @@ mod noise;
 mod png_file;
 mod radar;
 pub(crate) mod rays;
+mod record;
 mod spec;
 mod triaxial;
 
@@ -47,7 +48,7 @@ use crate::vehicle::VehicleId;
 use camera::solids::Solids;
 
 pub use camera::{CameraSettings, CameraState, Occlusion, RecognitionObject, RecognitionSettings};
-pub use display::{Display, DisplayImage, DisplaySettings, PixelFormat};
+pub use display::{Display, DisplayImage, DisplaySettings, FONT_FAMILIES, FontError, PixelFormat};
 pub use distance_sensor::{DistanceSensorSettings, DistanceSensorType, MAX_DISTANCE_SENSOR_RAYS};
 pub use gps::{GpsReading, GpsSettings};
 pub use inertial_unit::{InertialUnitReading, InertialUnitSettings};
@@ -58,6 +59,7 @@ pub use lidar::{
 pub use lookup::LookupTable;
 pub use png_file::{ImageFileError, load_png, save_png};
 pub use radar::{RadarSettings, RadarTarget};
+pub use record::RecordedQuantity;
 pub use spec::{Axes, DeviceKind, DeviceSettings, DeviceSpec};
 pub use triaxial::TriaxialSettings;
 

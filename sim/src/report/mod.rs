@@ -33,14 +33,18 @@ use crate::telemetry::write_csv;
 pub const TELEMETRY_CSV: &str = "telemetry.csv";
 /// The metrics file.
 pub const METRICS_JSON: &str = "metrics.json";
+/// The devices' readings of a run driven through a `Simulation` (one row per recorded value:
+/// time, car, device, quantity, value; see `sim::devices::RecordedQuantity`).
+pub const DEVICES_CSV: &str = "devices.csv";
 /// The file name of the run's animated 3D scene ([`crate::replay`]).
 pub const REPLAY_GLB: &str = "replay.glb";
 
 /// Every file a run may write into its output directory. A run removes those of this list
 /// that it does not write itself, so that the directory never mixes two runs' outputs; other
 /// files are left alone.
-pub const KNOWN_OUTPUTS: [&str; 9] = [
+pub const KNOWN_OUTPUTS: [&str; 10] = [
     TELEMETRY_CSV,
+    DEVICES_CSV,
     METRICS_JSON,
     REPLAY_GLB,
     "speed.svg",

@@ -496,7 +496,8 @@ impl Simulation {
 
     /// Writes the run recorded so far into `dir` ([`report::write_data`](
     /// crate::report::write_data): `telemetry.csv`, `metrics.json` with `world_warnings`,
-    /// `replay.glb`), streaming the telemetry from the logs, and the last image of every
+    /// `replay.glb`), streaming the telemetry from the logs, `devices.csv` (every value the
+    /// enabled devices sampled: time, car, device, quantity, value), and the last image of every
     /// camera that took one and every display as `<car>-<device>.png` (characters other
     /// than letters, digits, `-` and `_` written `_`); `world` names the world in
     /// `metrics.json`. Returns the paths written; nothing if not recording.

@@ -1,6 +1,6 @@
 //! The recording of a run driven through [`Simulation`]: every vehicle's samples in a
-//! [`TelemetryLog`], the replay's keyframes, and the gaps between cars; then the run's report
-//! and data files, for any front-end.
+//! [`TelemetryLog`], the enabled devices' samples in a [`DeviceLog`], the replay's keyframes,
+//! and the gaps between cars; then the run's report and data files, for any front-end.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -10,7 +10,9 @@ use crate::diff_wheels::RobotId;
 use crate::replay::Recorder;
 use crate::report::{self, OutputError};
 use crate::scenario::{Metric, MotionMeter, RunReport, ScenarioResult};
-use crate::telemetry::{CsvWriter, Sample, Telemetry, TelemetryLog, VehicleKind};
+use crate::telemetry::{
+    CsvWriter, DeviceLog, DeviceRow, Sample, Telemetry, TelemetryLog, VehicleKind,
+};
 use crate::vehicle::VehicleId;
 
 use super::Simulation;
@@ -33,6 +35,8 @@ struct VehicleLog {
 pub(super) struct Recording {
     run: String,
     vehicles: Vec<VehicleLog>,
+    /// The devices' samples, cars and devices by index in the simulation's order.
+    devices: DeviceLog,
     replay: Recorder,
     /// Smallest gap between two cars so far (m).
     min_gap: f64,
@@ -62,6 +66,7 @@ impl Recording {
         let mut recording = Recording {
             run: run.to_string(),
             vehicles,
+            devices: DeviceLog::new(),
             replay: Recorder::for_simulation(sim),
             min_gap: f64::INFINITY,
             first_touch: None,
@@ -74,6 +79,7 @@ impl Recording {
     /// Records the state after a step.
     pub(super) fn sample(&mut self, sim: &Simulation) {
         self.log_samples(sim);
+        self.log_devices(sim);
         self.replay.sample(sim.world());
         let world = sim.world();
         for (i, a) in sim.cars.iter().enumerate() {
@@ -99,6 +105,28 @@ impl Recording {
             };
             if let Ok(s) = sample {
                 v.log.push(&s);
+            }
+        }
+    }
+
+    /// Logs the samples the devices took in this step (none at the start: a device's first
+    /// sample comes one period after enabling).
+    fn log_devices(&mut self, sim: &Simulation) {
+        let now_ms = sim.world().time_ms();
+        let time = sim.world().time();
+        for (car, c) in (0..).zip(&sim.cars) {
+            for (device, d) in (0..).zip(c.devices.all()) {
+                if d.sampled_at(now_ms) {
+                    d.for_each_recorded(|quantity, value| {
+                        self.devices.push(DeviceRow {
+                            time,
+                            car,
+                            device,
+                            quantity,
+                            value,
+                        });
+                    });
+                }
             }
         }
     }
@@ -144,6 +172,11 @@ impl Recording {
                 });
             }
         }
+        if let Some(e) = self.devices.spill_error() {
+            notes.push(format!(
+                "the device readings stayed in memory, their temporary file failed: {e}"
+            ));
+        }
         if sim.cars.len() > 1 {
             metrics.extend([
                 Metric::maybe(
@@ -183,7 +216,8 @@ impl Recording {
         })
     }
 
-    /// Writes the run's data files into `dir`, the telemetry streamed from the logs.
+    /// Writes the run's data files into `dir`, the telemetry and the devices' readings
+    /// streamed from the logs.
     pub(super) fn save(
         &self,
         sim: &Simulation,
@@ -212,13 +246,36 @@ impl Recording {
             }
             w.finish()
         };
-        report::write_files(
+        let [csv, json, glb] = report::DATA_OUTPUTS;
+        let mut written = report::write_files(
             &run,
             world_warnings,
             dir,
-            &report::DATA_OUTPUTS,
+            &[csv, report::DEVICES_CSV, json, glb],
             &[],
             &telemetry,
-        )
+        )?;
+        let path = dir.join(report::DEVICES_CSV);
+        let file = std::fs::File::create(&path).map_err(|source| OutputError::Io {
+            path: path.clone(),
+            source,
+        })?;
+        // The indices are the simulation's own (cars are not added while recording).
+        let names = |car: u32, device: u32| {
+            let c = sim.cars.get(car as usize);
+            let d = c.and_then(|c| c.devices.all().get(device as usize));
+            (
+                c.map_or("", |c| c.name.as_str()),
+                d.map_or("", |d| d.name()),
+            )
+        };
+        self.devices
+            .write_csv(std::io::BufWriter::new(file), names)
+            .map_err(|source| OutputError::Csv {
+                path: path.clone(),
+                source,
+            })?;
+        written.insert(1, path);
+        Ok(written)
     }
 }

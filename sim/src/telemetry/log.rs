@@ -41,7 +41,7 @@ static NEXT_FILE: AtomicU64 = AtomicU64::new(0);
 
 /// A new temporary file for reading and writing, removed from its directory at once where the
 /// system allows it (Unix: the data lives until the file is closed).
-fn temporary_file() -> io::Result<File> {
+pub(super) fn temporary_file() -> io::Result<File> {
     let n = NEXT_FILE.fetch_add(1, Ordering::Relaxed);
     let path = std::env::temp_dir().join(format!(
         "vehicle-sim-telemetry-{}-{n}.f64",

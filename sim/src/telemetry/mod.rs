@@ -1,10 +1,12 @@
 //! Per-step telemetry of a run (one [`Telemetry`] per vehicle and scenario), its CSV form, and
 //! the [`TelemetryLog`] that keeps a run of any length in bounded memory.
 
+mod device_log;
 mod log;
 
 use std::io::Write;
 
+pub use device_log::{DEVICE_MEMORY_ROWS, DEVICES_CSV_HEADER, DeviceLog, DeviceRow};
 pub use log::{MEMORY_ROWS, Row, TelemetryLog};
 
 use vehicle_model::{KMH_PER_MS, PerWheel, Wheel};
