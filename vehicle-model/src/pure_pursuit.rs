@@ -20,7 +20,7 @@
 //! let law = PurePursuit::<f64>::new(2.8, -0.6, 0.6)?; // wheelbase m, steering limits rad
 //! // A goal 10 m ahead and 1 m to the left: a left turn, i.e. a negative steering angle.
 //! let delta = law.steering(10.0, 1.0);
-//! let curvature = 2.0 * 1.0 / (10.0 * 10.0 + 1.0); // 1/m: 2·y / d²
+//! let curvature: f64 = 2.0 * 1.0 / (10.0 * 10.0 + 1.0); // 1/m: 2·y / d²
 //! assert!((delta + (2.8 * curvature).atan()).abs() < 1e-12);
 //! # Ok::<(), vehicle_model::PurePursuitError>(())
 //! ```
