@@ -42,7 +42,7 @@ pub use network::{
 };
 pub use plan::{Curve, ParamRange, PlanPose, Segment};
 pub use profile::{Cubic, Profile};
-pub use tracking::{LaneTracking, lane_centre, travel_direction};
+pub use tracking::{LaneTracking, lane_centre, lane_curvature, travel_direction};
 
 pub(crate) use plan::cubic_length;
 

@@ -9,7 +9,8 @@
 //! * the lateral offset (m) is positive when the point is **left** of the lane centre;
 //! * the heading error (rad, in (−π, π]) is the car's yaw minus the travel direction's
 //!   heading: positive when the car points to the left of the lane;
-//! * curvatures (1/m) are positive where the lane turns left as one drives it;
+//! * curvatures (1/m) are those of the lane's centre line in the plan view, positive where
+//!   the lane turns left as one drives it;
 //! * the distances to the left and right lane lines and road edges (m) are measured across
 //!   the road surface to the lines' centres (the lane edges), positive while the point is
 //!   inside them, negative beyond;
@@ -44,9 +45,11 @@ pub struct LaneTracking {
     /// The car's yaw minus the lane's direction of travel (rad, in (−π, π], positive when
     /// pointing left of it).
     pub heading_error: f64,
-    /// The lane's curvature at s (1/m, positive turning left as driven).
+    /// The curvature of the lane's centre line at s (1/m, plan view, positive turning left
+    /// as driven).
     pub curvature: f64,
-    /// The lane's curvature `lookahead` metres ahead (1/m, positive turning left).
+    /// The curvature of the lane's centre line `lookahead` metres ahead (1/m, plan view,
+    /// positive turning left as driven).
     pub curvature_ahead: f64,
     /// Distance from the point to the lane's left line (m, positive inside the lane).
     pub left_line: f64,
@@ -131,7 +134,7 @@ impl RoadNetwork {
         let curvature_ahead = self
             .roads
             .get(ahead_road)
-            .map_or(0.0, |a| a.plan_at(ahead_s).curvature);
+            .map_or(0.0, |a| lane_curvature(a, ahead_s, lane));
         Some(LaneTracking {
             road,
             lane,
@@ -139,7 +142,7 @@ impl RoadNetwork {
             direction: dir,
             lateral_offset: u - dir * centre,
             heading_error: wrap(yaw - travel),
-            curvature: dir * pose.curvature,
+            curvature: dir * lane_curvature(r, s, lane),
             curvature_ahead: dir * curvature_ahead,
             left_line: lane_hi - u,
             right_line: u - lane_lo,
@@ -220,13 +223,25 @@ pub fn lane_centre(r: &Road, s: f64, lane: i32) -> Option<(f64, f64)> {
         .map(|(_, a, b)| (0.5 * (a + b), (b - a).abs()))
 }
 
+/// The plan-view curvature (1/m, positive turning left along s) of lane `lane`'s centre
+/// line of road `r` at station `s`: a line offset by t from a reference line of curvature κ
+/// has curvature κ / (1 − κ·t); the reference line's where the lane does not exist.
+pub fn lane_curvature(r: &Road, s: f64, lane: i32) -> f64 {
+    let k = r.plan_at(s).curvature;
+    let t = lane_centre(r, s, lane).map_or(0.0, |(t, _)| t);
+    let d = 1.0 - k * t;
+    // A lane centre beyond the centre of curvature (d ≤ 0) is not a lane; validated roads
+    // have none, but the reference line's curvature stands for it rather than a division.
+    if d > 0.0 { k / d } else { k }
+}
+
 /// The lowest and highest t (m) of the road surface at `s`: its outermost lane edges (the
 /// lane offset alone on a road without lanes).
 fn road_extent(r: &Road, s: f64) -> (f64, f64) {
     let (t0, edges) = r.lane_edges(s);
-    edges
-        .iter()
-        .fold((t0, t0), |(lo, hi), &(_, a, b)| (lo.min(a.min(b)), hi.max(a.max(b))))
+    edges.iter().fold((t0, t0), |(lo, hi), &(_, a, b)| {
+        (lo.min(a.min(b)), hi.max(a.max(b)))
+    })
 }
 
 #[cfg(test)]

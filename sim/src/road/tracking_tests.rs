@@ -35,7 +35,11 @@ fn straight_road_right_lane_is_exact() {
     close(at.s, s, "s");
     close(at.lateral_offset, t + 1.75, "offset"); // left of the centre at t = −1.75 m
     close(at.heading_error, 0.05, "heading error");
-    close(at.left_line, 0.0 - t, "left line (the centre line at t = 0)");
+    close(
+        at.left_line,
+        0.0 - t,
+        "left line (the centre line at t = 0)",
+    );
     close(at.right_line, t + 3.5, "right line (t = −3.5 m)");
     close(at.left_edge, 3.5 - t, "left edge (t = 3.5 m)");
     close(at.right_edge, t + 3.5, "right edge");
@@ -49,7 +53,11 @@ fn straight_road_right_lane_is_exact() {
     close(other.lateral_offset, 1.75 - t, "offset from the left lane");
     close(other.heading_error, -0.02, "heading error against s");
     // Its left line is the centre line (t = 0), crossed by 1 m; its right line is t = 3.5 m.
-    close(other.left_line, t, "the left lane's left line, crossed: negative");
+    close(
+        other.left_line,
+        t,
+        "the left lane's left line, crossed: negative",
+    );
     close(other.right_line, 3.5 - t, "its right line");
 }
 
@@ -61,7 +69,12 @@ fn arc_measurements_match_the_circle() {
         "a",
         Point2::origin(),
         0.0,
-        &[(PI * radius, Curve::Arc { curvature: 1.0 / radius })],
+        &[(
+            PI * radius,
+            Curve::Arc {
+                curvature: 1.0 / radius,
+            },
+        )],
         3.5,
     )
     .unwrap();
@@ -80,9 +93,15 @@ fn arc_measurements_match_the_circle() {
         close(at.s, radius * theta, "s = R·θ");
         close(at.lateral_offset, dir * (t - dir * -1.75), "offset");
         close(at.heading_error, yaw_error, "heading error");
-        // Driven along s the lane turns left (+1/R); against s it turns right.
-        close(at.curvature, dir / radius, "curvature");
-        close(at.curvature_ahead, dir / radius, "curvature ahead, still on the arc");
+        // The lane centre at t_c is a circle of radius R − t_c; driven along s it turns left,
+        // against s right.
+        let lane_radius = radius + 1.75 * dir;
+        close(at.curvature, dir / lane_radius, "curvature");
+        close(
+            at.curvature_ahead,
+            dir / lane_radius,
+            "curvature ahead, still on the arc",
+        );
         close(at.lane_width, 3.5, "width");
     }
 }
@@ -115,7 +134,12 @@ fn look_ahead_follows_links_and_stops_at_unlinked_ends() {
     assert_eq!(n.advance(0, 5.0, -10.0), (0, 0.0));
     let at = n.track(&Point2::new(95.0, -1.75), 0.0, 10.0).unwrap();
     close(at.curvature, 0.0, "on the straight");
-    close(at.curvature_ahead, 0.02, "on the arc 10 m ahead");
+    // The right lane's centre, 1.75 m outside the arc: κ / (1 + 1.75·κ).
+    close(
+        at.curvature_ahead,
+        0.02 / (1.0 + 0.02 * 1.75),
+        "on the arc 10 m ahead",
+    );
 }
 
 #[test]
@@ -124,10 +148,18 @@ fn off_the_road_and_unknown_lanes_give_none() {
     let n = net(vec![road]);
     assert!(n.track(&Point2::new(50.0, 4.0), 0.0, 5.0).is_none());
     assert!(n.track(&Point2::new(-1.0, 0.5), 0.0, 5.0).is_none());
-    assert!(n.track_lane(0, 2, &Point2::new(50.0, 1.0), 0.0, 5.0).is_none());
-    assert!(n.track_lane(1, 1, &Point2::new(50.0, 1.0), 0.0, 5.0).is_none());
+    assert!(
+        n.track_lane(0, 2, &Point2::new(50.0, 1.0), 0.0, 5.0)
+            .is_none()
+    );
+    assert!(
+        n.track_lane(1, 1, &Point2::new(50.0, 1.0), 0.0, 5.0)
+            .is_none()
+    );
     // Measured against a lane it is not in, a point beyond the road gets negative distances.
-    let at = n.track_lane(0, -1, &Point2::new(50.0, 4.0), 0.0, 5.0).unwrap();
+    let at = n
+        .track_lane(0, -1, &Point2::new(50.0, 4.0), 0.0, 5.0)
+        .unwrap();
     close(at.left_edge, -0.5, "0.5 m beyond the left edge");
     close(at.left_line, -4.0, "4 m beyond the centre line");
 }

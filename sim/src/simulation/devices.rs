@@ -19,7 +19,7 @@ use crate::vehicle::VehicleId;
 
 impl Simulation {
     /// Car `id`, to change.
-    fn car_mut(&mut self, id: VehicleId) -> Result<&mut Controlled, SimError> {
+    pub(super) fn car_mut(&mut self, id: VehicleId) -> Result<&mut Controlled, SimError> {
         self.cars
             .iter_mut()
             .find(|c| c.id == id)
