@@ -105,6 +105,16 @@ impl FollowLane {
     }
 }
 
+/// A programme command of the lane follower (`[[vehicle.programme]]` keys `follow_lane`,
+/// `lane`, `lane_change_time`, `max_lateral_acceleration`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum FollowCommand {
+    /// Follow (or, while following, retarget: another lane is a lane change).
+    Follow(FollowLane),
+    /// Stop following (`follow_lane = false`): the steering stays where it was.
+    Stop,
+}
+
 /// Why the follower did not steer at its last step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FollowStatus {
