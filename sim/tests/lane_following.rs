@@ -223,3 +223,49 @@ fn a_car_off_the_road_is_not_steered_and_says_so() {
     assert_eq!(follower.status(), FollowStatus::OffRoad);
     assert_eq!(follower.lane(), None);
 }
+
+/// A world with a 200 m straight road (one lane each way) and a car whose programme step
+/// at 0 s has the lines `step`.
+fn follow_world(road: bool, step: &str) -> String {
+    let road = if road {
+        "[[road]]\nid = \"r\"\nnumberOfLanes = 2\nnumberOfForwardLanes = 1\nwidth = 7.0\n\
+         [[road.segment]]\ntype = \"straight\"\nlength = 200\n"
+    } else {
+        ""
+    };
+    format!(
+        "basicTimeStep = 10\n{road}\n[[vehicle]]\nmodel = \"BmwX5\"\ntranslation = [10, -1.75, 0]\n\
+         [[vehicle.programme]]\nat = 0.0\ncruising_speed = 30\n{step}\n"
+    )
+}
+
+fn world_error(text: &str) -> String {
+    sim::world_file::parse_str("w.toml", text)
+        .unwrap_err()
+        .to_string()
+}
+
+#[test]
+fn bad_follow_lane_steps_name_file_line_and_key() {
+    let e = world_error(&follow_world(false, "follow_lane = true"));
+    assert!(e.starts_with("w.toml:"), "{e}");
+    assert!(e.contains("follow_lane") && e.contains("no road"), "{e}");
+    let e = world_error(&follow_world(true, "follow_lane = true\nlane = -3"));
+    assert!(e.contains("vehicle[1].programme[1].lane") && e.contains("lanes: -1, 1"), "{e}");
+    let e = world_error(&follow_world(true, "follow_lane = true\nlane = 0.5"));
+    assert!(e.contains("programme[1].lane"), "{e}");
+    let e = world_error(&follow_world(true, "follow_lane = true\nlane_change_time = 0.1"));
+    assert!(e.contains("lane_change_time") && e.contains("from 1 to 60 s"), "{e}");
+    let e = world_error(&follow_world(
+        true,
+        "lane = -1\n[[vehicle.programme]]\nat = 2.0\nlane = 1",
+    ));
+    assert!(e.contains("programme[2].lane") && e.contains("centre line"), "{e}");
+    let e = world_error(&follow_world(true, "follow_lane = false\nlane = -1"));
+    assert!(e.contains("programme[1].lane") && e.contains("stops following"), "{e}");
+    // A good one: one follow step, the driver's command apart.
+    let w = sim::world_file::parse_str("w.toml", &follow_world(true, "follow_lane = true"))
+        .unwrap();
+    assert_eq!(w.cars[0].lanes.steps().len(), 1);
+    assert_eq!(w.cars[0].programme.steps()[0].commands.len(), 1);
+}
