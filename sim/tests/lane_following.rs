@@ -251,21 +251,82 @@ fn bad_follow_lane_steps_name_file_line_and_key() {
     assert!(e.starts_with("w.toml:"), "{e}");
     assert!(e.contains("follow_lane") && e.contains("no road"), "{e}");
     let e = world_error(&follow_world(true, "follow_lane = true\nlane = -3"));
-    assert!(e.contains("vehicle[1].programme[1].lane") && e.contains("lanes: -1, 1"), "{e}");
+    assert!(
+        e.contains("vehicle[1].programme[1].lane") && e.contains("lanes: -1, 1"),
+        "{e}"
+    );
     let e = world_error(&follow_world(true, "follow_lane = true\nlane = 0.5"));
     assert!(e.contains("programme[1].lane"), "{e}");
-    let e = world_error(&follow_world(true, "follow_lane = true\nlane_change_time = 0.1"));
-    assert!(e.contains("lane_change_time") && e.contains("from 1 to 60 s"), "{e}");
+    let e = world_error(&follow_world(
+        true,
+        "follow_lane = true\nlane_change_time = 0.1",
+    ));
+    assert!(
+        e.contains("lane_change_time") && e.contains("from 1 to 60 s"),
+        "{e}"
+    );
     let e = world_error(&follow_world(
         true,
         "lane = -1\n[[vehicle.programme]]\nat = 2.0\nlane = 1",
     ));
-    assert!(e.contains("programme[2].lane") && e.contains("centre line"), "{e}");
+    assert!(
+        e.contains("programme[2].lane") && e.contains("centre line"),
+        "{e}"
+    );
     let e = world_error(&follow_world(true, "follow_lane = false\nlane = -1"));
-    assert!(e.contains("programme[1].lane") && e.contains("stops following"), "{e}");
+    assert!(
+        e.contains("programme[1].lane") && e.contains("stops following"),
+        "{e}"
+    );
     // A good one: one follow step, the driver's command apart.
-    let w = sim::world_file::parse_str("w.toml", &follow_world(true, "follow_lane = true"))
-        .unwrap();
+    let w =
+        sim::world_file::parse_str("w.toml", &follow_world(true, "follow_lane = true")).unwrap();
     assert_eq!(w.cars[0].lanes.steps().len(), 1);
     assert_eq!(w.cars[0].programme.steps()[0].commands.len(), 1);
+}
+
+#[test]
+fn the_programme_run_reports_a_lane_departure_with_its_time_and_side() {
+    use sim::scenario::{self, Scenario, Value};
+    // Following the right lane at 40 km/h, then at 5 s the follower lets go and the
+    // programme steers 0.02 rad left: the car drifts over the centre line (t = 0).
+    let text = follow_world(
+        true,
+        "follow_lane = true\n[[vehicle.programme]]\nat = 5.0\nfollow_lane = false\n\
+         [[vehicle.programme]]\nat = 5.0\nsteering_angle = -0.02",
+    )
+    .replace("cruising_speed = 30", "cruising_speed = 40")
+    .replace("basicTimeStep = 10", "basicTimeStep = 10\nduration = 12.0");
+    let w = sim::world_file::parse_str("w.toml", &text).unwrap();
+    let report = scenario::run(&w, Scenario::Programme, &mut |_| {}).unwrap();
+    let r = &report.results[0];
+    assert_eq!(r.metric("lane_departures"), Some(Value::Number(1.0)));
+    assert_eq!(r.metric("lane_departures_left"), Some(Value::Number(1.0)));
+    assert_eq!(r.metric("lane_departures_right"), Some(Value::Number(0.0)));
+    let Some(Value::Number(t)) = r.metric("first_lane_departure_s") else {
+        panic!("{:?}", r.metrics);
+    };
+    // The crossing is after the steering starts, and within the run.
+    assert!((5.0..12.0).contains(&t), "{t} s");
+    // The departure is the first time the recorded left tyre edge is beyond the line: the
+    // telemetry puts the edge inside the lane one sample before.
+    let telemetry = &r.telemetry[0].samples;
+    let params = Model::BmwX5.params::<f64>();
+    let edge = |s: &sim::telemetry::Sample| {
+        let w =
+            0.5 * params.track_front + 0.5 * params.wheels[ackermann::Wheel::FrontLeft].thickness;
+        s.y + params.wheelbase * s.yaw.sin() + w * s.yaw.cos()
+    };
+    let k = telemetry
+        .iter()
+        .position(|s| (s.time - t).abs() < 1e-9)
+        .unwrap();
+    assert!(edge(&telemetry[k]) > 0.0 && edge(&telemetry[k - 1]) <= 0.0);
+    assert!(
+        r.notes
+            .iter()
+            .any(|n| n.contains("lane departure to the left at")),
+        "{:?}",
+        r.notes
+    );
 }
