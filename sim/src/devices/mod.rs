@@ -35,6 +35,7 @@ mod noise;
 mod png_file;
 mod radar;
 pub(crate) mod rays;
+mod road_sensor;
 mod spec;
 mod triaxial;
 
@@ -43,6 +44,7 @@ use proto_geom::{SensorSlot, SensorSlots};
 
 use crate::error::{ParamError, SimError};
 use crate::rng::SplitMix64;
+use crate::road::RoadNetwork;
 use crate::vehicle::VehicleId;
 use camera::solids::Solids;
 
@@ -58,6 +60,7 @@ pub use lidar::{
 pub use lookup::LookupTable;
 pub use png_file::{ImageFileError, load_png, save_png};
 pub use radar::{RadarSettings, RadarTarget};
+pub use road_sensor::{DEFAULT_LOOKAHEAD, MAX_LOOKAHEAD, RoadSensorReading, RoadSensorSettings};
 pub use spec::{Axes, DeviceKind, DeviceSettings, DeviceSpec};
 pub use triaxial::TriaxialSettings;
 
@@ -165,6 +168,8 @@ pub enum Reading {
     Radar(Option<Vec<RadarTarget>>),
     /// A lidar's range image.
     Lidar(LidarReading),
+    /// A road sensor's place on the roads (a project extension).
+    Road(RoadSensorReading),
 }
 
 /// A device on a car: its fields, its frame on the chassis, its sampling state and its last
@@ -291,6 +296,7 @@ impl Device {
         scene: Option<&Scene<'_>>,
         solids: Option<&Solids>,
         own: VehicleId,
+        roads: &RoadNetwork,
     ) {
         if let (DeviceSettings::Camera(settings), Some(camera), Some(solids)) =
             (&self.settings, self.camera.as_mut(), solids)
@@ -353,6 +359,7 @@ impl Device {
                 }
                 None => return,
             },
+            DeviceSettings::RoadSensor(s) => Reading::Road(road_sensor::measure(s, roads, &point)),
         };
     }
 }
@@ -480,6 +487,7 @@ impl CarDevices {
                 DeviceSettings::Lidar(s) => Reading::Lidar(LidarReading::unsampled(s)),
                 DeviceSettings::Camera(_) => Reading::Camera,
                 DeviceSettings::Display(_) => Reading::Display,
+                DeviceSettings::RoadSensor(_) => Reading::Road(RoadSensorReading::unsampled()),
             };
             let display = match &spec.settings {
                 DeviceSettings::Display(s) => Some(Box::new(Display::new(s))),
@@ -608,9 +616,10 @@ impl CarDevices {
         scene: Option<&Scene<'_>>,
         solids: Option<&Solids>,
         own: VehicleId,
+        roads: &RoadNetwork,
     ) {
         for d in &mut self.devices {
-            d.refresh(chassis, now_ms, scene, solids, own);
+            d.refresh(chassis, now_ms, scene, solids, own, roads);
         }
     }
 }

@@ -53,8 +53,14 @@ impl Simulation {
                 Some(radar) => Some(self.world.scene(car.id, radar)?),
                 None => None,
             };
-            car.devices
-                .refresh(&chassis, now_ms, scene.as_ref(), solids.as_ref(), car.id);
+            car.devices.refresh(
+                &chassis,
+                now_ms,
+                scene.as_ref(),
+                solids.as_ref(),
+                car.id,
+                &self.world.config().roads,
+            );
         }
         Ok(())
     }
