@@ -410,7 +410,7 @@ impl Simulation {
             car.sampled = true;
             if let Some(follower) = &mut car.follower {
                 let state = self.world.vehicle(car.id)?.state();
-                follower.drive(&self.world.config().roads, &state, t, &mut car.driver);
+                follower.drive(&self.world.config().roads, state, t, &mut car.driver);
             }
             let commands = *car.driver.step(&sensors);
             self.world.vehicle_mut(car.id)?.set_commands(&commands);
