@@ -61,7 +61,10 @@ fn vehicle_road_sensor_get_number(tag: u16, which: &str) -> PyResult<f64> {
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(vehicle_road_sensor_enable, m)?)?;
     m.add_function(wrap_pyfunction!(vehicle_road_sensor_disable, m)?)?;
-    m.add_function(wrap_pyfunction!(vehicle_road_sensor_get_sampling_period, m)?)?;
+    m.add_function(wrap_pyfunction!(
+        vehicle_road_sensor_get_sampling_period,
+        m
+    )?)?;
     m.add_function(wrap_pyfunction!(vehicle_road_sensor_get_place, m)?)?;
     m.add_function(wrap_pyfunction!(vehicle_road_sensor_get_number, m)?)?;
     Ok(())
