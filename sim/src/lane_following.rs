@@ -214,7 +214,7 @@ impl LaneFollower {
         self.lane
     }
 
-    /// Why the last [`LaneFollower::steering`] gave no angle, or that it gave one.
+    /// Why the last [`LaneFollower::drive`] did not steer, or that it did.
     pub fn status(&self) -> FollowStatus {
         self.status
     }
