@@ -154,15 +154,20 @@ impl LaneFollower {
     /// A [`ParamError`] for a request out of range or a car without a steering range.
     pub fn new(params: &CarParams<f64>, request: FollowLane) -> Result<Self, ParamError> {
         request.validate()?;
+        let geometry = params.geometry().map_err(|e| ParamError {
+            field: "wheelbase",
+            value: e.value,
+            rule: Rule::Text("a car geometry the lane follower can steer (finite, > 0)"),
+        })?;
         let law = PurePursuit::new(
-            params.wheelbase,
+            geometry,
             params.min_steering_angle,
             params.max_steering_angle,
         )
-        .map_err(|_| ParamError {
+        .map_err(|e| ParamError {
             field: "maxSteeringAngle",
-            value: params.max_steering_angle,
-            rule: Rule::Text("a steering range around 0 and a wheelbase > 0 for the lane follower"),
+            value: e.max,
+            rule: Rule::Text("a steering range around 0 for the lane follower"),
         })?;
         Ok(LaneFollower {
             law,

@@ -16,16 +16,17 @@
 //! Positive steering turns right (Webots).
 //!
 //! ```
-//! use vehicle_model::PurePursuit;
-//! let law = PurePursuit::<f64>::new(2.8, -0.6, 0.6)?; // wheelbase m, steering limits rad
+//! use vehicle_model::{Geometry, PurePursuit};
+//! let geometry = Geometry::new(2.8, 1.6, 1.6, 0.35, 0.35)?; // m
+//! let law = PurePursuit::<f64>::new(geometry, -0.6, 0.6)?; // steering limits rad
 //! // A goal 10 m ahead and 1 m to the left: a left turn, i.e. a negative steering angle.
 //! let delta = law.steering(10.0, 1.0);
 //! let curvature: f64 = 2.0 * 1.0 / (10.0 * 10.0 + 1.0); // 1/m: 2·y / d²
 //! assert!((delta + (2.8 * curvature).atan()).abs() < 1e-12);
-//! # Ok::<(), vehicle_model::PurePursuitError>(())
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use ackermann::Real;
+use ackermann::{Geometry, Real};
 
 /// Shortest look-ahead (m) [`PurePursuit::lookahead`] returns: below it the steering would
 /// chase every centimetre of lateral error.
@@ -34,59 +35,58 @@ pub const MIN_LOOKAHEAD: f64 = 4.0;
 /// 0.6 s (at 50 km/h, 8.3 m), within the 0.5 s to 1 s of human preview in lane keeping.
 pub const LOOKAHEAD_TIME: f64 = 0.6;
 
-/// Why a [`PurePursuit`] cannot be built.
+/// Why a [`PurePursuit`] cannot be built: its steering limits (rad) are not finite with
+/// `min < 0 < max`.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum PurePursuitError {
-    /// The wheelbase (m) is not finite and positive.
-    Wheelbase(f64),
-    /// The steering limits (rad) are not finite with `min < 0 < max`.
-    SteeringLimits(f64, f64),
+pub struct PurePursuitError {
+    /// The smallest steering angle asked for (rad).
+    pub min: f64,
+    /// The largest (rad).
+    pub max: f64,
 }
 
 impl core::fmt::Display for PurePursuitError {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        match self {
-            PurePursuitError::Wheelbase(w) => {
-                write!(f, "wheelbase {w} m: must be finite and > 0")
-            }
-            PurePursuitError::SteeringLimits(a, b) => write!(
-                f,
-                "steering limits {a} to {b} rad: must be finite with min < 0 < max"
-            ),
-        }
+        write!(
+            f,
+            "steering limits {} to {} rad: must be finite with min < 0 < max",
+            self.min, self.max
+        )
     }
 }
 
 impl core::error::Error for PurePursuitError {}
 
-/// The pure-pursuit steering law of a car: its wheelbase and steering limits.
+/// The pure-pursuit steering law of a car: its geometry (for the wheelbase) and steering
+/// limits.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PurePursuit<T: Real> {
-    wheelbase: T,
+    geometry: Geometry<T>,
     min_steering: T,
     max_steering: T,
 }
 
 impl<T: Real> PurePursuit<T> {
-    /// The law for a car of wheelbase `wheelbase` (m) whose steering angle (rad, positive
-    /// right) ranges from `min_steering` (< 0) to `max_steering` (> 0), as the `Car`'s
-    /// `minSteeringAngle` and `maxSteeringAngle`.
-    pub fn new(wheelbase: T, min_steering: T, max_steering: T) -> Result<Self, PurePursuitError> {
-        if !(wheelbase.is_finite() && wheelbase > T::ZERO) {
-            return Err(PurePursuitError::Wheelbase(wheelbase.to_f64()));
-        }
+    /// The law for a car of `geometry` whose steering angle (rad, positive right) ranges from
+    /// `min_steering` (< 0) to `max_steering` (> 0), as the `Car`'s `minSteeringAngle` and
+    /// `maxSteeringAngle`.
+    pub fn new(
+        geometry: Geometry<T>,
+        min_steering: T,
+        max_steering: T,
+    ) -> Result<Self, PurePursuitError> {
         if !(min_steering.is_finite()
             && max_steering.is_finite()
             && min_steering < T::ZERO
             && max_steering > T::ZERO)
         {
-            return Err(PurePursuitError::SteeringLimits(
-                min_steering.to_f64(),
-                max_steering.to_f64(),
-            ));
+            return Err(PurePursuitError {
+                min: min_steering.to_f64(),
+                max: max_steering.to_f64(),
+            });
         }
         Ok(PurePursuit {
-            wheelbase,
+            geometry,
             min_steering,
             max_steering,
         })
@@ -111,10 +111,13 @@ impl<T: Real> PurePursuit<T> {
     }
 
     /// The steering angle (rad, positive right) towards the goal (`x`, `y`) (m, car frame):
-    /// the bicycle angle `−atan(wheelbase·κ)` of [`PurePursuit::curvature`], within the
-    /// steering limits.
+    /// the central angle `−atan(wheelbase·κ)` of [`PurePursuit::curvature`]
+    /// ([`Geometry::steering_angle_for_curvature`], whose curvature is positive to the right),
+    /// within the steering limits.
     pub fn steering(&self, x: T, y: T) -> T {
-        let delta = -(self.wheelbase * Self::curvature(x, y)).atan();
+        let delta = self
+            .geometry
+            .steering_angle_for_curvature(-Self::curvature(x, y));
         delta.max(self.min_steering).min(self.max_steering)
     }
 }
@@ -122,6 +125,18 @@ impl<T: Real> PurePursuit<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A car of wheelbase `l` (m), 1.6 m tracks and 0.35 m wheels.
+    fn geometry<T: Real>(l: T) -> Geometry<T> {
+        Geometry::new(
+            l,
+            T::from_f64(1.6),
+            T::from_f64(1.6),
+            T::from_f64(0.35),
+            T::from_f64(0.35),
+        )
+        .unwrap()
+    }
 
     #[test]
     fn goal_on_a_circle_gives_its_curvature() {
@@ -133,13 +148,13 @@ mod tests {
             let k = PurePursuit::curvature(x, y);
             assert!((k - 1.0 / r).abs() < 1e-12, "{k}");
         }
-        let law = PurePursuit::new(2.8_f64, -0.5, 0.5).unwrap();
+        let law = PurePursuit::new(geometry(2.8_f64), -0.5, 0.5).unwrap();
         assert!((law.steering(10.0, -0.5) - (2.8 * 2.0 * 0.5 / 100.25_f64).atan()).abs() < 1e-12);
     }
 
     #[test]
     fn limits_and_bad_input() {
-        let law = PurePursuit::new(2.8_f32, -0.4, 0.5).unwrap();
+        let law = PurePursuit::new(geometry(2.8_f32), -0.4, 0.5).unwrap();
         assert_eq!(law.steering(0.1, 5.0), -0.4); // a hard left, at the left limit
         assert_eq!(law.steering(0.1, -5.0), 0.5);
         assert_eq!(law.steering(0.0, 0.0), 0.0);
@@ -147,10 +162,9 @@ mod tests {
         assert_eq!(PurePursuit::<f32>::lookahead(f32::NAN), 4.0);
         assert!((PurePursuit::<f64>::lookahead(50.0 / 3.6) - 8.333_333_333).abs() < 1e-6);
         assert_eq!(
-            PurePursuit::new(0.0_f64, -0.5, 0.5),
-            Err(PurePursuitError::Wheelbase(0.0))
+            PurePursuit::new(geometry(2.0_f64), 0.1, 0.5),
+            Err(PurePursuitError { min: 0.1, max: 0.5 })
         );
-        assert!(PurePursuit::new(2.0_f64, 0.1, 0.5).is_err());
-        assert!(PurePursuit::new(2.0_f64, -0.1, f64::NAN).is_err());
+        assert!(PurePursuit::new(geometry(2.0_f64), -0.1, f64::NAN).is_err());
     }
 }
