@@ -55,6 +55,9 @@ pub(crate) mod node {
     pub(crate) const SPEAKER: i32 = 59;
     /// `WB_NODE_SOLID`.
     pub(crate) const SOLID: i32 = 80;
+    /// `VEHICLE_NODE_ROAD_SENSOR` (`webots/vehicle/road_sensor.h`): the project's RoadSensor,
+    /// which no Webots node type names; 1000, far past Webots' numbering.
+    pub(crate) const VEHICLE_ROAD_SENSOR: i32 = 1000;
 }
 
 /// The node type of a sensor of `kind`.
@@ -70,6 +73,7 @@ pub(crate) fn sensor_node_type(kind: DeviceKind) -> i32 {
         DeviceKind::DistanceSensor => node::DISTANCE_SENSOR,
         DeviceKind::Radar => node::RADAR,
         DeviceKind::Lidar => node::LIDAR,
+        DeviceKind::RoadSensor => node::VEHICLE_ROAD_SENSOR,
     }
 }
 

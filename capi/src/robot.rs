@@ -6,6 +6,7 @@ use std::ffi::c_int;
 use std::path::PathBuf;
 
 use sim::keyboard::Keyboard;
+use sim::lane_following::FollowCommand;
 use sim::programme::Programme;
 use sim::world_file::{self, WorldDescription};
 use sim::{RobotId, SimError, Simulation, VehicleId};
@@ -82,6 +83,9 @@ struct Programmed {
     id: VehicleId,
     programme: Programme,
     next: usize,
+    /// Its lane follower's commands (`follow_lane` …) and the next one due.
+    lanes: Programme<FollowCommand>,
+    lanes_next: usize,
 }
 
 impl Robot {
@@ -120,7 +124,9 @@ impl Robot {
         let driven = match (cars.len(), description.robot.is_some()) {
             (1, false) | (0, true) => 0,
             (n, false) if n > 1 => {
-                let free: Vec<usize> = (0..n).filter(|&i| cars[i].programme.is_empty()).collect();
+                let free: Vec<usize> = (0..n)
+                    .filter(|&i| cars[i].programme.is_empty() && cars[i].lanes.is_empty())
+                    .collect();
                 match free[..] {
                     [one] => one,
                     _ => {
@@ -152,7 +158,7 @@ impl Robot {
         // Nothing the world says is dropped silently: the driven vehicle's programme is
         // vehicle-sim's to run.
         let driven_programme = match cars.get(driven) {
-            Some(car) => !car.programme.is_empty(),
+            Some(car) => !car.programme.is_empty() || !car.lanes.is_empty(),
             None => description
                 .robot
                 .as_ref()
@@ -175,6 +181,8 @@ impl Robot {
                 id,
                 programme: car.programme.clone(),
                 next: 0,
+                lanes: car.lanes.clone(),
+                lanes_next: 0,
             })
             .collect();
         let body = match (ids.get(driven).copied(), simulation.robot_ids().next()) {
@@ -230,6 +238,20 @@ impl Robot {
                 }
             }
             other.next = cursor.position();
+            let mut lanes = other.lanes.cursor_at(other.lanes_next);
+            let due: Vec<FollowCommand> = lanes.due(t).map(|(_, c)| *c).collect();
+            other.lanes_next = lanes.position();
+            for command in due {
+                let applied = match command {
+                    FollowCommand::Follow(request) => {
+                        self.simulation.follow_lane(other.id, request)
+                    }
+                    FollowCommand::Stop => self.simulation.stop_following_lane(other.id),
+                };
+                if let Err(e) = applied {
+                    eprintln!("Warning: follow_lane: {e}");
+                }
+            }
         }
     }
 

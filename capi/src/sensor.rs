@@ -115,7 +115,8 @@ fn table_of(settings: &DeviceSettings) -> Box<[f64]> {
         | DeviceSettings::Camera(_)
         | DeviceSettings::Display(_)
         | DeviceSettings::Radar(_)
-        | DeviceSettings::Lidar(_) => Box::new([]),
+        | DeviceSettings::Lidar(_)
+        | DeviceSettings::RoadSensor(_) => Box::new([]),
     }
 }
 
@@ -132,6 +133,16 @@ pub(crate) fn prefix(kind: DeviceKind) -> &'static str {
         DeviceKind::DistanceSensor => "distance_sensor",
         DeviceKind::Radar => "radar",
         DeviceKind::Lidar => "lidar",
+        DeviceKind::RoadSensor => "road_sensor",
+    }
+}
+
+/// The prefix of a kind's C functions: `wb_<prefix>` for Webots' devices, the project's
+/// `vehicle_road_sensor` for its RoadSensor extension.
+pub(crate) fn function_prefix(kind: DeviceKind) -> String {
+    match kind {
+        DeviceKind::RoadSensor => "vehicle_road_sensor".to_string(),
+        _ => format!("wb_{}", prefix(kind)),
     }
 }
 
@@ -188,7 +199,7 @@ pub(crate) fn enable(
 
 /// `wb_<kind>_get_sampling_period(tag)`: the period (ms), 0 when disabled or for a wrong tag.
 pub(crate) fn sampling_period(robot: &Robot, kind: DeviceKind, tag: WbDeviceTag) -> c_int {
-    let function = format!("wb_{}_get_sampling_period", prefix(kind));
+    let function = format!("{}_get_sampling_period", function_prefix(kind));
     find(robot, tag, kind, &function, true)
         .and_then(|found| device(robot, found))
         .map_or(0, |d| c_int::try_from(d.period_ms()).unwrap_or(c_int::MAX))
@@ -208,8 +219,8 @@ pub(crate) fn read(
     let d = device(robot, found)?;
     if d.period_ms() == 0 {
         message::error(format_args!(
-            "{function}() called for a disabled device! Please use: wb_{}_enable().",
-            prefix(kind)
+            "{function}() called for a disabled device! Please use: {}_enable().",
+            function_prefix(kind)
         ));
     }
     Some((found.1, d.reading().clone()))

@@ -88,6 +88,14 @@ fn sensors() {
     run_announcing("sensors", Some(&sensors_world()), 9);
 }
 
+/// The RoadSensor extension of a world file's car against the road's closed forms, and its
+/// misuse messages.
+#[test]
+fn road_sensor() {
+    // 1 disabled read, 1 negative period, 1 wrong tag.
+    run_announcing("road_sensor", Some(&world_path("road.toml")), 3);
+}
+
 /// The camera of a world file's car, its Recognition and the camera misuse messages.
 #[test]
 fn camera() {

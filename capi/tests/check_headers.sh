@@ -81,7 +81,7 @@ supports() {
 C_HEADERS=(webots/types.h webots/robot.h webots/differential_wheels.h webots/vehicle/driver.h webots/vehicle/car.h
   webots/driver.h webots/car.h webots/nodes.h webots/device.h webots/gps.h webots/inertial_unit.h webots/gyro.h
   webots/accelerometer.h webots/compass.h webots/distance_sensor.h webots/radar_target.h webots/radar.h
-  webots/lidar_point.h webots/lidar.h)
+  webots/lidar_point.h webots/lidar.h webots/vehicle/road_sensor.h)
 CPP_HEADERS=(webots/vehicle/Driver.hpp webots/vehicle/Car.hpp webots/Device.hpp webots/GPS.hpp webots/InertialUnit.hpp
   webots/Gyro.hpp webots/Accelerometer.hpp webots/Compass.hpp webots/DistanceSensor.hpp webots/Radar.hpp
   webots/Lidar.hpp)

@@ -16,6 +16,7 @@ mod camera;
 mod display;
 mod keyboard;
 mod ray_sensors;
+mod road_sensor;
 mod sensors;
 mod simulation;
 mod sweep;
@@ -54,6 +55,7 @@ fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     display::register(m)?;
     keyboard::register(m)?;
     ray_sensors::register(m)?;
+    road_sensor::register(m)?;
     simulation::register(m)?;
     sweep::register(m)?;
     Ok(())

@@ -89,6 +89,7 @@ mod car_builder;
 pub mod cli;
 pub mod devices;
 pub mod keyboard;
+pub mod lane_following;
 pub mod motor;
 pub mod placement;
 pub mod programme;

@@ -153,6 +153,7 @@ mod lights;
 mod mode;
 mod model;
 mod params;
+mod pure_pursuit;
 mod sound;
 pub mod tyre;
 mod warning;
@@ -174,6 +175,7 @@ pub use params::{
     FieldValue, GearRatios, MAX_PARAM_WARNINGS, NumberRule, ParamReport, ParamWarning, Refusal,
     WheelMotor, WheelSetting, WheelSlot, is_physical_inertia, wheel_slot_name,
 };
+pub use pure_pursuit::{LOOKAHEAD_TIME, MIN_LOOKAHEAD, PurePursuit, PurePursuitError};
 pub use sound::{BLINKER_SOUND_FILE, SoundCommand, Sounds};
 pub use tyre::{
     ContactVelocity, Direction, FreeSpin, Linearised, MagicFormula, SlipCurve, SpinPrediction,

@@ -36,6 +36,7 @@ mod png_file;
 mod radar;
 pub(crate) mod rays;
 mod record;
+mod road_sensor;
 mod spec;
 mod triaxial;
 
@@ -44,6 +45,7 @@ use proto_geom::{SensorSlot, SensorSlots};
 
 use crate::error::{ParamError, SimError};
 use crate::rng::SplitMix64;
+use crate::road::RoadNetwork;
 use crate::vehicle::VehicleId;
 use camera::solids::Solids;
 
@@ -60,6 +62,7 @@ pub use lookup::LookupTable;
 pub use png_file::{ImageFileError, load_png, save_png};
 pub use radar::{RadarSettings, RadarTarget};
 pub use record::RecordedQuantity;
+pub use road_sensor::{DEFAULT_LOOKAHEAD, MAX_LOOKAHEAD, RoadSensorReading, RoadSensorSettings};
 pub use spec::{Axes, DeviceKind, DeviceSettings, DeviceSpec};
 pub use triaxial::TriaxialSettings;
 
@@ -167,6 +170,8 @@ pub enum Reading {
     Radar(Option<Vec<RadarTarget>>),
     /// A lidar's range image.
     Lidar(LidarReading),
+    /// A road sensor's place on the roads (a project extension).
+    Road(RoadSensorReading),
 }
 
 /// A device on a car: its fields, its frame on the chassis, its sampling state and its last
@@ -293,6 +298,7 @@ impl Device {
         scene: Option<&Scene<'_>>,
         solids: Option<&Solids>,
         own: VehicleId,
+        roads: &RoadNetwork,
     ) {
         if let (DeviceSettings::Camera(settings), Some(camera), Some(solids)) =
             (&self.settings, self.camera.as_mut(), solids)
@@ -355,6 +361,7 @@ impl Device {
                 }
                 None => return,
             },
+            DeviceSettings::RoadSensor(s) => Reading::Road(road_sensor::measure(s, roads, &point)),
         };
     }
 }
@@ -482,6 +489,7 @@ impl CarDevices {
                 DeviceSettings::Lidar(s) => Reading::Lidar(LidarReading::unsampled(s)),
                 DeviceSettings::Camera(_) => Reading::Camera,
                 DeviceSettings::Display(_) => Reading::Display,
+                DeviceSettings::RoadSensor(_) => Reading::Road(RoadSensorReading::unsampled()),
             };
             let display = match &spec.settings {
                 DeviceSettings::Display(s) => Some(Box::new(Display::new(s))),
@@ -610,9 +618,10 @@ impl CarDevices {
         scene: Option<&Scene<'_>>,
         solids: Option<&Solids>,
         own: VehicleId,
+        roads: &RoadNetwork,
     ) {
         for d in &mut self.devices {
-            d.refresh(chassis, now_ms, scene, solids, own);
+            d.refresh(chassis, now_ms, scene, solids, own, roads);
         }
     }
 }

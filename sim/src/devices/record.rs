@@ -89,6 +89,22 @@ impl Device {
                     }
                 }
             }
+            // Off the roads the road and lane are absent: NaN in the file, like the other values.
+            Reading::Road(r) => {
+                let index = |v: Option<f64>| v.unwrap_or(f64::NAN);
+                scalar("road", index(r.road.map(|i| i as f64)));
+                scalar("lane", index(r.lane.map(f64::from)));
+                scalar("s", r.s);
+                scalar("lateral_offset", r.lateral_offset);
+                scalar("heading_error", r.heading_error);
+                scalar("curvature", r.curvature);
+                scalar("curvature_ahead", r.curvature_ahead);
+                scalar("left_line", r.left_line);
+                scalar("right_line", r.right_line);
+                scalar("left_edge", r.left_edge);
+                scalar("right_edge", r.right_edge);
+                scalar("lane_width", r.lane_width);
+            }
             Reading::Lidar(r) => {
                 let returns = r.range_image.iter().filter(|v| v.is_finite());
                 scalar("returns", returns.clone().count() as f64);

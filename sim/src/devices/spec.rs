@@ -8,7 +8,7 @@ use crate::error::ParamError;
 
 use super::{
     CameraSettings, DisplaySettings, DistanceSensorSettings, GpsSettings, InertialUnitSettings,
-    LidarSettings, RadarSettings, TriaxialSettings,
+    LidarSettings, RadarSettings, RoadSensorSettings, TriaxialSettings,
 };
 
 /// The kinds of device.
@@ -34,11 +34,13 @@ pub enum DeviceKind {
     Radar,
     /// Webots `Lidar`.
     Lidar,
+    /// `RoadSensor`: where the car is on the roads (a project extension, no Webots node).
+    RoadSensor,
 }
 
 impl DeviceKind {
     /// Every kind.
-    pub const ALL: [DeviceKind; 10] = [
+    pub const ALL: [DeviceKind; 11] = [
         DeviceKind::Gps,
         DeviceKind::InertialUnit,
         DeviceKind::Gyro,
@@ -49,6 +51,7 @@ impl DeviceKind {
         DeviceKind::DistanceSensor,
         DeviceKind::Radar,
         DeviceKind::Lidar,
+        DeviceKind::RoadSensor,
     ];
 
     /// The Webots node name (`"GPS"`, `"InertialUnit"`, …).
@@ -64,6 +67,7 @@ impl DeviceKind {
             DeviceKind::DistanceSensor => "DistanceSensor",
             DeviceKind::Radar => "Radar",
             DeviceKind::Lidar => "Lidar",
+            DeviceKind::RoadSensor => "RoadSensor",
         }
     }
 
@@ -87,6 +91,7 @@ impl DeviceKind {
             DeviceKind::DistanceSensor => "distance sensor",
             DeviceKind::Radar => "radar",
             DeviceKind::Lidar => "lidar",
+            DeviceKind::RoadSensor => "road sensor",
         }
     }
 
@@ -159,6 +164,8 @@ pub enum DeviceSettings {
     Radar(RadarSettings),
     /// A `Lidar`.
     Lidar(LidarSettings),
+    /// A `RoadSensor` (a project extension).
+    RoadSensor(RoadSensorSettings),
 }
 
 impl DeviceSettings {
@@ -175,6 +182,7 @@ impl DeviceSettings {
             DeviceSettings::DistanceSensor(_) => DeviceKind::DistanceSensor,
             DeviceSettings::Radar(_) => DeviceKind::Radar,
             DeviceSettings::Lidar(_) => DeviceKind::Lidar,
+            DeviceSettings::RoadSensor(_) => DeviceKind::RoadSensor,
         }
     }
 
@@ -195,6 +203,7 @@ impl DeviceSettings {
             }
             DeviceKind::Radar => DeviceSettings::Radar(RadarSettings::default()),
             DeviceKind::Lidar => DeviceSettings::Lidar(LidarSettings::default()),
+            DeviceKind::RoadSensor => DeviceSettings::RoadSensor(RoadSensorSettings::default()),
         }
     }
 
@@ -214,6 +223,7 @@ impl DeviceSettings {
             DeviceSettings::DistanceSensor(s) => s.validate(),
             DeviceSettings::Radar(s) => s.validate(),
             DeviceSettings::Lidar(s) => s.validate(),
+            DeviceSettings::RoadSensor(s) => s.validate(),
         }
     }
 }

@@ -29,6 +29,7 @@ mod network;
 pub mod opendrive;
 mod plan;
 mod profile;
+mod tracking;
 
 use core::fmt;
 
@@ -41,6 +42,7 @@ pub use network::{
 };
 pub use plan::{Curve, ParamRange, PlanPose, Segment};
 pub use profile::{Cubic, Profile};
+pub use tracking::{LaneTracking, lane_centre, lane_curvature, travel_direction};
 
 pub(crate) use plan::cubic_length;
 

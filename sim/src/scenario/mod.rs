@@ -26,6 +26,7 @@ mod car;
 mod car_programmes;
 mod fit;
 mod lane;
+mod lane_departure;
 mod metrics;
 mod plausibility;
 mod programme;
@@ -40,6 +41,7 @@ use std::time::Instant;
 
 pub use fit::{Circle, fit_circle};
 pub use lane::{LaneSection, double_lane_change};
+pub use lane_departure::{DepartureMeter, LaneDeparture, Side};
 pub use metrics::{MotionMeter, motion_metrics};
 pub use programme::PROGRAMME_TAIL;
 

@@ -3,6 +3,7 @@
 //! one world.
 
 use crate::diff_wheels::RobotId;
+use crate::lane_following::{FollowCommand, FollowStatus};
 use crate::programme::{Cursor, DriverCommand, WheelSpeeds};
 use crate::simulation::Simulation;
 use crate::vehicle::VehicleId;
@@ -25,6 +26,15 @@ struct Follower<'w, C, I> {
     cursor: Cursor<'w, C>,
 }
 
+/// A car's lane-follower commands and where it is in them.
+struct LaneCursor<'w> {
+    id: VehicleId,
+    name: &'w str,
+    cursor: Cursor<'w, FollowCommand>,
+    /// The follower's status at the last step, to report each change once.
+    status: FollowStatus,
+}
+
 /// The simulated time the programme of `world` runs (s): the world's `duration`, else the
 /// last step of any programme plus [`PROGRAMME_TAIL`].
 pub(crate) fn duration(world: &WorldDescription) -> f64 {
@@ -32,7 +42,7 @@ pub(crate) fn duration(world: &WorldDescription) -> f64 {
         let last = world
             .cars
             .iter()
-            .map(|c| c.programme.last_time())
+            .map(|c| c.programme.last_time().max(c.lanes.last_time()))
             .chain(world.robot.iter().map(|r| r.programme.last_time()))
             .fold(0.0, f64::max);
         last + PROGRAMME_TAIL
@@ -56,6 +66,18 @@ pub(crate) fn run(
             id,
             name: &c.name,
             cursor: c.programme.cursor(),
+        })
+        .collect();
+    let mut lanes: Vec<LaneCursor<'_>> = world
+        .cars
+        .iter()
+        .zip(sim.car_ids())
+        .filter(|(c, _)| !c.lanes.is_empty())
+        .map(|(c, id)| LaneCursor {
+            id,
+            name: &c.name,
+            cursor: c.lanes.cursor(),
+            status: FollowStatus::Following,
         })
         .collect();
     let mut robot: Option<Follower<'_, WheelSpeeds, RobotId>> = world
@@ -84,6 +106,18 @@ pub(crate) fn run(
                 ));
             }
         }
+        for car in &mut lanes {
+            let due: Vec<FollowCommand> = car.cursor.due(t).map(|(_, c)| *c).collect();
+            for command in due {
+                let applied = match command {
+                    FollowCommand::Follow(request) => sim.follow_lane(car.id, request),
+                    FollowCommand::Stop => sim.stop_following_lane(car.id),
+                };
+                if let Err(e) = applied {
+                    notes.push(format!("{} at {t} s, follow_lane: {e}", car.name));
+                }
+            }
+        }
         if let Some(r) = &mut robot {
             let due: Vec<WheelSpeeds> = r.cursor.due(t).map(|(_, s)| *s).collect();
             let device = sim.world_mut().robot_mut(r.id)?;
@@ -94,6 +128,26 @@ pub(crate) fn run(
             }
         }
         sim.step()?;
+        for car in &mut lanes {
+            let status = sim
+                .lane_follower(car.id)?
+                .map_or(FollowStatus::Following, |f| f.status());
+            if status != car.status {
+                let now = sim.world().time();
+                notes.push(match status {
+                    FollowStatus::Following => format!("{} at {now} s: follows its lane again", car.name),
+                    FollowStatus::OffRoad => format!(
+                        "{} at {now} s, follow_lane: the car is off every road; it is not steered until it is back on one",
+                        car.name
+                    ),
+                    FollowStatus::NoLane(l) => format!(
+                        "{} at {now} s, follow_lane: the road under the car has no lane {l} here; it is not steered",
+                        car.name
+                    ),
+                });
+                car.status = status;
+            }
+        }
         let now = sim.world().time();
         if now >= next_progress {
             progress(now, end);

@@ -19,7 +19,7 @@ use crate::vehicle::VehicleId;
 
 impl Simulation {
     /// Car `id`, to change.
-    fn car_mut(&mut self, id: VehicleId) -> Result<&mut Controlled, SimError> {
+    pub(super) fn car_mut(&mut self, id: VehicleId) -> Result<&mut Controlled, SimError> {
         self.cars
             .iter_mut()
             .find(|c| c.id == id)
@@ -53,8 +53,14 @@ impl Simulation {
                 Some(radar) => Some(self.world.scene(car.id, radar)?),
                 None => None,
             };
-            car.devices
-                .refresh(&chassis, now_ms, scene.as_ref(), solids.as_ref(), car.id);
+            car.devices.refresh(
+                &chassis,
+                now_ms,
+                scene.as_ref(),
+                solids.as_ref(),
+                car.id,
+                &self.world.config().roads,
+            );
         }
         Ok(())
     }

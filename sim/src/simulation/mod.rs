@@ -9,6 +9,7 @@
 //! recording of every vehicle that gives a run's telemetry, metrics and replay.
 
 mod devices;
+mod lanes;
 mod recording;
 
 use std::path::{Path, PathBuf};
@@ -21,6 +22,7 @@ use crate::devices::CarDevices;
 use crate::diff_wheels::{DifferentialWheelsParams, RobotId, RobotMode, RobotPlacement};
 use crate::error::{ParamError, SimError};
 use crate::keyboard::Keyboard;
+use crate::lane_following::LaneFollower;
 use crate::report::OutputError;
 use crate::scenario::RunReport;
 use crate::telemetry::TelemetryLog;
@@ -54,6 +56,8 @@ struct Controlled {
     sampled: bool,
     devices: CarDevices,
     keyboard: Keyboard,
+    /// Its built-in lane-following driver, while it follows a lane.
+    follower: Option<LaneFollower>,
 }
 
 /// A robot's handle and name.
@@ -202,6 +206,7 @@ impl Simulation {
             sampled: false,
             devices: built.devices,
             keyboard: built.keyboard,
+            follower: None,
         });
         Ok((id, built.report))
     }
@@ -403,6 +408,10 @@ impl Simulation {
                 Sensors::unsampled(t)
             };
             car.sampled = true;
+            if let Some(follower) = &mut car.follower {
+                let state = self.world.vehicle(car.id)?.state();
+                follower.drive(&self.world.config().roads, state, t, &mut car.driver);
+            }
             let commands = *car.driver.step(&sensors);
             self.world.vehicle_mut(car.id)?.set_commands(&commands);
         }

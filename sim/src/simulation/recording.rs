@@ -9,7 +9,7 @@ use crate::config::Outline;
 use crate::diff_wheels::RobotId;
 use crate::replay::Recorder;
 use crate::report::{self, OutputError};
-use crate::scenario::{Metric, MotionMeter, RunReport, ScenarioResult};
+use crate::scenario::{DepartureMeter, Metric, MotionMeter, RunReport, ScenarioResult};
 use crate::telemetry::{
     CsvWriter, DeviceLog, DeviceRow, Sample, Telemetry, TelemetryLog, VehicleKind,
 };
@@ -152,8 +152,25 @@ impl Recording {
         let mut notes = Vec::new();
         for v in &self.vehicles {
             let mut meter = MotionMeter::new();
-            v.log.for_each(|row| meter.push(&Sample::from_row(row)))?;
+            let roads = &sim.world().config().roads;
+            let mut departures = match v.target {
+                Target::Car(id) if !roads.is_empty() => {
+                    sim.driver(id).ok().map(|d| DepartureMeter::new(d.params()))
+                }
+                _ => None,
+            };
+            v.log.for_each(|row| {
+                let sample = Sample::from_row(row);
+                meter.push(&sample);
+                if let Some(d) = &mut departures {
+                    d.push(roads, sample.time, sample.x, sample.y, sample.yaw);
+                }
+            })?;
             metrics.extend(meter.metrics().into_iter().map(|m| m.of(&v.name)));
+            if let Some(d) = &departures {
+                metrics.extend(d.metrics().into_iter().map(|m| m.of(&v.name)));
+                notes.extend(d.notes(&v.name));
+            }
             if let Some(e) = v.log.spill_error() {
                 notes.push(format!(
                     "{}: the telemetry stayed in memory, its temporary file failed: {e}",

@@ -12,9 +12,9 @@ use super::ray_devices::{
 };
 use super::read::{Section, missing};
 use crate::devices::{
-    Axes, CAR_DEVICE_NAMES, CameraSettings, DeviceKind, DeviceSettings, DeviceSpec,
-    DisplaySettings, GpsSettings, InertialUnitSettings, LookupTable, Occlusion,
-    RecognitionSettings, TriaxialSettings,
+    Axes, CAR_DEVICE_NAMES, CameraSettings, DEFAULT_LOOKAHEAD, DeviceKind, DeviceSettings,
+    DeviceSpec, DisplaySettings, GpsSettings, InertialUnitSettings, LookupTable, Occlusion,
+    RecognitionSettings, RoadSensorSettings, TriaxialSettings,
 };
 use crate::error::ParamError;
 
@@ -47,6 +47,8 @@ const CAMERA: [&str; 8] = [
     "projection",
     "recognition",
 ];
+/// The `RoadSensor` fields (a project extension).
+const ROAD_SENSOR: [&str; 1] = ["lookahead"];
 /// The `Display` fields.
 const DISPLAY: [&str; 2] = ["width", "height"];
 /// The `Recognition` fields.
@@ -103,6 +105,7 @@ fn read_device(d: &Section<'_, '_>, model: Model) -> Result<DeviceSpec, WorldFil
         DeviceKind::DistanceSensor => &DISTANCE_SENSOR,
         DeviceKind::Radar => &RADAR,
         DeviceKind::Lidar => &LIDAR,
+        DeviceKind::RoadSensor => &ROAD_SENSOR,
     };
     let allowed: Vec<&str> = COMMON.iter().chain(fields).copied().collect();
     d.check_keys(&allowed)?;
@@ -123,6 +126,9 @@ fn read_device(d: &Section<'_, '_>, model: Model) -> Result<DeviceSpec, WorldFil
         DeviceKind::DistanceSensor => DeviceSettings::DistanceSensor(read_distance_sensor(d)?),
         DeviceKind::Radar => DeviceSettings::Radar(read_radar(d)?),
         DeviceKind::Lidar => DeviceSettings::Lidar(read_lidar(d)?),
+        DeviceKind::RoadSensor => DeviceSettings::RoadSensor(RoadSensorSettings {
+            lookahead: d.number("lookahead")?.unwrap_or(DEFAULT_LOOKAHEAD),
+        }),
     };
     settings.validate().map_err(|e| invalid(d, &e))?;
     let mut spec = DeviceSpec::new(settings);

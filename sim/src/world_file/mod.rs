@@ -32,6 +32,7 @@
 mod bodies;
 mod devices;
 mod error;
+mod lane_programme;
 mod looks;
 mod overrides;
 mod programme;
@@ -164,7 +165,9 @@ impl WorldDescription {
 
     /// True when a car or the robot has a programme.
     pub fn has_programme(&self) -> bool {
-        self.cars.iter().any(|c| !c.programme.is_empty())
+        self.cars
+            .iter()
+            .any(|c| !c.programme.is_empty() || !c.lanes.is_empty())
             || self.robot.as_ref().is_some_and(|r| !r.programme.is_empty())
     }
 }
@@ -342,7 +345,7 @@ pub(crate) fn parse_with(
     };
     let mut cars = Vec::with_capacity(car_sections.len());
     for c in &car_sections {
-        cars.push(vehicle::read_vehicle(c, &mut warnings)?);
+        cars.push(vehicle::read_vehicle(c, &config.roads, &mut warnings)?);
     }
     let robot_section = root.table("differential_wheels")?;
     let robot = robot_section.as_ref().map(robot::read_robot).transpose()?;

@@ -10,14 +10,15 @@ use crate::programme::{DriverCommand, Programme, Step, WheelSpeeds};
 use crate::simulation::MAX_DURATION;
 
 use super::error::{NameSet, WorldFileError, WorldFileErrorKind};
+use super::lane_programme::FOLLOW_KEYS;
 use super::read::Section;
 
 /// The key of a programme in `[vehicle]` and `[differential_wheels]`.
 pub(crate) const PROGRAMME: &str = "programme";
 /// The key of a step's time.
-const AT: &str = "at";
+pub(crate) const AT: &str = "at";
 /// The key of a step's key press (the controller's keyboard).
-const KEY: &str = "key";
+pub(crate) const KEY: &str = "key";
 
 const INDICATORS: [(&str, IndicatorState); 3] = [
     ("off", IndicatorState::Off),
@@ -32,7 +33,7 @@ const WIPER_MODES: [(&str, WiperMode); 4] = [
 ];
 
 /// The steps of `[[<s>.programme]]`, each with its `at` and at least one other key.
-fn steps<'a, 'i>(
+pub(crate) fn steps<'a, 'i>(
     s: &Section<'a, 'i>,
     keys: &[&str],
 ) -> Result<Vec<(f64, Section<'a, 'i>)>, WorldFileError> {
@@ -115,19 +116,29 @@ fn flag(step: &Section<'_, '_>, key: &str) -> Result<bool, WorldFileError> {
     Ok(step.boolean(key)?.unwrap_or(false))
 }
 
+/// Every key a car's programme step may have.
+fn step_keys() -> Vec<&'static str> {
+    [AT, KEY]
+        .into_iter()
+        .chain(DriverCommand::KEYS)
+        .chain(FOLLOW_KEYS)
+        .collect()
+}
+
 /// Reads the programme of a car section `s`; `gears` is the car's highest forward gear, for
 /// the range of `gear`.
 pub(crate) fn read_car_programme(
     s: &Section<'_, '_>,
     gears: i32,
 ) -> Result<Programme<DriverCommand>, WorldFileError> {
-    let keys: Vec<&str> = [AT, KEY].into_iter().chain(DriverCommand::KEYS).collect();
+    let keys = step_keys();
     let mut out = Vec::new();
     for (at, step) in steps(s, &keys)? {
         let mut commands = Vec::new();
         for (key, ..) in step.entries() {
             let command = match key {
                 AT | KEY => continue,
+                k if FOLLOW_KEYS.contains(&k) => continue,
                 "cruising_speed" => {
                     DriverCommand::CruisingSpeed(number_in(&step, key, f64::MIN, f64::MAX)?)
                 }
@@ -174,7 +185,7 @@ pub(crate) fn read_car_programme(
 /// The keys the programme of car section `s` presses (`key = "A"`, `"CONTROL+UP"` … or a
 /// Webots key code), in file order.
 pub(crate) fn read_car_keys(s: &Section<'_, '_>) -> Result<Vec<KeyPress>, WorldFileError> {
-    let keys: Vec<&str> = [AT, KEY].into_iter().chain(DriverCommand::KEYS).collect();
+    let keys = step_keys();
     let mut out = Vec::new();
     for (at, step) in steps(s, &keys)? {
         let code = match (step.string(KEY), step.number(KEY)) {

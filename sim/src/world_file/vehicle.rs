@@ -15,13 +15,16 @@ use super::devices::{DEVICE, read_devices};
 use super::error::{
     NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, closest, model_names,
 };
+use super::lane_programme::read_lane_programme;
 use super::programme::{PROGRAMME, read_car_keys, read_car_programme};
 use super::read::{Section, as_f64, describe};
 use super::tyre;
 use crate::devices::DeviceSpec;
 use crate::error::ParamError;
 use crate::keyboard::KeyPress;
+use crate::lane_following::FollowCommand;
 use crate::programme::Programme;
+use crate::road::RoadNetwork;
 use crate::vehicle::{Mounting, TyreChoice, VehicleSpec};
 
 /// The key of a vehicle's name in `[vehicle]` and `[differential_wheels]`.
@@ -85,6 +88,9 @@ pub struct CarDescription {
     pub name: String,
     /// Its timed driver commands (`[[vehicle.programme]]`), empty if none.
     pub programme: Programme,
+    /// Its lane follower's commands (`follow_lane`, `lane` … in `[[vehicle.programme]]`),
+    /// empty if none.
+    pub lanes: Programme<FollowCommand>,
     /// The keys its programme presses for the controller's keyboard (`key`).
     pub keys: Vec<KeyPress>,
     /// Its sensor devices (`[[vehicle.device]]`), in file order, empty if none.
@@ -115,6 +121,7 @@ impl CarDescription {
                 brake_balance: BrakeBalance::Equal,
                 name: model.webots_name().to_string(),
                 programme: Programme::default(),
+                lanes: Programme::default(),
                 keys: Vec::new(),
                 devices: Vec::new(),
                 seed: 0,
@@ -139,6 +146,7 @@ fn top_keys() -> impl Iterator<Item = &'static str> {
 /// Reads `[vehicle]`, appending the validation warnings to `warnings`.
 pub(crate) fn read_vehicle(
     s: &Section<'_, '_>,
+    roads: &RoadNetwork,
     warnings: &mut Vec<WorldWarning>,
 ) -> Result<CarDescription, WorldFileError> {
     let model = match s.string("model")? {
@@ -263,6 +271,7 @@ pub(crate) fn read_vehicle(
     let name = s.string(NAME)?.unwrap_or("").to_string();
     let gears = i32::try_from(params.gear_ratios.len().saturating_sub(1)).unwrap_or(i32::MAX);
     let programme = read_car_programme(s, gears)?;
+    let lanes = read_lane_programme(s, roads)?;
     let keys = read_car_keys(s)?;
     let devices = read_devices(s, model)?;
     let seed = s.unsigned(SEED)?.unwrap_or(0);
@@ -281,6 +290,7 @@ pub(crate) fn read_vehicle(
         brake_balance,
         name,
         programme,
+        lanes,
         keys,
         devices,
         seed,
