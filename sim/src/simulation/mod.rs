@@ -15,9 +15,12 @@ use std::path::{Path, PathBuf};
 
 use vehicle_model::{ControlMode, Driver, Gear, ParamReport, Sensors};
 
+use std::sync::Arc;
+
 use crate::appearance::Appearances;
 use crate::car_builder::CarBuilder;
 use crate::devices::CarDevices;
+use crate::devices::camera::roads::Patch;
 use crate::diff_wheels::{DifferentialWheelsParams, RobotId, RobotMode, RobotPlacement};
 use crate::error::{ParamError, SimError};
 use crate::keyboard::Keyboard;
@@ -117,6 +120,8 @@ pub struct Simulation {
     recording: Option<Recording>,
     /// How the world's things look to the cameras.
     appearances: Appearances,
+    /// The roads as the cameras see them, built at the first render (the roads never move).
+    road_patches: Option<Arc<[Patch]>>,
 }
 
 impl Simulation {
@@ -131,6 +136,7 @@ impl Simulation {
             duration: None,
             recording: None,
             appearances: Appearances::default(),
+            road_patches: None,
         }
     }
 
