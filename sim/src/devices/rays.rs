@@ -40,6 +40,9 @@ pub(crate) struct RadarEcho {
     pub half_length: f64,
     /// Its rapier bodies: a ray stopping on one of them reached it.
     pub bodies: Vec<RigidBodyHandle>,
+    /// Its colliders that belong to no body (a static box's, a ramp's): a ray stopping on
+    /// one of them reached it too.
+    pub colliders: Vec<ColliderHandle>,
 }
 
 /// The world without one car: what that car's ray devices see after a step.
@@ -69,6 +72,11 @@ impl<'a> Scene<'a> {
     /// The radar targets.
     pub(crate) fn echoes(&self) -> &[RadarEcho] {
         &self.echoes
+    }
+
+    /// True if a ray stopping on `collider` reached the target `echo`.
+    pub(crate) fn reaches(&self, collider: ColliderHandle, echo: &RadarEcho) -> bool {
+        echo.colliders.contains(&collider) || self.belongs(collider, &echo.bodies)
     }
 
     /// True if `collider` belongs to one of `bodies`.
