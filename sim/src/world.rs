@@ -295,8 +295,9 @@ impl World {
     }
 
     /// The world as the ray devices of car `own` see it after the last step (its own bodies
-    /// transparent), with the other cars, the dynamic boxes and the static boxes and ramps of
-    /// `radarCrossSection` > 0 as radar targets, in that order, when `radar` is true.
+    /// transparent), with the other cars, the dynamic boxes, the static boxes and ramps and
+    /// the robots of `radarCrossSection` > 0 as radar targets, in that order, when `radar` is
+    /// true.
     pub(crate) fn scene(&self, own: VehicleId, radar: bool) -> Result<Scene<'_>, SimError> {
         let echoes = if radar {
             let boxes = self
@@ -316,6 +317,26 @@ impl World {
                         bodies: vec![h],
                         colliders: Vec::new(),
                     })
+                });
+            let robots = self
+                .robots
+                .iter()
+                .filter(|r| r.radar_cross_section() > 0.0)
+                .map(|r| {
+                    let (p, position) = (r.params(), r.pose().position);
+                    // The solid the camera draws: a cylinder of the wheels' radius across the
+                    // axle, standing on the ground under the axle.
+                    let half = Vector3::new(p.wheel_radius, p.axle_length / 2.0, p.wheel_radius);
+                    RadarEcho {
+                        position,
+                        velocity: r.velocity(&self.physics),
+                        cross_section: r.radar_cross_section(),
+                        centre: position + Vector3::new(0.0, 0.0, p.wheel_radius),
+                        radius: half.norm(),
+                        half_length: p.wheel_radius,
+                        bodies: r.bodies(),
+                        colliders: Vec::new(),
+                    }
                 });
             let statics = self.obstacles.iter().filter_map(|&(i, h)| {
                 let o = self.config.obstacles.get(i)?;
@@ -351,6 +372,7 @@ impl World {
                 })
                 .chain(boxes)
                 .chain(statics)
+                .chain(robots)
                 .collect()
         } else {
             Vec::new()

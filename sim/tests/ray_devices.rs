@@ -539,3 +539,28 @@ fn radar_sees_static_boxes_and_ramps_with_a_cross_section() {
         assert!(e.to_string().contains("w.toml"), "{e}");
     }
 }
+
+#[test]
+fn radar_sees_a_robot_with_a_cross_section() {
+    // A DifferentialWheels robot at rest 12 m ahead (kinematics mode), 1.5 m²: a target at its
+    // origin (the ground projection of its axle's middle).
+    let robot = "[differential_wheels]\ntranslation = [12, 1, 0]\nradarCrossSection = 1.5\n";
+    let (sim, ids) = radar_world("", &[], robot);
+    let t = targets(&sim, ids[0], "radar");
+    assert_eq!(t.len(), 1, "{t:?}");
+    let (p, _) = origin(&sim, ids[0]);
+    let at = sim.world().robots()[0].pose().position;
+    // Tolerance: the same f64 arithmetic on the same positions.
+    assert!((t[0].distance - (at - p).norm()).abs() < 1e-9, "{t:?}");
+    assert!((t[0].received_power - default_power_dbm(1.5, t[0].distance)).abs() < 1e-9);
+    let e = world_file::parse_str(
+        "w.toml",
+        "[differential_wheels]\nradarCrossSection = -0.5\n",
+    )
+    .expect_err("refused");
+    assert_eq!(
+        e.key.as_deref(),
+        Some("differential_wheels.radarCrossSection"),
+        "{e}"
+    );
+}

@@ -212,13 +212,19 @@ impl Simulation {
         Ok((id, built.report))
     }
 
-    /// Adds the DifferentialWheels robot of `robot` (its parameters, mode, placement and name).
+    /// Adds the DifferentialWheels robot of `robot` (its parameters, mode, placement, name and
+    /// `radarCrossSection`).
     ///
     /// # Errors
     /// [`SimError::Param`] for an invalid field; [`SimError::DuplicateName`];
     /// [`SimError::Recording`] once a recording has started.
     pub fn add_robot(&mut self, robot: &RobotDescription) -> Result<RobotId, SimError> {
-        self.add_differential_wheels(robot.params, robot.mode, robot.placement, &robot.name)
+        // Checked before the robot is added, so that a refused one leaves nothing behind.
+        let rcs = ParamError::non_negative("radarCrossSection", robot.radar_cross_section)?;
+        let id =
+            self.add_differential_wheels(robot.params, robot.mode, robot.placement, &robot.name)?;
+        self.world.robot_mut(id)?.set_radar_cross_section(rcs)?;
+        Ok(id)
     }
 
     /// Adds a DifferentialWheels robot named `name` (see [`World::add_differential_wheels`]).
