@@ -4,7 +4,7 @@
 
 use proto_geom::nalgebra::{Point3, Vector3};
 
-use super::raster::shade;
+use super::raster::{bytes, shade};
 use crate::appearance::{ASPHALT_COLOR, VERGE_COLOR};
 use crate::road::{LaneKind, RoadNetwork};
 use crate::world::ROAD_LIFT;
@@ -22,15 +22,13 @@ const PATCH_TRIANGLES: usize = 64;
 /// both sides and recognised as nothing (as the ground).
 #[derive(Debug, Clone)]
 pub(crate) struct Patch {
-    /// Its colour (red, green, blue, each in [0, 1]).
-    pub colour: [f64; 3],
     /// The centre of a sphere around its triangles (m, world).
     pub centre: Point3<f64>,
     /// That sphere's radius (m).
     pub radius: f64,
-    /// Its triangles (m, world), each with its brightness under the default light
+    /// Its triangles (m, world), each with its colour's bytes under the default light
     /// ([`shade`] of its upward normal).
-    pub triangles: Vec<([Point3<f64>; 3], f64)>,
+    pub triangles: Vec<([Point3<f64>; 3], [u8; 3])>,
 }
 
 /// The patches of every road of `roads`: the lane surfaces first, then the lines above them.
@@ -61,7 +59,7 @@ pub(crate) fn patches(roads: &RoadNetwork) -> Vec<Patch> {
 /// to `out` as patches of at most [`PATCH_TRIANGLES`]; degenerate triangles are dropped.
 fn split(colour: [f64; 3], vertices: &[Point3<f64>], triangles: &[[u32; 3]], out: &mut Vec<Patch>) {
     for chunk in triangles.chunks(PATCH_TRIANGLES) {
-        let triangles: Vec<([Point3<f64>; 3], f64)> = chunk
+        let triangles: Vec<([Point3<f64>; 3], [u8; 3])> = chunk
             .iter()
             .filter_map(|t| {
                 let p = t.map(|k| vertices.get(k as usize).copied());
@@ -71,7 +69,7 @@ fn split(colour: [f64; 3], vertices: &[Point3<f64>], triangles: &[[u32; 3]], out
                 let n = (b - a).cross(&(c - a)).try_normalize(1e-12)?;
                 // Seen from above, whichever way the strip winds.
                 let up = if n.z < 0.0 { -n } else { n };
-                Some(([a, b, c], shade(&up)))
+                Some(([a, b, c], bytes(&colour, shade(&up))))
             })
             .collect();
         if triangles.is_empty() {
@@ -86,7 +84,6 @@ fn split(colour: [f64; 3], vertices: &[Point3<f64>], triangles: &[[u32; 3]], out
             hi = hi.sup(&p.coords);
         }
         out.push(Patch {
-            colour,
             centre: Point3::from((lo + hi) / 2.0),
             radius: (hi - lo).norm() / 2.0,
             triangles,
