@@ -23,7 +23,7 @@ use ackermann::{DriveType, Geometry, PerWheel, WheelAngles};
 use benches::control::{ControlLoop, LoopMode};
 use benches::fixtures;
 use benches::peer::{PeerParams, RayCastCar};
-use benches::scenes::{CarScene, RobotScene};
+use benches::scenes::{CarScene, RobotScene, ring_road_world};
 use powertrain::{Engine, EngineType, LimitedSlip, split_torque};
 use sim::{Mounting, TyreChoice};
 use vehicle_model::{ContactVelocity, Linearised, MagicFormula, Real, TransientSlip, WheelDrive};
@@ -121,6 +121,12 @@ const CASES: &[Case] = &[
         function: "cg_car_step",
         steps: 100,
         run: run_car::<{ TORQUE }>,
+    },
+    Case {
+        name: "sim_car_speed_road_1",
+        function: "cg_car_step",
+        steps: 100,
+        run: run_road_car,
     },
     Case {
         name: "sim_car_speed_joints_1",
@@ -363,6 +369,25 @@ fn run_car<const TORQUE_MODE: bool>(steps: u64) {
         LoopMode::Speed
     };
     let mut scene = CarScene::new(1, mode).unwrap();
+    for _ in 0..SETTLE_STEPS {
+        scene.step().unwrap();
+    }
+    for _ in 0..steps {
+        cg_car_step(&mut scene);
+    }
+}
+
+/// The speed-mode car of `run_car` on the ring road of `scenes::ring_road_world`: all four
+/// wheels on the road's lane meshes at every step (compare with `sim_car_speed_1`).
+fn run_road_car(steps: u64) {
+    let mut scene = CarScene::in_world(
+        ring_road_world().unwrap(),
+        1,
+        LoopMode::Speed,
+        &TyreChoice::default(),
+        Mounting::Cast,
+    )
+    .unwrap();
     for _ in 0..SETTLE_STEPS {
         scene.step().unwrap();
     }

@@ -10,6 +10,10 @@ use crate::error::ParamError;
 
 /// The ground's colour (linear RGB, each in [0, 1]): the replay's ground material.
 pub const GROUND_COLOR: [f64; 3] = [0.3, 0.33, 0.3];
+/// A driving lane's colour, to a camera and in the replay: asphalt, a dark grey.
+pub const ASPHALT_COLOR: [f64; 3] = [0.18, 0.18, 0.19];
+/// Any other lane's (a border, a shoulder, a sidewalk): a lighter grey.
+pub const VERGE_COLOR: [f64; 3] = [0.45, 0.45, 0.43];
 /// The static boxes' and ramps' default colour: the replay's concrete.
 pub const OBSTACLE_COLOR: [f64; 3] = [0.55, 0.55, 0.52];
 /// The dynamic boxes' default colour: the replay's wood.

@@ -31,6 +31,8 @@ pub enum Obstacle {
         yaw: f64,
         /// Coulomb friction (dimensionless, 0 to 100); `None` = the ground's.
         friction: Option<f64>,
+        /// Webots' `radarCrossSection` (m², ≥ 0; 0, the default: radars do not see it).
+        radar_cross_section: f64,
     },
     /// A wedge rising from the ground: a rectangle of `length` × `width` whose far edge is
     /// `height` above its near edge, with a vertical back face.
@@ -47,6 +49,8 @@ pub enum Obstacle {
         height: f64,
         /// Coulomb friction (dimensionless, 0 to 100); `None` = the ground's.
         friction: Option<f64>,
+        /// Webots' `radarCrossSection` (m², ≥ 0; 0, the default: radars do not see it).
+        radar_cross_section: f64,
     },
 }
 
@@ -77,10 +81,64 @@ impl Obstacle {
         }
     }
 
+    /// Its `radarCrossSection` (m², ≥ 0; 0: radars do not see it).
+    pub fn radar_cross_section(&self) -> f64 {
+        match *self {
+            Obstacle::Box {
+                radar_cross_section,
+                ..
+            }
+            | Obstacle::Ramp {
+                radar_cross_section,
+                ..
+            } => radar_cross_section,
+        }
+    }
+
     /// Its Coulomb friction; `None` = the ground's.
     pub fn friction(&self) -> Option<f64> {
         match *self {
             Obstacle::Box { friction, .. } | Obstacle::Ramp { friction, .. } => friction,
+        }
+    }
+
+    /// The centre (m, world) and radius (m) of a sphere around it: what a radar's field of
+    /// view must meet for it to be a candidate target.
+    pub fn bounding_sphere(&self) -> (Point3<f64>, f64) {
+        match *self {
+            Obstacle::Box {
+                center,
+                half_extents,
+                ..
+            } => (center, half_extents.norm()),
+            Obstacle::Ramp {
+                length,
+                width,
+                height,
+                ..
+            } => {
+                let (origin, yaw) = self.placement();
+                // The wedge's box: x from 0 to `length`, y ±width/2, z from 0 to `height`.
+                let local = Vector3::new(length / 2.0, 0.0, height / 2.0);
+                let (s, c) = yaw.sin_cos();
+                let centre = origin
+                    + Vector3::new(
+                        c * local.x - s * local.y,
+                        s * local.x + c * local.y,
+                        local.z,
+                    );
+                let radius = Vector3::new(length, width, height).norm() / 2.0;
+                (centre, radius)
+            }
+        }
+    }
+
+    /// Half its length along its own x axis (m): a radar target nearer than `minRange` by
+    /// more than this is not reported.
+    pub fn half_length(&self) -> f64 {
+        match *self {
+            Obstacle::Box { half_extents, .. } => half_extents.x,
+            Obstacle::Ramp { length, .. } => length / 2.0,
         }
     }
 
@@ -108,7 +166,9 @@ impl Obstacle {
                 half_extents,
                 yaw,
                 friction,
+                radar_cross_section,
             } => {
+                ParamError::non_negative("obstacle.box.radarCrossSection", *radar_cross_section)?;
                 for c in center.iter() {
                     ParamError::within("obstacle.box.center", *c, plausible::POSITION)?;
                 }
@@ -127,7 +187,9 @@ impl Obstacle {
                 width,
                 height,
                 friction,
+                radar_cross_section,
             } => {
+                ParamError::non_negative("obstacle.ramp.radarCrossSection", *radar_cross_section)?;
                 for c in start.iter() {
                     ParamError::within("obstacle.ramp.start", *c, plausible::POSITION)?;
                 }
@@ -416,6 +478,7 @@ mod tests {
             width: 3.0,
             height: -1.0,
             friction: None,
+            radar_cross_section: 0.0,
         });
         let e = c.validate().unwrap_err();
         assert_eq!((e.field, e.value), ("obstacle.ramp.height", -1.0));
@@ -441,6 +504,7 @@ mod tests {
             width: 4.0,
             height: 1.0,
             friction: Some(0.5),
+            radar_cross_section: 0.0,
         };
         assert_eq!(
             ramp.placement(),
@@ -462,6 +526,7 @@ mod tests {
             half_extents: Vector3::new(0.5, 1.0, 3.0),
             yaw: 0.0,
             friction: None,
+            radar_cross_section: 0.0,
         };
         assert_eq!(wall.placement(), (Point3::new(1.0, 2.0, 3.0), 0.0));
         assert_eq!(wall.friction(), None);
@@ -478,6 +543,7 @@ mod tests {
                     half_extents: Vector3::new(1.0, 2.0, 0.5),
                     yaw: core::f64::consts::FRAC_PI_2,
                     friction: None,
+                    radar_cross_section: 0.0,
                 },
                 Obstacle::Ramp {
                     start: Point2::origin(),
@@ -486,6 +552,7 @@ mod tests {
                     width: 4.0,
                     height: 1.0,
                     friction: None,
+                    radar_cross_section: 0.0,
                 },
             ],
             bodies: vec![BodySpec {

@@ -3,7 +3,7 @@
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
-use proto_geom::nalgebra::Point2;
+use proto_geom::nalgebra::{Point2, Vector3};
 use rapier3d::na::Unit;
 use rapier3d::parry::query::distance;
 use rapier3d::prelude::{
@@ -52,6 +52,8 @@ pub struct World {
     robots: Vec<DifferentialWheels>,
     /// The dynamic boxes, in `config.bodies` order.
     bodies: Vec<RigidBodyHandle>,
+    /// The static obstacles' colliders, with each one's index in `config.obstacles`.
+    obstacles: Vec<(usize, ColliderHandle)>,
     time_ms: u64,
     last_substeps: usize,
     failure: Option<SimError>,
@@ -74,6 +76,7 @@ impl World {
             vehicles: Vec::new(),
             robots: Vec::new(),
             bodies: Vec::new(),
+            obstacles: Vec::new(),
             time_ms: 0,
             last_substeps: 1,
             failure: None,
@@ -114,7 +117,7 @@ impl World {
             None,
         );
         self.ground.add(ground, Surface::Uniform(mu));
-        for o in &self.config.obstacles {
+        for (i, o) in self.config.obstacles.iter().enumerate() {
             let shape = match *o {
                 Obstacle::Box { half_extents, .. } => {
                     let half = geom::vector(&half_extents);
@@ -140,6 +143,7 @@ impl World {
             let collider = statics(shape, friction).position(geom::pose_xyz_yaw(&at, yaw));
             let handle = self.physics.insert_collider(collider, None);
             self.ground.add(handle, Surface::Uniform(friction));
+            self.obstacles.push((i, handle));
         }
         // Each lane of each lane section is a collider of its own with its own friction: the
         // wheels' code asks the ground for the collider's friction and does not change.
@@ -291,8 +295,9 @@ impl World {
     }
 
     /// The world as the ray devices of car `own` see it after the last step (its own bodies
-    /// transparent), with the other cars and the boxes of `radarCrossSection` > 0 as radar
-    /// targets, in that order, when `radar` is true.
+    /// transparent), with the other cars, the dynamic boxes, the static boxes and ramps and
+    /// the robots of `radarCrossSection` > 0 as radar targets, in that order, when `radar` is
+    /// true.
     pub(crate) fn scene(&self, own: VehicleId, radar: bool) -> Result<Scene<'_>, SimError> {
         let echoes = if radar {
             let boxes = self
@@ -310,8 +315,45 @@ impl World {
                         radius: spec.size.norm() / 2.0,
                         half_length: spec.size.x / 2.0,
                         bodies: vec![h],
+                        colliders: Vec::new(),
                     })
                 });
+            let robots = self
+                .robots
+                .iter()
+                .filter(|r| r.radar_cross_section() > 0.0)
+                .map(|r| {
+                    let (p, position) = (r.params(), r.pose().position);
+                    // The solid the camera draws: a cylinder of the wheels' radius across the
+                    // axle, standing on the ground under the axle.
+                    let half = Vector3::new(p.wheel_radius, p.axle_length / 2.0, p.wheel_radius);
+                    RadarEcho {
+                        position,
+                        velocity: r.velocity(&self.physics),
+                        cross_section: r.radar_cross_section(),
+                        centre: position + Vector3::new(0.0, 0.0, p.wheel_radius),
+                        radius: half.norm(),
+                        half_length: p.wheel_radius,
+                        bodies: r.bodies(),
+                        colliders: Vec::new(),
+                    }
+                });
+            let statics = self.obstacles.iter().filter_map(|&(i, h)| {
+                let o = self.config.obstacles.get(i)?;
+                (o.radar_cross_section() > 0.0).then(|| {
+                    let (centre, radius) = o.bounding_sphere();
+                    RadarEcho {
+                        position: o.placement().0,
+                        velocity: Vector3::zeros(),
+                        cross_section: o.radar_cross_section(),
+                        centre,
+                        radius,
+                        half_length: o.half_length(),
+                        bodies: Vec::new(),
+                        colliders: vec![h],
+                    }
+                })
+            });
             self.vehicles
                 .iter()
                 .filter(|v| v.id() != own && v.radar_cross_section() > 0.0)
@@ -325,9 +367,12 @@ impl World {
                         radius: chassis.box_half_extents.norm(),
                         half_length: chassis.box_half_extents.x,
                         bodies: v.bodies(),
+                        colliders: Vec::new(),
                     }
                 })
                 .chain(boxes)
+                .chain(statics)
+                .chain(robots)
                 .collect()
         } else {
             Vec::new()

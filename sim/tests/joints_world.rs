@@ -68,6 +68,7 @@ fn a_car_drives_up_a_ten_centimetre_step_on_its_wheels() {
         half_extents: Vector3::new(50.0, 5.0, 0.05),
         yaw: 0.0,
         friction: None,
+        radar_cross_section: 0.0,
     };
     let mut sim = Simulation::new(
         World::new(WorldConfig {

@@ -497,3 +497,70 @@ fn radar_sees_boxes_with_a_cross_section() {
     ));
     assert_eq!(key, "body[1].radarCrossSection");
 }
+
+#[test]
+fn radar_sees_static_boxes_and_ramps_with_a_cross_section() {
+    // A static 1 m box of 3 m² 25 m ahead is a target at its centre, a ramp of 4 m² whose low
+    // edge is 40 m ahead (2 m left) one at that edge's middle (its solid's origin); a box of
+    // 0 m² (the default, as in Webots) at 15 m is not, and (occlusion off) hides nothing.
+    let statics = "[[box]]\ntranslation = [25, 0, 0.5]\nsize = [1, 1, 1]\nradarCrossSection = 3\n\
+                   [[ramp]]\nstart = [40, 2]\nlength = 4\nwidth = 2\nheight = 0.5\nradarCrossSection = 4\n\
+                   [[box]]\ntranslation = [15, -3, 0.5]\nsize = [1, 1, 1]\n";
+    let (sim, ids) = radar_world("", &[], statics);
+    let mut t = targets(&sim, ids[0], "radar");
+    assert_eq!(t.len(), 2, "{t:?}");
+    t.sort_by(|a, b| a.distance.total_cmp(&b.distance));
+    let (p, _) = origin(&sim, ids[0]);
+    for (target, (at, rcs)) in t.iter().zip([
+        (Point3::new(25.0, 0.0, 0.5), 3.0),
+        (Point3::new(40.0, 2.0, 0.0), 4.0),
+    ]) {
+        // Tolerance: the same f64 arithmetic on the same positions.
+        assert!(
+            (target.distance - (at - p).norm()).abs() < 1e-9,
+            "{target:?}"
+        );
+        assert!((target.received_power - default_power_dbm(rcs, target.distance)).abs() < 1e-9);
+        // Static: its radial speed is the car's own closing speed along the line (at rest).
+        assert!(target.speed.abs() < 0.05, "{target:?}");
+    }
+    // A negative cross-section is refused at its key, on its line.
+    for (table, key) in [
+        ("box", "box[1].radarCrossSection"),
+        ("ramp", "ramp[1].radarCrossSection"),
+    ] {
+        let text = if table == "box" {
+            "[[box]]\ntranslation = [5, 0, 0.5]\nsize = [1, 1, 1]\nradarCrossSection = -1\n"
+        } else {
+            "[[ramp]]\nstart = [5, 0]\nlength = 4\nwidth = 2\nheight = 0.5\nradarCrossSection = -1\n"
+        };
+        let e = world_file::parse_str("w.toml", text).expect_err("refused");
+        assert_eq!(e.key.as_deref(), Some(key), "{e}");
+        assert!(e.to_string().contains("w.toml"), "{e}");
+    }
+}
+
+#[test]
+fn radar_sees_a_robot_with_a_cross_section() {
+    // A DifferentialWheels robot at rest 12 m ahead (kinematics mode), 1.5 m²: a target at its
+    // origin (the ground projection of its axle's middle).
+    let robot = "[differential_wheels]\ntranslation = [12, 1, 0]\nradarCrossSection = 1.5\n";
+    let (sim, ids) = radar_world("", &[], robot);
+    let t = targets(&sim, ids[0], "radar");
+    assert_eq!(t.len(), 1, "{t:?}");
+    let (p, _) = origin(&sim, ids[0]);
+    let at = sim.world().robots()[0].pose().position;
+    // Tolerance: the same f64 arithmetic on the same positions.
+    assert!((t[0].distance - (at - p).norm()).abs() < 1e-9, "{t:?}");
+    assert!((t[0].received_power - default_power_dbm(1.5, t[0].distance)).abs() < 1e-9);
+    let e = world_file::parse_str(
+        "w.toml",
+        "[differential_wheels]\nradarCrossSection = -0.5\n",
+    )
+    .expect_err("refused");
+    assert_eq!(
+        e.key.as_deref(),
+        Some("differential_wheels.radarCrossSection"),
+        "{e}"
+    );
+}

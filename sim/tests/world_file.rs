@@ -201,6 +201,7 @@ friction = 0.6
                 half_extents: Vector3::new(1.0, 2.0, 0.5),
                 yaw: 0.3,
                 friction: None,
+                radar_cross_section: 0.0,
             },
             Obstacle::Ramp {
                 start: Point2::new(30.0, 0.0),
@@ -209,6 +210,7 @@ friction = 0.6
                 width: 4.0,
                 height: 1.0,
                 friction: Some(0.6),
+                radar_cross_section: 0.0,
             },
         ]
     );

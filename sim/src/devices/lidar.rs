@@ -233,6 +233,36 @@ impl LidarSettings {
         let (theta, phi) = (self.azimuth(j), self.elevation(i));
         Vector3::new(theta.cos() * phi.cos(), theta.sin() * phi.cos(), phi.sin())
     }
+
+    /// Every ray's direction, as [`LidarSettings::direction`] gives it, from the sines and
+    /// cosines of each column's azimuth and each layer's elevation computed once: a 16 × 1800
+    /// image needs 3,632 of them instead of 115,200.
+    fn directions(&self) -> Directions {
+        Directions {
+            columns: (0..self.horizontal_resolution)
+                .map(|j| self.azimuth(j).sin_cos())
+                .collect(),
+            layers: (0..self.number_of_layers)
+                .map(|i| self.elevation(i).sin_cos())
+                .collect(),
+        }
+    }
+}
+
+/// The sines and cosines of a lidar's ray angles (see [`LidarSettings::directions`]).
+struct Directions {
+    /// `(sin θ, cos θ)` of each column's azimuth θ.
+    columns: Vec<(f64, f64)>,
+    /// `(sin φ, cos φ)` of each layer's elevation φ.
+    layers: Vec<(f64, f64)>,
+}
+
+impl Directions {
+    /// The unit direction (device axes) of the ray of layer `i`, column `j` (in range).
+    fn at(&self, i: usize, j: usize) -> Vector3<f64> {
+        let ((st, ct), (sp, cp)) = (self.columns[j], self.layers[i]);
+        Vector3::new(ct * cp, st * cp, sp)
+    }
 }
 
 /// A lidar sample: its range image (m, row-major, layer 0 first, column 0 leftmost; `+∞` where
@@ -262,10 +292,11 @@ impl LidarReading {
         let hres = settings.horizontal_resolution;
         let column_time = f64::from(period_ms) / 1000.0 / f64::from(hres);
         let mut points = Vec::with_capacity(self.range_image.len());
+        let directions = settings.directions();
         for i in 0..settings.number_of_layers {
             for j in 0..hres {
                 let r = f64::from(self.range_image[(i * hres + j) as usize]);
-                let dir = settings.direction(i, j);
+                let dir = directions.at(i as usize, j as usize);
                 let scale = match settings.projection {
                     LidarProjection::Cylindrical => r,
                     LidarProjection::Planar => r / dir.x,
@@ -309,15 +340,16 @@ pub(crate) fn measure(
     rng: &mut SplitMix64,
 ) -> LidarReading {
     let mut range_image = Vec::with_capacity(s.number_of_points());
-    for i in 0..s.number_of_layers {
-        for j in 0..s.horizontal_resolution {
-            let dir = s.direction(i, j);
+    let directions = s.directions();
+    for i in 0..directions.layers.len() {
+        for j in 0..directions.columns.len() {
+            let dir = directions.at(i, j);
             let world = point.rotation * dir;
             // Nothing nearer than `near` is seen: the ray starts there.
             let start = point.position + world * s.near;
-            let hit = scene.cast(&start, &world, s.max_range - s.near);
-            let value = hit.map_or(f64::INFINITY, |h| {
-                let r = s.near + h.distance;
+            let hit = scene.distance(&start, &world, s.max_range - s.near);
+            let value = hit.map_or(f64::INFINITY, |d| {
+                let r = s.near + d;
                 match s.projection {
                     LidarProjection::Cylindrical => r,
                     LidarProjection::Planar => r * dir.x,
@@ -366,6 +398,21 @@ mod tests {
         let edge = webots::VLP16_FOV / 2.0 - step / 2.0;
         assert!((s.azimuth(0) - edge).abs() < 1e-12);
         assert!((s.azimuth(3599) + edge).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_tabulated_directions_are_exactly_the_per_ray_ones() {
+        // The table only hoists the sines and cosines: every component is bit-identical.
+        let s = LidarSettings {
+            tilt_angle: -0.1,
+            ..LidarSettings::velodyne_vlp16()
+        };
+        let d = s.directions();
+        for i in 0..s.number_of_layers {
+            for j in (0..s.horizontal_resolution).step_by(7) {
+                assert_eq!(d.at(i as usize, j as usize), s.direction(i, j));
+            }
+        }
     }
 
     #[test]

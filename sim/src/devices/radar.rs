@@ -246,7 +246,7 @@ fn detect(
         if s.occlusion
             && scene
                 .cast(&point.position, &line, range)
-                .is_some_and(|h| !scene.belongs(h.collider, &echo.bodies))
+                .is_some_and(|h| !scene.reaches(h.collider, echo))
         {
             continue;
         }

@@ -40,6 +40,9 @@ pub(crate) struct RadarEcho {
     pub half_length: f64,
     /// Its rapier bodies: a ray stopping on one of them reached it.
     pub bodies: Vec<RigidBodyHandle>,
+    /// Its colliders that belong to no body (a static box's, a ramp's): a ray stopping on
+    /// one of them reached it too.
+    pub colliders: Vec<ColliderHandle>,
 }
 
 /// The world without one car: what that car's ray devices see after a step.
@@ -71,6 +74,11 @@ impl<'a> Scene<'a> {
         &self.echoes
     }
 
+    /// True if a ray stopping on `collider` reached the target `echo`.
+    pub(crate) fn reaches(&self, collider: ColliderHandle, echo: &RadarEcho) -> bool {
+        echo.colliders.contains(&collider) || self.belongs(collider, &echo.bodies)
+    }
+
     /// True if `collider` belongs to one of `bodies`.
     pub(crate) fn belongs(&self, collider: ColliderHandle, bodies: &[RigidBodyHandle]) -> bool {
         self.physics
@@ -87,18 +95,55 @@ impl<'a> Scene<'a> {
         if max.is_nan() || max <= 0.0 {
             return None;
         }
+        let ray = Ray::new(geom::point(origin), geom::vector(dir));
         let own = &self.own;
         let visible =
             |_: ColliderHandle, c: &Collider| c.parent().is_none_or(|p| !own.contains(&p));
-        let filter = QueryFilter::default().predicate(&visible);
-        let ray = Ray::new(geom::point(origin), geom::vector(dir));
-        let (collider, hit) = self
-            .physics
-            .cast_ray_and_get_normal(&ray, max as f32, true, filter)?;
+        let (collider, hit) =
+            self.physics
+                .cast_ray_and_get_normal(&ray, max as f32, true, self.filter(&visible))?;
         Some(Hit {
             distance: f64::from(hit.time_of_impact),
             normal: geom::to_vector(hit.normal),
             collider,
         })
+    }
+
+    /// The distance (m) of [`Scene::cast`]'s hit, without its normal: what a lidar's ray
+    /// measures, 28,800 times a sample for a 16-layer lidar.
+    pub(crate) fn distance(
+        &self,
+        origin: &Point3<f64>,
+        dir: &Vector3<f64>,
+        max: f64,
+    ) -> Option<f64> {
+        if max.is_nan() || max <= 0.0 {
+            return None;
+        }
+        let ray = Ray::new(geom::point(origin), geom::vector(dir));
+        let own = &self.own;
+        let visible =
+            |_: ColliderHandle, c: &Collider| c.parent().is_none_or(|p| !own.contains(&p));
+        let (_, toi) = self
+            .physics
+            .cast_ray(&ray, max as f32, true, self.filter(&visible))?;
+        Some(f64::from(toi))
+    }
+
+    /// The query filter that makes the own car transparent: rapier's test of one excluded body
+    /// (a cast car has one), else the predicate `visible` (a car on joints has five bodies),
+    /// which costs a dynamic call and a search per collider the ray's tree walk reaches.
+    fn filter<'f>(
+        &self,
+        visible: &'f dyn Fn(ColliderHandle, &Collider) -> bool,
+    ) -> QueryFilter<'f> {
+        match self.own.as_slice() {
+            [] => QueryFilter::default(),
+            [body] => QueryFilter::default().exclude_rigid_body(*body),
+            _ => QueryFilter {
+                predicate: Some(visible),
+                ..QueryFilter::default()
+            },
+        }
     }
 }

@@ -21,12 +21,12 @@ mod physics;
 
 use core::fmt;
 
-use proto_geom::nalgebra::Point3;
+use proto_geom::nalgebra::{Point3, Vector3};
 use rapier3d::prelude::{PhysicsWorld, RigidBodyHandle};
 
 pub use params::{DifferentialWheelsParams, RobotBody, RobotMode, RobotPlacement};
 
-use crate::error::{BodyOwner, BodyPart, SimError};
+use crate::error::{BodyOwner, BodyPart, ParamError, SimError};
 use crate::rng::SplitMix64;
 use physics::PhysicsParts;
 
@@ -170,6 +170,8 @@ pub struct DifferentialWheels {
     wheel_angles: [f64; 2],
     pose: RobotPose,
     time_ms: u64,
+    /// Webots' `radarCrossSection` of the robot's solid (m², ≥ 0; 0: radars do not see it).
+    radar_cross_section: f64,
 }
 
 impl DifferentialWheels {
@@ -209,7 +211,48 @@ impl DifferentialWheels {
                 heading: placement.heading,
             },
             time_ms,
+            radar_cross_section: 0.0,
         })
+    }
+
+    /// Its `radarCrossSection` (m², ≥ 0; 0, the default: radars do not see it).
+    pub fn radar_cross_section(&self) -> f64 {
+        self.radar_cross_section
+    }
+
+    /// Sets its `radarCrossSection` (m²).
+    ///
+    /// # Errors
+    /// [`ParamError`] if `rcs` is negative or not finite (nothing changes).
+    pub fn set_radar_cross_section(&mut self, rcs: f64) -> Result<(), ParamError> {
+        self.radar_cross_section = ParamError::non_negative("radarCrossSection", rcs)?;
+        Ok(())
+    }
+
+    /// Its rapier bodies (none in kinematics mode).
+    pub(crate) fn bodies(&self) -> Vec<RigidBodyHandle> {
+        match &self.state {
+            ModeState::Physics(parts) => parts.bodies().to_vec(),
+            ModeState::Kinematics { .. } => Vec::new(),
+        }
+    }
+
+    /// The velocity of its origin (m/s, world): its body's in physics mode; in kinematics
+    /// mode the one its wheels' last speeds give, `r·(ω_l + ω_r)/2` along its heading (before
+    /// the slip noise, which moves the pose but is no speed of the robot's).
+    pub(crate) fn velocity(&self, world: &PhysicsWorld) -> Vector3<f64> {
+        match &self.state {
+            ModeState::Physics(parts) => world
+                .bodies
+                .get(parts.bodies()[0])
+                .map_or_else(Vector3::zeros, |b| crate::geom::to_vector(b.linvel())),
+            ModeState::Kinematics { .. } => {
+                let [l, r] = self.wheel_speeds;
+                let v = self.params.wheel_radius * (l + r) / 2.0;
+                let h = self.pose.heading;
+                Vector3::new(v * h.cos(), v * h.sin(), 0.0)
+            }
+        }
     }
 
     /// This robot's handle.

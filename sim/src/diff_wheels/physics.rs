@@ -31,6 +31,11 @@ pub(crate) struct PhysicsParts {
 
 /// What the physics step did to the robot.
 impl PhysicsParts {
+    /// The robot's rapier bodies: its body, then its wheels `[left, right]`.
+    pub(crate) fn bodies(&self) -> [RigidBodyHandle; 3] {
+        [self.body, self.wheels[0], self.wheels[1]]
+    }
+
     /// Which part of the robot the rapier body `handle` is, if any.
     pub(crate) fn part_of(&self, handle: RigidBodyHandle) -> Option<BodyPart> {
         [

@@ -211,8 +211,18 @@ fn add_roads(scene: &mut Scene, world: usize, first: &Recording, lift: f64) {
     if first.roads.is_empty() {
         return;
     }
-    let asphalt = scene.add_material(Material::new("asphalt", [0.18, 0.18, 0.19], 0.9, 0.0));
-    let verge = scene.add_material(Material::new("road_border", [0.45, 0.45, 0.43], 0.9, 0.0));
+    let asphalt = scene.add_material(Material::new(
+        "asphalt",
+        crate::appearance::ASPHALT_COLOR.map(|c| c as f32),
+        0.9,
+        0.0,
+    ));
+    let verge = scene.add_material(Material::new(
+        "road_border",
+        crate::appearance::VERGE_COLOR.map(|c| c as f32),
+        0.9,
+        0.0,
+    ));
     let mut paints: Vec<([f64; 3], usize)> = Vec::new();
     for road in &first.roads.roads {
         let node = scene.add_node(

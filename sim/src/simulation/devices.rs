@@ -8,6 +8,7 @@ use proto_geom::nalgebra::{Isometry3, Translation3};
 
 use super::{Controlled, Simulation};
 use crate::appearance::{Appearance, SceneObject};
+use crate::devices::camera::roads;
 use crate::devices::camera::solids::Solids;
 use crate::devices::{
     ChassisMotion, Device, DeviceSettings, Display, DisplayImage, PixelFormat, save_png,
@@ -33,11 +34,15 @@ impl Simulation {
     pub(super) fn refresh_devices(&mut self) -> Result<(), SimError> {
         let now_ms = self.world.time_ms();
         let gravity = self.world.config().gravity;
-        let solids = self
-            .cars
-            .iter()
-            .any(|c| c.devices.renders_at(now_ms))
-            .then(|| Solids::of(&self.world, &self.appearances));
+        let solids = if self.cars.iter().any(|c| c.devices.renders_at(now_ms)) {
+            let roads = self
+                .road_patches
+                .get_or_insert_with(|| roads::patches(&self.world.config().roads).into())
+                .clone();
+            Some(Solids::of(&self.world, &self.appearances, roads))
+        } else {
+            None
+        };
         for car in &mut self.cars {
             if !car.devices.any_enabled() {
                 continue;

@@ -16,9 +16,12 @@ use std::path::{Path, PathBuf};
 
 use vehicle_model::{ControlMode, Driver, Gear, ParamReport, Sensors};
 
+use std::sync::Arc;
+
 use crate::appearance::Appearances;
 use crate::car_builder::CarBuilder;
 use crate::devices::CarDevices;
+use crate::devices::camera::roads::Patch;
 use crate::diff_wheels::{DifferentialWheelsParams, RobotId, RobotMode, RobotPlacement};
 use crate::error::{ParamError, SimError};
 use crate::keyboard::Keyboard;
@@ -121,6 +124,8 @@ pub struct Simulation {
     recording: Option<Recording>,
     /// How the world's things look to the cameras.
     appearances: Appearances,
+    /// The roads as the cameras see them, built at the first render (the roads never move).
+    road_patches: Option<Arc<[Patch]>>,
 }
 
 impl Simulation {
@@ -135,6 +140,7 @@ impl Simulation {
             duration: None,
             recording: None,
             appearances: Appearances::default(),
+            road_patches: None,
         }
     }
 
@@ -211,13 +217,19 @@ impl Simulation {
         Ok((id, built.report))
     }
 
-    /// Adds the DifferentialWheels robot of `robot` (its parameters, mode, placement and name).
+    /// Adds the DifferentialWheels robot of `robot` (its parameters, mode, placement, name and
+    /// `radarCrossSection`).
     ///
     /// # Errors
     /// [`SimError::Param`] for an invalid field; [`SimError::DuplicateName`];
     /// [`SimError::Recording`] once a recording has started.
     pub fn add_robot(&mut self, robot: &RobotDescription) -> Result<RobotId, SimError> {
-        self.add_differential_wheels(robot.params, robot.mode, robot.placement, &robot.name)
+        // Checked before the robot is added, so that a refused one leaves nothing behind.
+        let rcs = ParamError::non_negative("radarCrossSection", robot.radar_cross_section)?;
+        let id =
+            self.add_differential_wheels(robot.params, robot.mode, robot.placement, &robot.name)?;
+        self.world.robot_mut(id)?.set_radar_cross_section(rcs)?;
+        Ok(id)
     }
 
     /// Adds a DifferentialWheels robot named `name` (see [`World::add_differential_wheels`]).

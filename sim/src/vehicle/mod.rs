@@ -148,6 +148,9 @@ pub struct Vehicle {
     steering_servo: PositionServo,
     /// Webots' `radarCrossSection` of the car's solid (m², ≥ 0; 0: radars do not see it).
     radar_cross_section: f64,
+    /// The lane triangle each wheel's road ray hit last (a cast car's cache, see
+    /// [`cast::RoadHits`]).
+    road_hits: cast::RoadHits,
 }
 
 impl Vehicle {
@@ -202,6 +205,7 @@ impl Vehicle {
                 spec.steering.max_angle,
             ),
             radar_cross_section: 0.0,
+            road_hits: cast::RoadHits::default(),
         })
     }
 

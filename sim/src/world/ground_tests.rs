@@ -35,6 +35,7 @@ fn both_mountings_read_a_ramps_own_friction_in_f64() {
         width: 12.0,
         height: 0.4,
         friction: Some(0.7),
+        radar_cross_section: 0.0,
     };
     let config = WorldConfig {
         ground_friction: 0.5,

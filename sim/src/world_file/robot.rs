@@ -25,8 +25,9 @@ pub(crate) const NODE_FIELDS: [&str; 10] = [
 ];
 
 /// The keys of `[differential_wheels]` that are the simulator's own, not node fields.
-const SIM_KEYS: [&str; 11] = [
+const SIM_KEYS: [&str; 12] = [
     NAME,
+    "radarCrossSection",
     "color",
     "recognitionColors",
     PROGRAMME,
@@ -52,6 +53,9 @@ pub struct RobotDescription {
     pub name: String,
     /// Its timed wheel speeds (`[[differential_wheels.programme]]`), empty if none.
     pub programme: Programme<WheelSpeeds>,
+    /// Webots' `radarCrossSection` of its solid (m², ≥ 0; 0, the default: radars do not see
+    /// it).
+    pub radar_cross_section: f64,
 }
 
 /// The default name of the robot.
@@ -66,6 +70,7 @@ impl Default for RobotDescription {
             placement: RobotPlacement::default(),
             name: ROBOT_NAME.to_string(),
             programme: Programme::default(),
+            radar_cross_section: 0.0,
         }
     }
 }
@@ -147,12 +152,23 @@ pub(crate) fn read_robot(s: &Section<'_, '_>) -> Result<RobotDescription, WorldF
     };
     let name = s.string(NAME)?.unwrap_or(ROBOT_NAME).to_string();
     let programme = read_robot_programme(s, p.max_speed / p.speed_unit)?;
+    let radar_cross_section = s.number("radarCrossSection")?.unwrap_or(0.0);
+    if !(radar_cross_section.is_finite() && radar_cross_section >= 0.0) {
+        return Err(s.error(
+            "radarCrossSection",
+            WorldFileErrorKind::InvalidValue(format!(
+                "{} m²: must be finite and >= 0",
+                Compact(radar_cross_section)
+            )),
+        ));
+    }
     Ok(RobotDescription {
         params: p,
         mode,
         placement,
         name,
         programme,
+        radar_cross_section,
     })
 }
 

@@ -11,16 +11,17 @@ use super::read::{Section, missing, yaw_of};
 /// Keys of `[ground]`.
 pub(crate) const GROUND_KEYS: [&str; 1] = ["friction"];
 /// Keys of each `[[box]]`.
-pub(crate) const BOX_KEYS: [&str; 6] = [
+pub(crate) const BOX_KEYS: [&str; 7] = [
     "translation",
     "size",
     "rotation",
     "friction",
     "color",
     "recognitionColors",
+    "radarCrossSection",
 ];
 /// Keys of each `[[ramp]]`.
-pub(crate) const RAMP_KEYS: [&str; 8] = [
+pub(crate) const RAMP_KEYS: [&str; 9] = [
     "start",
     "rotation",
     "length",
@@ -29,6 +30,7 @@ pub(crate) const RAMP_KEYS: [&str; 8] = [
     "friction",
     "color",
     "recognitionColors",
+    "radarCrossSection",
 ];
 
 /// Reads `basicTimeStep`, `gravity`, `[ground]`, `[[box]]` and `[[ramp]]` into a validated
@@ -77,6 +79,7 @@ pub(crate) fn read_world(root: &Section<'_, '_>) -> Result<WorldConfig, WorldFil
             half_extents: Vector3::from(size.map(|s| s / 2.0)),
             yaw,
             friction: b.number("friction")?,
+            radar_cross_section: b.number("radarCrossSection")?.unwrap_or(0.0),
         });
         validate_last_obstacle(&b, &config)?;
     }
@@ -96,6 +99,7 @@ pub(crate) fn read_world(root: &Section<'_, '_>) -> Result<WorldConfig, WorldFil
             width,
             height,
             friction: r.number("friction")?,
+            radar_cross_section: r.number("radarCrossSection")?.unwrap_or(0.0),
         });
         validate_last_obstacle(&r, &config)?;
     }

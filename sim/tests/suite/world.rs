@@ -129,6 +129,7 @@ fn a_wall_stops_the_car() {
         half_extents: Vector3::new(0.5, 5.0, 1.0),
         yaw: 0.0,
         friction: None,
+        radar_cross_section: 0.0,
     };
     let (mut sim, id) = world_with(vec![wall]);
     sim.driver_mut(id).unwrap().set_cruising_speed(20.0);
@@ -150,6 +151,7 @@ fn the_car_climbs_a_ramp() {
         width: 4.0,
         height: 1.0,
         friction: None,
+        radar_cross_section: 0.0,
     };
     let (mut sim, id) = world_with(vec![ramp]);
     let z0 = sim.telemetry(id).unwrap().state.position.z;

@@ -9,6 +9,7 @@
 
 mod raster;
 mod recognition;
+pub(crate) mod roads;
 pub(crate) mod solids;
 
 use proto_geom::nalgebra::Isometry3;
@@ -204,7 +205,7 @@ impl CameraState {
     ) {
         let View { pose, solids, own } = *view;
         let pin = settings.pinhole();
-        self.frame.render(&pin, pose, &solids.all, own);
+        self.frame.render(&pin, pose, solids, own);
         if image {
             self.has_image = true;
             for (px, rgb) in self.image.chunks_exact_mut(4).zip(&self.frame.rgb) {

@@ -10,7 +10,7 @@
 
 use proto_geom::nalgebra::{Isometry3, Point3, Vector3};
 
-use super::solids::Solid;
+use super::solids::Solids;
 use crate::appearance::GROUND_COLOR;
 use crate::vehicle::VehicleId;
 
@@ -28,7 +28,7 @@ pub(crate) fn shade(n: &Vector3<f64>) -> f64 {
 }
 
 /// A colour (each channel in [0, 1]) at brightness `s`, as bytes.
-fn bytes(colour: &[f64; 3], s: f64) -> [u8; 3] {
+pub(crate) fn bytes(colour: &[f64; 3], s: f64) -> [u8; 3] {
     colour.map(|c| (c * s * 255.0).round().clamp(0.0, 255.0) as u8)
 }
 
@@ -75,14 +75,14 @@ struct Vertex {
 }
 
 impl Frame {
-    /// Renders `solids` (but those of car `own`) and the ground seen by a camera at `pose`
-    /// (camera frame → world, m; x forward, y left, z up) through `pin`, into this frame's
-    /// buffers (reused).
+    /// Renders `solids` (but those of car `own`), the roads and the ground seen by a camera
+    /// at `pose` (camera frame → world, m; x forward, y left, z up) through `pin`, into this
+    /// frame's buffers (reused).
     pub(crate) fn render(
         &mut self,
         pin: &Pinhole,
         pose: &Isometry3<f64>,
-        solids: &[Solid],
+        solids: &Solids,
         own: Option<VehicleId>,
     ) {
         let (w, h) = (pin.width, pin.height);
@@ -94,7 +94,28 @@ impl Frame {
         self.ids.resize(w * h, 0);
         self.ground(pin, pose);
         let to_camera = pose.inverse();
-        for s in solids.iter().filter(|s| own.is_none() || s.owner != own) {
+        // A road has thousands of triangles: a rotation matrix turns a point in 15 flops, the
+        // isometry's quaternion in about twice that.
+        let (turn, shift) = (
+            to_camera.rotation.to_rotation_matrix().into_inner(),
+            to_camera.translation.vector,
+        );
+        for patch in solids.roads.iter() {
+            let centre = to_camera * patch.centre;
+            if centre.x + patch.radius < pin.near || centre.x - patch.radius > pin.far {
+                continue;
+            }
+            for (corners, colour) in &patch.triangles {
+                // Both faces: a road is seen from above, whichever way its strip winds.
+                let p = corners.map(|c| Point3::from(turn * c.coords + shift));
+                self.triangle(pin, &p, *colour, 0);
+            }
+        }
+        for s in solids
+            .all
+            .iter()
+            .filter(|s| own.is_none() || s.owner != own)
+        {
             let local = to_camera * s.pose;
             // Cull the solid whose bounding sphere is wholly behind the near plane or past
             // the far one.

@@ -1,9 +1,13 @@
 //! The world as a camera sees it: every box, ramp, dynamic box, car body and robot as a convex
 //! solid of flat triangles in its own frame, with its pose, colour and recognition fields. The
-//! ground is no solid: the rasteriser draws the plane z = 0 itself.
+//! ground is no solid: the rasteriser draws the plane z = 0 itself. The roads are patches of
+//! triangles ([`super::roads`]), built once and shared.
+
+use std::sync::Arc;
 
 use proto_geom::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 
+use super::roads::Patch;
 use crate::appearance::{
     Appearance, Appearances, BODY_COLOR, OBSTACLE_COLOR, PALETTE, SceneObject,
 };
@@ -38,12 +42,14 @@ pub(crate) struct Solid {
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Solids {
     pub all: Vec<Solid>,
+    /// The roads' surfaces and lines.
+    pub roads: Arc<[Patch]>,
 }
 
 impl Solids {
     /// The solids of `world` as it is now, looking as `looks` says (defaults for the rest:
-    /// [`crate::appearance`]).
-    pub(crate) fn of(world: &World, looks: &Appearances) -> Solids {
+    /// [`crate::appearance`]), with the roads' patches `roads`.
+    pub(crate) fn of(world: &World, looks: &Appearances, roads: Arc<[Patch]>) -> Solids {
         let mut all = Vec::new();
         let mut push = |object: SceneObject,
                         default: [f64; 3],
@@ -115,7 +121,7 @@ impl Solids {
             let colour = PALETTE[(vehicles.len() + i) % PALETTE.len()];
             push(SceneObject::Robot(i), colour, None, pose, corners, faces);
         }
-        Solids { all }
+        Solids { all, roads }
     }
 }
 
