@@ -195,12 +195,14 @@ impl Simulation {
         self.world
             .vehicle_mut(id)?
             .set_radar_cross_section(built.radar_cross_section)?;
+        let mut devices = built.devices;
+        devices.start_at(self.world.time_ms());
         self.cars.push(Controlled {
             id,
             driver: built.driver,
             name,
             sampled: false,
-            devices: built.devices,
+            devices,
             keyboard: built.keyboard,
         });
         Ok((id, built.report))
