@@ -115,6 +115,8 @@ pub struct Simulation {
     /// Simulated time after which the run is over (s).
     duration: Option<f64>,
     recording: Option<Recording>,
+    /// The replay shows the radars' targets ([`crate::replay::overlay`]).
+    replay_overlay: bool,
     /// How the world's things look to the cameras.
     appearances: Appearances,
 }
@@ -130,6 +132,7 @@ impl Simulation {
             robots: Vec::new(),
             duration: None,
             recording: None,
+            replay_overlay: false,
             appearances: Appearances::default(),
         }
     }
@@ -176,6 +179,7 @@ impl Simulation {
         for (object, appearance) in description.appearances.iter() {
             sim.set_appearance(*object, appearance.clone())?;
         }
+        sim.set_replay_overlay(description.replay_overlay);
         Ok((sim, reports))
     }
 

@@ -102,7 +102,7 @@ impl Recording {
     pub(super) fn sample(&mut self, sim: &Simulation) {
         self.log_samples(sim);
         self.log_devices(sim);
-        self.replay.sample(sim.world());
+        self.replay.sample_simulation(sim);
         let world = sim.world();
         for (i, a) in sim.cars.iter().enumerate() {
             for b in sim.cars.iter().skip(i + 1) {
@@ -234,7 +234,7 @@ impl Recording {
                 sim_seconds,
                 telemetry,
                 notes,
-                replay: self.replay.clone().finish(sim.world()),
+                replay: self.replay.clone().finish_simulation(sim),
                 ..ScenarioResult::default()
             }],
             sim_seconds,
