@@ -30,6 +30,8 @@ const DEVICES: [(&str, usize); 3] = [("radar", 0), ("sick_lms_291", 1), ("lidar_
 fn scene(enabled: Option<usize>) -> Simulation {
     let description = world_file::parse_str("acc.toml", &world()).unwrap();
     let (mut sim, _) = Simulation::from_description(&description).unwrap();
+    // Only the devices each case enables sample (the world's `samplingPeriod` keys aside).
+    sim.disable_devices();
     let ids: Vec<_> = sim.car_ids().collect();
     for &id in &ids {
         sim.driver_mut(id).unwrap().set_cruising_speed(54.0);

@@ -151,6 +151,9 @@ impl Robot {
         };
         let (mut simulation, reports) = Simulation::from_description(description)
             .map_err(|e| format!("cannot build the world {}: {e}", description.source))?;
+        // A controller's devices start disabled, as in Webots: the world's `samplingPeriod`
+        // keys are for runs without a controller.
+        simulation.disable_devices();
         // The loader validated the fields already; anything left is still reported.
         for w in reports.iter().flatten() {
             eprintln!("Warning: {}: {w}", description.source);

@@ -43,7 +43,7 @@ mod triaxial;
 use proto_geom::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use proto_geom::{SensorSlot, SensorSlots};
 
-use crate::error::{ParamError, SimError};
+use crate::error::{ParamError, Rule, SimError};
 use crate::rng::SplitMix64;
 use crate::road::RoadNetwork;
 use crate::vehicle::VehicleId;
@@ -63,7 +63,7 @@ pub use png_file::{ImageFileError, load_png, save_png};
 pub use radar::{RadarSettings, RadarTarget};
 pub use record::RecordedQuantity;
 pub use road_sensor::{DEFAULT_LOOKAHEAD, MAX_LOOKAHEAD, RoadSensorReading, RoadSensorSettings};
-pub use spec::{Axes, DeviceKind, DeviceSettings, DeviceSpec};
+pub use spec::{Axes, DeviceKind, DeviceSettings, DeviceSpec, MAX_SAMPLING_PERIOD_MS};
 pub use triaxial::TriaxialSettings;
 
 use gps::GpsNoise;
@@ -458,6 +458,20 @@ impl CarDevices {
                     error,
                 })?;
             }
+            let period_ms = match spec.sampling_period_ms {
+                None => 0,
+                Some(p) if (1..=MAX_SAMPLING_PERIOD_MS).contains(&p) => p,
+                Some(p) => {
+                    return Err(DeviceError::Field {
+                        name,
+                        error: ParamError {
+                            field: "samplingPeriod",
+                            value: f64::from(p),
+                            rule: Rule::Text("a whole number of ms from 1 to 65535"),
+                        },
+                    });
+                }
+            };
             if CAR_DEVICE_NAMES.contains(&name.as_str()) {
                 return Err(DeviceError::ReservedName(name));
             }
@@ -503,7 +517,7 @@ impl CarDevices {
                 name,
                 settings: spec.settings.clone(),
                 mount: slot * own,
-                period_ms: 0,
+                period_ms,
                 last_ms: 0,
                 rng,
                 gps_noise: GpsNoise::default(),
@@ -515,6 +529,22 @@ impl CarDevices {
             });
         }
         Ok(CarDevices { devices })
+    }
+
+    /// Starts the sampling of the devices built enabled ([`DeviceSpec::sampling_period_ms`])
+    /// at `now_ms`, the time their car joins the world: their first sample comes one full
+    /// period later, as after a controller's enable.
+    pub(crate) fn start_at(&mut self, now_ms: u64) {
+        for d in &mut self.devices {
+            d.last_ms = now_ms;
+        }
+    }
+
+    /// Disables every device at `now_ms`.
+    pub(crate) fn disable_all(&mut self, now_ms: u64) {
+        for d in &mut self.devices {
+            d.enable(0, now_ms);
+        }
     }
 
     /// The devices, in order.

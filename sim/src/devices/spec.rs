@@ -253,7 +253,16 @@ pub struct DeviceSpec {
     pub translation: Vector3<f64>,
     /// Its `rotation` in the slot's frame.
     pub rotation: UnitQuaternion<f64>,
+    /// The sampling period it is enabled with when its car is added (ms, 1 to
+    /// [`MAX_SAMPLING_PERIOD_MS`]); `None`: disabled until a controller enables it, as in
+    /// Webots. A project extension (the world file's `samplingPeriod`) for runs without a
+    /// controller; a controller's enable and disable calls still change it.
+    pub sampling_period_ms: Option<u32>,
 }
+
+/// The longest sampling period (ms): Webots sends a period to the simulator as a 16-bit
+/// unsigned integer (spec §2).
+pub const MAX_SAMPLING_PERIOD_MS: u32 = 65_535;
 
 impl DeviceSpec {
     /// A device of `settings`, named by default, at the car frame's origin.
@@ -264,6 +273,7 @@ impl DeviceSpec {
             slot: None,
             translation: Vector3::zeros(),
             rotation: UnitQuaternion::identity(),
+            sampling_period_ms: None,
         }
     }
 
@@ -292,6 +302,15 @@ impl DeviceSpec {
     #[must_use]
     pub fn rotation(mut self, rotation: UnitQuaternion<f64>) -> Self {
         self.rotation = rotation;
+        self
+    }
+
+    /// Enabled with a sampling period of `period_ms` ms when its car is added (checked then:
+    /// 1 to [`MAX_SAMPLING_PERIOD_MS`]); the effective period is rounded up to whole steps,
+    /// as Webots does.
+    #[must_use]
+    pub fn sampling_period(mut self, period_ms: u32) -> Self {
+        self.sampling_period_ms = Some(period_ms);
         self
     }
 

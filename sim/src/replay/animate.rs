@@ -152,6 +152,8 @@ pub(crate) fn animation(parts: &[Part<'_>], index: usize, nodes: &Nodes) -> Opti
         add_poses(&mut a, node, t, &poses);
     }
 
+    super::overlay::add_channels(&mut a, t, frames, &nodes.radar_markers);
+
     // Only this part's trajectories and cones show while it plays.
     if nodes.parts.len() > 1 {
         let start = a.add_timeline(vec![0.0]);

@@ -16,6 +16,8 @@ use crate::simulation::Simulation;
 use crate::vehicle::{Vehicle, VehicleSpec};
 use crate::world::World;
 
+use super::overlay::{self, OverlayRadar};
+
 /// Most keyframes a replay holds per simulated second (Hz): a display's frame rate; more would
 /// only grow the file.
 pub const MAX_KEYFRAME_RATE: f64 = 60.0;
@@ -156,6 +158,10 @@ pub struct Frame {
     pub robots: Vec<RobotFrame>,
     /// One per dynamic box, in [`World::bodies`] order.
     pub bodies: Vec<BodyPose>,
+    /// One per radar of [`Recording::radars`]: its targets' positions (m, world frame), at
+    /// most [`MAX_TARGET_MARKERS`](super::overlay::MAX_TARGET_MARKERS); empty without the
+    /// overlay.
+    pub radar_targets: Vec<Vec<Point3<f64>>>,
 }
 
 impl Frame {
@@ -176,6 +182,7 @@ impl Frame {
                 })
                 .collect(),
             bodies: world.bodies(),
+            radar_targets: Vec::new(),
         }
     }
 }
@@ -196,6 +203,9 @@ pub struct Recording {
     /// The frames, in increasing time, the first at the start of the recording and the last at
     /// its end.
     pub frames: Vec<Frame>,
+    /// The radars whose targets the replay draws ([`super::overlay`]); empty without the
+    /// overlay.
+    pub radars: Vec<OverlayRadar>,
 }
 
 impl Recording {
@@ -247,9 +257,21 @@ impl Recorder {
         Self::with_params(world, |_| None)
     }
 
-    /// Starts recording the world of `sim`, each car with a driver drawn from its parameters.
+    /// Starts recording the world of `sim`, each car with a driver drawn from its parameters,
+    /// and with [`Simulation::replay_overlay`] its radars' targets ([`super::overlay`]) when
+    /// sampled with [`Recorder::sample_simulation`].
     pub fn for_simulation(sim: &Simulation) -> Self {
-        Self::with_params(sim.world(), |v| sim.driver(v.id()).ok().map(|d| d.params()))
+        let mut recorder =
+            Self::with_params(sim.world(), |v| sim.driver(v.id()).ok().map(|d| d.params()));
+        if sim.replay_overlay() {
+            let radars = overlay::radars(sim);
+            let first = overlay::targets(sim, &radars);
+            if let Some(f) = recorder.recording.frames.first_mut() {
+                f.radar_targets = first;
+            }
+            recorder.recording.radars = radars;
+        }
+        recorder
     }
 
     fn with_params<'a>(
@@ -280,6 +302,7 @@ impl Recorder {
                     })
                     .collect(),
                 frames: vec![first],
+                radars: Vec::new(),
             },
             period_ms: steps * step_ms,
             next_ms: now + steps * step_ms,
@@ -289,16 +312,39 @@ impl Recorder {
 
     /// Keeps a frame of `world` if one is due; call it after every step.
     pub fn sample(&mut self, world: &World) {
-        let now = world.time_ms();
-        if now >= self.next_ms {
-            self.push(world);
-            self.next_ms = now + self.period_ms;
+        if world.time_ms() >= self.next_ms {
+            self.keep(Frame::of(world), world.time_ms());
         }
     }
 
-    fn push(&mut self, world: &World) {
-        self.recording.frames.push(Frame::of(world));
-        self.last_ms = world.time_ms();
+    /// Keeps a frame of the world of `sim` if one is due, with its radars' targets when the
+    /// recorder draws them; call it after every step.
+    pub fn sample_simulation(&mut self, sim: &Simulation) {
+        if sim.world().time_ms() >= self.next_ms {
+            let frame = self.frame_of(sim);
+            self.keep(frame, sim.world().time_ms());
+        }
+    }
+
+    /// The frame of `sim` now, with the targets of the recording's radars.
+    fn frame_of(&self, sim: &Simulation) -> Frame {
+        let mut frame = Frame::of(sim.world());
+        if !self.recording.radars.is_empty() {
+            frame.radar_targets = overlay::targets(sim, &self.recording.radars);
+        }
+        frame
+    }
+
+    /// Keeps `frame`, due now (`now_ms`); the next is due one period later.
+    fn keep(&mut self, frame: Frame, now_ms: u64) {
+        self.push(frame, now_ms);
+        self.next_ms = now_ms + self.period_ms;
+    }
+
+    /// Appends `frame` of time `now` (ms).
+    fn push(&mut self, frame: Frame, now: u64) {
+        self.recording.frames.push(frame);
+        self.last_ms = now;
         if self.recording.frames.len() > MAX_FRAMES {
             // Every other frame goes, the first and the newest stay (MAX_FRAMES is even), and
             // the keyframes come half as often from now on: a run of any length keeps at most
@@ -317,7 +363,16 @@ impl Recorder {
     /// of this instant), so that it ends at the run's simulated duration.
     pub fn finish(mut self, world: &World) -> Recording {
         if world.time_ms() > self.last_ms {
-            self.push(world);
+            self.push(Frame::of(world), world.time_ms());
+        }
+        self.recording
+    }
+
+    /// [`Recorder::finish`] on the world of `sim`, its last frame with the radars' targets.
+    pub fn finish_simulation(mut self, sim: &Simulation) -> Recording {
+        if sim.world().time_ms() > self.last_ms {
+            let frame = self.frame_of(sim);
+            self.push(frame, sim.world().time_ms());
         }
         self.recording
     }

@@ -56,6 +56,8 @@ pub(crate) struct Nodes {
     pub(crate) bodies: Vec<usize>,
     /// One group per part (its trajectories and cones).
     pub(crate) parts: Vec<usize>,
+    /// Each overlay radar's pool of target markers ([`super::overlay`]).
+    pub(crate) radar_markers: Vec<Vec<usize>>,
 }
 
 /// A frame at `at` (m) turned by `yaw` (rad) about +z.
@@ -74,7 +76,7 @@ fn merge(mut a: RenderMesh, b: RenderMesh) -> RenderMesh {
     a
 }
 
-fn box_mesh(centre: Point3<f64>, size: Vector3<f64>) -> RenderMesh {
+pub(super) fn box_mesh(centre: Point3<f64>, size: Vector3<f64>) -> RenderMesh {
     let mesh = BoxMesh::new(centre, size);
     RenderMesh::from_mesh(&mesh, &Isometry3::identity())
 }
@@ -193,6 +195,7 @@ pub(crate) fn build(parts: &[Part<'_>]) -> (Scene, Nodes) {
         .iter()
         .map(|part| add_part(&mut scene, world, part, lift))
         .collect();
+    let radar_markers = super::overlay::add_markers(&mut scene, world, first);
     (
         scene,
         Nodes {
@@ -200,6 +203,7 @@ pub(crate) fn build(parts: &[Part<'_>]) -> (Scene, Nodes) {
             robots,
             bodies,
             parts,
+            radar_markers,
         },
     )
 }

@@ -346,17 +346,22 @@ pub enum OutputError {
 pub const DATA_OUTPUTS: [&str; 3] = [TELEMETRY_CSV, METRICS_JSON, REPLAY_GLB];
 
 /// The names of the files [`write_outputs`] writes for `report`: `telemetry.csv`,
-/// `metrics.json`, the plots of [`figures`] and `replay.glb`, in that order.
+/// `devices.csv` (when a result has device readings), `metrics.json`, the plots of
+/// [`figures`] and `replay.glb`, in that order.
 #[cfg(feature = "app")]
 pub fn output_names(report: &RunReport) -> Vec<&'static str> {
-    [TELEMETRY_CSV, METRICS_JSON]
+    let devices = report.results.iter().any(|r| !r.devices.is_empty());
+    [TELEMETRY_CSV]
         .into_iter()
+        .chain(devices.then_some(DEVICES_CSV))
+        .chain([METRICS_JSON])
         .chain(figures(report).into_iter().map(|(name, _)| name))
         .chain([REPLAY_GLB])
         .collect()
 }
 
-/// Writes `telemetry.csv`, `metrics.json`, the plots of [`figures`] and `replay.glb` into
+/// Writes `telemetry.csv`, `devices.csv` (when a result has device readings),
+/// `metrics.json`, the plots of [`figures`] and `replay.glb` into
 /// `dir` (created if needed), removes the [`KNOWN_OUTPUTS`] of an earlier run that this one
 /// does not write, and returns the paths written.
 ///
@@ -391,7 +396,8 @@ pub fn write_data(
     write_report(report, world_warnings, dir, &DATA_OUTPUTS, &[])
 }
 
-/// [`write_files`] with the telemetry of `report` itself.
+/// [`write_files`] with the telemetry of `report` itself, and `devices.csv` after
+/// `telemetry.csv` when a result has device readings (a `programme` run's).
 fn write_report(
     report: &RunReport,
     world_warnings: &[String],
@@ -402,7 +408,29 @@ fn write_report(
     let telemetry = |out: &mut dyn std::io::Write| {
         write_csv(out, report.results.iter().flat_map(|r| &r.telemetry))
     };
-    write_files(report, world_warnings, dir, names, plots, &telemetry)
+    let Some(devices) = report
+        .results
+        .iter()
+        .map(|r| &r.devices)
+        .find(|d| !d.is_empty())
+    else {
+        return write_files(report, world_warnings, dir, names, plots, &telemetry);
+    };
+    let mut names = names.to_vec();
+    if !names.contains(&DEVICES_CSV) {
+        names.insert(1, DEVICES_CSV);
+    }
+    let mut written = write_files(report, world_warnings, dir, &names, plots, &telemetry)?;
+    let path = dir.join(DEVICES_CSV);
+    let file = File::create(&path).map_err(io_error(&path))?;
+    devices
+        .write_csv(BufWriter::new(file))
+        .map_err(|source| OutputError::Csv {
+            path: path.clone(),
+            source,
+        })?;
+    written.insert(1, path);
+    Ok(written)
 }
 
 /// The I/O error of `path`.

@@ -7,7 +7,7 @@ use vehicle_model::Driver;
 use crate::error::SimError;
 use crate::replay::Recorder;
 use crate::simulation::Simulation;
-use crate::telemetry::{Sample, Telemetry, VehicleKind};
+use crate::telemetry::{DeviceReadings, Sample, Telemetry, VehicleKind};
 use crate::vehicle::{VehicleId, VehicleSpec, VehicleState};
 use crate::world_file::{CarDescription, WorldDescription};
 
@@ -178,6 +178,7 @@ impl CarRig {
             guides: self.guides,
             cones: self.cones,
             replay: self.recorder.finish(self.sim.world()),
+            devices: DeviceReadings::default(),
         }
     }
 }

@@ -48,7 +48,7 @@ pub use programme::PROGRAMME_TAIL;
 use crate::config::Outline;
 use crate::error::SimError;
 use crate::replay::{Part, Recording};
-use crate::telemetry::Telemetry;
+use crate::telemetry::{DeviceReadings, Telemetry};
 use crate::world_file::WorldDescription;
 
 /// A driving programme.
@@ -324,6 +324,9 @@ pub struct ScenarioResult {
     pub cones: Vec<[f64; 2]>,
     /// The run sampled for its 3D replay.
     pub replay: Recording,
+    /// The readings of the devices the run sampled, for `devices.csv` (the `programme`
+    /// scenario's: the devices its world enables with `samplingPeriod`; empty otherwise).
+    pub devices: DeviceReadings,
 }
 
 impl ScenarioResult {

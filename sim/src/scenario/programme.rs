@@ -159,6 +159,7 @@ pub(crate) fn run(
         None => RunReport::default(),
     };
     let mut result = report.results.into_iter().next().unwrap_or_default();
+    result.devices = sim.take_device_readings();
     notes.append(&mut result.notes);
     result.notes = notes;
     Ok(result)

@@ -183,6 +183,28 @@ impl Simulation {
         Ok(car.devices.enable(index, period_ms, now_ms)?)
     }
 
+    /// Draws (`true`) or not the radars' targets in the replay of runs recorded from now on
+    /// ([`crate::replay::overlay`]; the world file's `replayOverlay`).
+    pub fn set_replay_overlay(&mut self, on: bool) {
+        self.replay_overlay = on;
+    }
+
+    /// True when the replay draws the radars' targets ([`Simulation::set_replay_overlay`]).
+    pub fn replay_overlay(&self) -> bool {
+        self.replay_overlay
+    }
+
+    /// Disables every device of every car, as a Webots controller finds them when it starts:
+    /// the C and Python controllers call this, so that the world file's `samplingPeriod` (for
+    /// runs without a controller) leaves a controller's devices as Webots does, and a
+    /// controller enables what it reads.
+    pub fn disable_devices(&mut self) {
+        let now_ms = self.world.time_ms();
+        for car in &mut self.cars {
+            car.devices.disable_all(now_ms);
+        }
+    }
+
     /// Enables (`true`) or disables the point cloud of lidar `index` of car `id` (Webots:
     /// `wb_lidar_enable_point_cloud`, `wb_lidar_disable_point_cloud`); another device is left
     /// as it is.

@@ -122,6 +122,8 @@ pub struct Simulation {
     /// Simulated time after which the run is over (s).
     duration: Option<f64>,
     recording: Option<Recording>,
+    /// The replay shows the radars' targets ([`crate::replay::overlay`]).
+    replay_overlay: bool,
     /// How the world's things look to the cameras.
     appearances: Appearances,
     /// The roads as the cameras see them, built at the first render (the roads never move).
@@ -139,6 +141,7 @@ impl Simulation {
             robots: Vec::new(),
             duration: None,
             recording: None,
+            replay_overlay: false,
             appearances: Appearances::default(),
             road_patches: None,
         }
@@ -186,6 +189,7 @@ impl Simulation {
         for (object, appearance) in description.appearances.iter() {
             sim.set_appearance(*object, appearance.clone())?;
         }
+        sim.set_replay_overlay(description.replay_overlay);
         Ok((sim, reports))
     }
 
@@ -205,12 +209,14 @@ impl Simulation {
         self.world
             .vehicle_mut(id)?
             .set_radar_cross_section(built.radar_cross_section)?;
+        let mut devices = built.devices;
+        devices.start_at(self.world.time_ms());
         self.cars.push(Controlled {
             id,
             driver: built.driver,
             name,
             sampled: false,
-            devices: built.devices,
+            devices,
             keyboard: built.keyboard,
             follower: None,
         });

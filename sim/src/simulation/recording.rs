@@ -11,7 +11,7 @@ use crate::replay::Recorder;
 use crate::report::{self, OutputError};
 use crate::scenario::{DepartureMeter, Metric, MotionMeter, RunReport, ScenarioResult};
 use crate::telemetry::{
-    CsvWriter, DeviceLog, DeviceRow, Sample, Telemetry, TelemetryLog, VehicleKind,
+    CsvWriter, DeviceLog, DeviceReadings, DeviceRow, Sample, Telemetry, TelemetryLog, VehicleKind,
 };
 use crate::vehicle::VehicleId;
 
@@ -43,6 +43,28 @@ pub(super) struct Recording {
     /// When two cars first touched (s).
     first_touch: Option<f64>,
     started: Instant,
+}
+
+impl Simulation {
+    /// The device readings recorded so far, handed over with the names of the cars and their
+    /// devices (empty when not recording); the recording goes on with an empty device log.
+    /// The `programme` scenario gives them to its result for `devices.csv`.
+    pub(crate) fn take_device_readings(&mut self) -> DeviceReadings {
+        let cars = self
+            .cars
+            .iter()
+            .map(|c| {
+                let devices = c.devices.all().iter().map(|d| d.name().to_string());
+                (c.name.clone(), devices.collect())
+            })
+            .collect();
+        let log = self
+            .recording
+            .as_mut()
+            .map(Recording::take_devices)
+            .unwrap_or_default();
+        DeviceReadings::new(log, cars)
+    }
 }
 
 impl Recording {
@@ -80,7 +102,7 @@ impl Recording {
     pub(super) fn sample(&mut self, sim: &Simulation) {
         self.log_samples(sim);
         self.log_devices(sim);
-        self.replay.sample(sim.world());
+        self.replay.sample_simulation(sim);
         let world = sim.world();
         for (i, a) in sim.cars.iter().enumerate() {
             for b in sim.cars.iter().skip(i + 1) {
@@ -129,6 +151,11 @@ impl Recording {
                 }
             }
         }
+    }
+
+    /// The devices' samples so far, handed over: the log starts anew.
+    pub(super) fn take_devices(&mut self) -> DeviceLog {
+        std::mem::take(&mut self.devices)
     }
 
     /// The log of the vehicle named `name`.
@@ -224,7 +251,7 @@ impl Recording {
                 sim_seconds,
                 telemetry,
                 notes,
-                replay: self.replay.clone().finish(sim.world()),
+                replay: self.replay.clone().finish_simulation(sim),
                 ..ScenarioResult::default()
             }],
             sim_seconds,

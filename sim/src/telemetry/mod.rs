@@ -2,11 +2,13 @@
 //! the [`TelemetryLog`] that keeps a run of any length in bounded memory.
 
 mod device_log;
+mod device_readings;
 mod log;
 
 use std::io::Write;
 
 pub use device_log::{DEVICE_MEMORY_ROWS, DEVICES_CSV_HEADER, DeviceLog, DeviceRow};
+pub use device_readings::DeviceReadings;
 pub use log::{MEMORY_ROWS, Row, TelemetryLog};
 
 use vehicle_model::{KMH_PER_MS, PerWheel, Wheel};

@@ -13,16 +13,25 @@ use super::ray_devices::{
 use super::read::{Section, missing};
 use crate::devices::{
     Axes, CAR_DEVICE_NAMES, CameraSettings, DEFAULT_LOOKAHEAD, DeviceKind, DeviceSettings,
-    DeviceSpec, DisplaySettings, GpsSettings, InertialUnitSettings, LookupTable, Occlusion,
-    RecognitionSettings, RoadSensorSettings, TriaxialSettings,
+    DeviceSpec, DisplaySettings, GpsSettings, InertialUnitSettings, LookupTable,
+    MAX_SAMPLING_PERIOD_MS, Occlusion, RecognitionSettings, RoadSensorSettings, TriaxialSettings,
 };
 use crate::error::ParamError;
 
 /// The key of the devices in `[vehicle]`.
 pub(crate) const DEVICE: &str = "device";
 
-/// The keys every device has.
-const COMMON: [&str; 5] = ["type", "name", "slot", "translation", "rotation"];
+/// The keys every device has (`samplingPeriod`: a project extension, see [`read_period`]).
+const COMMON: [&str; 6] = [
+    "type",
+    "name",
+    "slot",
+    "translation",
+    "rotation",
+    SAMPLING_PERIOD,
+];
+/// The key that enables a device from the start (ms).
+const SAMPLING_PERIOD: &str = "samplingPeriod";
 /// The `GPS` fields.
 const GPS: [&str; 5] = [
     "accuracy",
@@ -190,7 +199,32 @@ fn read_device(d: &Section<'_, '_>, model: Model) -> Result<DeviceSpec, WorldFil
         };
         spec = spec.rotation(UnitQuaternion::from_axis_angle(&axis, angle));
     }
+    if let Some(period) = read_period(d)? {
+        spec = spec.sampling_period(period);
+    }
     Ok(spec)
+}
+
+/// `samplingPeriod`: the period (ms) the device is enabled with from the car's start, for
+/// runs without a controller (Webots has no such field: its controllers enable devices with
+/// `wb_<device>_enable(period)`). Webots' rules for that period: a whole number of ms, sent
+/// as a 16-bit unsigned integer, so at most 65535; 0 would mean disabled, which leaving the
+/// key out says. The effective period is rounded up to whole steps, as Webots does.
+fn read_period(d: &Section<'_, '_>) -> Result<Option<u32>, WorldFileError> {
+    let Some(v) = d.number(SAMPLING_PERIOD)? else {
+        return Ok(None);
+    };
+    if v.fract() != 0.0 || !(1.0..=f64::from(MAX_SAMPLING_PERIOD_MS)).contains(&v) {
+        return Err(d.error(
+            SAMPLING_PERIOD,
+            WorldFileErrorKind::InvalidValue(format!(
+                "{} ms: must be a whole number of ms from 1 to 65535 (leave the key out to \
+                 leave the device disabled until a controller enables it)",
+                Compact(v)
+            )),
+        ));
+    }
+    Ok(Some(v as u32))
 }
 
 /// The file error of a field out of its range, at its key.

@@ -88,9 +88,10 @@ pub fn model_world_text(model: Model) -> String {
 }
 
 /// Top-level keys of a world file.
-const ROOT_KEYS: [&str; 11] = [
+const ROOT_KEYS: [&str; 12] = [
     "basicTimeStep",
     "duration",
+    REPLAY_OVERLAY,
     "gravity",
     "vehicle",
     "differential_wheels",
@@ -101,6 +102,9 @@ const ROOT_KEYS: [&str; 11] = [
     "road",
     "junction",
 ];
+
+/// The key that draws the radars' targets in `replay.glb` ([`crate::replay::overlay`]).
+const REPLAY_OVERLAY: &str = "replayOverlay";
 
 /// A loaded world: everything needed to build a [`World`](crate::World) and put its cars and
 /// robot in it.
@@ -124,6 +128,9 @@ pub struct WorldDescription {
     /// Values that were accepted with a warning (e.g. an invalid car field replaced by its
     /// default, as Webots does), in file order.
     pub warnings: Vec<WorldWarning>,
+    /// `replayOverlay` (default false): `replay.glb` shows the radars' targets
+    /// ([`crate::replay::overlay`]); a project extension.
+    pub replay_overlay: bool,
 }
 
 impl WorldDescription {
@@ -207,6 +214,7 @@ pub fn with_model(model: Model) -> WorldDescription {
         robot: None,
         appearances: Appearances::default(),
         warnings,
+        replay_overlay: false,
     }
 }
 
@@ -386,6 +394,7 @@ pub(crate) fn parse_with(
         robot,
         appearances,
         warnings,
+        replay_overlay: root.boolean(REPLAY_OVERLAY)?.unwrap_or(false),
     })
 }
 
