@@ -159,6 +159,31 @@ fn cpp_wrapper() {
     );
 }
 
+/// The C++ RoadSensor through Driver::getRoadSensor(), as C++11, against road_sensor.c's
+/// closed forms.
+#[test]
+fn road_sensor_cpp() {
+    let lib = lib_dir().display().to_string();
+    let link = [
+        format!("-L{lib}"),
+        "-ldriver".into(),
+        "-lcar".into(),
+        format!("-Wl,-rpath,{lib}"),
+    ];
+    let exe = compile(
+        "c++",
+        "c++11",
+        &tests_dir().join("road_sensor_cpp.cpp"),
+        "road_sensor_cpp",
+        &link,
+    );
+    let r = run(&exe, Some(&world_path("road.toml")));
+    assert_passed("road_sensor_cpp", r.status, &r.stdout);
+    let lines: Vec<&str> = r.stderr.lines().collect();
+    // Driver::getRoadSensor("nothing"), as Webots' getters warn.
+    assert_eq!(lines, ["Warning: \"nothing\" device not found."]);
+}
+
 /// Every header alone in every C and C++ standard, and the programs' syntax.
 #[test]
 fn check_headers() {

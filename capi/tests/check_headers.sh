@@ -84,7 +84,7 @@ C_HEADERS=(webots/types.h webots/robot.h webots/differential_wheels.h webots/veh
   webots/lidar_point.h webots/lidar.h webots/vehicle/road_sensor.h)
 CPP_HEADERS=(webots/vehicle/Driver.hpp webots/vehicle/Car.hpp webots/Device.hpp webots/GPS.hpp webots/InertialUnit.hpp
   webots/Gyro.hpp webots/Accelerometer.hpp webots/Compass.hpp webots/DistanceSensor.hpp webots/Radar.hpp
-  webots/Lidar.hpp)
+  webots/Lidar.hpp webots/vehicle/RoadSensor.hpp)
 
 C_STDS=(c89 c99 c11 c17)
 for std in c2x gnu89; do

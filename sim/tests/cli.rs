@@ -25,6 +25,7 @@ fn help_lists_options_scenarios_and_models() {
         "--quiet",
         "--duration",
         "--seed",
+        "--replay-overlay",
         "--version",
         "test-track",
         "lane-change",
@@ -346,6 +347,43 @@ fn seed_overrides_the_robots_noise_seed() {
     assert_eq!(heading("7"), heading("7"));
     assert_ne!(heading("7"), heading("8"));
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The names of the nodes of the glTF file `path`.
+fn node_names(path: &Path) -> Vec<String> {
+    let doc = gltf::Gltf::open(path).expect("a valid replay.glb");
+    doc.nodes()
+        .filter_map(|n| n.name().map(str::to_string))
+        .collect()
+}
+
+#[test]
+fn replay_overlay_draws_the_radar_targets_without_editing_the_world() {
+    // The ACC world has no `replayOverlay` key: the flag alone turns the overlay on.
+    let world = concat!(env!("CARGO_MANIFEST_DIR"), "/worlds/acc.toml");
+    let markers = |flag: bool| {
+        let dir = scratch(if flag { "overlay-on" } else { "overlay-off" });
+        let mut args = vec![
+            "--world",
+            world,
+            "--duration",
+            "0.5",
+            "-q",
+            "--out",
+            dir.to_str().unwrap(),
+        ];
+        if flag {
+            args.push("--replay-overlay");
+        }
+        let out = vehicle_sim(&args);
+        assert_eq!(out.status.code(), Some(0), "stderr: {}", text(&out.stderr));
+        let names = node_names(&dir.join("replay.glb"));
+        std::fs::remove_dir_all(&dir).unwrap();
+        names.iter().filter(|n| n.contains(" target ")).count()
+    };
+    assert_eq!(markers(false), 0);
+    // One radar in the world: one pool of MAX_TARGET_MARKERS marker nodes.
+    assert_eq!(markers(true), sim::replay::overlay::MAX_TARGET_MARKERS);
 }
 
 /// The columns of `name` in `header`, for every wheel in the order FR, FL, RR, RL.

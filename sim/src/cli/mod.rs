@@ -123,6 +123,9 @@ pub struct Options {
     /// `seed` (cars have no noise)
     #[arg(long, value_name = "N")]
     pub seed: Option<u64>,
+    /// Draw the radars' targets in replay.glb, as the world's `replayOverlay = true` does
+    #[arg(long)]
+    pub replay_overlay: bool,
 }
 
 /// The subcommands: sweeps, and plots of a run written elsewhere.
@@ -195,8 +198,9 @@ impl Bar {
     }
 }
 
-/// Loads the world of `--world` (or the default world) with the overrides of `--duration`
-/// and `--seed`.
+/// Loads the world of `--world` (or the default world) with the overrides of `--duration`,
+/// `--seed` and `--replay-overlay` (which only turns the overlay on: without it the world's
+/// `replayOverlay` stands).
 fn load_world(options: &Options) -> Result<WorldDescription, world_file::WorldFileError> {
     let mut world = match options.world.as_deref() {
         Some(s) => world_file::load(s)?,
@@ -207,6 +211,9 @@ fn load_world(options: &Options) -> Result<WorldDescription, world_file::WorldFi
     }
     if let (Some(seed), Some(robot)) = (options.seed, world.robot.as_mut()) {
         robot.params.seed = seed;
+    }
+    if options.replay_overlay {
+        world.replay_overlay = true;
     }
     Ok(world)
 }
@@ -345,6 +352,7 @@ mod tests {
             "2.5",
             "--seed",
             "7",
+            "--replay-overlay",
         ])
         .unwrap();
         assert_eq!(
@@ -359,11 +367,13 @@ mod tests {
                 quiet: true,
                 duration: Some(2.5),
                 seed: Some(7),
+                replay_overlay: true,
             }
         );
         let d = parse(&[]).unwrap();
         assert_eq!(d.out, PathBuf::from(DEFAULT_OUT_DIR));
         assert_eq!((d.world, d.scenario, d.json), (None, None, false));
+        assert!(!d.replay_overlay);
         assert_eq!(
             parse(&["--scenario", "programme"]).unwrap().scenario,
             Some(Scenario::Programme)

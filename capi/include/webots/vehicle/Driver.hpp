@@ -10,8 +10,9 @@
 //   no Supervisor or Robot C++ classes, so Driver derives from nothing; of the Robot methods it
 //   offers getTime(), getBasicTimeStep(), getNumberOfDevices() and the typed device getters of
 //   the sensors this simulator has (getGPS, getInertialUnit, getGyro, getAccelerometer,
-//   getCompass, getDistanceSensor, getRadar, getLidar, getCamera, getDisplay, getKeyboard;
-//   nullptr for a name the car lacks or a device of another type).
+//   getCompass, getDistanceSensor, getRadar, getLidar, getCamera, getDisplay, getKeyboard, and
+//   the project extension's getRoadSensor; nullptr for a name the car lacks or a device of
+//   another type).
 // * Header-only: every method is inline and calls the C function of the same meaning, so only
 //   libdriver.so and libcar.so are needed at link time (no libCppDriver).
 // * The destructor releases the singleton, so a new Driver may be created after the previous
@@ -41,6 +42,7 @@
 #include <webots/Keyboard.hpp>
 #include <webots/Lidar.hpp>
 #include <webots/Radar.hpp>
+#include <webots/vehicle/RoadSensor.hpp>
 #include <webots/nodes.h>
 #include <webots/robot.h>
 
@@ -130,6 +132,8 @@ namespace webots {
     }
     Radar *getRadar(const std::string &name) { return device<Radar>(name, WB_NODE_RADAR); }
     Lidar *getLidar(const std::string &name) { return device<Lidar>(name, WB_NODE_LIDAR); }
+    // The project's RoadSensor extension (webots/vehicle/RoadSensor.hpp).
+    RoadSensor *getRoadSensor(const std::string &name) { return device<RoadSensor>(name, RoadSensor::NODE_TYPE); }
 
     // Steers with Ackermann geometry: rad, positive right, negative left.
     void setSteeringAngle(double steeringAngle) { wbu_driver_set_steering_angle(steeringAngle); }
