@@ -129,9 +129,13 @@ fn whole_rows(
     let mut file = File::open(path).map_err(io_at(path))?;
     let whole = last_line_end(&mut file).map_err(io_at(path))?;
     file.seek(SeekFrom::Start(0)).map_err(io_at(path))?;
+    // Only `\n` ends a line, as the run writes them (`row::csv_writer`): the csv crate's
+    // default also takes a lone `\r`, so a `\n` damaged into `\r` would read as the same
+    // rows and be kept in the file.
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(false)
         .flexible(true)
+        .terminator(csv::Terminator::Any(b'\n'))
         .from_reader(BufReader::new(file).take(whole));
     let mut record = csv::StringRecord::new();
     let name = path
