@@ -236,12 +236,7 @@ fn add_roads(scene: &mut Scene, world: usize, first: &Recording, lift: f64) {
             None,
         );
         for m in road.lane_meshes(crate::ROAD_LIFT) {
-            let kind = road
-                .sections
-                .get(m.section)
-                .and_then(|s| s.lanes().find(|l| l.id == m.lane))
-                .map(|l| l.kind);
-            let material = if kind == Some(crate::road::LaneKind::Driving) {
+            let material = if m.kind == crate::road::LaneKind::Driving {
                 asphalt
             } else {
                 verge

@@ -3,7 +3,7 @@
 
 use proto_geom::nalgebra::Point3;
 
-use super::{LineStyle, Road};
+use super::{LaneKind, LineStyle, Road};
 
 /// Largest distance (m) between two cross-sections of a mesh.
 const MAX_STEP: f64 = 1.0;
@@ -18,6 +18,8 @@ pub struct LaneMesh {
     pub section: usize,
     /// The lane's id.
     pub lane: i32,
+    /// The lane's kind (what the camera and the replay colour it by).
+    pub kind: LaneKind,
     /// Its Coulomb friction (dimensionless): the lane's, else the road's.
     pub friction: f64,
     /// The vertices (m, world).
@@ -110,6 +112,7 @@ impl Road {
                 out.push(LaneMesh {
                     section: k,
                     lane: lane.id,
+                    kind: lane.kind,
                     friction: lane.friction.unwrap_or(self.friction),
                     vertices,
                     triangles,

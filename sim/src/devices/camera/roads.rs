@@ -36,12 +36,7 @@ pub(crate) fn patches(roads: &RoadNetwork) -> Vec<Patch> {
     let mut out = Vec::new();
     for road in &roads.roads {
         for m in road.lane_meshes(ROAD_LIFT) {
-            let kind = road
-                .sections
-                .get(m.section)
-                .and_then(|s| s.lanes().find(|l| l.id == m.lane))
-                .map(|l| l.kind);
-            let colour = if kind == Some(LaneKind::Driving) {
+            let colour = if m.kind == LaneKind::Driving {
                 ASPHALT_COLOR
             } else {
                 VERGE_COLOR
