@@ -4,7 +4,7 @@
 //! Python or a world file is the same car.
 
 use proto_geom::SensorSlots;
-use vehicle_model::{BrakeBalance, CarParams, Driver, Model, ParamReport};
+use vehicle_model::{Aero, BrakeBalance, CarParams, Driver, Model, ParamReport};
 
 use crate::devices::{CarDevices, DeviceSpec};
 use crate::keyboard::{KeyPress, Keyboard};
@@ -56,6 +56,8 @@ pub struct CarBuilder {
     slots: Option<SensorSlots<f64>>,
     /// The keys pressed for its controller's keyboard.
     keys: Vec<KeyPress>,
+    /// Its body's aerodynamic coefficients, `None` for no air (Webots').
+    aero: Option<Aero<f64>>,
 }
 
 /// A car built from a [`CarBuilder`]: its driver, its body and where it starts.
@@ -90,6 +92,7 @@ impl CarBuilder {
             radar_cross_section: 0.0,
             slots: None,
             keys: Vec::new(),
+            aero: None,
         }
     }
 
@@ -170,6 +173,14 @@ impl CarBuilder {
         self
     }
 
+    /// Its body's aerodynamic drag and lift ([`Aero`]; e.g. [`Model::aero`]), relative to the
+    /// world's wind; `None` (the default, Webots'): no air. Checked when the car is added.
+    #[must_use]
+    pub fn aero(mut self, aero: Option<Aero<f64>>) -> Self {
+        self.aero = aero;
+        self
+    }
+
     /// The sensor-slot frames its devices may sit in (those of a shipped model by default;
     /// none for [`CarBuilder::new`]).
     #[must_use]
@@ -232,6 +243,8 @@ impl CarBuilder {
             .map_err(SimError::BrakeBalance)?;
         let mut spec = VehicleSpec::from_car_with(driver.params(), &self.tyre)?;
         spec.mounting = self.mounting;
+        spec.aero = self.aero;
+        spec.validate()?;
         Ok(BuiltCar {
             driver,
             report,
@@ -263,6 +276,7 @@ impl From<&CarDescription> for CarBuilder {
             radar_cross_section: car.radar_cross_section,
             slots: slots_of(car.model),
             keys: car.keys.clone(),
+            aero: car.aero,
         }
     }
 }

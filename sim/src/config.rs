@@ -284,7 +284,15 @@ pub struct WorldConfig {
     /// The roads on the ground (none by default), validated when the world is built
     /// ([`RoadNetwork::validate`]).
     pub roads: RoadNetwork,
+    /// The wind (m/s, world frame; calm by default): the air's velocity, which the cars'
+    /// aerodynamic forces ([`VehicleSpec::aero`](crate::VehicleSpec::aero)) are relative
+    /// to. At most 70 m/s (a category 5 hurricane). Webots has no wind.
+    pub wind: Vector3<f64>,
 }
+
+/// The strongest wind accepted (m/s): a category 5 hurricane's sustained wind starts at about
+/// 70 m/s (Saffir-Simpson scale); no road test runs in more.
+pub(crate) const MAX_WIND: f64 = 70.0;
 
 impl Default for WorldConfig {
     fn default() -> Self {
@@ -296,6 +304,7 @@ impl Default for WorldConfig {
             bodies: Vec::new(),
             solver: SolverSettings::default(),
             roads: RoadNetwork::default(),
+            wind: Vector3::zeros(),
         }
     }
 }
@@ -327,6 +336,12 @@ impl WorldConfig {
             |v| (1.0..=1000.0).contains(&v),
         )?;
         ParamError::friction("ground.friction", self.ground_friction)?;
+        for &w in self.wind.iter() {
+            ParamError::finite("wind", w)?;
+        }
+        ParamError::check("wind", self.wind.norm(), "at most 70 m/s in speed", |w| {
+            w <= MAX_WIND
+        })?;
         for o in &self.obstacles {
             o.validate()?;
         }

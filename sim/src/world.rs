@@ -592,6 +592,7 @@ impl World {
             r.pre_step(&mut self.physics, dt);
         }
         self.physics.integration_parameters.dt = sub_dt as f32;
+        let wind = geom::vector(&self.config.wind);
         for k in 0..substeps {
             // A car on joints hands rapier forces that hold for one rapier step (its tyre
             // loads are the last step's contact impulses), so it is solved again before each;
@@ -599,9 +600,9 @@ impl World {
             for (i, v) in self.vehicles.iter_mut().enumerate() {
                 self.stepping = BodyOwner::Vehicle(i);
                 if v.on_joints() {
-                    v.pre_step(&mut self.physics, &self.ground, sub_dt);
+                    v.pre_step(&mut self.physics, &self.ground, wind, sub_dt);
                 } else if k == 0 {
-                    v.pre_step(&mut self.physics, &self.ground, dt);
+                    v.pre_step(&mut self.physics, &self.ground, wind, dt);
                 }
             }
             self.stepping = BodyOwner::World;

@@ -146,6 +146,7 @@
 struct ReadmeDoctests;
 
 pub mod actuator;
+mod aero;
 mod brake_balance;
 mod driver;
 mod io;
@@ -159,6 +160,7 @@ pub mod tyre;
 mod warning;
 mod wipers;
 
+pub use aero::{Aero, AeroError, AeroForces, SEA_LEVEL_AIR_DENSITY};
 pub use brake_balance::{
     BrakeBalance, BrakeBalanceError, axle_brake_factor, proportioned_front_share,
 };

@@ -69,6 +69,7 @@
 // rest of what `step`'s `Mount` asks (`cast`, `joints` with `multibody`). This file holds the
 // car and its life in a world: construction, commands, the step's dispatch and the read-back.
 mod actuators;
+mod aero;
 mod cast;
 mod contact;
 mod inertia;
@@ -281,13 +282,21 @@ impl Vehicle {
 
     /// Applies the commands for the coming step of `dt` seconds: steering, wheel spins, then
     /// the tyre and brake solve (with the suspension, for a cast car) on the friction that
-    /// `ground` gives each wheel, whose results rapier integrates.
-    pub(crate) fn pre_step(&mut self, world: &mut PhysicsWorld, ground: &Ground, dt: f64) {
+    /// `ground` gives each wheel, whose results rapier integrates, and the air's force in
+    /// `wind` (m/s, world frame) if the car has [`VehicleSpec::aero`].
+    pub(crate) fn pre_step(
+        &mut self,
+        world: &mut PhysicsWorld,
+        ground: &Ground,
+        wind: Vector,
+        dt: f64,
+    ) {
         self.step_wipers(dt);
         match self.parts.clone() {
             Parts::Cast(p) => self.step_on(&p, world, ground, dt),
             Parts::Joints(p) => self.step_on(&p, world, ground, dt),
         }
+        self.apply_aero(world, wind);
     }
 
     /// True for a car on rapier joints ([`Mounting::Joints`]).

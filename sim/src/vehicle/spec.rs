@@ -5,7 +5,7 @@ use ackermann::{PerWheel, Wheel};
 use proto_geom::nalgebra::{Point3, Vector3};
 use proto_geom::plausible;
 use proto_geom::{VehicleDimensions, VehicleLayout};
-use vehicle_model::{CarParams, TyreClass, TyreField, TyreModel, WebotsContact};
+use vehicle_model::{Aero, CarParams, TyreClass, TyreField, TyreModel, WebotsContact};
 
 use crate::error::{ParamError, Rule};
 
@@ -182,6 +182,10 @@ pub struct VehicleSpec {
     pub tyres: TyreSpec,
     /// How the wheels hang on the chassis.
     pub mounting: Mounting,
+    /// The body's aerodynamic drag and lift ([`Aero`], SAE J1594's convention: drag at ground
+    /// level midway between the axles, lift at the axles), relative to the world's wind;
+    /// `None` (the default, as in Webots): no air.
+    pub aero: Option<Aero<f64>>,
 }
 
 /// The tyre model of `choice` for a wheel of `radius` (m) carrying `load` (N) at rest.
@@ -300,6 +304,13 @@ impl VehicleSpec {
             ParamError::within("wheel.mass", s.mass, plausible::MASS)?;
         }
         self.check_mounting().map_err(|(_, e)| e)?;
+        if let Some(aero) = self.aero {
+            aero.validated().map_err(|e| ParamError {
+                field: e.field,
+                value: e.value,
+                rule: Rule::Text(e.rule),
+            })?;
+        }
         for (k, c) in [
             (
                 "suspensionFrontSpringConstant",
@@ -441,6 +452,7 @@ impl VehicleSpec {
                 rear: TyreModel::Webots(WebotsContact::default()),
             },
             mounting: Mounting::Cast,
+            aero: None,
         };
         spec.validate()?;
         // One nominal load for all four tyres, the car's mean static wheel load: the tyre's

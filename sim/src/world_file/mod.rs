@@ -29,6 +29,7 @@
 //! # Ok::<(), sim::world_file::WorldFileError>(())
 //! ```
 
+mod aero;
 mod bodies;
 mod devices;
 mod error;
@@ -88,11 +89,12 @@ pub fn model_world_text(model: Model) -> String {
 }
 
 /// Top-level keys of a world file.
-const ROOT_KEYS: [&str; 12] = [
+const ROOT_KEYS: [&str; 13] = [
     "basicTimeStep",
     "duration",
     REPLAY_OVERLAY,
     "gravity",
+    statics::WIND,
     "vehicle",
     "differential_wheels",
     "ground",

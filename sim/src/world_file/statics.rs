@@ -33,7 +33,10 @@ pub(crate) const RAMP_KEYS: [&str; 9] = [
     "radarCrossSection",
 ];
 
-/// Reads `basicTimeStep`, `gravity`, `[ground]`, `[[box]]` and `[[ramp]]` into a validated
+/// The top-level key of the wind (m/s, world frame, `[x, y, z]`).
+pub(crate) const WIND: &str = "wind";
+
+/// Reads `basicTimeStep`, `gravity`, `wind`, `[ground]`, `[[box]]` and `[[ramp]]` into a validated
 /// [`WorldConfig`]; absent keys keep the defaults of [`WorldConfig::default`].
 pub(crate) fn read_world(root: &Section<'_, '_>) -> Result<WorldConfig, WorldFileError> {
     let mut config = WorldConfig::default();
@@ -61,6 +64,10 @@ pub(crate) fn read_world(root: &Section<'_, '_>) -> Result<WorldConfig, WorldFil
             ));
         }
         config.gravity = Vector3::new(0.0, 0.0, -g);
+    }
+    if let Some([x, y, z]) = root.array::<3>(WIND)? {
+        config.wind = Vector3::new(x, y, z);
+        located(root, WIND, &config)?;
     }
     if let Some(ground) = root.table("ground")? {
         ground.check_keys(&GROUND_KEYS)?;

@@ -7,8 +7,8 @@ use proto_geom::WheelField;
 use proto_geom::plausible::Compact;
 use toml::de::DeValue;
 use vehicle_model::{
-    BrakeBalance, CarParams, FieldError, FieldKind, FieldPath, FieldValue, Model, ParamWarning,
-    Wheel, WheelSetting, WheelSlot,
+    Aero, BrakeBalance, CarParams, FieldError, FieldKind, FieldPath, FieldValue, Model,
+    ParamWarning, Wheel, WheelSetting, WheelSlot,
 };
 
 use super::devices::{DEVICE, read_devices};
@@ -18,7 +18,7 @@ use super::error::{
 use super::lane_programme::read_lane_programme;
 use super::programme::{PROGRAMME, read_car_keys, read_car_programme};
 use super::read::{Section, as_f64, describe};
-use super::tyre;
+use super::{aero, tyre};
 use crate::devices::DeviceSpec;
 use crate::error::ParamError;
 use crate::keyboard::KeyPress;
@@ -42,8 +42,9 @@ const BRAKE_BALANCES: [(&str, BrakeBalance<f64>); 2] = [
 ];
 
 /// The keys of `[vehicle]` that are neither Webots fields nor wheel slots.
-const OWN_KEYS: [&str; 11] = [
+const OWN_KEYS: [&str; 12] = [
     "model",
+    aero::KEY,
     "color",
     "recognitionColors",
     "tyre",
@@ -99,6 +100,9 @@ pub struct CarDescription {
     pub seed: u64,
     /// Its `radarCrossSection` (m², ≥ 0; default 0 as in Webots: radars do not see it).
     pub radar_cross_section: f64,
+    /// The air on its body (`aero = true` for the model's coefficients, or `[vehicle.aero]`);
+    /// `None` (the default, as in Webots): no air.
+    pub aero: Option<Aero<f64>>,
 }
 
 impl CarDescription {
@@ -126,6 +130,7 @@ impl CarDescription {
                 devices: Vec::new(),
                 seed: 0,
                 radar_cross_section: 0.0,
+                aero: None,
             },
             messages,
         ))
@@ -162,6 +167,7 @@ pub(crate) fn read_vehicle(
         })?,
     };
     let tyre = tyre::read_tyre(s, model)?;
+    let aero = aero::read_aero(s, model)?;
     let mounting = match s.string(MOUNTING)? {
         None => Mounting::default(),
         Some(name) => MOUNTINGS
@@ -295,6 +301,7 @@ pub(crate) fn read_vehicle(
         devices,
         seed,
         radar_cross_section,
+        aero,
     })
 }
 
