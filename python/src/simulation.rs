@@ -24,6 +24,28 @@ struct Car {
     model: &'static str,
 }
 
+/// `Simulation.snapshot()`'s opaque state: the engine's [`sim::Snapshot`] and how many cars and
+/// warnings the simulation had then.
+#[pyclass(module = "webots_vehicle._native", unsendable)]
+pub(crate) struct Snapshot {
+    state: sim::Snapshot,
+    cars: usize,
+    warnings: usize,
+}
+
+#[pymethods]
+impl Snapshot {
+    /// Simulated time when the snapshot was taken (s).
+    #[getter]
+    fn time(&self) -> f64 {
+        self.state.time_ms() as f64 / 1000.0
+    }
+
+    fn __repr__(&self) -> String {
+        format!("<Snapshot at t = {} s>", self.time())
+    }
+}
+
 /// The name of a `webots_vehicle.Simulation` run in its outputs (the `scenario` column).
 const RUN: &str = "simulation";
 
@@ -261,6 +283,28 @@ impl Simulation {
         Ok(!self.simulation.is_over())
     }
 
+    /// The whole state of the simulation now (physics, drivers, devices and their noise, time,
+    /// recording length), for `restore`.
+    fn snapshot(&self) -> Snapshot {
+        Snapshot {
+            state: self.simulation.snapshot(),
+            cars: self.cars.len(),
+            warnings: self.warnings.len(),
+        }
+    }
+
+    /// Puts the simulation back in the state of `snapshot` (taken of this simulation; it can
+    /// be restored again): the run continues bit for bit as it did from there, the cars added
+    /// and the samples recorded since are gone.
+    fn restore(&mut self, snapshot: &Snapshot) -> PyResult<()> {
+        self.simulation
+            .restore(&snapshot.state)
+            .map_err(|e| SimulationError::new_err(format!("cannot restore: {e}")))?;
+        self.cars.truncate(snapshot.cars);
+        self.warnings.truncate(snapshot.warnings);
+        Ok(())
+    }
+
     /// Writes the run recorded so far into `dir` (`telemetry.csv`, `metrics.json`,
     /// `replay.glb`); returns the paths written (none before the first step).
     fn save(&self, dir: std::path::PathBuf) -> PyResult<Vec<std::path::PathBuf>> {
@@ -388,6 +432,7 @@ fn table<'py>(py: Python<'py>, samples: &[Sample]) -> Bound<'py, PyBytes> {
 /// Adds the class to the module.
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Simulation>()?;
+    m.add_class::<Snapshot>()?;
     m.add("TELEMETRY_COLUMNS", SAMPLE_COLUMNS)?;
     Ok(())
 }

@@ -23,6 +23,9 @@ use crate::ground::{Ground, Surface};
 use crate::road::RoadError;
 use crate::vehicle::{Vehicle, VehicleId, VehiclePlacement, VehicleSpec, WheelRoadHooks};
 
+mod snapshot;
+pub(crate) use snapshot::WorldSnapshot;
+
 /// A physics world with a flat ground at z = 0, static obstacles, cars and DifferentialWheels
 /// robots, advanced by [`World::step`] in fixed steps of `basicTimeStep`.
 ///

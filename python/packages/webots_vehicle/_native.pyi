@@ -160,6 +160,13 @@ def wbu_car_enable_indicator_auto_disabling(enable: int) -> None: ...
 def bench_driver_steps(steps: int) -> float:
     """Runs ``wbu_driver_step`` ``steps`` times from Rust; the wall-clock time (s)."""
 
+class Snapshot:
+    """A :class:`Simulation`'s whole state at one instant (opaque)."""
+
+    @property
+    def time(self) -> float:
+        """Simulated time when it was taken (s)."""
+
 class Simulation:
     """The core of :class:`webots_vehicle.Simulation` (one world, its cars, their telemetry).
     It belongs to the thread that created it."""
@@ -197,6 +204,10 @@ class Simulation:
     def model(self, car: int) -> str: ...
     def geometry(self, car: int) -> Tuple[float, float, float, float, float]:
         """Wheelbase, front track, rear track, front and rear tyre radius (m)."""
+    def snapshot(self) -> Snapshot:
+        """The whole state now, for :meth:`restore`."""
+    def restore(self, snapshot: Snapshot) -> None:
+        """Back to ``snapshot`` (SimulationError for another simulation's)."""
     def step(self, steps: int, drivers: bool = True) -> bool:
         """Up to ``steps`` steps (physics only if not ``drivers``); False once the duration has
         elapsed."""

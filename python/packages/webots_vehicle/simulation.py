@@ -272,6 +272,21 @@ class Simulation:
         ``wbu_driver_step``); a steering angle set since still acts, as in Webots."""
         return self._core.step(max(0, int(steps)), bool(drivers))
 
+    def snapshot(self) -> "_native.Snapshot":
+        """The whole state of the simulation now, as an opaque object for :meth:`restore`:
+        the physics (bodies, joints, contacts and their solver caches), every car's driver
+        library and devices (with their noise generators), the time, and how far the
+        telemetry has been recorded. Its ``time`` attribute is the simulated time (s)."""
+        return self._core.snapshot()
+
+    def restore(self, snapshot: "_native.Snapshot") -> None:
+        """Puts the simulation back in the state of ``snapshot`` (taken of this simulation;
+        it stays valid and can be restored again): stepping on repeats, bit for bit, what
+        followed it. Cars added and telemetry recorded since are dropped. A snapshot of another
+        simulation raises :class:`~webots_vehicle.SimulationError`."""
+        self._core.restore(snapshot)
+        del self._cars[self._core.car_count :]
+
     def save(self, directory: Union[str, "os.PathLike[str]"]) -> List[str]:
         """Writes the run so far into ``directory`` (created if needed) as ``vehicle-sim``
         writes a run: ``telemetry.csv``, ``devices.csv`` (the enabled devices' readings),
