@@ -24,7 +24,9 @@ use crate::road::RoadError;
 use crate::vehicle::{Vehicle, VehicleId, VehiclePlacement, VehicleSpec, WheelRoadHooks};
 
 mod snapshot;
+mod supervisor;
 pub(crate) use snapshot::WorldSnapshot;
+pub use supervisor::Placement;
 
 /// A physics world with a flat ground at z = 0, static obstacles, cars and DifferentialWheels
 /// robots, advanced by [`World::step`] in fixed steps of `basicTimeStep`.

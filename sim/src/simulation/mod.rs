@@ -134,6 +134,8 @@ pub struct Simulation {
     road_patches: Option<Arc<[Patch]>>,
     /// Tells this simulation's snapshots from others'.
     serial: u64,
+    /// The world as loaded, for [`Simulation::simulation_reset`].
+    loaded: Option<Box<Snapshot>>,
 }
 
 impl Simulation {
@@ -151,6 +153,7 @@ impl Simulation {
             appearances: Appearances::default(),
             road_patches: None,
             serial: snapshot::next_serial(),
+            loaded: None,
         }
     }
 
@@ -197,6 +200,7 @@ impl Simulation {
             sim.set_appearance(*object, appearance.clone())?;
         }
         sim.set_replay_overlay(description.replay_overlay);
+        sim.loaded = Some(Box::new(sim.snapshot()));
         Ok((sim, reports))
     }
 

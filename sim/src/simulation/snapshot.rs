@@ -30,6 +30,9 @@ pub enum SnapshotError {
         "the snapshot's recording is no longer the simulation's (restarted or handed over since)"
     )]
     OtherRecording,
+    /// [`Simulation::simulation_reset`] on a simulation not built from a world description.
+    #[error("the simulation was not loaded from a world description: there is nothing to reset to")]
+    NotLoaded,
     /// A log's temporary file could not be shortened back to the snapshot's length.
     #[error("the telemetry's temporary file could not be shortened: {0}")]
     Io(String),
@@ -122,5 +125,20 @@ impl Simulation {
         self.appearances.clone_from(&snap.appearances);
         self.road_patches.clone_from(&snap.road_patches);
         Ok(())
+    }
+
+    /// Puts the simulation back as [`Simulation::from_description`] built it: time 0, every car
+    /// and body where the world file put it, the drivers and devices as new, no recording
+    /// (the next [`Simulation::record`] starts one). Webots: `wb_supervisor_simulation_reset`.
+    ///
+    /// # Errors
+    /// [`SnapshotError::NotLoaded`] for a simulation built with [`Simulation::new`].
+    pub fn simulation_reset(&mut self) -> Result<(), SnapshotError> {
+        let loaded = self.loaded.take().ok_or(SnapshotError::NotLoaded)?;
+        // Dropping the recording cannot fail: the loaded state has none.
+        self.recording = None;
+        let restored = self.restore(&loaded);
+        self.loaded = Some(loaded);
+        restored
     }
 }

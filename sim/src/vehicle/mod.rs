@@ -77,6 +77,7 @@ mod multibody;
 mod spec;
 mod state;
 mod step;
+pub(crate) mod teleport;
 mod tread;
 mod wheels;
 
