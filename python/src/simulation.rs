@@ -75,6 +75,14 @@ fn world_error(py: Python<'_>, e: &WorldFileError) -> PyErr {
     err
 }
 
+/// A refused placement (a value out of range: ValueError) or a missing car or body.
+fn placement_error(e: &SimError) -> PyErr {
+    match e {
+        SimError::Param(p) => PyValueError::new_err(p.to_string()),
+        other => sim_error(other),
+    }
+}
+
 /// A physics failure as a Python `RuntimeError`.
 fn sim_error(e: &SimError) -> PyErr {
     SimulationError::new_err(format!("the simulation failed: {e}"))
@@ -128,6 +136,21 @@ impl Simulation {
     fn driver(&self, car: usize) -> PyResult<&vehicle_model::Driver<f64>> {
         let id = self.car(car)?.id;
         self.simulation.driver(id).map_err(|e| sim_error(&e))
+    }
+
+    /// `index` as a body index, if `kind` is "body".
+    fn body_index(&self, kind: &str, index: usize) -> PyResult<usize> {
+        if kind != "body" {
+            return Err(PyValueError::new_err(format!(
+                "kind must be 'car' or 'body', not {kind:?}"
+            )));
+        }
+        if index >= self.simulation.world().body_count() {
+            return Err(PyIndexError::new_err(format!(
+                "no body {index} in this simulation"
+            )));
+        }
+        Ok(index)
     }
 
     /// Car `car`'s log, empty before the first step.
@@ -302,6 +325,93 @@ impl Simulation {
             .map_err(|e| SimulationError::new_err(format!("cannot restore: {e}")))?;
         self.cars.truncate(snapshot.cars);
         self.warnings.truncate(snapshot.warnings);
+        Ok(())
+    }
+
+    /// Where car or body `index` is (`kind` "car" or "body"): translation (m), rotation
+    /// (Webots axis-angle: unit axis, rad), velocity (m/s) and angular velocity (rad/s), world.
+    #[allow(clippy::type_complexity)]
+    fn placement(
+        &self,
+        kind: &str,
+        index: usize,
+    ) -> PyResult<([f64; 3], [f64; 4], [f64; 3], [f64; 3])> {
+        let world = self.simulation.world();
+        let p = match kind {
+            "car" => world.vehicle_placement(self.car(index)?.id),
+            _ => world.body_placement(self.body_index(kind, index)?),
+        }
+        .map_err(|e| placement_error(&e))?;
+        Ok((
+            p.position.coords.into(),
+            p.axis_angle(),
+            p.velocity.into(),
+            p.angular_velocity.into(),
+        ))
+    }
+
+    /// Puts car or body `index` at `translation` (m) with Webots `rotation` (axis, rad).
+    fn set_pose(
+        &mut self,
+        kind: &str,
+        index: usize,
+        translation: [f64; 3],
+        rotation: [f64; 4],
+    ) -> PyResult<()> {
+        let q = sim::rotation_from_axis_angle(rotation)
+            .map_err(|e| PyValueError::new_err(e.to_string()))?;
+        let at = sim::nalgebra::Point3::from(translation);
+        let done = match kind {
+            "car" => {
+                let id = self.car(index)?.id;
+                self.simulation.world_mut().set_vehicle_pose(id, &at, &q)
+            }
+            _ => {
+                let i = self.body_index(kind, index)?;
+                self.simulation.world_mut().set_body_pose(i, &at, &q)
+            }
+        };
+        done.map_err(|e| placement_error(&e))
+    }
+
+    /// Gives car or body `index` the velocity `linear` (m/s) and `angular` (rad/s), world.
+    fn set_velocity(
+        &mut self,
+        kind: &str,
+        index: usize,
+        linear: [f64; 3],
+        angular: [f64; 3],
+    ) -> PyResult<()> {
+        let (l, a) = (
+            sim::nalgebra::Vector3::from(linear),
+            sim::nalgebra::Vector3::from(angular),
+        );
+        let done = match kind {
+            "car" => {
+                let id = self.car(index)?.id;
+                self.simulation.world_mut().set_vehicle_velocity(id, &l, &a)
+            }
+            _ => {
+                let i = self.body_index(kind, index)?;
+                self.simulation.world_mut().set_body_velocity(i, &l, &a)
+            }
+        };
+        done.map_err(|e| placement_error(&e))
+    }
+
+    /// The number of dynamic bodies (`[[body]]`).
+    #[getter]
+    fn body_count(&self) -> usize {
+        self.simulation.world().body_count()
+    }
+
+    /// Back to the world as loaded (time 0, cars added since dropped, recording restarted at
+    /// the next step).
+    fn simulation_reset(&mut self) -> PyResult<()> {
+        self.simulation
+            .simulation_reset()
+            .map_err(|e| SimulationError::new_err(format!("cannot reset: {e}")))?;
+        self.cars.truncate(self.description.cars.len());
         Ok(())
     }
 

@@ -131,4 +131,7 @@ pub use vehicle::{
     ChassisSpec, Mounting, SpringDamper, SteeringSpec, TyreChoice, TyreSpec, TyreTelemetry,
     Vehicle, VehicleId, VehiclePlacement, VehicleSpec, VehicleState, WheelSpec,
 };
-pub use world::{MAX_SUBSTEPS, MAX_WHEEL_ROTATION_PER_SUBSTEP, Placement, ROAD_LIFT, World};
+pub use world::{
+    MAX_SUBSTEPS, MAX_WHEEL_ROTATION_PER_SUBSTEP, Placement, ROAD_LIFT, World,
+    rotation_from_axis_angle,
+};

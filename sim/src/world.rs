@@ -26,7 +26,7 @@ use crate::vehicle::{Vehicle, VehicleId, VehiclePlacement, VehicleSpec, WheelRoa
 mod snapshot;
 mod supervisor;
 pub(crate) use snapshot::WorldSnapshot;
-pub use supervisor::Placement;
+pub use supervisor::{Placement, rotation_from_axis_angle};
 
 /// A physics world with a flat ground at z = 0, static obstacles, cars and DifferentialWheels
 /// robots, advanced by [`World::step`] in fixed steps of `basicTimeStep`.

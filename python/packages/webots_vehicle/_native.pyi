@@ -204,6 +204,21 @@ class Simulation:
     def model(self, car: int) -> str: ...
     def geometry(self, car: int) -> Tuple[float, float, float, float, float]:
         """Wheelbase, front track, rear track, front and rear tyre radius (m)."""
+    @property
+    def body_count(self) -> int: ...
+    def placement(
+        self, kind: str, index: int
+    ) -> Tuple[List[float], List[float], List[float], List[float]]:
+        """Translation (m), rotation (axis, rad), velocity (m/s), angular velocity (rad/s) of
+        car or body ``index`` (``kind`` "car" or "body")."""
+    def set_pose(
+        self, kind: str, index: int, translation: List[float], rotation: List[float]
+    ) -> None: ...
+    def set_velocity(
+        self, kind: str, index: int, linear: List[float], angular: List[float]
+    ) -> None: ...
+    def simulation_reset(self) -> None:
+        """Back to the world as loaded."""
     def snapshot(self) -> Snapshot:
         """The whole state now, for :meth:`restore`."""
     def restore(self, snapshot: Snapshot) -> None:

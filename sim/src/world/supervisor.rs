@@ -8,7 +8,7 @@ use proto_geom::nalgebra::{Point3, UnitQuaternion, Vector3};
 use rapier3d::prelude::{Pose, RigidBodyHandle};
 
 use super::World;
-use crate::error::SimError;
+use crate::error::{ParamError, SimError};
 use crate::geom;
 use crate::vehicle::{VehicleId, teleport};
 
@@ -25,6 +25,40 @@ pub struct Placement {
     pub velocity: Vector3<f64>,
     /// Angular velocity (rad/s). Webots: `wb_supervisor_node_get_velocity`'s last three.
     pub angular_velocity: Vector3<f64>,
+}
+
+impl Placement {
+    /// The orientation as Webots' `rotation` field: unit axis and angle (rad, in [0, π]);
+    /// `[0, 0, 1, 0]` for no rotation.
+    pub fn axis_angle(&self) -> [f64; 4] {
+        match self.rotation.axis_angle() {
+            Some((axis, angle)) => [axis.x, axis.y, axis.z, angle],
+            None => [0.0, 0.0, 1.0, 0.0],
+        }
+    }
+}
+
+/// The rotation of Webots' `rotation` field `[x, y, z, angle]` (axis, any length but zero, and
+/// angle in rad).
+///
+/// # Errors
+/// [`ParamError`] naming `rotation.angle` or the axis component that is not finite, or
+/// `rotation` for a zero axis.
+pub fn rotation_from_axis_angle(rotation: [f64; 4]) -> Result<UnitQuaternion<f64>, ParamError> {
+    let [x, y, z, angle] = rotation;
+    for (name, v) in ["rotation.x", "rotation.y", "rotation.z", "rotation.angle"]
+        .into_iter()
+        .zip(rotation)
+    {
+        ParamError::finite(name, v)?;
+    }
+    let axis = Vector3::new(x, y, z);
+    let norm = axis.norm();
+    ParamError::check("rotation axis length", norm, "> 0", |n| n > 0.0)?;
+    Ok(UnitQuaternion::from_axis_angle(
+        &proto_geom::nalgebra::Unit::new_normalize(axis),
+        angle,
+    ))
 }
 
 impl World {
