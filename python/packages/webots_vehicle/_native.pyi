@@ -217,6 +217,13 @@ class Simulation:
     def set_velocity(
         self, kind: str, index: int, linear: List[float], angular: List[float]
     ) -> None: ...
+    def road_reading(self, car: int) -> Optional[List[float]]:
+        """Car ``car``'s first RoadSensor: road (-1 off), lane, s, lateral offset, heading
+        error, curvature, curvature ahead, left/right line, left/right edge, lane width."""
+    def radar_targets(self, car: int) -> List[List[float]]:
+        """Car ``car``'s first Radar's targets: distance, received power, speed, azimuth."""
+    def touching(self, car: int) -> bool:
+        """True while car ``car`` touches another car."""
     def simulation_reset(self) -> None:
         """Back to the world as loaded."""
     def snapshot(self) -> Snapshot:
@@ -268,3 +275,20 @@ class Sweep:
     def csv_header(self) -> str: ...
     def values(self, index: int) -> List[Any]: ...
     def run_case(self, index: int) -> Tuple[List[Any], str]: ...
+
+def supervisor_node_from_def(def_name: str) -> Optional[Tuple[str, int]]:
+    """The controller world's node of DEF name ``def_name``: ("car" or "body", index)."""
+
+def supervisor_placement(
+    kind: str, index: int
+) -> Tuple[List[float], List[float], List[float], List[float]]:
+    """Translation (m), rotation (axis, rad), velocity (m/s), angular velocity (rad/s)."""
+
+def supervisor_set_pose(
+    kind: str, index: int, translation: List[float], rotation: List[float]
+) -> None: ...
+def supervisor_set_velocity(
+    kind: str, index: int, linear: List[float], angular: List[float]
+) -> None: ...
+def supervisor_simulation_reset() -> None:
+    """The controller's world back as loaded."""
