@@ -26,6 +26,11 @@ returns the devices a world file puts on the car (``[[vehicle.device]]``) as :cl
 Webots' method names, measured by the same engine code as the C API's; the car's own devices
 (motors, brakes, lights) as a plain :class:`Device` (names and node types only); ``None`` for
 names the robot does not have. Warnings and errors go to stderr with Webots' texts.
+
+:class:`Supervisor` adds Webots' calls for placing the world's cars and dynamic bodies
+(``getFromDef``, ``Node.getField("translation"/"rotation")``, ``Field.get/setSFVec3f``,
+``get/setSFRotation``, ``Node.getVelocity/setVelocity``, ``resetPhysics``,
+``simulationReset``).
 """
 
 import atexit
