@@ -45,14 +45,14 @@ fn settled(mounting: &str) -> (Simulation, VehicleId) {
 /// solution from `v₀` is `v(t) = (v₀ + A/B)·e^(−B·t) − A/B`.
 fn rolls_on(mounting: &str) {
     let (mut sim, id) = settled(mounting);
-    let spec = sim.world().vehicle(id).unwrap().spec().clone();
+    let spec = *sim.world().vehicle(id).unwrap().spec();
     let forward = Vector3::new(20.0, 0.0, 0.0);
     sim.world_mut()
         .set_vehicle_velocity(id, &forward, &Vector3::zeros())
         .unwrap();
     // The wheels spin at free rolling at once: v / r, v along each wheel's heading, which
     // the settled car's pitch and toe turn from x by well under 0.01 rad (cos > 1 − 5·10⁻⁵).
-    let state = sim.world().vehicle(id).unwrap().state().clone();
+    let state = *sim.world().vehicle(id).unwrap().state();
     for (w, omega) in state.wheel_speeds.0.iter().enumerate() {
         let r = spec.wheels.0[w].radius;
         assert!(
