@@ -84,6 +84,7 @@ mod robot_api;
 mod sensor;
 mod sensor_api;
 mod session;
+pub mod supervisor;
 
 pub use abi::WbDeviceTag;
 pub use camera_api::*;

@@ -230,6 +230,14 @@ impl Robot {
         })
     }
 
+    /// Puts the other cars' programmes back to their start, for a simulation reset to time 0.
+    pub(crate) fn rewind_programmes(&mut self) {
+        for other in &mut self.others {
+            other.next = 0;
+            other.lanes_next = 0;
+        }
+    }
+
     /// Gives the other cars' drivers the commands of their programmes due now.
     fn run_programmes(&mut self) {
         let t = self.simulation.world().time();

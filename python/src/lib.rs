@@ -7,6 +7,8 @@
 //! * `Simulation`, the core of the Pythonic `webots_vehicle.Simulation`: a world of
 //!   `sim::Simulation`, cars added at will, per-step telemetry, the `vehicle-sim` scenarios
 //!   (module `simulation`).
+//! * Webots' Supervisor subset (`supervisor_*`), the `capi` crate's `supervisor` functions on
+//!   the controller's world, for `controller.Supervisor` (module `supervisor`).
 //! * `Sweep`, the core of `webots_vehicle.Sweep`: a sweep file's cases by index, each run into
 //!   the row `vehicle-sim sweep` writes for it (module `sweep`).
 //!
@@ -19,6 +21,7 @@ mod ray_sensors;
 mod road_sensor;
 mod sensors;
 mod simulation;
+mod supervisor;
 mod sweep;
 mod webots;
 
@@ -57,6 +60,7 @@ fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     ray_sensors::register(m)?;
     road_sensor::register(m)?;
     simulation::register(m)?;
+    supervisor::register(m)?;
     sweep::register(m)?;
     Ok(())
 }

@@ -10,6 +10,7 @@ use pyo3::exceptions::{PyIndexError, PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyByteArray, PyBytes};
 
+use sim::devices::Reading;
 use sim::scenario::{self, Scenario};
 use sim::telemetry::{CSV_HEADER, SAMPLE_COLUMNS, Sample, TelemetryLog};
 use sim::world_file::{self, WorldDescription, WorldFileError};
@@ -22,6 +23,28 @@ use crate::{SimulationError, WorldError};
 struct Car {
     id: VehicleId,
     model: &'static str,
+}
+
+/// `Simulation.snapshot()`'s opaque state: the engine's [`sim::Snapshot`] and how many cars and
+/// warnings the simulation had then.
+#[pyclass(module = "webots_vehicle._native", unsendable)]
+pub(crate) struct Snapshot {
+    state: sim::Snapshot,
+    cars: usize,
+    warnings: usize,
+}
+
+#[pymethods]
+impl Snapshot {
+    /// Simulated time when the snapshot was taken (s).
+    #[getter]
+    fn time(&self) -> f64 {
+        self.state.time_ms() as f64 / 1000.0
+    }
+
+    fn __repr__(&self) -> String {
+        format!("<Snapshot at t = {} s>", self.time())
+    }
 }
 
 /// The name of a `webots_vehicle.Simulation` run in its outputs (the `scenario` column).
@@ -51,6 +74,14 @@ fn world_error(py: Python<'_>, e: &WorldFileError) -> PyErr {
     let _ = value.setattr("column", column);
     let _ = value.setattr("key", e.key.as_deref());
     err
+}
+
+/// A refused placement (a value out of range: ValueError) or a missing car or body.
+fn placement_error(e: &SimError) -> PyErr {
+    match e {
+        SimError::Param(p) => PyValueError::new_err(p.to_string()),
+        other => sim_error(other),
+    }
 }
 
 /// A physics failure as a Python `RuntimeError`.
@@ -106,6 +137,21 @@ impl Simulation {
     fn driver(&self, car: usize) -> PyResult<&vehicle_model::Driver<f64>> {
         let id = self.car(car)?.id;
         self.simulation.driver(id).map_err(|e| sim_error(&e))
+    }
+
+    /// `index` as a body index, if `kind` is "body".
+    fn body_index(&self, kind: &str, index: usize) -> PyResult<usize> {
+        if kind != "body" {
+            return Err(PyValueError::new_err(format!(
+                "kind must be 'car' or 'body', not {kind:?}"
+            )));
+        }
+        if index >= self.simulation.world().body_count() {
+            return Err(PyIndexError::new_err(format!(
+                "no body {index} in this simulation"
+            )));
+        }
+        Ok(index)
     }
 
     /// Car `car`'s log, empty before the first step.
@@ -261,6 +307,173 @@ impl Simulation {
         Ok(!self.simulation.is_over())
     }
 
+    /// The whole state of the simulation now (physics, drivers, devices and their noise, time,
+    /// recording length), for `restore`.
+    fn snapshot(&self) -> Snapshot {
+        Snapshot {
+            state: self.simulation.snapshot(),
+            cars: self.cars.len(),
+            warnings: self.warnings.len(),
+        }
+    }
+
+    /// Puts the simulation back in the state of `snapshot` (taken of this simulation; it can
+    /// be restored again): the run continues bit for bit as it did from there, the cars added
+    /// and the samples recorded since are gone.
+    fn restore(&mut self, snapshot: &Snapshot) -> PyResult<()> {
+        self.simulation
+            .restore(&snapshot.state)
+            .map_err(|e| SimulationError::new_err(format!("cannot restore: {e}")))?;
+        self.cars.truncate(snapshot.cars);
+        self.warnings.truncate(snapshot.warnings);
+        Ok(())
+    }
+
+    /// Where car or body `index` is (`kind` "car" or "body"): translation (m), rotation
+    /// (Webots axis-angle: unit axis, rad), velocity (m/s) and angular velocity (rad/s), world.
+    #[allow(clippy::type_complexity)]
+    fn placement(
+        &self,
+        kind: &str,
+        index: usize,
+    ) -> PyResult<([f64; 3], [f64; 4], [f64; 3], [f64; 3])> {
+        let world = self.simulation.world();
+        let p = match kind {
+            "car" => world.vehicle_placement(self.car(index)?.id),
+            _ => world.body_placement(self.body_index(kind, index)?),
+        }
+        .map_err(|e| placement_error(&e))?;
+        Ok((
+            p.position.coords.into(),
+            p.axis_angle(),
+            p.velocity.into(),
+            p.angular_velocity.into(),
+        ))
+    }
+
+    /// Puts car or body `index` at `translation` (m) with Webots `rotation` (axis, rad).
+    fn set_pose(
+        &mut self,
+        kind: &str,
+        index: usize,
+        translation: [f64; 3],
+        rotation: [f64; 4],
+    ) -> PyResult<()> {
+        let q = sim::rotation_from_axis_angle(rotation)
+            .map_err(|e| PyValueError::new_err(e.to_string()))?;
+        let at = sim::nalgebra::Point3::from(translation);
+        let done = match kind {
+            "car" => {
+                let id = self.car(index)?.id;
+                self.simulation.world_mut().set_vehicle_pose(id, &at, &q)
+            }
+            _ => {
+                let i = self.body_index(kind, index)?;
+                self.simulation.world_mut().set_body_pose(i, &at, &q)
+            }
+        };
+        done.map_err(|e| placement_error(&e))
+    }
+
+    /// Gives car or body `index` the velocity `linear` (m/s) and `angular` (rad/s), world.
+    fn set_velocity(
+        &mut self,
+        kind: &str,
+        index: usize,
+        linear: [f64; 3],
+        angular: [f64; 3],
+    ) -> PyResult<()> {
+        let (l, a) = (
+            sim::nalgebra::Vector3::from(linear),
+            sim::nalgebra::Vector3::from(angular),
+        );
+        let done = match kind {
+            "car" => {
+                let id = self.car(index)?.id;
+                self.simulation.world_mut().set_vehicle_velocity(id, &l, &a)
+            }
+            _ => {
+                let i = self.body_index(kind, index)?;
+                self.simulation.world_mut().set_body_velocity(i, &l, &a)
+            }
+        };
+        done.map_err(|e| placement_error(&e))
+    }
+
+    /// The last reading of car `car`'s first RoadSensor: road index (−1 off the roads), lane
+    /// (0 off the roads), s (m), lateral offset (m), heading error (rad), curvature and
+    /// curvature ahead (1/m), left and right line, left and right edge, lane width (m); NaN
+    /// where unsampled or off the roads. None if the car has no RoadSensor.
+    fn road_reading(&self, car: usize) -> PyResult<Option<[f64; 12]>> {
+        let id = self.car(car)?.id;
+        let devices = self.simulation.devices(id).map_err(|e| sim_error(&e))?;
+        Ok(devices.iter().find_map(|d| match d.reading() {
+            Reading::Road(r) => Some([
+                r.road.map_or(-1.0, |i| i as f64),
+                f64::from(r.lane.unwrap_or(0)),
+                r.s,
+                r.lateral_offset,
+                r.heading_error,
+                r.curvature,
+                r.curvature_ahead,
+                r.left_line,
+                r.right_line,
+                r.left_edge,
+                r.right_edge,
+                r.lane_width,
+            ]),
+            _ => None,
+        }))
+    }
+
+    /// The last targets of car `car`'s first Radar: distance (m), received power (dBm), speed
+    /// (m/s, > 0 receding), azimuth (rad, > 0 right) each; empty before its first sample or
+    /// without a radar.
+    fn radar_targets(&self, car: usize) -> PyResult<Vec<[f64; 4]>> {
+        let id = self.car(car)?.id;
+        let devices = self.simulation.devices(id).map_err(|e| sim_error(&e))?;
+        Ok(devices
+            .iter()
+            .find_map(|d| match d.reading() {
+                Reading::Radar(targets) => Some(
+                    targets
+                        .iter()
+                        .flatten()
+                        .map(|t| [t.distance, t.received_power, t.speed, t.azimuth])
+                        .collect(),
+                ),
+                _ => None,
+            })
+            .unwrap_or_default())
+    }
+
+    /// True while car `car` touches another car.
+    fn touching(&self, car: usize) -> PyResult<bool> {
+        let id = self.car(car)?.id;
+        let world = self.simulation.world();
+        Ok(self
+            .cars
+            .iter()
+            .filter(|c| c.id != id)
+            .any(|c| world.vehicles_in_contact(id, c.id).unwrap_or(false)))
+    }
+
+    /// The number of dynamic bodies (`[[body]]`).
+    #[getter]
+    fn body_count(&self) -> usize {
+        self.simulation.world().body_count()
+    }
+
+    /// Back to the world as loaded (time 0, cars added since dropped, recording restarted at
+    /// the next step).
+    fn simulation_reset(&mut self) -> PyResult<()> {
+        self.simulation
+            .simulation_reset()
+            .map_err(|e| SimulationError::new_err(format!("cannot reset: {e}")))?;
+        self.cars.truncate(self.description.cars.len());
+        Ok(())
+    }
+
     /// Writes the run recorded so far into `dir` (`telemetry.csv`, `metrics.json`,
     /// `replay.glb`); returns the paths written (none before the first step).
     fn save(&self, dir: std::path::PathBuf) -> PyResult<Vec<std::path::PathBuf>> {
@@ -388,6 +601,7 @@ fn table<'py>(py: Python<'py>, samples: &[Sample]) -> Bound<'py, PyBytes> {
 /// Adds the class to the module.
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Simulation>()?;
+    m.add_class::<Snapshot>()?;
     m.add("TELEMETRY_COLUMNS", SAMPLE_COLUMNS)?;
     Ok(())
 }

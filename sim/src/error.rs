@@ -206,6 +206,9 @@ pub enum SimError {
     /// A robot handle that this world did not issue.
     #[error("no robot with index {0} in this world")]
     UnknownRobot(usize),
+    /// A dynamic body (`[[body]]`) index that this world does not have.
+    #[error("no dynamic body with index {0} in this world")]
+    UnknownBody(usize),
     /// A body's pose or velocity stopped being finite (or rapier quarantined it) during the step
     /// that ended at `time_ms`. The world refuses to step any further.
     #[error(

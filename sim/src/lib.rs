@@ -126,9 +126,12 @@ pub use diff_wheels::{
 };
 pub use error::{BodyOwner, BodyPart, ParamError, Rule, SimError};
 pub use geom::DEFAULT_FRICTION;
-pub use simulation::{CarTelemetry, MAX_DURATION, Simulation};
+pub use simulation::{CarTelemetry, MAX_DURATION, Simulation, Snapshot, SnapshotError};
 pub use vehicle::{
     ChassisSpec, Mounting, SpringDamper, SteeringSpec, TyreChoice, TyreSpec, TyreTelemetry,
     Vehicle, VehicleId, VehiclePlacement, VehicleSpec, VehicleState, WheelSpec,
 };
-pub use world::{MAX_SUBSTEPS, MAX_WHEEL_ROTATION_PER_SUBSTEP, ROAD_LIFT, World};
+pub use world::{
+    MAX_SUBSTEPS, MAX_WHEEL_ROTATION_PER_SUBSTEP, Placement, ROAD_LIFT, World,
+    rotation_from_axis_angle,
+};

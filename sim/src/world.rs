@@ -23,6 +23,11 @@ use crate::ground::{Ground, Surface};
 use crate::road::RoadError;
 use crate::vehicle::{Vehicle, VehicleId, VehiclePlacement, VehicleSpec, WheelRoadHooks};
 
+mod snapshot;
+mod supervisor;
+pub(crate) use snapshot::WorldSnapshot;
+pub use supervisor::{Placement, rotation_from_axis_angle};
+
 /// A physics world with a flat ground at z = 0, static obstacles, cars and DifferentialWheels
 /// robots, advanced by [`World::step`] in fixed steps of `basicTimeStep`.
 ///

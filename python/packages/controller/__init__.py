@@ -26,6 +26,11 @@ returns the devices a world file puts on the car (``[[vehicle.device]]``) as :cl
 Webots' method names, measured by the same engine code as the C API's; the car's own devices
 (motors, brakes, lights) as a plain :class:`Device` (names and node types only); ``None`` for
 names the robot does not have. Warnings and errors go to stderr with Webots' texts.
+
+:class:`Supervisor` adds Webots' calls for placing the world's cars and dynamic bodies
+(``getFromDef``, ``Node.getField("translation"/"rotation")``, ``Field.get/setSFVec3f``,
+``get/setSFRotation``, ``Node.getVelocity/setVelocity``, ``resetPhysics``,
+``simulationReset``).
 """
 
 import atexit
@@ -53,6 +58,7 @@ __all__ = [
     "Keyboard",
     "Lidar",
     "LidarPoint",
+    "Field",
     "Node",
     "Radar",
     "RadarTarget",
@@ -81,7 +87,8 @@ def _c_double(value: object) -> float:
 
 
 class Node:
-    """Webots' node types (``WbNodeType``, R2023b numbering) of the devices there are."""
+    """Webots' node types (``WbNodeType``, R2023b numbering) of the devices there are, and,
+    from :meth:`Supervisor.getFromDef`, a car or dynamic body a supervisor moves."""
 
     NO_NODE = 0
     ACCELEROMETER = 35
@@ -100,6 +107,112 @@ class Node:
     ROTATIONAL_MOTOR = 57
     SPEAKER = 59
     SOLID = 80
+
+    def __init__(self, kind: str, index: int, def_name: str) -> None:
+        self._kind = kind
+        self._index = index
+        self._def = def_name
+
+    def getDef(self) -> str:
+        """The node's DEF name (a car's ``name``; ``body[N]`` for the N-th ``[[body]]``)."""
+        return self._def
+
+    def getTypeName(self) -> str:
+        """``"Car"`` or ``"Solid"``."""
+        return "Car" if self._kind == "car" else "Solid"
+
+    def getField(self, name: str) -> Optional["Field"]:
+        """The field ``"translation"`` or ``"rotation"`` (the ones a supervisor sets here),
+        None for any other name (Webots: a field the node does not have)."""
+        if name not in ("translation", "rotation"):
+            return None
+        return Field(self, name)
+
+    def getPosition(self) -> List[float]:
+        """The node's position (m, world)."""
+        return list(_native.supervisor_placement(self._kind, self._index)[0])
+
+    def getVelocity(self) -> List[float]:
+        """Linear (m/s; a car's at its origin) and angular (rad/s) velocity, world: six
+        numbers."""
+        _, _, v, w = _native.supervisor_placement(self._kind, self._index)
+        return list(v) + list(w)
+
+    def setVelocity(self, velocity: List[float]) -> None:
+        """Sets the six numbers of :meth:`getVelocity`. A car's wheels spin at free rolling
+        for it and its suspension stops moving. ValueError beyond 200 m/s or 20 rad/s."""
+        values = [_c_double(v) for v in velocity]
+        if len(values) != 6:
+            raise ValueError(f"setVelocity needs 6 numbers, not {len(values)}")
+        _native.supervisor_set_velocity(self._kind, self._index, values[:3], values[3:])
+
+    def resetPhysics(self) -> None:
+        """Stops the node: no velocity, no wheel spin, no suspension motion."""
+        _native.supervisor_set_velocity(self._kind, self._index, [0.0] * 3, [0.0] * 3)
+
+    def __repr__(self) -> str:
+        return f"<Node {self._def}>"
+
+
+class Field:
+    """A node's ``translation`` (``SFVec3f``, m) or ``rotation`` (``SFRotation``: axis and
+    angle in rad) field, from :meth:`Node.getField`. Setting one moves the node at once,
+    keeping the other (a car keeps its velocity in its own frame, its suspension deflection
+    and steering)."""
+
+    SF_VEC3F = 5
+    SF_ROTATION = 6
+
+    def __init__(self, node: Node, name: str) -> None:
+        self._node = node
+        self._name = name
+
+    def getName(self) -> str:
+        return self._name
+
+    def getType(self) -> int:
+        """``SF_VEC3F`` for translation, ``SF_ROTATION`` for rotation."""
+        return Field.SF_VEC3F if self._name == "translation" else Field.SF_ROTATION
+
+    def _pose(self):
+        translation, rotation, _, _ = _native.supervisor_placement(
+            self._node._kind, self._node._index
+        )
+        return list(translation), list(rotation)
+
+    def _check(self, name: str) -> None:
+        if self._name != name:
+            raise TypeError(f"the field {self._name} is not of the type of get/set{name}")
+
+    def getSFVec3f(self) -> List[float]:
+        """The translation (m)."""
+        self._check("translation")
+        return self._pose()[0]
+
+    def setSFVec3f(self, value: List[float]) -> None:
+        """Moves the node to ``value`` (m); ValueError beyond 10 km or for NaN."""
+        self._check("translation")
+        values = [_c_double(v) for v in value]
+        if len(values) != 3:
+            raise ValueError(f"setSFVec3f needs 3 numbers, not {len(values)}")
+        _native.supervisor_set_pose(
+            self._node._kind, self._node._index, values, self._pose()[1]
+        )
+
+    def getSFRotation(self) -> List[float]:
+        """The rotation: unit axis and angle (rad, in [0, π])."""
+        self._check("rotation")
+        return self._pose()[1]
+
+    def setSFRotation(self, value: List[float]) -> None:
+        """Turns the node to ``value`` (axis of any non-zero length, angle in rad)."""
+        self._check("rotation")
+        values = [_c_double(v) for v in value]
+        if len(values) != 4:
+            raise ValueError(f"setSFRotation needs 4 numbers, not {len(values)}")
+        _native.supervisor_set_pose(
+            self._node._kind, self._node._index, self._pose()[0], values
+        )
 
 
 class Device:
@@ -961,5 +1074,19 @@ class Robot:
 
 
 class Supervisor(Robot):
-    """A robot with supervisor rights (Webots: ``controller.Supervisor``). Here it adds
-    nothing to :class:`Robot`: the vehicle controllers' calls are all ``Robot`` calls."""
+    """A robot with supervisor rights (Webots: ``controller.Supervisor``): Webots' subset for
+    placing things (COMPATIBILITY.md): :meth:`getFromDef` finds a car (DEF = its ``name``) or
+    a dynamic body (``body[1]``, ``body[2]``, ... in the world file's order), whose
+    ``translation``/``rotation`` fields and velocity it reads and sets, and
+    :meth:`simulationReset` puts the world back as loaded."""
+
+    def getFromDef(self, name: str) -> Optional[Node]:
+        """The node of DEF name ``name``, None if there is none."""
+        found = _native.supervisor_node_from_def(str(name))
+        return None if found is None else Node(found[0], found[1], str(name))
+
+    def simulationReset(self) -> None:
+        """The world back as loaded: time 0, every car and body where the world file put
+        them, the other cars' programmes from their start. The controller goes on, its
+        devices enabled as it left them."""
+        _native.supervisor_simulation_reset()

@@ -8,7 +8,9 @@ Two APIs in one package:
 * This package's simulator API: :class:`Simulation` (a world from a world file, a model name
   or keyword arguments), its cars (:class:`SimCar`), stepping, telemetry as numpy arrays
   (:class:`Telemetry`, ``to_pandas()``), and the ``vehicle-sim`` scenarios with their metrics
-  (:meth:`Simulation.run`); sweeps: :class:`Sweep` (a sweep file's cases by index, each run
+  (:meth:`Simulation.run`), snapshots (:meth:`Simulation.snapshot`, :meth:`Simulation.restore`)
+  and supervisor placement (:meth:`SimCar.set_pose`, :meth:`SimCar.set_velocity`,
+  :meth:`Simulation.reset`); sweeps: :class:`Sweep` (a sweep file's cases by index, each run
   into its row of ``vehicle-sim sweep``'s ``results.csv``), :func:`run_case` and
   :func:`load_results` (``results.csv`` as a pandas DataFrame); :func:`camera_image`, a
   controller camera's image as a numpy array; the ray devices' samples as numpy arrays:
@@ -21,14 +23,24 @@ left, z up.
 
 from webots_vehicle._native import SimulationError, WorldError
 from webots_vehicle.images import camera_image
-from webots_vehicle.simulation import SCENARIOS, RunResult, SimCar, Simulation, VehicleWarning
+from webots_vehicle.simulation import (
+    SCENARIOS,
+    Placement,
+    RunResult,
+    SimBody,
+    SimCar,
+    Simulation,
+    VehicleWarning,
+)
 from webots_vehicle.sweep import Sweep, load_results, run_case
 from webots_vehicle.telemetry import COLUMNS, Telemetry
 
 __all__ = [
     "COLUMNS",
     "SCENARIOS",
+    "Placement",
     "RunResult",
+    "SimBody",
     "SimCar",
     "Simulation",
     "SimulationError",

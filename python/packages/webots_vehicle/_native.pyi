@@ -160,6 +160,13 @@ def wbu_car_enable_indicator_auto_disabling(enable: int) -> None: ...
 def bench_driver_steps(steps: int) -> float:
     """Runs ``wbu_driver_step`` ``steps`` times from Rust; the wall-clock time (s)."""
 
+class Snapshot:
+    """A :class:`Simulation`'s whole state at one instant (opaque)."""
+
+    @property
+    def time(self) -> float:
+        """Simulated time when it was taken (s)."""
+
 class Simulation:
     """The core of :class:`webots_vehicle.Simulation` (one world, its cars, their telemetry).
     It belongs to the thread that created it."""
@@ -197,6 +204,32 @@ class Simulation:
     def model(self, car: int) -> str: ...
     def geometry(self, car: int) -> Tuple[float, float, float, float, float]:
         """Wheelbase, front track, rear track, front and rear tyre radius (m)."""
+    @property
+    def body_count(self) -> int: ...
+    def placement(
+        self, kind: str, index: int
+    ) -> Tuple[List[float], List[float], List[float], List[float]]:
+        """Translation (m), rotation (axis, rad), velocity (m/s), angular velocity (rad/s) of
+        car or body ``index`` (``kind`` "car" or "body")."""
+    def set_pose(
+        self, kind: str, index: int, translation: List[float], rotation: List[float]
+    ) -> None: ...
+    def set_velocity(
+        self, kind: str, index: int, linear: List[float], angular: List[float]
+    ) -> None: ...
+    def road_reading(self, car: int) -> Optional[List[float]]:
+        """Car ``car``'s first RoadSensor: road (-1 off), lane, s, lateral offset, heading
+        error, curvature, curvature ahead, left/right line, left/right edge, lane width."""
+    def radar_targets(self, car: int) -> List[List[float]]:
+        """Car ``car``'s first Radar's targets: distance, received power, speed, azimuth."""
+    def touching(self, car: int) -> bool:
+        """True while car ``car`` touches another car."""
+    def simulation_reset(self) -> None:
+        """Back to the world as loaded."""
+    def snapshot(self) -> Snapshot:
+        """The whole state now, for :meth:`restore`."""
+    def restore(self, snapshot: Snapshot) -> None:
+        """Back to ``snapshot`` (SimulationError for another simulation's)."""
     def step(self, steps: int, drivers: bool = True) -> bool:
         """Up to ``steps`` steps (physics only if not ``drivers``); False once the duration has
         elapsed."""
@@ -242,3 +275,20 @@ class Sweep:
     def csv_header(self) -> str: ...
     def values(self, index: int) -> List[Any]: ...
     def run_case(self, index: int) -> Tuple[List[Any], str]: ...
+
+def supervisor_node_from_def(def_name: str) -> Optional[Tuple[str, int]]:
+    """The controller world's node of DEF name ``def_name``: ("car" or "body", index)."""
+
+def supervisor_placement(
+    kind: str, index: int
+) -> Tuple[List[float], List[float], List[float], List[float]]:
+    """Translation (m), rotation (axis, rad), velocity (m/s), angular velocity (rad/s)."""
+
+def supervisor_set_pose(
+    kind: str, index: int, translation: List[float], rotation: List[float]
+) -> None: ...
+def supervisor_set_velocity(
+    kind: str, index: int, linear: List[float], angular: List[float]
+) -> None: ...
+def supervisor_simulation_reset() -> None:
+    """The controller's world back as loaded."""

@@ -4,13 +4,93 @@ import json
 import operator
 import os
 import warnings
-from typing import Any, Dict, List, Optional, Tuple, Union
+from typing import Any, Dict, List, NamedTuple, Optional, Sequence, Tuple, Union
 
 from webots_vehicle import _native
 from webots_vehicle._world_text import document
 from webots_vehicle.telemetry import COLUMNS, Telemetry
 
-__all__ = ["RunResult", "SimCar", "Simulation", "VehicleWarning"]
+__all__ = ["Placement", "RunResult", "SimBody", "SimCar", "Simulation", "VehicleWarning"]
+
+
+class Placement(NamedTuple):
+    """Where a car or body is and how it moves, world frame (x east, y north, z up)."""
+
+    #: Position (m): a car's origin (rear-axle centre), a body's centre. Webots ``translation``.
+    translation: Tuple[float, float, float]
+    #: Orientation as Webots' ``rotation``: unit axis and angle (rad).
+    rotation: Tuple[float, float, float, float]
+    #: Velocity of that position (m/s).
+    velocity: Tuple[float, float, float]
+    #: Angular velocity (rad/s).
+    angular_velocity: Tuple[float, float, float]
+
+
+def _vector(name: str, values: Sequence[float], n: int) -> List[float]:
+    items = [float(v) for v in values]
+    if len(items) != n:
+        raise ValueError(f"{name} needs {n} numbers, not {len(items)}")
+    return items
+
+
+class _Placed:
+    """What a supervisor does to a car or a body (see :class:`SimCar`, :class:`SimBody`)."""
+
+    _kind = ""
+
+    def __init__(self, simulation: "Simulation", index: int) -> None:
+        self._core = simulation._core
+        self._index = index
+
+    @property
+    def placement(self) -> Placement:
+        """Its pose and velocity now (after the last step, or as set since)."""
+        t, r, v, w = self._core.placement(self._kind, self._index)
+        return Placement(tuple(t), tuple(r), tuple(v), tuple(w))  # type: ignore[arg-type]
+
+    def set_pose(
+        self,
+        translation: Sequence[float],
+        rotation: Sequence[float] = (0.0, 0.0, 1.0, 0.0),
+    ) -> None:
+        """Puts it at ``translation`` (m) turned by Webots ``rotation`` (axis, angle in rad).
+        A car keeps its velocity in its own frame, its suspension deflection and steering
+        (put it down at the height it stood at for its springs to stay settled). Values out of
+        range (beyond 10 km, NaN) raise ValueError and move nothing."""
+        self._core.set_pose(
+            self._kind,
+            self._index,
+            _vector("translation", translation, 3),
+            _vector("rotation", rotation, 4),
+        )
+
+    def set_velocity(
+        self,
+        velocity: Sequence[float],
+        angular_velocity: Sequence[float] = (0.0, 0.0, 0.0),
+    ) -> None:
+        """Sets its velocity (m/s, world; a car's at its origin) and angular velocity (rad/s,
+        world). A car's wheels spin at free rolling for it and its suspension stops moving.
+        Beyond 200 m/s or 20 rad/s on an axis raises ValueError."""
+        self._core.set_velocity(
+            self._kind,
+            self._index,
+            _vector("velocity", velocity, 3),
+            _vector("angular_velocity", angular_velocity, 3),
+        )
+
+    def reset_physics(self) -> None:
+        """Stops it (Webots ``Node.resetPhysics``): no velocity, no wheel spin."""
+        self.set_velocity((0.0, 0.0, 0.0))
+
+
+class SimBody(_Placed):
+    """A dynamic body (``[[body]]``) of a :class:`Simulation`, for placing it."""
+
+    _kind = "body"
+
+    def __repr__(self) -> str:
+        return f"<SimBody {self._index}>"
 
 #: The scenarios of :meth:`Simulation.run` (``vehicle-sim --scenario``); ``square`` and
 #: ``spin`` are for a DifferentialWheels world, the others for a car.
@@ -36,15 +116,17 @@ def _warn(text: Optional[str]) -> None:
         warnings.warn(text, VehicleWarning, stacklevel=3)
 
 
-class SimCar:
+class SimCar(_Placed):
     """A car of a :class:`Simulation`, driven through the Webots driver library's commands
     (the same rules as ``vehicle.Driver``: clamped values come with a
-    :class:`VehicleWarning`)."""
+    :class:`VehicleWarning`), and placed as a Webots supervisor would (:meth:`set_pose`,
+    :meth:`set_velocity`, :meth:`reset_physics`)."""
+
+    _kind = "car"
 
     def __init__(self, simulation: "Simulation", index: int) -> None:
+        super().__init__(simulation, index)
         self._simulation = simulation
-        self._core = simulation._core
-        self._index = index
 
     @property
     def index(self) -> int:
@@ -271,6 +353,33 @@ class Simulation:
         the physics runs, with the commands in force (Webots' ``wb_robot_step`` without
         ``wbu_driver_step``); a steering angle set since still acts, as in Webots."""
         return self._core.step(max(0, int(steps)), bool(drivers))
+
+    @property
+    def bodies(self) -> List[SimBody]:
+        """The dynamic bodies (``[[body]]``), in the world file's order."""
+        return [SimBody(self, i) for i in range(self._core.body_count)]
+
+    def reset(self) -> None:
+        """Back to the world as loaded (Webots ``Supervisor.simulationReset``): time 0, every
+        car and body where the world file put it, drivers and devices as new; cars added and
+        telemetry recorded since are dropped (recording starts again at the next step)."""
+        self._core.simulation_reset()
+        del self._cars[self._core.car_count :]
+
+    def snapshot(self) -> "_native.Snapshot":
+        """The whole state of the simulation now, as an opaque object for :meth:`restore`:
+        the physics (bodies, joints, contacts and their solver caches), every car's driver
+        library and devices (with their noise generators), the time, and how far the
+        telemetry has been recorded. Its ``time`` attribute is the simulated time (s)."""
+        return self._core.snapshot()
+
+    def restore(self, snapshot: "_native.Snapshot") -> None:
+        """Puts the simulation back in the state of ``snapshot`` (taken of this simulation;
+        it stays valid and can be restored again): stepping on repeats, bit for bit, what
+        followed it. Cars added and telemetry recorded since are dropped. A snapshot of another
+        simulation raises :class:`~webots_vehicle.SimulationError`."""
+        self._core.restore(snapshot)
+        del self._cars[self._core.car_count :]
 
     def save(self, directory: Union[str, "os.PathLike[str]"]) -> List[str]:
         """Writes the run so far into ``directory`` (created if needed) as ``vehicle-sim``

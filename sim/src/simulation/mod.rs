@@ -11,6 +11,7 @@
 mod devices;
 mod lanes;
 mod recording;
+mod snapshot;
 
 use std::path::{Path, PathBuf};
 
@@ -33,6 +34,7 @@ use crate::vehicle::{VehicleId, VehicleState};
 use crate::world::World;
 use crate::world_file::{RobotDescription, WorldDescription};
 use recording::Recording;
+pub use snapshot::{Snapshot, SnapshotError};
 
 /// Longest simulated time a run may last (s): one day. Every built-in scenario ends within
 /// 10 minutes, and a day of simulated time is 8.64 million steps at the default 10 ms (hours
@@ -52,6 +54,7 @@ pub(crate) fn is_duration(d: f64) -> bool {
 }
 
 /// One car's driver, name, sensor devices and whether it has had its first step.
+#[derive(Clone)]
 struct Controlled {
     id: VehicleId,
     driver: Driver<f64>,
@@ -64,6 +67,7 @@ struct Controlled {
 }
 
 /// A robot's handle and name.
+#[derive(Clone)]
 struct Named {
     id: RobotId,
     name: String,
@@ -128,6 +132,10 @@ pub struct Simulation {
     appearances: Appearances,
     /// The roads as the cameras see them, built at the first render (the roads never move).
     road_patches: Option<Arc<[Patch]>>,
+    /// Tells this simulation's snapshots from others'.
+    serial: u64,
+    /// The world as loaded, for [`Simulation::simulation_reset`].
+    loaded: Option<Box<Snapshot>>,
 }
 
 impl Simulation {
@@ -144,6 +152,8 @@ impl Simulation {
             replay_overlay: false,
             appearances: Appearances::default(),
             road_patches: None,
+            serial: snapshot::next_serial(),
+            loaded: None,
         }
     }
 
@@ -190,6 +200,7 @@ impl Simulation {
             sim.set_appearance(*object, appearance.clone())?;
         }
         sim.set_replay_overlay(description.replay_overlay);
+        sim.loaded = Some(Box::new(sim.snapshot()));
         Ok((sim, reports))
     }
 

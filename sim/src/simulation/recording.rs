@@ -3,6 +3,7 @@
 //! and the gaps between cars; then the run's report and data files, for any front-end.
 
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Instant;
 
 use crate::config::Outline;
@@ -16,6 +17,7 @@ use crate::telemetry::{
 use crate::vehicle::VehicleId;
 
 use super::Simulation;
+use super::snapshot::SnapshotError;
 
 /// What a log follows.
 #[derive(Debug, Clone, Copy)]
@@ -43,6 +45,24 @@ pub(super) struct Recording {
     /// When two cars first touched (s).
     first_touch: Option<f64>,
     started: Instant,
+    /// Tells this recording from a later one of the same simulation (a snapshot's
+    /// [`RecordingMark`] belongs to one recording).
+    serial: u64,
+}
+
+/// Numbers the recordings of this process.
+static NEXT_RECORDING: AtomicU64 = AtomicU64::new(0);
+
+/// How far a recording had got: the lengths of its logs, its replay and its gap meters, for
+/// [`Recording::rewind`].
+#[derive(Debug, Clone)]
+pub(super) struct RecordingMark {
+    serial: u64,
+    samples: Vec<usize>,
+    device_rows: usize,
+    replay: Recorder,
+    min_gap: f64,
+    first_touch: Option<f64>,
 }
 
 impl Simulation {
@@ -93,9 +113,47 @@ impl Recording {
             min_gap: f64::INFINITY,
             first_touch: None,
             started: Instant::now(),
+            serial: NEXT_RECORDING.fetch_add(1, Ordering::Relaxed),
         };
         recording.log_samples(sim);
         recording
+    }
+
+    /// How far this recording has got.
+    pub(super) fn mark(&self) -> RecordingMark {
+        RecordingMark {
+            serial: self.serial,
+            samples: self.vehicles.iter().map(|v| v.log.len()).collect(),
+            device_rows: self.devices.len(),
+            replay: self.replay.clone(),
+            min_gap: self.min_gap,
+            first_touch: self.first_touch,
+        }
+    }
+
+    /// Takes this recording back to `mark`: the samples, device rows and replay frames
+    /// recorded since are dropped.
+    ///
+    /// # Errors
+    /// [`SnapshotError::OtherRecording`] if `mark` is not of this recording or the device
+    /// rows were handed over since; [`SnapshotError::Io`] if a log's temporary file cannot
+    /// be shortened.
+    pub(super) fn rewind(&mut self, mark: &RecordingMark) -> Result<(), SnapshotError> {
+        if mark.serial != self.serial || self.devices.len() < mark.device_rows {
+            return Err(SnapshotError::OtherRecording);
+        }
+        for (v, &len) in self.vehicles.iter_mut().zip(&mark.samples) {
+            v.log
+                .truncate(len)
+                .map_err(|e| SnapshotError::Io(e.to_string()))?;
+        }
+        self.devices
+            .truncate(mark.device_rows)
+            .map_err(|e| SnapshotError::Io(e.to_string()))?;
+        self.replay = mark.replay.clone();
+        self.min_gap = mark.min_gap;
+        self.first_touch = mark.first_touch;
+        Ok(())
     }
 
     /// Records the state after a step.

@@ -96,6 +96,24 @@ impl DeviceLog {
         Ok(())
     }
 
+    /// Keeps the first `len` rows and drops the rest (nothing if the log holds no more), as
+    /// [`super::TelemetryLog`]'s `truncate`.
+    ///
+    /// # Errors
+    /// The error of shortening the temporary file.
+    pub(crate) fn truncate(&mut self, len: usize) -> io::Result<()> {
+        if len >= self.spilled_rows {
+            self.recent.truncate(len - self.spilled_rows);
+            return Ok(());
+        }
+        if let Some(file) = &self.spilled {
+            file.set_len((len * ROW_BYTES) as u64)?;
+        }
+        self.spilled_rows = len;
+        self.recent.clear();
+        Ok(())
+    }
+
     /// Calls `f` on every row in order.
     ///
     /// # Errors

@@ -108,6 +108,27 @@ impl TelemetryLog {
         Ok(())
     }
 
+    /// Keeps the first `len` samples and drops the rest (nothing if the log holds no more):
+    /// a restored [`crate::Snapshot`] puts the log back to its length then. Rows dropped from
+    /// the temporary file go with the file's tail; rows still in memory past the file's end
+    /// are dropped with it.
+    ///
+    /// # Errors
+    /// The error of shortening the temporary file.
+    pub(crate) fn truncate(&mut self, len: usize) -> io::Result<()> {
+        if len >= self.spilled_rows {
+            self.recent
+                .truncate((len - self.spilled_rows) * SAMPLE_COLUMNS);
+            return Ok(());
+        }
+        if let Some(file) = &self.spilled {
+            file.set_len((len * ROW_BYTES) as u64)?;
+        }
+        self.spilled_rows = len;
+        self.recent.clear();
+        Ok(())
+    }
+
     /// The last sample's row, if any.
     pub fn last(&self) -> Option<Row> {
         let n = self.recent.len();
@@ -233,5 +254,27 @@ mod tests {
             log.last().map(|r| Sample::from_row(&r)),
             Some(sample(MEMORY_ROWS - 1))
         );
+    }
+
+    #[test]
+    fn truncating_into_the_file_or_memory_keeps_the_first_rows() {
+        let n = MEMORY_ROWS + 40;
+        for keep in [MEMORY_ROWS + 5, 100, 0] {
+            let mut log = TelemetryLog::new();
+            for i in 0..n {
+                log.push(&sample(i));
+            }
+            log.truncate(keep).unwrap();
+            assert_eq!(log.len(), keep);
+            // Appending goes on after the kept rows, in the file too.
+            for i in keep..n {
+                log.push(&sample(i));
+            }
+            let back = log.samples().unwrap();
+            assert_eq!(back.len(), n, "keep {keep}");
+            for (i, s) in back.iter().enumerate() {
+                assert_eq!(*s, sample(i), "keep {keep}, row {i}");
+            }
+        }
     }
 }

@@ -78,6 +78,7 @@ mod multibody;
 mod spec;
 mod state;
 mod step;
+pub(crate) mod teleport;
 mod tread;
 mod wheels;
 
