@@ -35,6 +35,7 @@ mod devices;
 mod error;
 mod lane_programme;
 mod looks;
+mod numbers;
 mod overrides;
 mod programme;
 mod ray_devices;
@@ -57,6 +58,7 @@ use crate::config::WorldConfig;
 use crate::simulation::{DURATION_RULE, is_duration};
 
 pub use error::{Location, NameSet, WorldFileError, WorldFileErrorKind, WorldWarning};
+pub use numbers::parse_with_numbers;
 pub use overrides::KeyPath;
 pub use robot::RobotDescription;
 pub use vehicle::CarDescription;

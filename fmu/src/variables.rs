@@ -1,0 +1,406 @@
+//! The FMU's variables: the driver's commands as inputs, what an ECU sees and a test bench
+//! logs as outputs, and the world-file keys a user tunes as parameters. One table drives the
+//! model description, `fmi2GetReal`/`fmi2SetReal` and their integer twins, so a variable
+//! cannot be described one way and served another.
+
+use sim::CarTelemetry;
+use sim::world_file::WorldDescription;
+use vehicle_model::Wheel;
+
+/// The FMI type of a variable.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// `fmi2Real` (f64).
+    Real,
+    /// `fmi2Integer` (i32).
+    Integer,
+}
+
+/// What a variable is to the importing tool.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Causality {
+    /// Fixed before initialisation ends: a world-file key.
+    Parameter,
+    /// Set by the tool before each `fmi2DoStep`: a driver command.
+    Input,
+    /// Read by the tool after each step: a measurement.
+    Output,
+}
+
+/// One scalar variable.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Variable {
+    /// Its name in `modelDescription.xml` (parameters: the world file's dotted key).
+    pub name: &'static str,
+    /// Its value reference.
+    pub reference: u32,
+    /// Its type.
+    pub kind: Kind,
+    /// Input, output or parameter.
+    pub causality: Causality,
+    /// Its unit, one of [`UNITS`]; `None` for a dimensionless number or an enumeration.
+    pub unit: Option<&'static str>,
+    /// What it is, for the tool's user.
+    pub description: &'static str,
+}
+
+/// A unit of the model description: its name and SI base-unit exponents `[kg, m, s, rad]`,
+/// with the factor to SI (`rpm` is rad/s × π/30).
+pub const UNITS: [(&str, [i32; 4], f64); 9] = [
+    ("kg", [1, 0, 0, 0], 1.0),
+    ("m", [0, 1, 0, 0], 1.0),
+    ("m/s", [0, 1, -1, 0], 1.0),
+    ("m/s2", [0, 1, -2, 0], 1.0),
+    ("rad", [0, 0, 0, 1], 1.0),
+    ("rad/s", [0, 0, -1, 1], 1.0),
+    ("rpm", [0, 0, -1, 1], core::f64::consts::PI / 30.0),
+    ("N.m", [1, 2, -2, 0], 1.0),
+    ("W", [1, 2, -3, 0], 1.0),
+];
+
+const fn real(
+    name: &'static str,
+    reference: u32,
+    causality: Causality,
+    unit: Option<&'static str>,
+    description: &'static str,
+) -> Variable {
+    Variable {
+        name,
+        reference,
+        kind: Kind::Real,
+        causality,
+        unit,
+        description,
+    }
+}
+
+const fn integer(
+    name: &'static str,
+    reference: u32,
+    causality: Causality,
+    description: &'static str,
+) -> Variable {
+    Variable {
+        name,
+        reference,
+        kind: Kind::Integer,
+        causality,
+        unit: None,
+        description,
+    }
+}
+
+use Causality::{Input, Output, Parameter};
+
+/// Value reference of the first input.
+pub const STEERING_ANGLE: u32 = 0;
+/// Value reference of the throttle input.
+pub const THROTTLE: u32 = 1;
+/// Value reference of the brake input.
+pub const BRAKE_INTENSITY: u32 = 2;
+/// Value reference of the cruising-speed input.
+pub const CRUISING_SPEED: u32 = 3;
+/// Value reference of the control-mode input.
+pub const CONTROL_MODE: u32 = 4;
+/// Value reference of the gear input.
+pub const GEAR: u32 = 5;
+/// Value reference of the indicator input.
+pub const INDICATOR: u32 = 6;
+
+/// Every variable, in the order of `modelDescription.xml` (its `ModelVariables` indices are
+/// 1-based positions in this table).
+pub const VARIABLES: [Variable; 31] = [
+    real(
+        "steering_angle",
+        STEERING_ANGLE,
+        Input,
+        Some("rad"),
+        "Steering angle of the virtual centre wheel; positive turns right, as in Webots (wbu_driver_set_steering_angle)",
+    ),
+    real(
+        "throttle",
+        THROTTLE,
+        Input,
+        None,
+        "Throttle, 0 to 1, used when control_mode = 1 (wbu_driver_set_throttle)",
+    ),
+    real(
+        "brake_intensity",
+        BRAKE_INTENSITY,
+        Input,
+        None,
+        "Brake intensity, 0 to 1 (wbu_driver_set_brake_intensity)",
+    ),
+    real(
+        "cruising_speed",
+        CRUISING_SPEED,
+        Input,
+        Some("m/s"),
+        "Cruising speed, used when control_mode = 0 (wbu_driver_set_cruising_speed, which takes km/h)",
+    ),
+    integer(
+        "control_mode",
+        CONTROL_MODE,
+        Input,
+        "0: speed control (cruising_speed), 1: torque control (throttle, gear)",
+    ),
+    integer(
+        "gear",
+        GEAR,
+        Input,
+        "Gear in torque control: -1 reverse, 0 neutral, 1 and up forward (wbu_driver_set_gear)",
+    ),
+    integer(
+        "indicator",
+        INDICATOR,
+        Input,
+        "Indicator lever: 0 off, 1 right, 2 left (wbu_driver_set_indicator)",
+    ),
+    real(
+        "x",
+        100,
+        Output,
+        Some("m"),
+        "Position of the rear-axle centre, world x",
+    ),
+    real(
+        "y",
+        101,
+        Output,
+        Some("m"),
+        "Position of the rear-axle centre, world y",
+    ),
+    real(
+        "z",
+        102,
+        Output,
+        Some("m"),
+        "Position of the rear-axle centre, world z (up)",
+    ),
+    real("roll", 103, Output, Some("rad"), "Roll of the chassis"),
+    real("pitch", 104, Output, Some("rad"), "Pitch of the chassis"),
+    real(
+        "yaw",
+        105,
+        Output,
+        Some("rad"),
+        "Heading of the chassis, counter-clockwise from world x",
+    ),
+    real(
+        "speed",
+        106,
+        Output,
+        Some("m/s"),
+        "Chassis speed along its x axis (signed, positive forward)",
+    ),
+    real(
+        "velocity_x",
+        107,
+        Output,
+        Some("m/s"),
+        "Chassis velocity, world x",
+    ),
+    real(
+        "velocity_y",
+        108,
+        Output,
+        Some("m/s"),
+        "Chassis velocity, world y",
+    ),
+    real(
+        "yaw_rate",
+        109,
+        Output,
+        Some("rad/s"),
+        "Yaw rate of the chassis",
+    ),
+    real(
+        "longitudinal_acceleration",
+        110,
+        Output,
+        Some("m/s2"),
+        "Acceleration along the chassis x axis",
+    ),
+    real(
+        "lateral_acceleration",
+        111,
+        Output,
+        Some("m/s2"),
+        "Acceleration along the chassis y axis (positive left)",
+    ),
+    real(
+        "wheel_speed_front_right",
+        112,
+        Output,
+        Some("rad/s"),
+        "Spin of the front right wheel",
+    ),
+    real(
+        "wheel_speed_front_left",
+        113,
+        Output,
+        Some("rad/s"),
+        "Spin of the front left wheel",
+    ),
+    real(
+        "wheel_speed_rear_right",
+        114,
+        Output,
+        Some("rad/s"),
+        "Spin of the rear right wheel",
+    ),
+    real(
+        "wheel_speed_rear_left",
+        115,
+        Output,
+        Some("rad/s"),
+        "Spin of the rear left wheel",
+    ),
+    real(
+        "engine_speed",
+        116,
+        Output,
+        Some("rpm"),
+        "Engine speed in torque control, 0 in speed control (wbu_driver_get_rpm)",
+    ),
+    integer(
+        "engaged_gear",
+        117,
+        Output,
+        "Engaged gear in torque control, 0 in speed control (wbu_driver_get_gear)",
+    ),
+    real(
+        "vehicle.mass",
+        1000,
+        Parameter,
+        Some("kg"),
+        "Chassis mass (world file [vehicle] mass, Webots Car.physics mass)",
+    ),
+    real(
+        "vehicle.brakeCoefficient",
+        1001,
+        Parameter,
+        Some("N.m"),
+        "Brake torque per wheel at full brake intensity (Webots Car.brakeCoefficient)",
+    ),
+    real(
+        "vehicle.engineMaxTorque",
+        1002,
+        Parameter,
+        Some("N.m"),
+        "Maximum engine torque (Webots Car.engineMaxTorque)",
+    ),
+    real(
+        "vehicle.engineMaxPower",
+        1003,
+        Parameter,
+        Some("W"),
+        "Maximum engine power (Webots Car.engineMaxPower)",
+    ),
+    real(
+        "vehicle.time0To100",
+        1004,
+        Parameter,
+        None,
+        "Time from 0 to 100 km/h in speed control, s (Webots Car.time0To100)",
+    ),
+    real(
+        "ground.friction",
+        1005,
+        Parameter,
+        None,
+        "Coulomb friction of the ground (world file [ground] friction)",
+    ),
+];
+
+/// The variable of value reference `reference` and type `kind`, if there is one.
+pub fn find(reference: u32, kind: Kind) -> Option<&'static Variable> {
+    VARIABLES
+        .iter()
+        .find(|v| v.reference == reference && v.kind == kind)
+}
+
+/// The start value of every input (the driver at rest in torque control, first gear).
+pub fn input_start(reference: u32) -> f64 {
+    match reference {
+        CONTROL_MODE | GEAR => 1.0,
+        _ => 0.0,
+    }
+}
+
+/// The value of parameter `reference` in the world of `description` (its first car's),
+/// `None` for an unknown reference or a world without a car.
+pub fn parameter_of(description: &WorldDescription, reference: u32) -> Option<f64> {
+    let car = description.car()?;
+    let p = &car.params;
+    Some(match reference {
+        1000 => p.body.mass,
+        1001 => p.brake_coefficient,
+        1002 => p.engine.max_torque,
+        1003 => p.engine.max_power,
+        1004 => p.time_0_to_100,
+        1005 => description.config.ground_friction,
+        _ => return None,
+    })
+}
+
+/// The value of output `reference` in `telemetry`, `None` for an unknown reference.
+pub fn output_of(t: &CarTelemetry, reference: u32) -> Option<f64> {
+    let s = &t.state;
+    Some(match reference {
+        100 => s.position.x,
+        101 => s.position.y,
+        102 => s.position.z,
+        103 => s.roll_pitch_yaw.roll,
+        104 => s.roll_pitch_yaw.pitch,
+        105 => s.roll_pitch_yaw.yaw,
+        106 => t.speed,
+        107 => s.velocity.x,
+        108 => s.velocity.y,
+        109 => s.yaw_rate,
+        110 => s.longitudinal_acceleration,
+        111 => s.lateral_acceleration,
+        112 => s.wheel_speeds[Wheel::FrontRight],
+        113 => s.wheel_speeds[Wheel::FrontLeft],
+        114 => s.wheel_speeds[Wheel::RearRight],
+        115 => s.wheel_speeds[Wheel::RearLeft],
+        116 => t.rpm.unwrap_or(0.0),
+        117 => t.gear.map_or(0.0, |g| f64::from(g.number())),
+        _ => return None,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn references_are_unique_and_units_are_defined() {
+        for (i, a) in VARIABLES.iter().enumerate() {
+            for b in &VARIABLES[i + 1..] {
+                assert_ne!(a.reference, b.reference, "{} and {}", a.name, b.name);
+                assert_ne!(a.name, b.name);
+            }
+            if let Some(unit) = a.unit {
+                assert!(UNITS.iter().any(|(u, _, _)| *u == unit), "{}", a.name);
+            }
+            assert_eq!(find(a.reference, a.kind), Some(a));
+        }
+    }
+
+    #[test]
+    fn every_parameter_and_output_is_served() {
+        let world = sim::world_file::default_world();
+        let (sim, _) = sim::Simulation::from_description(&world).unwrap();
+        let id = sim.car_ids().next().unwrap();
+        let t = sim.telemetry(id).unwrap();
+        for v in &VARIABLES {
+            match v.causality {
+                Parameter => assert!(parameter_of(&world, v.reference).is_some()),
+                Output => assert!(output_of(&t, v.reference).is_some(), "{}", v.name),
+                Input => {}
+            }
+        }
+    }
+}
