@@ -16,7 +16,7 @@ use std::ffi::{CStr, CString};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::PathBuf;
 
-use crate::instance::{Instance, LOG_CATEGORIES, Phase, Severity};
+use crate::instance::{Instance, LOG_CATEGORIES, Phase, Severity, State};
 use crate::model_description::guid;
 use crate::variables::Kind;
 
@@ -648,22 +648,63 @@ pub extern "C" fn fmi2GetDirectionalDerivative(
     unsupported(c, "fmi2GetDirectionalDerivative")
 }
 
-/// `fmi2GetFMUstate`: `canGetAndSetFMUstate` is false.
+/// `fmi2GetFMUstate`: a new state, or the one `*state` points to overwritten.
+///
+/// # Safety
+/// `state` is valid; `*state` is NULL or a state of this FMU not yet freed.
 #[unsafe(no_mangle)]
-pub extern "C" fn fmi2GetFMUstate(c: *mut c_void, _state: *mut *mut c_void) -> Status {
-    unsupported(c, "fmi2GetFMUstate")
+pub unsafe extern "C" fn fmi2GetFMUstate(c: *mut c_void, state: *mut *mut c_void) -> Status {
+    guard(c, |c| {
+        if state.is_null() {
+            return c.finish(Err("fmi2GetFMUstate: NULL state pointer".to_string()));
+        }
+        let saved = c.instance.state();
+        // SAFETY: by the contract, `*state` is NULL or came from `Box::into_raw` below.
+        unsafe {
+            match (*state).cast::<State>().as_mut() {
+                Some(existing) => *existing = saved,
+                None => *state = Box::into_raw(Box::new(saved)).cast::<c_void>(),
+            }
+        }
+        OK
+    })
 }
 
-/// `fmi2SetFMUstate`: `canGetAndSetFMUstate` is false.
+/// `fmi2SetFMUstate`: back to a state `fmi2GetFMUstate` saved.
+///
+/// # Safety
+/// `state` is a state of this FMU not yet freed.
 #[unsafe(no_mangle)]
-pub extern "C" fn fmi2SetFMUstate(c: *mut c_void, _state: *mut c_void) -> Status {
-    unsupported(c, "fmi2SetFMUstate")
+pub unsafe extern "C" fn fmi2SetFMUstate(c: *mut c_void, state: *mut c_void) -> Status {
+    guard(c, |c| {
+        // SAFETY: by the contract.
+        let Some(saved) = (unsafe { state.cast::<State>().as_ref() }) else {
+            return c.finish(Err("fmi2SetFMUstate: NULL state".to_string()));
+        };
+        let r = c.instance.set_state(saved);
+        c.finish(r)
+    })
 }
 
-/// `fmi2FreeFMUstate`: `canGetAndSetFMUstate` is false.
+/// `fmi2FreeFMUstate`: frees `*state` and sets it to NULL.
+///
+/// # Safety
+/// `state` is valid; `*state` is NULL or a state of this FMU not yet freed.
 #[unsafe(no_mangle)]
-pub extern "C" fn fmi2FreeFMUstate(c: *mut c_void, _state: *mut *mut c_void) -> Status {
-    unsupported(c, "fmi2FreeFMUstate")
+pub unsafe extern "C" fn fmi2FreeFMUstate(c: *mut c_void, state: *mut *mut c_void) -> Status {
+    guard(c, |_| {
+        if !state.is_null() {
+            // SAFETY: by the contract, from `Box::into_raw` in `fmi2GetFMUstate`.
+            unsafe {
+                let p = (*state).cast::<State>();
+                if !p.is_null() {
+                    drop(Box::from_raw(p));
+                }
+                *state = core::ptr::null_mut();
+            }
+        }
+        OK
+    })
 }
 
 /// `fmi2SerializedFMUstateSize`: `canSerializeFMUstate` is false.

@@ -44,6 +44,16 @@ pub enum Phase {
     Terminated,
 }
 
+/// A saved instance state (`fmi2FMUstate`): the world's snapshot and the driver inputs and
+/// phase around it.
+#[derive(Clone)]
+pub struct State {
+    snapshot: sim::Snapshot,
+    phase: Phase,
+    inputs: [f64; 7],
+    applied: Option<[f64; 7]>,
+}
+
 /// One instance.
 pub struct Instance {
     /// The instance name the tool gave, for its logger.
@@ -250,6 +260,32 @@ impl Instance {
             },
         };
         value.ok_or_else(|| self.refuse(format!("{} has no value", v.name)))
+    }
+
+    /// `fmi2GetFMUstate`: everything a later [`Instance::set_state`] needs to continue
+    /// exactly as this instance would from here.
+    pub fn state(&self) -> State {
+        State {
+            snapshot: self.simulation.snapshot(),
+            phase: self.phase,
+            inputs: self.inputs,
+            applied: self.applied,
+        }
+    }
+
+    /// `fmi2SetFMUstate`: back to `state`, which this instance saved since its last
+    /// initialisation (or reset).
+    ///
+    /// # Errors
+    /// A state of another instance or of before a reset (the world refuses it; nothing changes).
+    pub fn set_state(&mut self, state: &State) -> Result<(), Refused> {
+        if let Err(e) = self.simulation.restore(&state.snapshot) {
+            return Err(self.refuse(format!("fmi2SetFMUstate: {e}")));
+        }
+        self.phase = state.phase;
+        self.inputs = state.inputs;
+        self.applied = state.applied;
+        Ok(())
     }
 
     /// The simulated time (s).
