@@ -638,6 +638,16 @@ impl CarDevices {
         Some(due.any(|d| d.kind() == DeviceKind::Radar))
     }
 
+    /// True if an infra-red distance sensor samples at `now_ms`: the scene then needs the
+    /// surfaces' red.
+    pub(crate) fn infra_red_due(&self, now_ms: u64) -> bool {
+        self.devices.iter().any(|d| {
+            matches!(&d.settings, DeviceSettings::DistanceSensor(s)
+                if s.sensor_type == DistanceSensorType::InfraRed)
+                && d.due(now_ms)
+        })
+    }
+
     /// Samples every device whose period has come, at `now_ms`, on `chassis` of car `own`;
     /// cameras render `solids` (given whenever [`CarDevices::renders_at`] is true), the ray
     /// devices measure in `scene` (given whenever [`CarDevices::scene_needed`] is `Some`).

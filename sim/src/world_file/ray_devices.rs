@@ -9,13 +9,14 @@ use crate::devices::{
 };
 
 /// The `DistanceSensor` fields.
-pub(super) const DISTANCE_SENSOR: [&str; 6] = [
+pub(super) const DISTANCE_SENSOR: [&str; 7] = [
     "lookupTable",
     SENSOR_TYPE,
     "numberOfRays",
     "aperture",
     "gaussianWidth",
     "resolution",
+    "redColorSensitivity",
 ];
 /// The `Radar` fields, and `preset`.
 pub(super) const RADAR: [&str; 18] = [
@@ -113,16 +114,8 @@ pub(super) fn read_distance_sensor(
     let s = DistanceSensorSettings::default();
     let sensor_type = match d.string(SENSOR_TYPE)? {
         None => s.sensor_type,
-        Some("infra-red" | "infrared") => {
-            return Err(d.error(
-                SENSOR_TYPE,
-                WorldFileErrorKind::InvalidValue(
-                    "an infra-red sensor needs the surfaces' colours, which this simulator's \
-                     solids do not have: use \"generic\" or \"laser\""
-                        .to_string(),
-                ),
-            ));
-        }
+        // Webots' other spelling.
+        Some("infrared") => DistanceSensorType::InfraRed,
         Some(name) => DistanceSensorType::ALL
             .into_iter()
             .find(|t| t.webots_name() == name)
@@ -142,6 +135,9 @@ pub(super) fn read_distance_sensor(
         aperture: d.number("aperture")?.unwrap_or(s.aperture),
         gaussian_width: d.number("gaussianWidth")?.unwrap_or(s.gaussian_width),
         resolution: d.number("resolution")?.unwrap_or(s.resolution),
+        red_color_sensitivity: d
+            .number("redColorSensitivity")?
+            .unwrap_or(s.red_color_sensitivity),
     })
 }
 
