@@ -55,7 +55,7 @@ pub use distance_sensor::{DistanceSensorSettings, DistanceSensorType, MAX_DISTAN
 pub use gps::{GpsReading, GpsSettings};
 pub use inertial_unit::{InertialUnitReading, InertialUnitSettings};
 pub use lidar::{
-    LidarPoint, LidarProjection, LidarReading, LidarSettings, MAX_LIDAR_LAYERS,
+    LidarPoint, LidarProjection, LidarReading, LidarSettings, LidarType, MAX_LIDAR_LAYERS,
     MAX_LIDAR_RESOLUTION,
 };
 pub use lookup::LookupTable;
@@ -273,8 +273,16 @@ impl Device {
     }
 
     /// True if it samples at `now_ms`: enabled, and a full period has passed.
+    /// A rotating lidar refreshes at every step (its head turns whatever the period).
     fn due(&self, now_ms: u64) -> bool {
-        self.period_ms != 0 && now_ms - self.last_ms >= u64::from(self.period_ms)
+        let rotating = matches!(&self.settings, DeviceSettings::Lidar(s)
+            if s.lidar_type == LidarType::Rotating);
+        let period = if rotating {
+            1
+        } else {
+            u64::from(self.period_ms)
+        };
+        self.period_ms != 0 && now_ms - self.last_ms >= period
     }
 
     /// Enables it with a period of `period_ms` ms at time `now_ms` (0 disables). A new period
@@ -357,7 +365,11 @@ impl Device {
             DeviceSettings::Lidar(s) => match scene {
                 Some(scene) => {
                     let time = now_ms as f64 / 1000.0;
-                    Reading::Lidar(lidar::measure(s, scene, &point, time, rng))
+                    let previous = match &self.reading {
+                        Reading::Lidar(r) => r,
+                        _ => &LidarReading::unsampled(s),
+                    };
+                    Reading::Lidar(lidar::measure(s, scene, &point, time, (previous, dt), rng))
                 }
                 None => return,
             },
