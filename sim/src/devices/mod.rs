@@ -28,6 +28,7 @@ pub mod camera;
 pub mod display;
 mod distance_sensor;
 mod gps;
+mod gps_frame;
 mod inertial_unit;
 mod lidar;
 mod lookup;
@@ -53,6 +54,7 @@ pub use camera::{CameraSettings, CameraState, Occlusion, RecognitionObject, Reco
 pub use display::{Display, DisplayImage, DisplaySettings, FONT_FAMILIES, FontError, PixelFormat};
 pub use distance_sensor::{DistanceSensorSettings, DistanceSensorType, MAX_DISTANCE_SENSOR_RAYS};
 pub use gps::{GpsReading, GpsSettings};
+pub use gps_frame::{GpsCoordinateSystem, GpsFrame};
 pub use inertial_unit::{InertialUnitReading, InertialUnitSettings};
 pub use lidar::{
     LidarPoint, LidarProjection, LidarReading, LidarSettings, LidarType, MAX_LIDAR_LAYERS,
@@ -306,7 +308,7 @@ impl Device {
         scene: Option<&Scene<'_>>,
         solids: Option<&Solids>,
         own: VehicleId,
-        roads: &RoadNetwork,
+        world: Surroundings<'_>,
     ) {
         if let (DeviceSettings::Camera(settings), Some(camera), Some(solids)) =
             (&self.settings, self.camera.as_mut(), solids)
@@ -343,9 +345,14 @@ impl Device {
         };
         let previous = &mut self.previous_velocity;
         self.reading = match &self.settings {
-            DeviceSettings::Gps(s) => {
-                Reading::Gps(gps::measure(s, &point, dt, &mut self.gps_noise, rng))
-            }
+            DeviceSettings::Gps(s) => Reading::Gps(gps::measure(
+                s,
+                world.gps,
+                &point,
+                dt,
+                &mut self.gps_noise,
+                rng,
+            )),
             DeviceSettings::InertialUnit(s) => {
                 Reading::InertialUnit(inertial_unit::measure(s, &point, rng))
             }
@@ -373,9 +380,21 @@ impl Device {
                 }
                 None => return,
             },
-            DeviceSettings::RoadSensor(s) => Reading::Road(road_sensor::measure(s, roads, &point)),
+            DeviceSettings::RoadSensor(s) => {
+                Reading::Road(road_sensor::measure(s, world.roads, &point))
+            }
         };
     }
+}
+
+/// What the devices read of the world besides its rays and solids: the roads (a road
+/// sensor's) and the frame a GPS reports in.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Surroundings<'a> {
+    /// The world's roads.
+    pub roads: &'a RoadNetwork,
+    /// The world's GPS frame.
+    pub gps: &'a GpsFrame,
 }
 
 /// The chassis' motion after a step, from which each device's point is measured.
@@ -670,10 +689,10 @@ impl CarDevices {
         scene: Option<&Scene<'_>>,
         solids: Option<&Solids>,
         own: VehicleId,
-        roads: &RoadNetwork,
+        world: Surroundings<'_>,
     ) {
         for d in &mut self.devices {
-            d.refresh(chassis, now_ms, scene, solids, own, roads);
+            d.refresh(chassis, now_ms, scene, solids, own, world);
         }
     }
 }

@@ -8,11 +8,12 @@ use proto_geom::nalgebra::{Isometry3, Translation3};
 
 use super::{Controlled, Simulation};
 use crate::appearance::{Appearance, Appearances, SceneObject, lane_color};
+use crate::devices::Surroundings;
 use crate::devices::camera::roads;
 use crate::devices::camera::solids::Solids;
 use crate::devices::rays::Reds;
 use crate::devices::{
-    ChassisMotion, Device, DeviceSettings, Display, DisplayImage, PixelFormat, save_png,
+    ChassisMotion, Device, DeviceSettings, Display, DisplayImage, GpsFrame, PixelFormat, save_png,
 };
 use crate::error::SimError;
 use crate::keyboard::Keyboard;
@@ -108,7 +109,10 @@ impl Simulation {
                 scene.as_ref(),
                 solids.as_ref(),
                 car.id,
-                &self.world.config().roads,
+                Surroundings {
+                    roads: &self.world.config().roads,
+                    gps: &self.gps,
+                },
             );
         }
         Ok(())
@@ -176,6 +180,21 @@ impl Simulation {
     pub fn next_key(&mut self, id: VehicleId) -> Result<i32, SimError> {
         let car = self.car_mut(id)?;
         Ok(car.keyboard.next_key())
+    }
+
+    /// The world's GPS frame (Webots' `WorldInfo.gpsCoordinateSystem` and `gpsReference`).
+    pub fn gps_frame(&self) -> &GpsFrame {
+        &self.gps
+    }
+
+    /// Sets the world's GPS frame: the GPS devices report in it from their next sample.
+    ///
+    /// # Errors
+    /// [`SimError::Param`] for a reference [`GpsFrame::validate`] refuses.
+    pub fn set_gps_frame(&mut self, frame: GpsFrame) -> Result<(), SimError> {
+        frame.validate()?;
+        self.gps = frame;
+        Ok(())
     }
 
     /// Gives `object` the look `appearance`: its colour in camera images, its recognition

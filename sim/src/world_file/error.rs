@@ -116,6 +116,8 @@ pub enum NameSet {
     DistanceSensorType,
     /// A `Lidar`'s `type` (key `sensorType`): `fixed`, `rotating`.
     LidarType,
+    /// `gpsCoordinateSystem`: `local`, `WGS84`.
+    GpsCoordinateSystem,
     /// A `Lidar`'s `projection`: `cylindrical`, `planar`.
     LidarProjection,
     /// `[[road.segment]] type`: `straight`, `arc`, `clothoid`.
@@ -142,6 +144,7 @@ impl fmt::Display for NameSet {
             NameSet::DevicePreset => "device preset",
             NameSet::DistanceSensorType => "distance sensor type",
             NameSet::LidarType => "lidar type",
+            NameSet::GpsCoordinateSystem => "GPS coordinate system",
             NameSet::LidarProjection => "lidar projection",
             NameSet::SegmentType => "road segment type",
             NameSet::LineType => "road line type",
