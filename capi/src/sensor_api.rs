@@ -158,12 +158,13 @@ entry_points! {
         })
     }
 
-    /// Always `WB_GPS_LOCAL_COORDINATE` (0): the world has no `gpsCoordinateSystem`. Webots:
+    /// The world's `gpsCoordinateSystem`: `WB_GPS_LOCAL_COORDINATE` (0) or
+    /// `WB_GPS_WGS84_COORDINATE` (1); LOCAL for a wrong tag. Webots:
     /// `wb_gps_get_coordinate_system`.
     fn wb_gps_get_coordinate_system(tag: WbDeviceTag) -> c_int {
         with_robot(|r| {
-            find(r, tag, DeviceKind::Gps, "wb_gps_get_coordinate_system", true);
-            0
+            find(r, tag, DeviceKind::Gps, "wb_gps_get_coordinate_system", true)
+                .map_or(0, |_| r.simulation.gps_frame().system.webots_value())
         })
     }
 

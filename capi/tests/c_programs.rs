@@ -88,6 +88,12 @@ fn sensors() {
     run_announcing("sensors", Some(&sensors_world()), 9);
 }
 
+/// A GPS in a world whose `gpsCoordinateSystem` is WGS84.
+#[test]
+fn gps_wgs84() {
+    run_announcing("gps_wgs84", Some(&world_path("gps_wgs84.toml")), 0);
+}
+
 /// The RoadSensor extension of a world file's car against the road's closed forms, and its
 /// misuse messages.
 #[test]

@@ -7,6 +7,7 @@
 //! recognised until it is given one.
 
 use crate::error::ParamError;
+use crate::road::LaneKind;
 
 /// The ground's colour (linear RGB, each in [0, 1]): the replay's ground material.
 pub const GROUND_COLOR: [f64; 3] = [0.3, 0.33, 0.3];
@@ -14,6 +15,14 @@ pub const GROUND_COLOR: [f64; 3] = [0.3, 0.33, 0.3];
 pub const ASPHALT_COLOR: [f64; 3] = [0.18, 0.18, 0.19];
 /// Any other lane's (a border, a shoulder, a sidewalk): a lighter grey.
 pub const VERGE_COLOR: [f64; 3] = [0.45, 0.45, 0.43];
+/// The colour of a lane of kind `kind`: asphalt for a driving lane, else the verge's grey.
+pub fn lane_color(kind: LaneKind) -> [f64; 3] {
+    if kind == LaneKind::Driving {
+        ASPHALT_COLOR
+    } else {
+        VERGE_COLOR
+    }
+}
 /// The static boxes' and ramps' default colour: the replay's concrete.
 pub const OBSTACLE_COLOR: [f64; 3] = [0.55, 0.55, 0.52];
 /// The dynamic boxes' default colour: the replay's wood.
@@ -117,6 +126,20 @@ impl Appearances {
     /// The look of `object` if one was set.
     pub fn explicit(&self, object: SceneObject) -> Option<&Appearance> {
         self.set.iter().find(|(o, _)| *o == object).map(|(_, a)| a)
+    }
+
+    /// The colour of `object` in a world of `vehicles` cars: the one set, else its default
+    /// (obstacles concrete, dynamic boxes wood, cars and then robots the [`PALETTE`] in turn).
+    pub fn color(&self, object: SceneObject, vehicles: usize) -> [f64; 3] {
+        self.explicit(object).map_or_else(
+            || match object {
+                SceneObject::Obstacle(_) => OBSTACLE_COLOR,
+                SceneObject::Body(_) => BODY_COLOR,
+                SceneObject::Car(i) => PALETTE[i % PALETTE.len()],
+                SceneObject::Robot(i) => PALETTE[(vehicles + i) % PALETTE.len()],
+            },
+            |a| a.color,
+        )
     }
 
     /// Every look set, in the order they were first set.

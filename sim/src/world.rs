@@ -20,7 +20,7 @@ use crate::diff_wheels::{
 use crate::error::{BodyOwner, BodyPart, SimError, panic_message};
 use crate::geom::{self, G_ROAD, G_STATIC};
 use crate::ground::{Ground, Surface};
-use crate::road::RoadError;
+use crate::road::{LaneKind, RoadError};
 use crate::vehicle::{Vehicle, VehicleId, VehiclePlacement, VehicleSpec, WheelRoadHooks};
 
 mod snapshot;
@@ -59,6 +59,8 @@ pub struct World {
     bodies: Vec<RigidBodyHandle>,
     /// The static obstacles' colliders, with each one's index in `config.obstacles`.
     obstacles: Vec<(usize, ColliderHandle)>,
+    /// The road lanes' colliders, with each lane's kind (its colour to an infra-red sensor).
+    lanes: Vec<(ColliderHandle, LaneKind)>,
     time_ms: u64,
     last_substeps: usize,
     failure: Option<SimError>,
@@ -82,6 +84,7 @@ impl World {
             robots: Vec::new(),
             bodies: Vec::new(),
             obstacles: Vec::new(),
+            lanes: Vec::new(),
             time_ms: 0,
             last_substeps: 1,
             failure: None,
@@ -169,6 +172,7 @@ impl World {
                     statics(builder, mesh.friction).collision_groups(geom::groups(G_ROAD));
                 let handle = self.physics.insert_collider(collider, None);
                 self.ground.add(handle, Surface::Uniform(mesh.friction));
+                self.lanes.push((handle, mesh.kind));
             }
         }
         Ok(())
@@ -482,6 +486,21 @@ impl World {
             .iter()
             .filter_map(|h| body::pose(&self.physics, *h))
             .collect()
+    }
+
+    /// The dynamic boxes' rapier bodies, in the order of [`WorldConfig::bodies`].
+    pub(crate) fn body_handles(&self) -> &[RigidBodyHandle] {
+        &self.bodies
+    }
+
+    /// The static obstacles' colliders, each with its index in [`WorldConfig::obstacles`].
+    pub(crate) fn obstacle_colliders(&self) -> &[(usize, ColliderHandle)] {
+        &self.obstacles
+    }
+
+    /// The road lanes' colliders, each with its lane's kind.
+    pub(crate) fn lane_colliders(&self) -> &[(ColliderHandle, LaneKind)] {
+        &self.lanes
     }
 
     /// Advances the world by one `basicTimeStep`: applies every vehicle's and robot's commands,

@@ -4,8 +4,8 @@
  * Part of the `capi` crate (libcar.so / libdriver.so). SPDX-License-Identifier: MIT OR Apache-2.0
  *
  * Sampling periods are in milliseconds (ms). The value is the lookupTable's output for the
- * distance (m) the rays measure: NaN before the first sample. Types generic, sonar and laser;
- * infra-red is not supported (the world's solids have no colours). The pointers returned point
+ * distance (m) the rays measure: NaN before the first sample. Types generic, infra-red (the red
+ * channel of the surfaces' colours), sonar and laser. The pointers returned point
  * into library storage; do not free them.
  */
 

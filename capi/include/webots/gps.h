@@ -5,8 +5,9 @@
  *
  * Sampling periods are in milliseconds (ms). A sample comes one full period after enabling;
  * before it the values are NaN. The pointers returned point into library storage that stays
- * valid until the next step; do not free them. The coordinates are always local (x east,
- * y north, z up, in m): WorldInfo.gpsReference and WGS84 are not supported.
+ * valid until the next step; do not free them. The coordinates are those of the world file's
+ * gpsCoordinateSystem: "local" (x east, y north, z up, in m, plus gpsReference) or "WGS84"
+ * (latitude and longitude in degrees, altitude in m, gpsReference those of the origin).
  */
 
 #ifndef WB_GPS_H
@@ -33,7 +34,7 @@ const double *wb_gps_get_values(WbDeviceTag tag);
 double wb_gps_get_speed(WbDeviceTag tag);
 /* Its velocity [vx, vy, vz] (m/s, world axes); NULL for a wrong tag. */
 const double *wb_gps_get_speed_vector(WbDeviceTag tag);
-/* Always WB_GPS_LOCAL_COORDINATE. */
+/* The world's gpsCoordinateSystem (LOCAL for a wrong tag). */
 WbGpsCoordinateSystem wb_gps_get_coordinate_system(WbDeviceTag tag);
 /* The degrees, minutes and seconds of a decimal angle (degrees) as UTF-8 text, "D\xc2\xb0 M' S''"
    in Webots' format (degree, prime and double-prime signs), in memory the caller frees with

@@ -1,11 +1,13 @@
 /*
- * webots/lidar.h: the Webots Lidar device (fixed type).
+ * webots/lidar.h: the Webots Lidar device (fixed and rotating types).
  *
  * Part of the `capi` crate (libcar.so / libdriver.so). SPDX-License-Identifier: MIT OR Apache-2.0
  *
  * Sampling periods are in milliseconds (ms), ranges in m, angles in rad, frequencies in Hz.
  * The range image holds horizontalResolution values per layer, layer 0 (the highest) first,
- * column 0 the leftmost; a value is INFINITY where nothing lies within [minRange, maxRange).
+ * column 0 the leftmost (a rotating lidar's column j looks along -pi - j*2pi/horizontalResolution
+ * rad and is rewritten as its head sweeps it, at every step, at the world's defaultFrequency);
+ * a value is INFINITY where nothing lies within [minRange, maxRange).
  * The point cloud is the range image converted to points. The pointers returned point into
  * library storage valid until the next call; do not free them.
  */

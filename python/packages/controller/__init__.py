@@ -263,15 +263,16 @@ class _Sensor(Device):
 
 
 class GPS(_Sensor):
-    """Webots' ``GPS``: the device's world position (m; x east, y north, z up) and velocity
-    (m/s). Local coordinates only."""
+    """Webots' ``GPS``: the device's world position (m; x east, y north, z up, plus the world's
+    ``gpsReference``; or latitude °, longitude °, altitude m when its ``gpsCoordinateSystem`` is
+    ``"WGS84"``) and velocity (m/s)."""
 
     _kind = "gps"
     LOCAL = 0
     WGS84 = 1
 
     def getValues(self) -> List[float]:
-        """The position ``[x, y, z]`` (m)."""
+        """The position ``[x, y, z]`` (m), or ``[latitude, longitude, altitude]`` (°, °, m)."""
         return list(_native.wb_gps_get_values(self._tag) or [])
 
     def getSpeed(self) -> float:
@@ -283,7 +284,7 @@ class GPS(_Sensor):
         return list(_native.wb_gps_get_speed_vector(self._tag) or [])
 
     def getCoordinateSystem(self) -> int:
-        """Always ``GPS.LOCAL``."""
+        """The world's ``gpsCoordinateSystem``: ``GPS.LOCAL`` or ``GPS.WGS84``."""
         return _native.wb_gps_get_coordinate_system(self._tag)
 
     @staticmethod

@@ -18,6 +18,9 @@ use super::{DevicePoint, check_resolution};
 pub enum DistanceSensorType {
     /// `"generic"`: the weighted mean of the rays' distances, a miss counting as the range.
     Generic,
+    /// `"infra-red"` (or `"infrared"`): the weighted mean distance lengthened by how little
+    /// red the surfaces hit reflect, scaled by `redColorSensitivity` (spec §6).
+    InfraRed,
     /// `"sonar"`: the nearest ray whose incidence on the surface is below π/8 rad; the range
     /// if none.
     Sonar,
@@ -27,8 +30,9 @@ pub enum DistanceSensorType {
 
 impl DistanceSensorType {
     /// Every type.
-    pub const ALL: [DistanceSensorType; 3] = [
+    pub const ALL: [DistanceSensorType; 4] = [
         DistanceSensorType::Generic,
+        DistanceSensorType::InfraRed,
         DistanceSensorType::Sonar,
         DistanceSensorType::Laser,
     ];
@@ -37,6 +41,7 @@ impl DistanceSensorType {
     pub const fn webots_name(self) -> &'static str {
         match self {
             DistanceSensorType::Generic => "generic",
+            DistanceSensorType::InfraRed => "infra-red",
             DistanceSensorType::Sonar => "sonar",
             DistanceSensorType::Laser => "laser",
         }
@@ -47,6 +52,7 @@ impl DistanceSensorType {
     pub const fn webots_value(self) -> i32 {
         match self {
             DistanceSensorType::Generic => 0,
+            DistanceSensorType::InfraRed => 1,
             DistanceSensorType::Sonar => 2,
             DistanceSensorType::Laser => 3,
         }
@@ -54,9 +60,6 @@ impl DistanceSensorType {
 }
 
 /// The fields of a `DistanceSensor` node, with Webots' defaults ([`Default`]).
-///
-/// `"infra-red"` is not held: it needs the red channel of the surfaces' appearance, which the
-/// world's solids do not have (`COMPATIBILITY.md`); `redColorSensitivity` only acts there.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DistanceSensorSettings {
     /// `lookupTable`: rows `[distance (m), value, relative noise]`; default
@@ -73,6 +76,9 @@ pub struct DistanceSensorSettings {
     pub gaussian_width: f64,
     /// `resolution` (the value's unit, −1 or > 0; default −1: none).
     pub resolution: f64,
+    /// `redColorSensitivity` (≥ 0, dimensionless; default 1): how much an infra-red sensor's
+    /// distance grows on surfaces that reflect little red; no effect on the other types.
+    pub red_color_sensitivity: f64,
 }
 
 impl Default for DistanceSensorSettings {
@@ -85,6 +91,7 @@ impl Default for DistanceSensorSettings {
             aperture: WEBOTS_APERTURE,
             gaussian_width: 1.0,
             resolution: -1.0,
+            red_color_sensitivity: 1.0,
         }
     }
 }
@@ -102,8 +109,8 @@ const WEBOTS_APERTURE: f64 = 1.5708;
 pub const MAX_DISTANCE_SENSOR_RAYS: u32 = 1000;
 
 impl DistanceSensorSettings {
-    /// Checks every field against its range (Webots turns a negative aperture positive and a
-    /// non-positive gaussian width into 1; here they are refused).
+    /// Checks every field against its range (Webots turns a negative aperture or red colour
+    /// sensitivity positive and a non-positive gaussian width into 1; here they are refused).
     ///
     /// # Errors
     /// A [`ParamError`] naming the Webots field and the value.
@@ -121,6 +128,7 @@ impl DistanceSensorSettings {
             |a| (0.0..=TAU).contains(&a),
         )?;
         ParamError::positive("gaussianWidth", self.gaussian_width)?;
+        ParamError::non_negative("redColorSensitivity", self.red_color_sensitivity)?;
         check_resolution("resolution", self.resolution)
     }
 
@@ -253,6 +261,21 @@ fn distance(
             .iter()
             .map(|(dir, w)| w * cast(dir).map_or(range, |(h, _)| h.distance))
             .sum(),
+        DistanceSensorType::InfraRed => {
+            // d̄ = Σ wᵢdᵢ and F = Σ wᵢfᵢ, fᵢ = 0.2 + 0.8·red on a hit (roughness and occlusion
+            // 0: no surface here is PBR), 1 on a miss (which counts as the range, as in
+            // generic); F ≥ 0.2, so d̄/F is finite.
+            let (mean, factor) = rays
+                .iter()
+                .fold((0.0, 0.0), |(d, f), (dir, w)| match cast(dir) {
+                    Some((h, _)) => (
+                        d + w * h.distance,
+                        f + w * (0.2 + 0.8 * scene.red(h.collider)),
+                    ),
+                    None => (d + w * range, f + w),
+                });
+            mean + (mean / factor - mean) * settings.red_color_sensitivity
+        }
         DistanceSensorType::Laser => rays
             .first()
             .and_then(|(dir, _)| cast(dir))

@@ -5,13 +5,14 @@ use proto_geom::nalgebra::{Point3, Vector3};
 use crate::error::ParamError;
 use crate::rng::SplitMix64;
 
+use super::gps_frame::{GpsCoordinateSystem, GpsFrame};
 use super::noise::{discretize, gaussian};
 use super::{DevicePoint, check_resolution};
 
 /// The fields of a `GPS` node, with Webots' defaults ([`Default`]).
 ///
-/// `type` ("satellite" / "laser") is ignored by Webots and not held. The coordinates are
-/// always local: `WorldInfo.gpsReference` and WGS84 are not supported (`COMPATIBILITY.md`).
+/// `type` ("satellite" / "laser") is ignored by Webots and not held. The frame the position
+/// is reported in is the world's ([`GpsFrame`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GpsSettings {
     /// `accuracy` (m, ≥ 0; default 0): standard deviation of the position noise.
@@ -63,7 +64,9 @@ impl GpsSettings {
 /// `wb_gps_get_speed_vector` return. NaN before the first sample.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GpsReading {
-    /// The device point's world position (m), with the position noise and `resolution`.
+    /// The device point's world position (m) with the position noise and `resolution`, in the
+    /// world's [`GpsFrame`]: plus `gpsReference` (m) in local mode, `[latitude °, longitude °,
+    /// altitude m]` in WGS84 mode.
     pub position: Point3<f64>,
     /// Its speed (m/s), with `speedNoise` and `speedResolution`.
     pub speed: f64,
@@ -87,9 +90,10 @@ impl GpsReading {
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub(crate) struct GpsNoise(Vector3<f64>);
 
-/// Measures the GPS at `point`, `dt` s after its previous sample.
+/// Measures the GPS at `point`, `dt` s after its previous sample, in the world's `frame`.
 pub(crate) fn measure(
     settings: &GpsSettings,
+    frame: &GpsFrame,
     point: &DevicePoint,
     dt: f64,
     noise: &mut GpsNoise,
@@ -109,7 +113,17 @@ pub(crate) fn measure(
             position[i] += settings.accuracy * noise.0[i];
         }
     }
-    let position = position.map(|p| discretize(p, settings.resolution));
+    // Spec §3: the reference is added before `resolution` in local mode; in WGS84 mode the
+    // noisy, discretised world position is projected.
+    let position = match frame.system {
+        GpsCoordinateSystem::Local => frame.coordinates(&position),
+        GpsCoordinateSystem::Wgs84 => position,
+    }
+    .map(|p| discretize(p, settings.resolution));
+    let position = match frame.system {
+        GpsCoordinateSystem::Local => position,
+        GpsCoordinateSystem::Wgs84 => frame.coordinates(&position),
+    };
     let mut speed = point.velocity.norm();
     // Webots' code makes `speedNoise` relative (its manual says absolute).
     if settings.speed_noise > 0.0 {

@@ -1,6 +1,7 @@
-//! Webots' `Lidar` (spec §8), fixed type: a range image of `numberOfLayers` rows of
+//! Webots' `Lidar` (spec §8): a range image of `numberOfLayers` rows of
 //! `horizontalResolution` rays, each cast through the world, and the point cloud it converts
-//! to.
+//! to. A fixed lidar casts its whole image at each sample; a rotating one turns its head at
+//! `defaultFrequency` and rewrites, at every step, the columns its head swept in that step.
 
 use core::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -18,7 +19,8 @@ use super::{DevicePoint, check_resolution};
 pub enum LidarProjection {
     /// `"cylindrical"`: each value is the distance from the lidar along its ray (m).
     Cylindrical,
-    /// `"planar"`: each value is the depth along the lidar's +x axis (m).
+    /// `"planar"`: each value is the depth along the lidar's +x axis (m); a rotating lidar's,
+    /// along its head's x axis.
     Planar,
 }
 
@@ -31,6 +33,31 @@ impl LidarProjection {
         }
     }
 }
+
+/// The `type` field.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LidarType {
+    /// `"fixed"`: the image spans `fieldOfView` around +x, cast whole at each sample.
+    Fixed,
+    /// `"rotating"`: the head turns clockwise (seen from +z) at `defaultFrequency` turns per
+    /// second; the image spans a full turn, column `j` at azimuth `−π − j·2π/hres`.
+    Rotating,
+}
+
+impl LidarType {
+    /// The `type` string.
+    pub const fn webots_name(self) -> &'static str {
+        match self {
+            LidarType::Fixed => "fixed",
+            LidarType::Rotating => "rotating",
+        }
+    }
+}
+
+/// Slack (rad) on the bounds of a rotating head's sweep: its angle sums one turn per step in
+/// f64, so a column exactly at a step's end may fall an ulp past it; within the slack it
+/// belongs to the step that ends there, not to the next.
+const SWEEP_SLACK: f64 = 1e-9;
 
 /// Angles (rad) as Webots writes them in `Lidar.wrl` and the `SickLms291` and `VelodynePuck`
 /// PROTOs (spec §12): rounded multiples of π, kept as Webots has them.
@@ -54,11 +81,13 @@ pub const MAX_LIDAR_RESOLUTION: u32 = 36_000;
 /// The most layers (`numberOfLayers`): real lidars have at most a few hundred.
 pub const MAX_LIDAR_LAYERS: u32 = 512;
 
-/// The fields of a fixed `Lidar` node, with Webots' defaults ([`Default`]). `type
-/// "rotating"` and `rotatingHead` are not supported (`COMPATIBILITY.md`); the frequencies are
-/// held for the getters (a fixed lidar samples at its sampling period).
+/// The fields of a `Lidar` node, with Webots' defaults ([`Default`]). `rotatingHead` is not
+/// supported (`COMPATIBILITY.md`). A fixed lidar samples at its sampling period and holds the
+/// frequencies for the getters; a rotating one turns at `defaultFrequency`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LidarSettings {
+    /// `type` (default fixed).
+    pub lidar_type: LidarType,
     /// `tiltAngle` (rad, in [−π/2, π/2]; default 0): added to every layer's elevation.
     pub tilt_angle: f64,
     /// `horizontalResolution` (rays per layer, 1 to [`MAX_LIDAR_RESOLUTION`]; default 512).
@@ -93,6 +122,7 @@ pub struct LidarSettings {
 impl Default for LidarSettings {
     fn default() -> Self {
         LidarSettings {
+            lidar_type: LidarType::Fixed,
             tilt_angle: 0.0,
             horizontal_resolution: 512,
             field_of_view: webots::DEFAULT_FOV,
@@ -212,10 +242,31 @@ impl LidarSettings {
         self.horizontal_resolution as usize * self.number_of_layers as usize
     }
 
-    /// The azimuth of column `j` (rad, > 0 towards +y): `fov/2 − (j + ½)·fov/hres`.
+    /// The azimuth of column `j` (rad, > 0 towards +y): `fov/2 − (j + ½)·fov/hres` for a
+    /// fixed lidar, `−π − j·2π/hres` for a rotating one.
     pub fn azimuth(&self, j: u32) -> f64 {
-        let step = self.field_of_view / f64::from(self.horizontal_resolution);
-        self.field_of_view / 2.0 - (f64::from(j) + 0.5) * step
+        let hres = f64::from(self.horizontal_resolution);
+        match self.lidar_type {
+            LidarType::Fixed => {
+                let step = self.field_of_view / hres;
+                self.field_of_view / 2.0 - (f64::from(j) + 0.5) * step
+            }
+            LidarType::Rotating => -PI - f64::from(j) * TAU / hres,
+        }
+    }
+
+    /// True if column `j` of a rotating lidar is swept as its head turns clockwise from
+    /// `from` by `turn` (rad): its azimuth lies in `(from, from + turn]` clockwise (the head
+    /// starts at azimuth 0, so `from` is the angle turned so far), so that each column is
+    /// swept once a turn.
+    fn swept(&self, j: u32, from: f64, turn: f64) -> bool {
+        if turn >= TAU {
+            return true;
+        }
+        // The clockwise angle from azimuth 0 to the column, then from the head to it.
+        let column = (-self.azimuth(j)).rem_euclid(TAU);
+        let ahead = (column - from).rem_euclid(TAU);
+        ahead > SWEEP_SLACK && ahead <= turn + SWEEP_SLACK
     }
 
     /// The elevation of layer `i` (rad, > 0 up; layer 0 the highest): `vFOV/2 −
@@ -232,6 +283,16 @@ impl LidarSettings {
     pub fn direction(&self, i: u32, j: u32) -> Vector3<f64> {
         let (theta, phi) = (self.azimuth(j), self.elevation(i));
         Vector3::new(theta.cos() * phi.cos(), theta.sin() * phi.cos(), phi.sin())
+    }
+
+    /// The cosine between the ray `dir` (device axes) and the axis a planar image measures
+    /// depth along: the lidar's +x for a fixed lidar, the head's x axis (which faces the
+    /// column) for a rotating one.
+    fn depth_cosine(&self, dir: &Vector3<f64>) -> f64 {
+        match self.lidar_type {
+            LidarType::Fixed => dir.x,
+            LidarType::Rotating => dir.x.hypot(dir.y),
+        }
     }
 
     /// Every ray's direction, as [`LidarSettings::direction`] gives it, from the sines and
@@ -273,6 +334,9 @@ pub struct LidarReading {
     pub range_image: Vec<f32>,
     /// Simulated time of the sample (s); NaN before the first.
     pub time: f64,
+    /// The angle (rad, in [0, 2π)) a rotating lidar's head has turned clockwise since it was
+    /// built; 0 for a fixed lidar.
+    pub head: f64,
 }
 
 impl LidarReading {
@@ -281,6 +345,7 @@ impl LidarReading {
         LidarReading {
             range_image: vec![f32::INFINITY; settings.number_of_points()],
             time: f64::NAN,
+            head: 0.0,
         }
     }
 
@@ -299,7 +364,7 @@ impl LidarReading {
                 let dir = directions.at(i as usize, j as usize);
                 let scale = match settings.projection {
                     LidarProjection::Cylindrical => r,
-                    LidarProjection::Planar => r / dir.x,
+                    LidarProjection::Planar => r / settings.depth_cosine(&dir),
                 };
                 let p = dir * scale;
                 points.push(LidarPoint {
@@ -331,19 +396,37 @@ pub struct LidarPoint {
     pub time: f32,
 }
 
-/// The lidar's sample at `point` in `scene` at time `time` (s).
+/// The lidar's sample at `point` in `scene` at time `time` (s), `dt` (s) after `previous`: a
+/// fixed lidar's whole image; a rotating lidar's `previous` image with the columns its head
+/// sweeps in `dt` rewritten.
 pub(crate) fn measure(
     s: &LidarSettings,
     scene: &Scene<'_>,
     point: &DevicePoint,
     time: f64,
+    (previous, dt): (&LidarReading, f64),
     rng: &mut SplitMix64,
 ) -> LidarReading {
-    let mut range_image = Vec::with_capacity(s.number_of_points());
     let directions = s.directions();
+    let (columns, head): (Vec<u32>, f64) = match s.lidar_type {
+        LidarType::Fixed => ((0..s.horizontal_resolution).collect(), 0.0),
+        LidarType::Rotating => {
+            let turn = TAU * s.default_frequency * dt;
+            let swept = (0..s.horizontal_resolution)
+                .filter(|&j| s.swept(j, previous.head, turn))
+                .collect();
+            (swept, (previous.head + turn).rem_euclid(TAU))
+        }
+    };
+    let mut range_image = if previous.range_image.len() == s.number_of_points() {
+        previous.range_image.clone()
+    } else {
+        vec![f32::INFINITY; s.number_of_points()]
+    };
+    let hres = s.horizontal_resolution as usize;
     for i in 0..directions.layers.len() {
-        for j in 0..directions.columns.len() {
-            let dir = directions.at(i, j);
+        for &j in &columns {
+            let dir = directions.at(i, j as usize);
             let world = point.rotation * dir;
             // Nothing nearer than `near` is seen: the ray starts there.
             let start = point.position + world * s.near;
@@ -352,13 +435,17 @@ pub(crate) fn measure(
                 let r = s.near + d;
                 match s.projection {
                     LidarProjection::Cylindrical => r,
-                    LidarProjection::Planar => r * dir.x,
+                    LidarProjection::Planar => r * s.depth_cosine(&dir),
                 }
             });
-            range_image.push(respond(s, value, rng));
+            range_image[i * hres + j as usize] = respond(s, value, rng);
         }
     }
-    LidarReading { range_image, time }
+    LidarReading {
+        range_image,
+        time,
+        head,
+    }
 }
 
 /// A measured value `r` (m) as the image holds it: `+∞` outside [`minRange`, `maxRange`), the

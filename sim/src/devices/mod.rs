@@ -28,6 +28,7 @@ pub mod camera;
 pub mod display;
 mod distance_sensor;
 mod gps;
+mod gps_frame;
 mod inertial_unit;
 mod lidar;
 mod lookup;
@@ -53,9 +54,10 @@ pub use camera::{CameraSettings, CameraState, Occlusion, RecognitionObject, Reco
 pub use display::{Display, DisplayImage, DisplaySettings, FONT_FAMILIES, FontError, PixelFormat};
 pub use distance_sensor::{DistanceSensorSettings, DistanceSensorType, MAX_DISTANCE_SENSOR_RAYS};
 pub use gps::{GpsReading, GpsSettings};
+pub use gps_frame::{GpsCoordinateSystem, GpsFrame};
 pub use inertial_unit::{InertialUnitReading, InertialUnitSettings};
 pub use lidar::{
-    LidarPoint, LidarProjection, LidarReading, LidarSettings, MAX_LIDAR_LAYERS,
+    LidarPoint, LidarProjection, LidarReading, LidarSettings, LidarType, MAX_LIDAR_LAYERS,
     MAX_LIDAR_RESOLUTION,
 };
 pub use lookup::LookupTable;
@@ -273,8 +275,16 @@ impl Device {
     }
 
     /// True if it samples at `now_ms`: enabled, and a full period has passed.
+    /// A rotating lidar refreshes at every step (its head turns whatever the period).
     fn due(&self, now_ms: u64) -> bool {
-        self.period_ms != 0 && now_ms - self.last_ms >= u64::from(self.period_ms)
+        let rotating = matches!(&self.settings, DeviceSettings::Lidar(s)
+            if s.lidar_type == LidarType::Rotating);
+        let period = if rotating {
+            1
+        } else {
+            u64::from(self.period_ms)
+        };
+        self.period_ms != 0 && now_ms - self.last_ms >= period
     }
 
     /// Enables it with a period of `period_ms` ms at time `now_ms` (0 disables). A new period
@@ -298,7 +308,7 @@ impl Device {
         scene: Option<&Scene<'_>>,
         solids: Option<&Solids>,
         own: VehicleId,
-        roads: &RoadNetwork,
+        world: Surroundings<'_>,
     ) {
         if let (DeviceSettings::Camera(settings), Some(camera), Some(solids)) =
             (&self.settings, self.camera.as_mut(), solids)
@@ -335,9 +345,14 @@ impl Device {
         };
         let previous = &mut self.previous_velocity;
         self.reading = match &self.settings {
-            DeviceSettings::Gps(s) => {
-                Reading::Gps(gps::measure(s, &point, dt, &mut self.gps_noise, rng))
-            }
+            DeviceSettings::Gps(s) => Reading::Gps(gps::measure(
+                s,
+                world.gps,
+                &point,
+                dt,
+                &mut self.gps_noise,
+                rng,
+            )),
             DeviceSettings::InertialUnit(s) => {
                 Reading::InertialUnit(inertial_unit::measure(s, &point, rng))
             }
@@ -357,13 +372,29 @@ impl Device {
             DeviceSettings::Lidar(s) => match scene {
                 Some(scene) => {
                     let time = now_ms as f64 / 1000.0;
-                    Reading::Lidar(lidar::measure(s, scene, &point, time, rng))
+                    let previous = match &self.reading {
+                        Reading::Lidar(r) => r,
+                        _ => &LidarReading::unsampled(s),
+                    };
+                    Reading::Lidar(lidar::measure(s, scene, &point, time, (previous, dt), rng))
                 }
                 None => return,
             },
-            DeviceSettings::RoadSensor(s) => Reading::Road(road_sensor::measure(s, roads, &point)),
+            DeviceSettings::RoadSensor(s) => {
+                Reading::Road(road_sensor::measure(s, world.roads, &point))
+            }
         };
     }
+}
+
+/// What the devices read of the world besides its rays and solids: the roads (a road
+/// sensor's) and the frame a GPS reports in.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Surroundings<'a> {
+    /// The world's roads.
+    pub roads: &'a RoadNetwork,
+    /// The world's GPS frame.
+    pub gps: &'a GpsFrame,
 }
 
 /// The chassis' motion after a step, from which each device's point is measured.
@@ -638,6 +669,16 @@ impl CarDevices {
         Some(due.any(|d| d.kind() == DeviceKind::Radar))
     }
 
+    /// True if an infra-red distance sensor samples at `now_ms`: the scene then needs the
+    /// surfaces' red.
+    pub(crate) fn infra_red_due(&self, now_ms: u64) -> bool {
+        self.devices.iter().any(|d| {
+            matches!(&d.settings, DeviceSettings::DistanceSensor(s)
+                if s.sensor_type == DistanceSensorType::InfraRed)
+                && d.due(now_ms)
+        })
+    }
+
     /// Samples every device whose period has come, at `now_ms`, on `chassis` of car `own`;
     /// cameras render `solids` (given whenever [`CarDevices::renders_at`] is true), the ray
     /// devices measure in `scene` (given whenever [`CarDevices::scene_needed`] is `Some`).
@@ -648,10 +689,10 @@ impl CarDevices {
         scene: Option<&Scene<'_>>,
         solids: Option<&Solids>,
         own: VehicleId,
-        roads: &RoadNetwork,
+        world: Surroundings<'_>,
     ) {
         for d in &mut self.devices {
-            d.refresh(chassis, now_ms, scene, solids, own, roads);
+            d.refresh(chassis, now_ms, scene, solids, own, world);
         }
     }
 }

@@ -1,13 +1,15 @@
 //! The world as the ray-based devices (`DistanceSensor`, `Radar`, `Lidar`) see it: rays cast
 //! through rapier's query pipeline against every collider (ground, ramps, boxes, other cars,
-//! robots) except those of the device's own car, and the radar targets. Every ray device
-//! measures through this one module.
+//! robots) except those of the device's own car, the radar targets, and the red of every
+//! surface for the infra-red distance sensor. Every ray device measures through this one
+//! module.
 
 use proto_geom::nalgebra::{Point3, Vector3};
 use rapier3d::prelude::{
     Collider, ColliderHandle, PhysicsWorld, QueryFilter, Ray, RigidBodyHandle,
 };
 
+use crate::appearance::GROUND_COLOR;
 use crate::geom;
 
 /// Where a ray stopped.
@@ -45,6 +47,29 @@ pub(crate) struct RadarEcho {
     pub colliders: Vec<ColliderHandle>,
 }
 
+/// The red channel (in [0, 1]) of the world's surfaces: their colour's first component
+/// (`crate::appearance`), which is what an infra-red distance sensor sees of them.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Reds {
+    /// Colliders that belong to no body (static boxes, ramps, road lanes), with their red.
+    pub colliders: Vec<(ColliderHandle, f64)>,
+    /// Bodies (dynamic boxes, cars, robots), with their red: each of their colliders has it.
+    pub bodies: Vec<(RigidBodyHandle, f64)>,
+    /// The red of every other collider: the ground.
+    pub ground: f64,
+}
+
+impl Default for Reds {
+    /// Every surface the ground's red.
+    fn default() -> Self {
+        Reds {
+            colliders: Vec::new(),
+            bodies: Vec::new(),
+            ground: GROUND_COLOR[0],
+        }
+    }
+}
+
 /// The world without one car: what that car's ray devices see after a step.
 pub(crate) struct Scene<'a> {
     physics: &'a PhysicsWorld,
@@ -52,6 +77,9 @@ pub(crate) struct Scene<'a> {
     own: Vec<RigidBodyHandle>,
     /// The radar targets other than the car itself: the world's vehicles, then its boxes.
     echoes: Vec<RadarEcho>,
+    /// The surfaces' red (left at its default when no infra-red sensor samples: building it
+    /// costs a pass over the world's things).
+    reds: Reds,
 }
 
 impl<'a> Scene<'a> {
@@ -66,7 +94,29 @@ impl<'a> Scene<'a> {
             physics,
             own,
             echoes,
+            reds: Reds::default(),
         }
+    }
+
+    /// The scene with the surfaces' red `reds`.
+    pub(crate) fn with_reds(self, reds: Reds) -> Self {
+        Scene { reds, ..self }
+    }
+
+    /// The red channel (in [0, 1]) of the surface of `collider`.
+    pub(crate) fn red(&self, collider: ColliderHandle) -> f64 {
+        let reds = &self.reds;
+        if let Some((_, r)) = reds.colliders.iter().find(|(c, _)| *c == collider) {
+            return *r;
+        }
+        let parent = self
+            .physics
+            .colliders
+            .get(collider)
+            .and_then(Collider::parent);
+        parent
+            .and_then(|p| reds.bodies.iter().find(|(b, _)| *b == p))
+            .map_or(reds.ground, |(_, r)| *r)
     }
 
     /// The radar targets.

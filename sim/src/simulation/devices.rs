@@ -7,16 +7,54 @@ use std::path::{Path, PathBuf};
 use proto_geom::nalgebra::{Isometry3, Translation3};
 
 use super::{Controlled, Simulation};
-use crate::appearance::{Appearance, SceneObject};
+use crate::appearance::{Appearance, Appearances, SceneObject, lane_color};
+use crate::devices::Surroundings;
 use crate::devices::camera::roads;
 use crate::devices::camera::solids::Solids;
+use crate::devices::rays::Reds;
 use crate::devices::{
-    ChassisMotion, Device, DeviceSettings, Display, DisplayImage, PixelFormat, save_png,
+    ChassisMotion, Device, DeviceSettings, Display, DisplayImage, GpsFrame, PixelFormat, save_png,
 };
 use crate::error::SimError;
 use crate::keyboard::Keyboard;
 use crate::report::OutputError;
 use crate::vehicle::VehicleId;
+use crate::world::World;
+
+/// The red of every surface of `world` as `looks` colours it: the obstacles, the dynamic
+/// boxes, the cars' bodies, the robots' bodies, the road lanes; the ground for the rest.
+fn reds(world: &World, looks: &Appearances) -> Reds {
+    let vehicles = world.vehicles().len();
+    let red = |object: SceneObject| looks.color(object, vehicles)[0];
+    let colliders = world
+        .obstacle_colliders()
+        .iter()
+        .map(|&(i, c)| (c, red(SceneObject::Obstacle(i))))
+        .chain(
+            world
+                .lane_colliders()
+                .iter()
+                .map(|&(c, kind)| (c, lane_color(kind)[0])),
+        )
+        .collect();
+    let boxes = world.body_handles().iter().enumerate();
+    let bodies = boxes
+        .map(|(i, &b)| (b, red(SceneObject::Body(i))))
+        .chain(world.vehicles().iter().enumerate().flat_map(|(i, v)| {
+            let r = red(SceneObject::Car(i));
+            v.bodies().into_iter().map(move |b| (b, r))
+        }))
+        .chain(world.robots().iter().enumerate().flat_map(|(i, robot)| {
+            let r = red(SceneObject::Robot(i));
+            robot.bodies().into_iter().map(move |b| (b, r))
+        }))
+        .collect();
+    Reds {
+        colliders,
+        bodies,
+        ..Reds::default()
+    }
+}
 
 impl Simulation {
     /// Car `id`, to change.
@@ -55,7 +93,14 @@ impl Simulation {
                 gravity,
             };
             let scene = match car.devices.scene_needed(now_ms) {
-                Some(radar) => Some(self.world.scene(car.id, radar)?),
+                Some(radar) => {
+                    let scene = self.world.scene(car.id, radar)?;
+                    Some(if car.devices.infra_red_due(now_ms) {
+                        scene.with_reds(reds(&self.world, &self.appearances))
+                    } else {
+                        scene
+                    })
+                }
                 None => None,
             };
             car.devices.refresh(
@@ -64,7 +109,10 @@ impl Simulation {
                 scene.as_ref(),
                 solids.as_ref(),
                 car.id,
-                &self.world.config().roads,
+                Surroundings {
+                    roads: &self.world.config().roads,
+                    gps: &self.gps,
+                },
             );
         }
         Ok(())
@@ -132,6 +180,21 @@ impl Simulation {
     pub fn next_key(&mut self, id: VehicleId) -> Result<i32, SimError> {
         let car = self.car_mut(id)?;
         Ok(car.keyboard.next_key())
+    }
+
+    /// The world's GPS frame (Webots' `WorldInfo.gpsCoordinateSystem` and `gpsReference`).
+    pub fn gps_frame(&self) -> &GpsFrame {
+        &self.gps
+    }
+
+    /// Sets the world's GPS frame: the GPS devices report in it from their next sample.
+    ///
+    /// # Errors
+    /// [`SimError::Param`] for a reference [`GpsFrame::validate`] refuses.
+    pub fn set_gps_frame(&mut self, frame: GpsFrame) -> Result<(), SimError> {
+        frame.validate()?;
+        self.gps = frame;
+        Ok(())
     }
 
     /// Gives `object` the look `appearance`: its colour in camera images, its recognition

@@ -22,6 +22,7 @@ use std::sync::Arc;
 use crate::appearance::Appearances;
 use crate::car_builder::CarBuilder;
 use crate::devices::CarDevices;
+use crate::devices::GpsFrame;
 use crate::devices::camera::roads::Patch;
 use crate::diff_wheels::{DifferentialWheelsParams, RobotId, RobotMode, RobotPlacement};
 use crate::error::{ParamError, SimError};
@@ -130,6 +131,8 @@ pub struct Simulation {
     replay_overlay: bool,
     /// How the world's things look to the cameras.
     appearances: Appearances,
+    /// The frame the GPS devices report in.
+    gps: GpsFrame,
     /// The roads as the cameras see them, built at the first render (the roads never move).
     road_patches: Option<Arc<[Patch]>>,
     /// Tells this simulation's snapshots from others'.
@@ -151,6 +154,7 @@ impl Simulation {
             recording: None,
             replay_overlay: false,
             appearances: Appearances::default(),
+            gps: GpsFrame::default(),
             road_patches: None,
             serial: snapshot::next_serial(),
             loaded: None,
@@ -200,6 +204,7 @@ impl Simulation {
             sim.set_appearance(*object, appearance.clone())?;
         }
         sim.set_replay_overlay(description.replay_overlay);
+        sim.set_gps_frame(description.gps)?;
         sim.loaded = Some(Box::new(sim.snapshot()));
         Ok((sim, reports))
     }

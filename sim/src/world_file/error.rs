@@ -112,8 +112,12 @@ pub enum NameSet {
     SensorSlot,
     /// `[[vehicle.device]] preset`: the real devices of a `Radar` or `Lidar`.
     DevicePreset,
-    /// A `DistanceSensor`'s `type`: `generic`, `sonar`, `laser`.
+    /// A `DistanceSensor`'s `type`: `generic`, `infra-red`, `sonar`, `laser`.
     DistanceSensorType,
+    /// A `Lidar`'s `type` (key `sensorType`): `fixed`, `rotating`.
+    LidarType,
+    /// `gpsCoordinateSystem`: `local`, `WGS84`.
+    GpsCoordinateSystem,
     /// A `Lidar`'s `projection`: `cylindrical`, `planar`.
     LidarProjection,
     /// `[[road.segment]] type`: `straight`, `arc`, `clothoid`.
@@ -139,6 +143,8 @@ impl fmt::Display for NameSet {
             NameSet::SensorSlot => "sensor slot",
             NameSet::DevicePreset => "device preset",
             NameSet::DistanceSensorType => "distance sensor type",
+            NameSet::LidarType => "lidar type",
+            NameSet::GpsCoordinateSystem => "GPS coordinate system",
             NameSet::LidarProjection => "lidar projection",
             NameSet::SegmentType => "road segment type",
             NameSet::LineType => "road line type",

@@ -55,6 +55,7 @@ use vehicle_model::Model;
 
 use crate::appearance::{Appearances, BODY_COLOR, OBSTACLE_COLOR, PALETTE, SceneObject};
 use crate::config::WorldConfig;
+use crate::devices::{GpsCoordinateSystem, GpsFrame};
 use crate::simulation::{DURATION_RULE, is_duration};
 
 pub use error::{Location, NameSet, WorldFileError, WorldFileErrorKind, WorldWarning};
@@ -91,8 +92,10 @@ pub fn model_world_text(model: Model) -> String {
 }
 
 /// Top-level keys of a world file.
-const ROOT_KEYS: [&str; 13] = [
+const ROOT_KEYS: [&str; 15] = [
     "basicTimeStep",
+    GPS_COORDINATE_SYSTEM,
+    GPS_REFERENCE,
     "duration",
     REPLAY_OVERLAY,
     "gravity",
@@ -106,6 +109,12 @@ const ROOT_KEYS: [&str; 13] = [
     "road",
     "junction",
 ];
+
+/// Webots' `WorldInfo.gpsCoordinateSystem`: `"local"` or `"WGS84"`.
+const GPS_COORDINATE_SYSTEM: &str = "gpsCoordinateSystem";
+/// Webots' `WorldInfo.gpsReference` (m in local mode; latitude °, longitude °, altitude m in
+/// WGS84 mode).
+const GPS_REFERENCE: &str = "gpsReference";
 
 /// The key that draws the radars' targets in `replay.glb` ([`crate::replay::overlay`]).
 const REPLAY_OVERLAY: &str = "replayOverlay";
@@ -135,6 +144,9 @@ pub struct WorldDescription {
     /// `replayOverlay` (default false): `replay.glb` shows the radars' targets
     /// ([`crate::replay::overlay`]); a project extension.
     pub replay_overlay: bool,
+    /// `gpsCoordinateSystem` and `gpsReference` (Webots' `WorldInfo` fields; default local,
+    /// `[0, 0, 0]`): the frame the GPS devices report in.
+    pub gps: GpsFrame,
 }
 
 impl WorldDescription {
@@ -219,6 +231,7 @@ pub fn with_model(model: Model) -> WorldDescription {
         appearances: Appearances::default(),
         warnings,
         replay_overlay: false,
+        gps: GpsFrame::default(),
     }
 }
 
@@ -399,7 +412,34 @@ pub(crate) fn parse_with(
         appearances,
         warnings,
         replay_overlay: root.boolean(REPLAY_OVERLAY)?.unwrap_or(false),
+        gps: read_gps_frame(&root)?,
     })
+}
+
+/// `gpsCoordinateSystem` and `gpsReference`, checked.
+fn read_gps_frame(root: &Section<'_, '_>) -> Result<GpsFrame, WorldFileError> {
+    let systems = [GpsCoordinateSystem::Local, GpsCoordinateSystem::Wgs84];
+    let system = match root.string(GPS_COORDINATE_SYSTEM)? {
+        None => GpsCoordinateSystem::Local,
+        Some(name) => systems
+            .into_iter()
+            .find(|s| s.webots_name() == name)
+            .ok_or_else(|| {
+                let names = systems.map(GpsCoordinateSystem::webots_name);
+                root.unknown_name(
+                    GPS_COORDINATE_SYSTEM,
+                    NameSet::GpsCoordinateSystem,
+                    name,
+                    &names,
+                )
+            })?,
+    };
+    let frame = GpsFrame {
+        system,
+        reference: root.array::<3>(GPS_REFERENCE)?.unwrap_or([0.0; 3]),
+    };
+    frame.validate().map_err(|e| devices::invalid(root, &e))?;
+    Ok(frame)
 }
 
 /// The looks of the boxes, ramps (in `config.obstacles`' order: boxes first), dynamic boxes,

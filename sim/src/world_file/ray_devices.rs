@@ -5,17 +5,19 @@ use super::devices::read_table;
 use super::error::{NameSet, WorldFileError, WorldFileErrorKind};
 use super::read::Section;
 use crate::devices::{
-    DistanceSensorSettings, DistanceSensorType, LidarProjection, LidarSettings, RadarSettings,
+    DistanceSensorSettings, DistanceSensorType, LidarProjection, LidarSettings, LidarType,
+    RadarSettings,
 };
 
 /// The `DistanceSensor` fields.
-pub(super) const DISTANCE_SENSOR: [&str; 6] = [
+pub(super) const DISTANCE_SENSOR: [&str; 7] = [
     "lookupTable",
     SENSOR_TYPE,
     "numberOfRays",
     "aperture",
     "gaussianWidth",
     "resolution",
+    "redColorSensitivity",
 ];
 /// The `Radar` fields, and `preset`.
 pub(super) const RADAR: [&str; 18] = [
@@ -41,9 +43,12 @@ pub(super) const RADAR: [&str; 18] = [
 /// The key of a `DistanceSensor`'s Webots field `type` (`type` names the device's node).
 const SENSOR_TYPE: &str = "sensorType";
 
-/// The `Lidar` fields, and `preset`. Its `type` is always "fixed" (`type` names the node).
-pub(super) const LIDAR: [&str; 15] = [
+/// The `Lidar` fields, and `preset`; Webots' `type` is `sensorType` (`type` names the node).
+/// `rotatingHead` is listed to be refused by name.
+pub(super) const LIDAR: [&str; 17] = [
     "preset",
+    SENSOR_TYPE,
+    "rotatingHead",
     "tiltAngle",
     "horizontalResolution",
     "fieldOfView",
@@ -113,16 +118,8 @@ pub(super) fn read_distance_sensor(
     let s = DistanceSensorSettings::default();
     let sensor_type = match d.string(SENSOR_TYPE)? {
         None => s.sensor_type,
-        Some("infra-red" | "infrared") => {
-            return Err(d.error(
-                SENSOR_TYPE,
-                WorldFileErrorKind::InvalidValue(
-                    "an infra-red sensor needs the surfaces' colours, which this simulator's \
-                     solids do not have: use \"generic\" or \"laser\""
-                        .to_string(),
-                ),
-            ));
-        }
+        // Webots' other spelling.
+        Some("infrared") => DistanceSensorType::InfraRed,
         Some(name) => DistanceSensorType::ALL
             .into_iter()
             .find(|t| t.webots_name() == name)
@@ -142,6 +139,9 @@ pub(super) fn read_distance_sensor(
         aperture: d.number("aperture")?.unwrap_or(s.aperture),
         gaussian_width: d.number("gaussianWidth")?.unwrap_or(s.gaussian_width),
         resolution: d.number("resolution")?.unwrap_or(s.resolution),
+        red_color_sensitivity: d
+            .number("redColorSensitivity")?
+            .unwrap_or(s.red_color_sensitivity),
     })
 }
 
@@ -183,10 +183,31 @@ pub(super) fn read_lidar(d: &Section<'_, '_>) -> Result<LidarSettings, WorldFile
             return Err(d.unknown_name("projection", NameSet::LidarProjection, other, &names));
         }
     };
+    let lidar_type = match d.string(SENSOR_TYPE)? {
+        None => s.lidar_type,
+        Some(name) => [LidarType::Fixed, LidarType::Rotating]
+            .into_iter()
+            .find(|t| t.webots_name() == name)
+            .ok_or_else(|| {
+                let names = [LidarType::Fixed, LidarType::Rotating].map(LidarType::webots_name);
+                d.unknown_name(SENSOR_TYPE, NameSet::LidarType, name, &names)
+            })?,
+    };
+    if d.value("rotatingHead").is_some() {
+        return Err(d.error(
+            "rotatingHead",
+            WorldFileErrorKind::InvalidValue(
+                "a rotating head's solid is not simulated: a rotating lidar's rays turn \
+                 without one (leave rotatingHead out)"
+                    .to_string(),
+            ),
+        ));
+    }
     let n = |key: &str, default: f64| -> Result<f64, WorldFileError> {
         Ok(d.number(key)?.unwrap_or(default))
     };
     Ok(LidarSettings {
+        lidar_type,
         tilt_angle: n("tiltAngle", s.tilt_angle)?,
         horizontal_resolution: count(d, "horizontalResolution", s.horizontal_resolution)?,
         field_of_view: n("fieldOfView", s.field_of_view)?,

@@ -5,8 +5,8 @@
 use proto_geom::nalgebra::{Point3, Vector3};
 
 use super::raster::{bytes, shade};
-use crate::appearance::{ASPHALT_COLOR, VERGE_COLOR};
-use crate::road::{LaneKind, RoadNetwork};
+use crate::appearance::lane_color;
+use crate::road::RoadNetwork;
 use crate::world::ROAD_LIFT;
 
 /// Height (m) of the painted lines above the lane surfaces they lie on: above the two
@@ -36,12 +36,7 @@ pub(crate) fn patches(roads: &RoadNetwork) -> Vec<Patch> {
     let mut out = Vec::new();
     for road in &roads.roads {
         for m in road.lane_meshes(ROAD_LIFT) {
-            let colour = if m.kind == LaneKind::Driving {
-                ASPHALT_COLOR
-            } else {
-                VERGE_COLOR
-            };
-            split(colour, &m.vertices, &m.triangles, &mut out);
+            split(lane_color(m.kind), &m.vertices, &m.triangles, &mut out);
         }
         for strip in road.mark_strips(ROAD_LIFT + MARK_LIFT) {
             split(strip.colour, &strip.vertices, &strip.triangles, &mut out);
