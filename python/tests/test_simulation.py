@@ -31,7 +31,7 @@ def test_a_scenario_gives_the_metrics_and_telemetry_of_vehicle_sim(vehicle_sim, 
     }
     assert set(ours) == set(cli)
     assert ours["files"] == [f for f in cli["files"] if not f.endswith(".svg")]
-    assert ours["files"] == ["telemetry.csv", "metrics.json", "replay.glb"]
+    assert ours["files"] == ["telemetry.csv", "metrics.json", "replay.glb", "report.html"]
     metrics = result.metrics["lane-change"]
     assert metrics == cli["scenarios"]["lane-change"]
     assert metrics["left_track"] is False and 2.0 < metrics["max_lateral_accel_mps2"] < 5.0
@@ -183,6 +183,7 @@ def test_save_writes_the_run_as_vehicle_sim_writes_one(tmp_path):
         "devices.csv",
         "metrics.json",
         "replay.glb",
+        "report.html",
     ]
     # The car has no device: the readings' file is its header alone.
     devices = (tmp_path / "run" / "devices.csv").read_text()

@@ -32,6 +32,8 @@ use std::io;
 
 use proto_geom::export::{AnimationError, Scene};
 
+pub use scene::car_colour;
+
 pub use recorder::{
     CarFrame, CarModel, Frame, MAX_FRAMES, MAX_KEYFRAME_RATE, Recorder, Recording, RobotFrame,
     RobotModel,

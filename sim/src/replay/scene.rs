@@ -21,6 +21,12 @@ const PALETTE: [[f32; 3]; 5] = [
     [0.5, 0.15, 0.55],
     [0.85, 0.6, 0.05],
 ];
+/// The body colour of car (or robot) `i` (linear RGB, 0–1): its material's base colour, which
+/// `report.html`'s viewer and its browser check look for on screen.
+pub fn car_colour(i: usize) -> [f32; 3] {
+    PALETTE[i % PALETTE.len()]
+}
+
 /// Most grid lines across the ground patch's longer side.
 const MAX_GRID_LINES: f64 = 150.0;
 /// Height of the grid lines above the ground, per metre of the patch's longer side: enough for

@@ -9,6 +9,7 @@
 
 #[cfg(feature = "app")]
 mod figures;
+mod page;
 #[cfg(feature = "app")]
 mod plot;
 
@@ -23,6 +24,7 @@ use serde::ser::{Serialize, SerializeMap, Serializer};
 pub use crate::config::{Outline, OutlineKind};
 #[cfg(feature = "app")]
 pub use figures::figures;
+pub use page::{MAX_PAGE_ROWS, PAGE_COLUMNS, REPORT_HTML};
 #[cfg(feature = "app")]
 pub use plot::{Figure, Panel, PlotError, Series, SeriesKind};
 
@@ -42,11 +44,12 @@ pub const REPLAY_GLB: &str = "replay.glb";
 /// Every file a run may write into its output directory. A run removes those of this list
 /// that it does not write itself, so that the directory never mixes two runs' outputs; other
 /// files are left alone.
-pub const KNOWN_OUTPUTS: [&str; 10] = [
+pub const KNOWN_OUTPUTS: [&str; 11] = [
     TELEMETRY_CSV,
     DEVICES_CSV,
     METRICS_JSON,
     REPLAY_GLB,
+    REPORT_HTML,
     "speed.svg",
     "rpm_gear.svg",
     "steering.svg",
@@ -342,12 +345,13 @@ pub enum OutputError {
     Plot(#[from] PlotError),
 }
 
-/// The data files every run writes ([`write_data`]), in order.
-pub const DATA_OUTPUTS: [&str; 3] = [TELEMETRY_CSV, METRICS_JSON, REPLAY_GLB];
+/// The files every run writes ([`write_data`]), in order: the data and the page that shows
+/// them (`report.html`, [`REPORT_HTML`]).
+pub const DATA_OUTPUTS: [&str; 4] = [TELEMETRY_CSV, METRICS_JSON, REPLAY_GLB, REPORT_HTML];
 
 /// The names of the files [`write_outputs`] writes for `report`: `telemetry.csv`,
 /// `devices.csv` (when a result has device readings), `metrics.json`, the plots of
-/// [`figures`] and `replay.glb`, in that order.
+/// [`figures`], `replay.glb` and `report.html`, in that order.
 #[cfg(feature = "app")]
 pub fn output_names(report: &RunReport) -> Vec<&'static str> {
     let devices = report.results.iter().any(|r| !r.devices.is_empty());
@@ -356,12 +360,12 @@ pub fn output_names(report: &RunReport) -> Vec<&'static str> {
         .chain(devices.then_some(DEVICES_CSV))
         .chain([METRICS_JSON])
         .chain(figures(report).into_iter().map(|(name, _)| name))
-        .chain([REPLAY_GLB])
+        .chain([REPLAY_GLB, REPORT_HTML])
         .collect()
 }
 
 /// Writes `telemetry.csv`, `devices.csv` (when a result has device readings),
-/// `metrics.json`, the plots of [`figures`] and `replay.glb` into
+/// `metrics.json`, the plots of [`figures`], `replay.glb` and `report.html` into
 /// `dir` (created if needed), removes the [`KNOWN_OUTPUTS`] of an earlier run that this one
 /// does not write, and returns the paths written.
 ///
@@ -381,7 +385,7 @@ pub fn write_outputs(
 }
 
 /// Writes the data files of `report` into `dir` (created if needed): `telemetry.csv`,
-/// `metrics.json` and `replay.glb` ([`DATA_OUTPUTS`]); removes the [`KNOWN_OUTPUTS`] of an
+/// `metrics.json`, `replay.glb` and the page `report.html` ([`DATA_OUTPUTS`]); removes the [`KNOWN_OUTPUTS`] of an
 /// earlier run (its plots included) so that the directory never mixes two runs; returns the
 /// paths written. This is what a controller run writes under `VEHICLE_OUT`; `vehicle-sim plot
 /// DIR` draws the plots from them.
@@ -452,8 +456,8 @@ pub(crate) type TelemetryWriter<'a> =
     dyn Fn(&mut dyn std::io::Write) -> Result<(), csv::Error> + 'a;
 
 /// Creates `dir`, removes the known outputs not in `names`, and writes the telemetry (by
-/// `telemetry`), the metrics of `report` (listing `names`), the `plots` (file name and SVG)
-/// and its replay; returns their paths in that order.
+/// `telemetry`), the metrics of `report` (listing `names`), the `plots` (file name and SVG),
+/// its replay and the page of all of them (`report.html`); returns their paths in that order.
 pub(crate) fn write_files(
     report: &RunReport,
     world_warnings: &[String],
@@ -484,6 +488,7 @@ pub(crate) fn write_files(
     let glb =
         crate::replay::to_glb(&report.replay_parts()).map_err(io_error(&dir.join(REPLAY_GLB)))?;
     written.push(write_file(dir, REPLAY_GLB, &glb)?);
+    written.push(page::write_page(report, dir, plots, &glb)?);
     Ok(written)
 }
 
@@ -595,6 +600,7 @@ mod tests {
                 "metrics.json",
                 "notes.txt",
                 "replay.glb",
+                "report.html",
                 "speed.svg",
                 "telemetry.csv",
                 "trajectory.svg"

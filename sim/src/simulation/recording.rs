@@ -348,12 +348,12 @@ impl Recording {
             }
             w.finish()
         };
-        let [csv, json, glb] = report::DATA_OUTPUTS;
+        let [csv, json, glb, html] = report::DATA_OUTPUTS;
         let mut written = report::write_files(
             &run,
             world_warnings,
             dir,
-            &[csv, report::DEVICES_CSV, json, glb],
+            &[csv, report::DEVICES_CSV, json, glb, html],
             &[],
             &telemetry,
         )?;

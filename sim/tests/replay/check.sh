@@ -5,7 +5,11 @@
 # translation and scale channels), validates each
 # replay.glb with the Khronos glTF validator (0 errors and 0 warnings), then renders two of them
 # with <model-viewer> in headless Chromium at two animation times each (the screenshots must
-# differ and the console stay free of errors).
+# differ and the console stay free of errors). Then opens report.html of the test track and
+# of the two-cars world from disk with the network blocked (report.mjs): following each car at
+# three times, the car is centred and covers more than 5 % of the viewer; the screenshot of
+# the two-cars page is $REPORT_SCREENSHOT (default OUT_DIR/report.png; the README's is
+# sim/docs/report.png, made with REPORT_SCREENSHOT=sim/docs/report.png).
 #
 # Usage: sim/tests/replay/check.sh [OUT_DIR]   (default: target/replay-checks)
 # Needs node, npm and /usr/bin/chromium (or $CHROMIUM); installs the npm packages of
@@ -39,9 +43,10 @@ sim="$root/target/debug/vehicle-sim"
 "$sim" --world sim/worlds/e-puck.toml --out "$out/e-puck" >/dev/null
 { echo "replayOverlay = true"; cat sim/worlds/acc.toml; } >"$out/acc-overlay.toml"
 "$sim" --world "$out/acc-overlay.toml" --out "$out/acc-overlay" >/dev/null
+"$sim" --world sim/worlds/two-cars.toml --out "$out/two-cars" >/dev/null
 
 node "$here/validate.mjs" "$out/test-track/replay.glb" "$out/obstacles/replay.glb" \
-  "$out/e-puck/replay.glb" "$out/acc-overlay/replay.glb"
+  "$out/e-puck/replay.glb" "$out/acc-overlay/replay.glb" "$out/two-cars/replay.glb"
 # A C controller's run under VEHICLE_OUT (written by capi's test
 # a_controller_run_writes_the_outputs_of_the_same_programme, which `cargo test` runs first).
 controller_glb="$root/target/tmp/capi-c_programs/outputs-controller/replay.glb"
@@ -69,4 +74,8 @@ node "$here/render.mjs" --glb "$out/test-track/replay.glb" --animation lane-chan
 target="$(midpoint "$out/e-puck/telemetry.csv" square 8 20)"
 node "$here/render.mjs" --glb "$out/e-puck/replay.glb" --animation square \
   --times 8,20 --target "$target" --radius 0.6 --out "$out" --name e-puck_square
+node "$here/report.mjs" --html "$out/test-track/report.html" --part lane-change --times 2,9,11 \
+  --out "$out" --name report_test-track
+node "$here/report.mjs" --html "$out/two-cars/report.html" --part programme --times 2,10,20 \
+  --out "$out" --name report_two-cars --shot "${REPORT_SCREENSHOT:-$out/report.png}"
 echo "replay check passed: outputs and screenshots in $out"
