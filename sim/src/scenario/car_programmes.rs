@@ -42,6 +42,38 @@ const MAX_LOOKAHEAD: f64 = 25.0;
 /// Largest distance between two cones along a lane edge of the lane change (m), as ISO
 /// 3888-1 courses are laid out.
 const CONE_SPACING: f64 = 5.0;
+/// Radius of a cone's base (m): a 0.3 m square base (EN 13422 traffic cones of 0.5 m) as a
+/// circle of the same half-width. The car hits a cone when its footprint comes this close to
+/// the cone's centre.
+const CONE_BASE_RADIUS: f64 = 0.15;
+
+/// The cones of the lane change (track frame from the entry, m): both edges of every gate,
+/// at both ends and at most [`CONE_SPACING`] apart between.
+fn cone_layout(gates: &[LaneSection]) -> Vec<[f64; 2]> {
+    let mut cones = Vec::new();
+    for g in gates {
+        for side in [-0.5, 0.5] {
+            let y = g.center + side * g.width;
+            let n = ((g.end - g.start) / CONE_SPACING).ceil().max(1.0) as usize;
+            for k in 0..=n {
+                cones.push([g.start + (g.end - g.start) * k as f64 / n as f64, y]);
+            }
+        }
+    }
+    cones
+}
+
+/// True when the cone at `cone` touches the footprint of a car whose rear-axle centre is at
+/// `(x, y)` heading `yaw` (rad) (all in the track frame, m): the rectangle from the rear to
+/// the front axle and `width` wide, grown by [`CONE_BASE_RADIUS`] (its rounded corners taken
+/// square: at most 4 cm more reach at a corner).
+fn hits_cone(cone: [f64; 2], x: f64, y: f64, yaw: f64, wheelbase: f64, width: f64) -> bool {
+    let (s, c) = yaw.sin_cos();
+    let (dx, dy) = (cone[0] - x, cone[1] - y);
+    let (along, across) = (c * dx + s * dy, -s * dx + c * dy);
+    (-CONE_BASE_RADIUS..=wheelbase + CONE_BASE_RADIUS).contains(&along)
+        && across.abs() <= 0.5 * width + CONE_BASE_RADIUS
+}
 /// Window of the moving average applied to the lateral acceleration (s): the body's
 /// acceleration is a finite difference of the solver's velocities, whose step-to-step jitter
 /// is not a vehicle behaviour.
@@ -215,6 +247,20 @@ fn cruise_until_steady(
 fn brake(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult, ScenarioError> {
     let run_up = 2.0 * rig.driver()?.params().time_0_to_100 + 10.0;
     cruise_until_steady(&mut rig, V100, run_up, progress)?;
+    if !rig.running() {
+        // The run's duration ended during the run-up: nothing of the braking was measured,
+        // and nothing is reported as if it had been.
+        let why = format!(
+            "braking never started: the run ended at {:.1} s while the car was reaching \
+             {:.0} km/h (at {:.1} km/h); a longer --duration (or world duration) lets it brake",
+            rig.time(),
+            V100 * KMH,
+            rig.speed() * KMH
+        );
+        let mut result = rig.finish(Scenario::Brake, brake_metrics(None));
+        result.unfinished = Some(why);
+        return Ok(result);
+    }
     // Off the cruise control (its wheel motors would overpower the brakes), brake fully.
     rig.driver_mut()?.set_throttle(0.0);
     rig.driver_mut()?.set_brake_intensity(1.0);
@@ -253,40 +299,77 @@ fn brake(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult, Scen
     let yaw_change = (rig.yaw() - yaw0 + core::f64::consts::PI).rem_euclid(core::f64::consts::TAU)
         - core::f64::consts::PI;
     let decel = expected_deceleration(&rig)?;
-    let distance = stopped.map(|(_, d)| d);
-    let metrics = vec![
-        Metric::number(
+    let unfinished = stopped.is_none().then(|| {
+        format!(
+            "the car had not stopped when the run ended at {:.1} s ({:.1} km/h left): no \
+             stopping distance or time",
+            rig.time(),
+            rig.speed() * KMH
+        )
+    });
+    let braking = Braking {
+        v0,
+        stopped: stopped.map(|(t, d)| (t - t0, d)),
+        expected: v0 * v0 / (2.0 * decel),
+        yaw_change,
+        at_rest: at_rest && stopped.is_some_and(|(ts, _)| rig.time() >= ts + 1.0 - 1e-9),
+    };
+    let mut result = rig.finish(Scenario::Brake, brake_metrics(Some(&braking)));
+    result.unfinished = unfinished;
+    Ok(result)
+}
+
+/// What the brake test measured once it braked.
+struct Braking {
+    /// Speed when braking started (m/s).
+    v0: f64,
+    /// Time (s) and path length (m) from braking to the stop, if the car stopped.
+    stopped: Option<(f64, f64)>,
+    /// Stopping distance from the brake torque, v0²/2a (m).
+    expected: f64,
+    /// Heading change while braking (rad).
+    yaw_change: f64,
+    /// At rest 1 s after stopping.
+    at_rest: bool,
+}
+
+/// The brake test's metrics, every one [`Value::Missing`](super::Value::Missing) when it
+/// never braked (`None`): the same keys either way, so a sweep's columns do not depend on
+/// its cases.
+fn brake_metrics(b: Option<&Braking>) -> Vec<Metric> {
+    let stopped = b.and_then(|b| b.stopped);
+    vec![
+        Metric::maybe(
             "initial_speed_kmh",
             "speed when braking starts",
             "km/h",
-            v0 * KMH,
+            b.map(|b| b.v0 * KMH),
         ),
-        Metric::maybe("stop_distance_m", "stopping distance", "m", distance),
         Metric::maybe(
-            "stop_time_s",
-            "stopping time",
-            "s",
-            stopped.map(|(t, _)| t - t0),
+            "stop_distance_m",
+            "stopping distance",
+            "m",
+            stopped.map(|(_, d)| d),
         ),
-        Metric::number(
+        Metric::maybe("stop_time_s", "stopping time", "s", stopped.map(|(t, _)| t)),
+        Metric::maybe(
             "stop_distance_expected_m",
             "stopping distance from brake torque, v0^2/2a",
             "m",
-            v0 * v0 / (2.0 * decel),
+            b.map(|b| b.expected),
         ),
-        Metric::number(
+        Metric::maybe(
             "yaw_change_rad",
             "heading change while braking",
             "rad",
-            yaw_change,
+            b.map(|b| b.yaw_change),
         ),
-        Metric::flag(
+        Metric::maybe_flag(
             "at_rest",
             "at rest 1 s after stopping",
-            at_rest && stopped.is_some_and(|(ts, _)| rig.time() >= ts + 1.0 - 1e-9),
+            b.filter(|b| b.stopped.is_some()).map(|b| b.at_rest),
         ),
-    ];
-    Ok(rig.finish(Scenario::Brake, metrics))
+    ]
 }
 
 fn circle(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult, ScenarioError> {
@@ -396,6 +479,8 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
     let mut max_lateral: f64 = 0.0;
     let mut max_excursion: f64 = 0.0;
     let mut max_steering: f64 = 0.0;
+    let cones = cone_layout(&gates);
+    let mut hit = vec![false; cones.len()];
     let window = (ACCEL_WINDOW / rig.time_step()).round().max(1.0) as usize;
     let mut recent: Vec<f64> = Vec::with_capacity(window);
     let mut signalled = IndicatorState::Off;
@@ -444,6 +529,9 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
                         }
                     }
                 }
+                for (cone, hit) in cones.iter().zip(&mut hit) {
+                    *hit |= hits_cone(*cone, x - e, y, yaw, wheelbase, width);
+                }
                 if x >= e + TRACK_LENGTH + 10.0 {
                     break;
                 }
@@ -464,21 +552,28 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
             for side in [-0.5, 0.5] {
                 let y = g.center + side * g.width;
                 rig.guide(vec![to_world(g.start, y), to_world(g.end, y)]);
-                // Cones at both ends of each edge and at most CONE_SPACING apart between.
-                let n = ((g.end - g.start) / CONE_SPACING).ceil().max(1.0) as usize;
-                for k in 0..=n {
-                    let x = g.start + (g.end - g.start) * k as f64 / n as f64;
-                    rig.cone(to_world(x, y));
-                }
             }
+        }
+        for &[x, y] in &cones {
+            rig.cone(to_world(x, y));
         }
     }
     let completed = entry.is_some_and(|e| to_track(rig.state().position)[0] >= e + TRACK_LENGTH);
-    if !completed {
-        rig.note(
-            "the car did not complete the lane-change track within the time limit".to_string(),
-        );
-    }
+    let unfinished = (!completed).then(|| {
+        let where_ = match entry {
+            None => "before the speed had settled for the track's entry".to_string(),
+            Some(e) => format!(
+                "{:.0} m into the {:.0} m track",
+                (to_track(rig.state().position)[0] - e).max(0.0),
+                TRACK_LENGTH
+            ),
+        };
+        format!(
+            "the car did not complete the lane-change track: the run ended at {:.1} s, {where_}",
+            rig.time()
+        )
+    });
+    let cones_hit = hit.iter().filter(|&&h| h).count();
     let metrics = vec![
         Metric::maybe(
             "max_lateral_accel_mps2",
@@ -486,10 +581,16 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
             "m/s^2",
             completed.then_some(max_lateral),
         ),
-        Metric::flag(
+        Metric::maybe_flag(
             "left_track",
-            "left the lanes",
-            !completed || max_excursion > 0.0,
+            "hit a cone (left the lanes)",
+            completed.then_some(cones_hit > 0),
+        ),
+        Metric::maybe(
+            "cones_hit",
+            "cones hit",
+            "",
+            completed.then_some(cones_hit as f64),
         ),
         Metric::maybe(
             "max_lane_excursion_m",
@@ -504,5 +605,7 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
             completed.then_some(max_steering),
         ),
     ];
-    Ok(rig.finish(Scenario::LaneChange, metrics))
+    let mut result = rig.finish(Scenario::LaneChange, metrics);
+    result.unfinished = unfinished;
+    Ok(result)
 }

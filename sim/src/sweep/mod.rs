@@ -2,7 +2,7 @@
 //! over the tasks of a batch engine, with one row of metrics per variant.
 //!
 //! A sweep file (TOML) names a base world (a world file, relative to the sweep file, or a
-//! shipped model name, as `vehicle-sim --world` takes it), a scenario, settings for every
+//! shipped model or world name, as `vehicle-sim --world` takes it), a scenario, settings for every
 //! case (`[set]`) and axes over any world-file key by its dotted path: explicit lists, linear
 //! ranges and seeded random draws. The cases are every combination of the axes' values
 //! (`combine = "product"`, the default) or their values side by side (`"zip"`).
@@ -142,15 +142,21 @@ fn base_world(
             let source = world_file::with_model(model).source;
             return Ok((source, world_file::model_world_text(model)));
         }
+        if let Some(world) = world_file::shipped::world(name) {
+            return Ok((world.source(), world.text.to_string()));
+        }
         let looks_like_path = name.contains(['/', '\\']) || name.ends_with(".toml");
         if !looks_like_path {
-            let models = Model::ALL.map(Model::webots_name);
+            let names = Model::ALL
+                .map(Model::webots_name)
+                .into_iter()
+                .chain(world_file::shipped::worlds().flat_map(|w| [w.name, w.file_name]));
             return Err(SweepError::file(src.error(
                 Some(span.clone()),
                 Some("world".to_string()),
                 WorldFileErrorKind::NeitherFileNorModel {
                     name: name.clone(),
-                    suggestions: world_file::closest(name, models),
+                    suggestions: world_file::closest(name, names),
                 },
             )));
         }
