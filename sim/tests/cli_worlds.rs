@@ -124,7 +124,7 @@ fn three_typos_are_three_errors_in_file_order_with_their_lines() {
         );
         assert!(err_lines[at - 1].contains("unknown key '"), "{err}");
     }
-    assert!(err.contains("3 errors in this world file"), "{err}");
+    assert!(err.contains("3 errors in this file"), "{err}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
@@ -167,4 +167,40 @@ fn a_brake_test_that_never_braked_says_so_and_fails() {
     let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let why = json["scenarios"]["brake"]["unfinished"].as_str().unwrap();
     assert!(why.starts_with("braking never started"), "{why}");
+}
+
+#[test]
+fn a_sweep_file_reports_every_error_with_its_line() {
+    let dir = scratch("sweep-typos");
+    let sweep = dir.join("s.toml");
+    let lines = [
+        "world = \"BmwX5\"",
+        "scenario = \"brake\"",
+        "[set]",
+        "duraton = 1",
+        "[axes]",
+        "\"ground.fricton\" = [0.5, 1.0]",
+    ];
+    std::fs::write(&sweep, lines.join("\n") + "\n").unwrap();
+    let out = vehicle_sim(&[
+        "sweep",
+        sweep.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = text(&out.stderr);
+    let at = |line: usize| {
+        err.find(&format!("s.toml:{line}:"))
+            .unwrap_or_else(|| panic!("no error at line {line}:\n{err}"))
+    };
+    assert!(at(4) < at(6), "{err}");
+    for line in [4, 6] {
+        assert!(
+            err.contains(&format!("{line} | {}", lines[line - 1])),
+            "{err}"
+        );
+    }
+    assert!(err.contains("2 errors in this file"), "{err}");
+    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -43,17 +43,20 @@ const MAX_LOOKAHEAD: f64 = 25.0;
 /// 3888-1 courses are laid out.
 const CONE_SPACING: f64 = 5.0;
 /// Radius of a cone's base (m): a 0.3 m square base (EN 13422 traffic cones of 0.5 m) as a
-/// circle of the same half-width. The car hits a cone when its footprint comes this close to
-/// the cone's centre.
+/// circle of the same half-width. A gate's width is measured between its cones' inner base
+/// edges, so each cone's centre stands this far outside the lane edge, and the car hits it
+/// when its footprint comes this close to the centre: when it reaches the lane edge beside a
+/// cone. Crossing the edge between two cones hits nothing.
 const CONE_BASE_RADIUS: f64 = 0.15;
 
 /// The cones of the lane change (track frame from the entry, m): both edges of every gate,
-/// at both ends and at most [`CONE_SPACING`] apart between.
-fn cone_layout(gates: &[LaneSection]) -> Vec<[f64; 2]> {
+/// at both ends and at most [`CONE_SPACING`] apart between, `outset` (m) outside the edge
+/// (0: on the edge, as drawn; [`CONE_BASE_RADIUS`]: the bases' centres).
+fn cone_layout(gates: &[LaneSection], outset: f64) -> Vec<[f64; 2]> {
     let mut cones = Vec::new();
     for g in gates {
         for side in [-0.5, 0.5] {
-            let y = g.center + side * g.width;
+            let y = g.center + side * (g.width + 2.0 * outset);
             let n = ((g.end - g.start) / CONE_SPACING).ceil().max(1.0) as usize;
             for k in 0..=n {
                 cones.push([g.start + (g.end - g.start) * k as f64 / n as f64, y]);
@@ -479,7 +482,7 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
     let mut max_lateral: f64 = 0.0;
     let mut max_excursion: f64 = 0.0;
     let mut max_steering: f64 = 0.0;
-    let cones = cone_layout(&gates);
+    let cones = cone_layout(&gates, CONE_BASE_RADIUS);
     let mut hit = vec![false; cones.len()];
     let window = (ACCEL_WINDOW / rig.time_step()).round().max(1.0) as usize;
     let mut recent: Vec<f64> = Vec::with_capacity(window);
@@ -554,7 +557,7 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
                 rig.guide(vec![to_world(g.start, y), to_world(g.end, y)]);
             }
         }
-        for &[x, y] in &cones {
+        for [x, y] in cone_layout(&gates, 0.0) {
             rig.cone(to_world(x, y));
         }
     }
@@ -608,4 +611,34 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
     let mut result = rig.finish(Scenario::LaneChange, metrics);
     result.unfinished = unfinished;
     Ok(result)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_cone_is_hit_when_the_footprint_reaches_its_base() {
+        // A 2 m wide car, 3 m between the axles, its rear axle at the origin heading +x.
+        let hit = |cone: [f64; 2], yaw: f64| hits_cone(cone, 0.0, 0.0, yaw, 3.0, 2.0);
+        let r = CONE_BASE_RADIUS;
+        // Beside the car: touching at 1 m + r from the centre line, clear 1 cm further.
+        assert!(hit([1.5, 1.0 + r], 0.0));
+        assert!(!hit([1.5, 1.01 + r], 0.0));
+        // Ahead of the front axle and behind the rear one.
+        assert!(hit([3.0 + r, 0.0], 0.0) && !hit([3.01 + r, 0.0], 0.0));
+        assert!(hit([-r, 0.5], 0.0) && !hit([-0.01 - r, 0.5], 0.0));
+        // Turned a quarter left, the car's front is +y.
+        let quarter = core::f64::consts::FRAC_PI_2;
+        assert!(hit([0.0, 3.0 + r - 1e-9], quarter) && !hit([1.5, 1.5], quarter));
+        // The bases' centres stand r outside each gate's edges.
+        let gates = double_lane_change(2.0, 3.5);
+        let on_edge = cone_layout(&gates, 0.0);
+        let centres = cone_layout(&gates, r);
+        assert_eq!(on_edge.len(), centres.len());
+        for (e, c) in on_edge.iter().zip(&centres) {
+            assert_eq!(e[0], c[0]);
+            assert!(((c[1] - e[1]).abs() - r).abs() < 1e-12);
+        }
+    }
 }

@@ -241,6 +241,41 @@ impl Sweep {
         Sweep::parse(&file, &text, dir)
     }
 
+    /// Loads the sweep file at `path` as [`Sweep::load`] does, with every error of the sweep
+    /// file itself in one report, in file order, each with its line
+    /// ([`world_file::diagnostics::collect`]); an error that is not the sweep file's (it cannot
+    /// be read, its base world is invalid) is reported alone, without its line.
+    ///
+    /// # Errors
+    /// As [`Sweep::load`], every error of the file.
+    pub fn load_all(path: impl AsRef<Path>) -> Result<Sweep, world_file::WorldFileErrors> {
+        let path = path.as_ref();
+        let file = path.display().to_string();
+        let unlocated = |e: SweepError| match e {
+            SweepError::File(e) => *e,
+            SweepError::World(e) => WorldFileError {
+                location: None,
+                ..*e
+            },
+            other => WorldFileError {
+                file: file.clone(),
+                location: None,
+                key: None,
+                kind: WorldFileErrorKind::Structure(other.to_string()),
+            },
+        };
+        let text = world_file::read_text(path).map_err(|message| WorldFileError {
+            file: file.clone(),
+            location: None,
+            key: None,
+            kind: WorldFileErrorKind::Structure(format!("cannot read the sweep file: {message}")),
+        })?;
+        let dir = path.parent().unwrap_or(Path::new(""));
+        world_file::diagnostics::collect(&text, |t| {
+            Sweep::parse(&file, t, dir).map_err(|e| unlocated(e))
+        })
+    }
+
     /// Parses sweep-file `text` (`file` names it in messages; a relative `world` path is
     /// relative to `dir`), loads the base world with `[set]`, checks each axis's key and
     /// values' type against it, and finds the metric columns (the scenario's metrics on the

@@ -48,11 +48,25 @@ impl WorldFileErrors {
 /// # Errors
 /// Every error of the file, in file order, at most [`MAX_ERRORS`].
 pub fn parse_all(file: &str, text: &str) -> Result<WorldDescription, WorldFileErrors> {
+    collect(text, |t| parse_str(file, t))
+}
+
+/// Runs `parse` (a reader that stops at its first error) on `text`, then again with each
+/// error's line blanked, until it reads or an error repeats: every error of the text, in
+/// file order (at most [`MAX_ERRORS`]). A sweep file's errors are collected this way too
+/// ([`crate::sweep::Sweep::load_all`]).
+///
+/// # Errors
+/// Every error found.
+pub fn collect<T>(
+    text: &str,
+    mut parse: impl FnMut(&str) -> Result<T, WorldFileError>,
+) -> Result<T, WorldFileErrors> {
     let mut errors: Vec<WorldFileError> = Vec::new();
     let mut current = text.to_string();
     loop {
-        let e = match parse_str(file, &current) {
-            Ok(world) if errors.is_empty() => return Ok(world),
+        let e = match parse(&current) {
+            Ok(value) if errors.is_empty() => return Ok(value),
             Ok(_) => break,
             Err(e) => e,
         };
@@ -163,7 +177,7 @@ impl fmt::Display for WorldFileErrors {
             }
         }
         if self.errors.len() > 1 {
-            write!(f, "\n\n{} errors in this world file", self.errors.len())?;
+            write!(f, "\n\n{} errors in this file", self.errors.len())?;
         }
         Ok(())
     }
