@@ -67,15 +67,16 @@ fn cone_layout(gates: &[LaneSection], outset: f64) -> Vec<[f64; 2]> {
 }
 
 /// True when the cone at `cone` touches the footprint of a car whose rear-axle centre is at
-/// `(x, y)` heading `yaw` (rad) (all in the track frame, m): the rectangle from the rear to
-/// the front axle and `width` wide, grown by [`CONE_BASE_RADIUS`] (its rounded corners taken
-/// square: at most 4 cm more reach at a corner).
+/// `(x, y)` heading `yaw` (rad) (all in the track frame, m): the cone's base (a disc of
+/// [`CONE_BASE_RADIUS`]) meets the rectangle from the rear to the front axle, `width` wide.
 fn hits_cone(cone: [f64; 2], x: f64, y: f64, yaw: f64, wheelbase: f64, width: f64) -> bool {
     let (s, c) = yaw.sin_cos();
     let (dx, dy) = (cone[0] - x, cone[1] - y);
     let (along, across) = (c * dx + s * dy, -s * dx + c * dy);
-    (-CONE_BASE_RADIUS..=wheelbase + CONE_BASE_RADIUS).contains(&along)
-        && across.abs() <= 0.5 * width + CONE_BASE_RADIUS
+    // Distance from the cone's centre to the rectangle, per axis.
+    let out_along = (-along).max(along - wheelbase).max(0.0);
+    let out_across = (across.abs() - 0.5 * width).max(0.0);
+    out_along.hypot(out_across) <= CONE_BASE_RADIUS
 }
 /// Window of the moving average applied to the lateral acceleration (s): the body's
 /// acceleration is a finite difference of the solver's velocities, whose step-to-step jitter
@@ -628,6 +629,8 @@ mod tests {
         // Ahead of the front axle and behind the rear one.
         assert!(hit([3.0 + r, 0.0], 0.0) && !hit([3.01 + r, 0.0], 0.0));
         assert!(hit([-r, 0.5], 0.0) && !hit([-0.01 - r, 0.5], 0.0));
+        // Off a corner: the base is round (0.1 m along and across is 0.141 m away).
+        assert!(hit([3.1, 1.1], 0.0) && !hit([3.11, 1.11], 0.0));
         // Turned a quarter left, the car's front is +y.
         let quarter = core::f64::consts::FRAC_PI_2;
         assert!(hit([0.0, 3.0 + r - 1e-9], quarter) && !hit([1.5, 1.5], quarter));

@@ -271,9 +271,7 @@ impl Sweep {
             kind: WorldFileErrorKind::Structure(format!("cannot read the sweep file: {message}")),
         })?;
         let dir = path.parent().unwrap_or(Path::new(""));
-        world_file::diagnostics::collect(&text, |t| {
-            Sweep::parse(&file, t, dir).map_err(|e| unlocated(e))
-        })
+        world_file::diagnostics::collect(&text, |t| Sweep::parse(&file, t, dir).map_err(&unlocated))
     }
 
     /// Parses sweep-file `text` (`file` names it in messages; a relative `world` path is
