@@ -343,8 +343,8 @@ fn invalid_worlds_exit_with_status_1() {
     assert_eq!(r.status.code(), Some(1), "{}", r.stderr);
     assert!(
         r.stderr.starts_with(
-            "Error: cannot load the world VEHICLE_WORLD=BmwX6: 'BmwX6' is neither a world file \
-             nor a vehicle model"
+            "Error: cannot load the world VEHICLE_WORLD=BmwX6: 'BmwX6' is neither a world file, \
+             a shipped world nor a vehicle model"
         ),
         "{}",
         r.stderr

@@ -80,10 +80,11 @@ fn world_errors_exit_1_with_the_location() {
     assert_eq!(out.status.code(), Some(1));
     let err = text(&out.stderr);
     assert!(
-        err.contains(&format!(
-            "{}:3:1: unknown key 'vehicle.maxVelocty'; did you mean 'maxVelocity'?",
-            world.display()
-        )),
+        err.contains("error: unknown key 'vehicle.maxVelocty'; did you mean 'maxVelocity'?"),
+        "{err}"
+    );
+    assert!(
+        err.contains(&format!("--> {}:3:1", world.display())),
         "{err}"
     );
     // Neither a file nor a model: said so, with the models (before: "cannot read the world
@@ -92,7 +93,7 @@ fn world_errors_exit_1_with_the_location() {
     assert_eq!(out.status.code(), Some(1));
     let err = text(&out.stderr);
     assert!(
-        err.contains("'Nope' is neither a world file nor a vehicle model"),
+        err.contains("'Nope' is neither a world file, a shipped world nor a vehicle model"),
         "{err}"
     );
     assert!(
@@ -127,9 +128,22 @@ fn a_scenario_the_world_cannot_run_is_a_usage_error() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// The JSON of a run that exited 0, or 3 when a scenario could not run to its end (a short
+/// `--duration`), which its JSON then says.
 fn json_of(out: &Output) -> serde_json::Value {
-    assert_eq!(out.status.code(), Some(0), "stderr: {}", text(&out.stderr));
-    serde_json::from_slice(&out.stdout).unwrap_or_else(|e| panic!("{e}: {}", text(&out.stdout)))
+    let code = out.status.code();
+    assert!(
+        matches!(code, Some(0 | 3)),
+        "{code:?}, stderr: {}",
+        text(&out.stderr)
+    );
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|e| panic!("{e}: {}", text(&out.stdout)));
+    let unfinished = j["scenarios"]
+        .as_object()
+        .is_some_and(|s| s.values().any(|r| r.get("unfinished").is_some()));
+    assert_eq!(unfinished, code == Some(3), "{j}");
+    j
 }
 
 fn assert_files(dir: &Path, names: &[&str]) {
@@ -293,7 +307,8 @@ fn duration_quiet_and_the_tilt_note_once() {
         "--out",
         dir.to_str().unwrap(),
     ]);
-    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    // 0.1 s ends the brake test before it brakes and the lane change before its track: exit 3.
+    assert_eq!(out.status.code(), Some(3), "{}", text(&out.stderr));
     assert_eq!(
         text(&out.stderr).matches("tilts it").count(),
         1,
@@ -314,8 +329,16 @@ fn duration_quiet_and_the_tilt_note_once() {
         "--out",
         dir.to_str().unwrap(),
     ]);
-    assert_eq!(out.status.code(), Some(0));
-    assert!(out.stdout.is_empty() && out.stderr.is_empty());
+    assert_eq!(out.status.code(), Some(3));
+    // Nothing but the errors: the scenarios that could not run to their end.
+    assert!(out.stdout.is_empty());
+    assert!(
+        text(&out.stderr)
+            .lines()
+            .all(|l| l.contains("did not run to its end")),
+        "{}",
+        text(&out.stderr)
+    );
     assert!(dir.join("telemetry.csv").exists());
     std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -346,8 +346,9 @@ fn sweep_file_errors_name_file_line_and_key() {
     assert_eq!(
         err("world = \"BmwX6\"\n").as_deref(),
         Some(
-            "'BmwX6' is neither a world file nor a vehicle model; did you mean 'BmwX5'? \
-             (models: Car, BmwX5, CitroenCZero, ToyotaPrius, LincolnMKZ, RangeRoverSportSVR, \
+            "'BmwX6' is neither a world file, a shipped world nor a vehicle model; did you mean \
+             'BmwX5' or 'bmw-x5'? (worlds: acc, bmw-x5, city-loop, e-puck, highway, hilly-road, obstacles, \
+             sensors, tuned-prius, two-cars; models: Car, BmwX5, CitroenCZero, ToyotaPrius, LincolnMKZ, RangeRoverSportSVR, \
              TeslaModel3, MercedesBenzSprinter, GreenPowerEVStar, Bus, Truck, Tractor)"
         )
     );

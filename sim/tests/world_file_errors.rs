@@ -132,7 +132,7 @@ fn a_name_that_is_neither_file_nor_model_lists_the_models() {
         assert!(text.contains(m.webots_name()), "{text}");
     }
     assert!(
-        text.starts_with("'Nope' is neither a world file nor a vehicle model"),
+        text.starts_with("'Nope' is neither a world file, a shipped world nor a vehicle model"),
         "{text}"
     );
     assert!(

@@ -34,6 +34,10 @@ pub const EXIT_FAILURE: i32 = 1;
 /// Exit code of a command-line usage error (unknown option, missing or invalid value, unknown
 /// scenario, a scenario the world cannot run).
 pub const EXIT_USAGE: i32 = 2;
+/// Exit code of a run whose scenario could not run to its end (e.g. `--duration` ended before
+/// the brake test braked): the outputs are written, the metrics of what never happened are
+/// missing, and stderr says why.
+pub const EXIT_UNFINISHED: i32 = 3;
 
 /// The default output directory.
 pub const DEFAULT_OUT_DIR: &str = "vehicle-sim-out";
@@ -94,9 +98,10 @@ pub struct Options {
     /// A sweep instead of one run
     #[command(subcommand)]
     pub command: Option<Command>,
-    /// A TOML world file, or a shipped model name for the default world with that car
-    /// (default: BmwX5 on flat ground, 10 ms)
-    #[arg(long, value_name = "FILE|MODEL")]
+    /// A TOML world file, a shipped world by name (`vehicle-sim worlds` lists them), or a
+    /// shipped model name for the default world with that car (default: BmwX5 on flat
+    /// ground, 10 ms)
+    #[arg(long, value_name = "FILE|WORLD|MODEL")]
     pub world: Option<String>,
     /// The driving programme (default: `programme` when the world has one or holds several
     /// vehicles, else `test-track` for a car, `square` for a robot)
@@ -139,14 +144,36 @@ pub enum Command {
     /// Draw the SVG plots of a run from its telemetry.csv (a controller run under
     /// VEHICLE_OUT, a Python Simulation.save, ...), into the same directory
     Plot(PlotOptions),
+    /// List the worlds shipped in the binary, which `--world NAME` runs: name and what it is
+    Worlds,
 }
+
+/// Where the world-file reference is: the crate's README in the repository, which an
+/// installed binary does not carry.
+const WORLD_REFERENCE: &str = concat!(env!("CARGO_PKG_REPOSITORY"), "/blob/main/sim/README.md");
 
 fn after_help() -> String {
     format!(
-        "{}\n\nExit status: 0 success, 1 world, simulation or output error, 2 usage error.\n\
-         World file reference: sim/README.md.",
+        "{}\n\nExit status: 0 success, 1 world, simulation or output error, 2 usage error, 3 a \
+         scenario that could not run to its end (outputs written, stderr says why).\n\
+         Shipped worlds: vehicle-sim worlds. World file reference: {WORLD_REFERENCE}",
         models_help()
     )
+}
+
+/// `vehicle-sim worlds`: every shipped world's name and first comment line, aligned.
+fn worlds_main(out: &mut dyn Write) -> i32 {
+    let worlds: Vec<_> = world_file::shipped::worlds().collect();
+    let width = worlds.iter().map(|w| w.name.len()).max().unwrap_or(0);
+    let mut text = String::new();
+    for w in &worlds {
+        text.push_str(&format!("{:width$}  {}\n", w.name, w.summary()));
+    }
+    text.push_str("Run one with: vehicle-sim --world NAME\n");
+    if out.write_all(text.as_bytes()).is_err() {
+        return EXIT_FAILURE;
+    }
+    EXIT_OK
 }
 
 /// A progress bar on stderr, drawn only on a terminal once the run has lasted
@@ -201,9 +228,9 @@ impl Bar {
 /// Loads the world of `--world` (or the default world) with the overrides of `--duration`,
 /// `--seed` and `--replay-overlay` (which only turns the overlay on: without it the world's
 /// `replayOverlay` stands).
-fn load_world(options: &Options) -> Result<WorldDescription, world_file::WorldFileError> {
+fn load_world(options: &Options) -> Result<WorldDescription, world_file::WorldFileErrors> {
     let mut world = match options.world.as_deref() {
-        Some(s) => world_file::load(s)?,
+        Some(s) => world_file::load_all(s)?,
         None => world_file::default_world(),
     };
     if let Some(d) = options.duration {
@@ -243,12 +270,14 @@ pub fn main(
         Some(Command::Sweep(o)) => return sweep::sweep_main(o, out, err, err_is_terminal),
         Some(Command::SweepMerge(o)) => return sweep::merge_main(o, out, err),
         Some(Command::Plot(o)) => return plot::plot_main(o, out, err),
+        Some(Command::Worlds) => return worlds_main(out),
         None => {}
     }
     let world = match load_world(&options) {
         Ok(w) => w,
         Err(e) => {
-            let _ = writeln!(err, "vehicle-sim: error: {e}");
+            // Every error of the file, each with its line (each starts with "error: ").
+            let _ = writeln!(err, "vehicle-sim: {e}");
             return EXIT_FAILURE;
         }
     };
@@ -314,7 +343,18 @@ pub fn main(
     if out.write_all(text.as_bytes()).is_err() {
         return EXIT_FAILURE;
     }
-    EXIT_OK
+    let mut code = EXIT_OK;
+    for r in &report.results {
+        if let Some(why) = &r.unfinished {
+            let _ = writeln!(
+                err,
+                "vehicle-sim: error: scenario {} did not run to its end: {why}",
+                r.name
+            );
+            code = EXIT_UNFINISHED;
+        }
+    }
+    code
 }
 
 /// Runs [`main`] on the process's arguments and standard streams.

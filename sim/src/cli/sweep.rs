@@ -172,10 +172,11 @@ pub(super) fn sweep_main(
             }
         },
     };
-    let sweep = match Sweep::load(&o.file) {
+    let sweep = match Sweep::load_all(&o.file) {
         Ok(s) => s,
         Err(e) => {
-            let _ = writeln!(err, "vehicle-sim: error: {e}");
+            // Every error of the sweep file, each with its line (each starts with "error: ").
+            let _ = writeln!(err, "vehicle-sim: {e}");
             return EXIT_FAILURE;
         }
     };

@@ -192,7 +192,58 @@ pub fn figures(report: &RunReport) -> Vec<(&'static str, Figure)> {
         "trajectory.svg",
         trajectory(report, title("Trajectory seen from above")),
     ));
+    if let Some(figure) = lateral(
+        report,
+        title("Lateral position along the run, lateral scale exaggerated"),
+    ) {
+        out.push(("lateral.svg", figure));
+    }
     out
+}
+
+/// How many times longer than wide a run is when its lateral motion gets its own plot: at
+/// equal scales on a 760 × 560 px map, a run 5 times longer than wide draws its width in at
+/// most a fifth of the map's height, where a lane change of a 3.5 m lane on a 2 km run is
+/// under a pixel.
+const LONG_RUN: f64 = 5.0;
+
+/// Every vehicle's lateral position (m, left of the run's direction positive) against its
+/// distance along the run (m), for a run at least [`LONG_RUN`] times longer than wide (a
+/// convoy on a highway), whose lane changes vanish at equal scales. The run's direction is
+/// from the first vehicle's first position to its last; `None` for a shorter or wider run.
+fn lateral(report: &RunReport, title: String) -> Option<Figure> {
+    let first = runs(report).next()?.1;
+    let (start, end) = (first.samples.first()?, first.samples.last()?);
+    let length = (end.x - start.x).hypot(end.y - start.y);
+    if length < 1.0 {
+        return None;
+    }
+    let (c, s) = ((end.x - start.x) / length, (end.y - start.y) / length);
+    let frame = |p: &Sample| {
+        let (dx, dy) = (p.x - start.x, p.y - start.y);
+        [c * dx + s * dy, -s * dx + c * dy]
+    };
+    let series: Vec<Series> = runs(report)
+        .map(|(name, t)| Series::line(name, t.samples.iter().map(frame).collect()))
+        .collect();
+    let extent = |i: usize| {
+        let values = series
+            .iter()
+            .flat_map(|s| s.points.iter().map(move |p| p[i]));
+        let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        });
+        hi - lo
+    };
+    (extent(0) >= LONG_RUN * extent(1)).then(|| Figure {
+        title,
+        x_label: "distance along the run (m)".into(),
+        panels: vec![Panel {
+            y_label: "lateral position, left + (m)".into(),
+            series,
+        }],
+        equal_aspect: false,
+    })
 }
 
 /// The course of `r` (lane edges and cones), as series.
@@ -303,6 +354,75 @@ mod tests {
     use super::*;
     use crate::TyreTelemetry;
     use vehicle_model::PerWheel;
+
+    /// A run of `cars` on a 2 km straight along the world's north-east diagonal, the second
+    /// car changing lane by 3.5 m to the left half way.
+    fn convoy(cars: usize) -> RunReport {
+        let d = core::f64::consts::FRAC_1_SQRT_2;
+        let telemetry = (0..cars)
+            .map(|k| Telemetry {
+                vehicle: format!("car-{k}"),
+                kind: VehicleKind::Car,
+                samples: (0..=200)
+                    .map(|i| {
+                        let along = 10.0 * f64::from(i);
+                        let left = if k == 1 && along > 1000.0 { 3.5 } else { 0.0 };
+                        Sample {
+                            time: f64::from(i),
+                            x: d * along - d * left,
+                            y: d * along + d * left,
+                            ..Sample::default()
+                        }
+                    })
+                    .collect(),
+                ..Telemetry::default()
+            })
+            .collect();
+        RunReport {
+            vehicle: "2 vehicles".into(),
+            scenario: "programme".into(),
+            results: vec![ScenarioResult::new("programme", telemetry)],
+            ..RunReport::default()
+        }
+    }
+
+    #[test]
+    fn a_long_run_gets_its_lateral_motion_plotted() {
+        let report = convoy(2);
+        let all = figures(&report);
+        let (_, f) = all.iter().find(|(n, _)| *n == "lateral.svg").unwrap();
+        let series = &f.panels[0].series;
+        assert_eq!(series.len(), 2);
+        // The run's direction is the first car's: it stays on the x axis, 2 km long; the
+        // second car's lane change is 3.5 m to the left (rounding of the rotation: 1e-9 m).
+        let (lo, hi) = series[1]
+            .points
+            .iter()
+            .fold((0.0_f64, 0.0_f64), |(lo, hi), p| {
+                (lo.min(p[1]), hi.max(p[1]))
+            });
+        assert!(lo.abs() < 1e-9 && (hi - 3.5).abs() < 1e-9, "{lo} {hi}");
+        assert!((series[0].points.last().unwrap()[0] - 2000.0).abs() < 1e-9);
+        assert!(series[0].points.iter().all(|p| p[1].abs() < 1e-9));
+        let svg = f.to_svg().unwrap();
+        super::super::plot::svg_text::assert_inside(&svg);
+        // Each car drawn in its own style: two legend entries, two colours.
+        let trajectory = &all.iter().find(|(n, _)| *n == "trajectory.svg").unwrap().1;
+        let svg = trajectory.to_svg().unwrap();
+        super::super::plot::svg_text::assert_inside(&svg);
+        assert!(svg.contains("#0072B2") && svg.contains("#D55E00"));
+    }
+
+    #[test]
+    fn a_short_or_wide_run_has_no_lateral_plot() {
+        // 2 km long, bulging 0.7 km to the side (1 km north at mid-run, across a north-east
+        // run): the map shows it.
+        let mut report = convoy(1);
+        for s in &mut report.results[0].telemetry[0].samples {
+            s.y += 1000.0 * (core::f64::consts::PI * s.time / 200.0).sin();
+        }
+        assert!(figures(&report).iter().all(|(n, _)| *n != "lateral.svg"));
+    }
 
     #[test]
     fn friction_use_has_one_labelled_line_per_tyre() {

@@ -44,7 +44,7 @@ pub const REPLAY_GLB: &str = "replay.glb";
 /// Every file a run may write into its output directory. A run removes those of this list
 /// that it does not write itself, so that the directory never mixes two runs' outputs; other
 /// files are left alone.
-pub const KNOWN_OUTPUTS: [&str; 11] = [
+pub const KNOWN_OUTPUTS: [&str; 12] = [
     TELEMETRY_CSV,
     DEVICES_CSV,
     METRICS_JSON,
@@ -56,6 +56,7 @@ pub const KNOWN_OUTPUTS: [&str; 11] = [
     "lane_change.svg",
     "friction_use.svg",
     "trajectory.svg",
+    "lateral.svg",
 ];
 
 /// Significant digits of the metrics in JSON: the physics runs in f32 (about seven
@@ -81,7 +82,8 @@ pub fn significant(x: f64, digits: usize) -> f64 {
         .unwrap_or(x)
 }
 
-/// A value for the summary table: three significant decimals at most, `yes`/`no`, or `n/a`.
+/// A value for the summary table: three significant decimals at most, `yes`/`no`, or
+/// `not reached` (the event did not happen; the run's error says why).
 pub fn format_value(v: Value) -> String {
     match v {
         Value::Number(x) if x.is_finite() => {
@@ -105,7 +107,7 @@ pub fn format_value(v: Value) -> String {
         Value::Number(x) => format!("{x}"),
         Value::Bool(true) => "yes".to_string(),
         Value::Bool(false) => "no".to_string(),
-        Value::Missing => "n/a".to_string(),
+        Value::Missing => "not reached".to_string(),
     }
 }
 
@@ -208,7 +210,7 @@ impl Serialize for JsonMetrics<'_> {
 }
 
 /// A scenario's object: its run-wide metrics, `vehicles` (each vehicle's metrics) when it has
-/// per-vehicle ones, and `sim_seconds`.
+/// per-vehicle ones, `sim_seconds`, and `unfinished` (why) when it could not run to its end.
 struct JsonResult<'a>(&'a ScenarioResult);
 
 impl Serialize for JsonResult<'_> {
@@ -228,6 +230,9 @@ impl Serialize for JsonResult<'_> {
             map.serialize_entry("vehicles", &JsonVehicles(r, vehicles))?;
         }
         map.serialize_entry("sim_seconds", &significant(r.sim_seconds, METRIC_DIGITS))?;
+        if let Some(why) = &r.unfinished {
+            map.serialize_entry("unfinished", why)?;
+        }
         map.end()
     }
 }
@@ -569,9 +574,12 @@ mod tests {
     #[test]
     fn summary_rows() {
         let t = summary_table(&report());
-        assert!(t.contains("brake     stopping distance  42.12  m"), "{t}");
+        assert!(
+            t.contains("brake     stopping distance        42.12  m"),
+            "{t}"
+        );
         assert!(t.contains("stopping time"));
-        assert!(t.contains("n/a"));
+        assert!(t.contains("not reached"));
         assert!(t.contains("(24.40 x real time)"), "{t}");
         assert_eq!(format_value(Value::Number(7.123_456)), "7.123");
         assert_eq!(format_value(Value::Number(3.0)), "3");

@@ -179,6 +179,7 @@ impl CarRig {
             cones: self.cones,
             replay: self.recorder.finish(self.sim.world()),
             devices: DeviceReadings::default(),
+            unfinished: None,
         }
     }
 }

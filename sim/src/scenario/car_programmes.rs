@@ -42,6 +42,42 @@ const MAX_LOOKAHEAD: f64 = 25.0;
 /// Largest distance between two cones along a lane edge of the lane change (m), as ISO
 /// 3888-1 courses are laid out.
 const CONE_SPACING: f64 = 5.0;
+/// Radius of a cone's base (m): a 0.3 m square base (EN 13422 traffic cones of 0.5 m) as a
+/// circle of the same half-width. A gate's width is measured between its cones' inner base
+/// edges, so each cone's centre stands this far outside the lane edge, and the car hits it
+/// when its footprint comes this close to the centre: when it reaches the lane edge beside a
+/// cone. Crossing the edge between two cones hits nothing.
+const CONE_BASE_RADIUS: f64 = 0.15;
+
+/// The cones of the lane change (track frame from the entry, m): both edges of every gate,
+/// at both ends and at most [`CONE_SPACING`] apart between, `outset` (m) outside the edge
+/// (0: on the edge, as drawn; [`CONE_BASE_RADIUS`]: the bases' centres).
+fn cone_layout(gates: &[LaneSection], outset: f64) -> Vec<[f64; 2]> {
+    let mut cones = Vec::new();
+    for g in gates {
+        for side in [-0.5, 0.5] {
+            let y = g.center + side * (g.width + 2.0 * outset);
+            let n = ((g.end - g.start) / CONE_SPACING).ceil().max(1.0) as usize;
+            for k in 0..=n {
+                cones.push([g.start + (g.end - g.start) * k as f64 / n as f64, y]);
+            }
+        }
+    }
+    cones
+}
+
+/// True when the cone at `cone` touches the footprint of a car whose rear-axle centre is at
+/// `(x, y)` heading `yaw` (rad) (all in the track frame, m): the cone's base (a disc of
+/// [`CONE_BASE_RADIUS`]) meets the rectangle from the rear to the front axle, `width` wide.
+fn hits_cone(cone: [f64; 2], x: f64, y: f64, yaw: f64, wheelbase: f64, width: f64) -> bool {
+    let (s, c) = yaw.sin_cos();
+    let (dx, dy) = (cone[0] - x, cone[1] - y);
+    let (along, across) = (c * dx + s * dy, -s * dx + c * dy);
+    // Distance from the cone's centre to the rectangle, per axis.
+    let out_along = (-along).max(along - wheelbase).max(0.0);
+    let out_across = (across.abs() - 0.5 * width).max(0.0);
+    out_along.hypot(out_across) <= CONE_BASE_RADIUS
+}
 /// Window of the moving average applied to the lateral acceleration (s): the body's
 /// acceleration is a finite difference of the solver's velocities, whose step-to-step jitter
 /// is not a vehicle behaviour.
@@ -215,6 +251,20 @@ fn cruise_until_steady(
 fn brake(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult, ScenarioError> {
     let run_up = 2.0 * rig.driver()?.params().time_0_to_100 + 10.0;
     cruise_until_steady(&mut rig, V100, run_up, progress)?;
+    if !rig.running() {
+        // The run's duration ended during the run-up: nothing of the braking was measured,
+        // and nothing is reported as if it had been.
+        let why = format!(
+            "braking never started: the run ended at {:.1} s while the car was reaching \
+             {:.0} km/h (at {:.1} km/h); a longer --duration (or world duration) lets it brake",
+            rig.time(),
+            V100 * KMH,
+            rig.speed() * KMH
+        );
+        let mut result = rig.finish(Scenario::Brake, brake_metrics(None));
+        result.unfinished = Some(why);
+        return Ok(result);
+    }
     // Off the cruise control (its wheel motors would overpower the brakes), brake fully.
     rig.driver_mut()?.set_throttle(0.0);
     rig.driver_mut()?.set_brake_intensity(1.0);
@@ -253,40 +303,77 @@ fn brake(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult, Scen
     let yaw_change = (rig.yaw() - yaw0 + core::f64::consts::PI).rem_euclid(core::f64::consts::TAU)
         - core::f64::consts::PI;
     let decel = expected_deceleration(&rig)?;
-    let distance = stopped.map(|(_, d)| d);
-    let metrics = vec![
-        Metric::number(
+    let unfinished = stopped.is_none().then(|| {
+        format!(
+            "the car had not stopped when the run ended at {:.1} s ({:.1} km/h left): no \
+             stopping distance or time",
+            rig.time(),
+            rig.speed() * KMH
+        )
+    });
+    let braking = Braking {
+        v0,
+        stopped: stopped.map(|(t, d)| (t - t0, d)),
+        expected: v0 * v0 / (2.0 * decel),
+        yaw_change,
+        at_rest: at_rest && stopped.is_some_and(|(ts, _)| rig.time() >= ts + 1.0 - 1e-9),
+    };
+    let mut result = rig.finish(Scenario::Brake, brake_metrics(Some(&braking)));
+    result.unfinished = unfinished;
+    Ok(result)
+}
+
+/// What the brake test measured once it braked.
+struct Braking {
+    /// Speed when braking started (m/s).
+    v0: f64,
+    /// Time (s) and path length (m) from braking to the stop, if the car stopped.
+    stopped: Option<(f64, f64)>,
+    /// Stopping distance from the brake torque, v0²/2a (m).
+    expected: f64,
+    /// Heading change while braking (rad).
+    yaw_change: f64,
+    /// At rest 1 s after stopping.
+    at_rest: bool,
+}
+
+/// The brake test's metrics, every one [`Value::Missing`](super::Value::Missing) when it
+/// never braked (`None`): the same keys either way, so a sweep's columns do not depend on
+/// its cases.
+fn brake_metrics(b: Option<&Braking>) -> Vec<Metric> {
+    let stopped = b.and_then(|b| b.stopped);
+    vec![
+        Metric::maybe(
             "initial_speed_kmh",
             "speed when braking starts",
             "km/h",
-            v0 * KMH,
+            b.map(|b| b.v0 * KMH),
         ),
-        Metric::maybe("stop_distance_m", "stopping distance", "m", distance),
         Metric::maybe(
-            "stop_time_s",
-            "stopping time",
-            "s",
-            stopped.map(|(t, _)| t - t0),
+            "stop_distance_m",
+            "stopping distance",
+            "m",
+            stopped.map(|(_, d)| d),
         ),
-        Metric::number(
+        Metric::maybe("stop_time_s", "stopping time", "s", stopped.map(|(t, _)| t)),
+        Metric::maybe(
             "stop_distance_expected_m",
             "stopping distance from brake torque, v0^2/2a",
             "m",
-            v0 * v0 / (2.0 * decel),
+            b.map(|b| b.expected),
         ),
-        Metric::number(
+        Metric::maybe(
             "yaw_change_rad",
             "heading change while braking",
             "rad",
-            yaw_change,
+            b.map(|b| b.yaw_change),
         ),
-        Metric::flag(
+        Metric::maybe_flag(
             "at_rest",
             "at rest 1 s after stopping",
-            at_rest && stopped.is_some_and(|(ts, _)| rig.time() >= ts + 1.0 - 1e-9),
+            b.filter(|b| b.stopped.is_some()).map(|b| b.at_rest),
         ),
-    ];
-    Ok(rig.finish(Scenario::Brake, metrics))
+    ]
 }
 
 fn circle(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult, ScenarioError> {
@@ -396,6 +483,8 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
     let mut max_lateral: f64 = 0.0;
     let mut max_excursion: f64 = 0.0;
     let mut max_steering: f64 = 0.0;
+    let cones = cone_layout(&gates, CONE_BASE_RADIUS);
+    let mut hit = vec![false; cones.len()];
     let window = (ACCEL_WINDOW / rig.time_step()).round().max(1.0) as usize;
     let mut recent: Vec<f64> = Vec::with_capacity(window);
     let mut signalled = IndicatorState::Off;
@@ -444,6 +533,9 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
                         }
                     }
                 }
+                for (cone, hit) in cones.iter().zip(&mut hit) {
+                    *hit |= hits_cone(*cone, x - e, y, yaw, wheelbase, width);
+                }
                 if x >= e + TRACK_LENGTH + 10.0 {
                     break;
                 }
@@ -464,21 +556,28 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
             for side in [-0.5, 0.5] {
                 let y = g.center + side * g.width;
                 rig.guide(vec![to_world(g.start, y), to_world(g.end, y)]);
-                // Cones at both ends of each edge and at most CONE_SPACING apart between.
-                let n = ((g.end - g.start) / CONE_SPACING).ceil().max(1.0) as usize;
-                for k in 0..=n {
-                    let x = g.start + (g.end - g.start) * k as f64 / n as f64;
-                    rig.cone(to_world(x, y));
-                }
             }
+        }
+        for [x, y] in cone_layout(&gates, 0.0) {
+            rig.cone(to_world(x, y));
         }
     }
     let completed = entry.is_some_and(|e| to_track(rig.state().position)[0] >= e + TRACK_LENGTH);
-    if !completed {
-        rig.note(
-            "the car did not complete the lane-change track within the time limit".to_string(),
-        );
-    }
+    let unfinished = (!completed).then(|| {
+        let where_ = match entry {
+            None => "before the speed had settled for the track's entry".to_string(),
+            Some(e) => format!(
+                "{:.0} m into the {:.0} m track",
+                (to_track(rig.state().position)[0] - e).max(0.0),
+                TRACK_LENGTH
+            ),
+        };
+        format!(
+            "the car did not complete the lane-change track: the run ended at {:.1} s, {where_}",
+            rig.time()
+        )
+    });
+    let cones_hit = hit.iter().filter(|&&h| h).count();
     let metrics = vec![
         Metric::maybe(
             "max_lateral_accel_mps2",
@@ -486,10 +585,16 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
             "m/s^2",
             completed.then_some(max_lateral),
         ),
-        Metric::flag(
+        Metric::maybe_flag(
             "left_track",
-            "left the lanes",
-            !completed || max_excursion > 0.0,
+            "hit a cone (left the lanes)",
+            completed.then_some(cones_hit > 0),
+        ),
+        Metric::maybe(
+            "cones_hit",
+            "cones hit",
+            "",
+            completed.then_some(cones_hit as f64),
         ),
         Metric::maybe(
             "max_lane_excursion_m",
@@ -504,5 +609,39 @@ fn lane_change(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResult
             completed.then_some(max_steering),
         ),
     ];
-    Ok(rig.finish(Scenario::LaneChange, metrics))
+    let mut result = rig.finish(Scenario::LaneChange, metrics);
+    result.unfinished = unfinished;
+    Ok(result)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_cone_is_hit_when_the_footprint_reaches_its_base() {
+        // A 2 m wide car, 3 m between the axles, its rear axle at the origin heading +x.
+        let hit = |cone: [f64; 2], yaw: f64| hits_cone(cone, 0.0, 0.0, yaw, 3.0, 2.0);
+        let r = CONE_BASE_RADIUS;
+        // Beside the car: touching at 1 m + r from the centre line, clear 1 cm further.
+        assert!(hit([1.5, 1.0 + r], 0.0));
+        assert!(!hit([1.5, 1.01 + r], 0.0));
+        // Ahead of the front axle and behind the rear one.
+        assert!(hit([3.0 + r, 0.0], 0.0) && !hit([3.01 + r, 0.0], 0.0));
+        assert!(hit([-r, 0.5], 0.0) && !hit([-0.01 - r, 0.5], 0.0));
+        // Off a corner: the base is round (0.1 m along and across is 0.141 m away).
+        assert!(hit([3.1, 1.1], 0.0) && !hit([3.11, 1.11], 0.0));
+        // Turned a quarter left, the car's front is +y.
+        let quarter = core::f64::consts::FRAC_PI_2;
+        assert!(hit([0.0, 3.0 + r - 1e-9], quarter) && !hit([1.5, 1.5], quarter));
+        // The bases' centres stand r outside each gate's edges.
+        let gates = double_lane_change(2.0, 3.5);
+        let on_edge = cone_layout(&gates, 0.0);
+        let centres = cone_layout(&gates, r);
+        assert_eq!(on_edge.len(), centres.len());
+        for (e, c) in on_edge.iter().zip(&centres) {
+            assert_eq!(e[0], c[0]);
+            assert!(((c[1] - e[1]).abs() - r).abs() < 1e-12);
+        }
+    }
 }

@@ -221,7 +221,8 @@ pub enum Value {
     Number(f64),
     /// A yes/no outcome.
     Bool(bool),
-    /// Not measured: the event did not happen within the time limit.
+    /// Not measured: the event did not happen within the time limit (the result's
+    /// [`ScenarioResult::unfinished`] says why).
     Missing,
 }
 
@@ -297,6 +298,18 @@ impl Metric {
         }
     }
 
+    /// A yes/no outcome, or [`Value::Missing`] for `None` (the run ended before it was
+    /// decided).
+    pub fn maybe_flag(key: &'static str, label: &'static str, v: Option<bool>) -> Self {
+        Metric {
+            key,
+            label,
+            unit: "",
+            value: v.map_or(Value::Missing, Value::Bool),
+            vehicle: None,
+        }
+    }
+
     /// The same metric about the vehicle named `vehicle`.
     pub fn of(mut self, vehicle: &str) -> Self {
         self.vehicle = Some(vehicle.to_string());
@@ -327,6 +340,11 @@ pub struct ScenarioResult {
     /// The readings of the devices the run sampled, for `devices.csv` (the `programme`
     /// scenario's: the devices its world enables with `samplingPeriod`; empty otherwise).
     pub devices: DeviceReadings,
+    /// Why the scenario could not run to its end, when it could not (e.g. a `--duration` that
+    /// ended before braking started): the metrics of what never happened are
+    /// [`Value::Missing`] or absent, and `vehicle-sim` exits with
+    /// [`EXIT_UNFINISHED`](crate::cli::EXIT_UNFINISHED).
+    pub unfinished: Option<String>,
 }
 
 impl ScenarioResult {

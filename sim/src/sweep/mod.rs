@@ -2,7 +2,7 @@
 //! over the tasks of a batch engine, with one row of metrics per variant.
 //!
 //! A sweep file (TOML) names a base world (a world file, relative to the sweep file, or a
-//! shipped model name, as `vehicle-sim --world` takes it), a scenario, settings for every
+//! shipped model or world name, as `vehicle-sim --world` takes it), a scenario, settings for every
 //! case (`[set]`) and axes over any world-file key by its dotted path: explicit lists, linear
 //! ranges and seeded random draws. The cases are every combination of the axes' values
 //! (`combine = "product"`, the default) or their values side by side (`"zip"`).
@@ -142,15 +142,21 @@ fn base_world(
             let source = world_file::with_model(model).source;
             return Ok((source, world_file::model_world_text(model)));
         }
+        if let Some(world) = world_file::shipped::world(name) {
+            return Ok((world.source(), world.text.to_string()));
+        }
         let looks_like_path = name.contains(['/', '\\']) || name.ends_with(".toml");
         if !looks_like_path {
-            let models = Model::ALL.map(Model::webots_name);
+            let names = Model::ALL
+                .map(Model::webots_name)
+                .into_iter()
+                .chain(world_file::shipped::worlds().flat_map(|w| [w.name, w.file_name]));
             return Err(SweepError::file(src.error(
                 Some(span.clone()),
                 Some("world".to_string()),
                 WorldFileErrorKind::NeitherFileNorModel {
                     name: name.clone(),
-                    suggestions: world_file::closest(name, models),
+                    suggestions: world_file::closest(name, names),
                 },
             )));
         }
@@ -233,6 +239,39 @@ impl Sweep {
         })?;
         let dir = path.parent().unwrap_or(Path::new(""));
         Sweep::parse(&file, &text, dir)
+    }
+
+    /// Loads the sweep file at `path` as [`Sweep::load`] does, with every error of the sweep
+    /// file itself in one report, in file order, each with its line
+    /// ([`world_file::diagnostics::collect`]); an error that is not the sweep file's (it cannot
+    /// be read, its base world is invalid) is reported alone, without its line.
+    ///
+    /// # Errors
+    /// As [`Sweep::load`], every error of the file.
+    pub fn load_all(path: impl AsRef<Path>) -> Result<Sweep, world_file::WorldFileErrors> {
+        let path = path.as_ref();
+        let file = path.display().to_string();
+        let unlocated = |e: SweepError| match e {
+            SweepError::File(e) => *e,
+            SweepError::World(e) => WorldFileError {
+                location: None,
+                ..*e
+            },
+            other => WorldFileError {
+                file: file.clone(),
+                location: None,
+                key: None,
+                kind: WorldFileErrorKind::Structure(other.to_string()),
+            },
+        };
+        let text = world_file::read_text(path).map_err(|message| WorldFileError {
+            file: file.clone(),
+            location: None,
+            key: None,
+            kind: WorldFileErrorKind::Structure(format!("cannot read the sweep file: {message}")),
+        })?;
+        let dir = path.parent().unwrap_or(Path::new(""));
+        world_file::diagnostics::collect(&text, |t| Sweep::parse(&file, t, dir).map_err(&unlocated))
     }
 
     /// Parses sweep-file `text` (`file` names it in messages; a relative `world` path is

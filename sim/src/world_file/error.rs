@@ -71,12 +71,12 @@ pub enum WorldFileErrorKind {
         /// Valid names, best first.
         suggestions: Vec<String>,
     },
-    /// `--world` (or `VEHICLE_WORLD`) named neither an existing file nor a shipped model; the
-    /// message lists every shipped model.
+    /// `--world` (or `VEHICLE_WORLD`) named neither an existing file, a shipped model nor a
+    /// shipped world; the message lists every shipped world and model.
     NeitherFileNorModel {
         /// The name given.
         name: String,
-        /// The closest model names, best first (possibly none).
+        /// The closest model, world and world-file names, best first (possibly none).
         suggestions: Vec<String>,
     },
     /// A value of the right type that the simulator refuses, e.g. `basicTimeStep = 0`.
@@ -251,10 +251,19 @@ impl fmt::Display for Message<'_> {
                 write_suggestions(f, suggestions)
             }
             WorldFileErrorKind::NeitherFileNorModel { name, suggestions } => {
-                write!(f, "'{name}' is neither a world file nor a vehicle model")?;
+                write!(
+                    f,
+                    "'{name}' is neither a world file, a shipped world nor a vehicle model"
+                )?;
                 write_suggestions(f, suggestions)?;
+                let worlds: Vec<&str> = super::shipped::worlds().map(|w| w.name).collect();
                 let models: Vec<&str> = model_names().collect();
-                write!(f, " (models: {})", models.join(", "))
+                write!(
+                    f,
+                    " (worlds: {}; models: {})",
+                    worlds.join(", "),
+                    models.join(", ")
+                )
             }
             WorldFileErrorKind::InvalidValue(m) => {
                 if key.is_empty() {

@@ -32,6 +32,7 @@
 mod aero;
 mod bodies;
 mod devices;
+pub mod diagnostics;
 mod error;
 mod lane_programme;
 mod looks;
@@ -42,6 +43,7 @@ mod ray_devices;
 pub(crate) mod read;
 mod roads;
 mod robot;
+pub mod shipped;
 mod statics;
 mod tyre;
 mod vehicle;
@@ -58,6 +60,7 @@ use crate::config::WorldConfig;
 use crate::devices::{GpsCoordinateSystem, GpsFrame};
 use crate::simulation::{DURATION_RULE, is_duration};
 
+pub use diagnostics::{WorldFileErrors, parse_all};
 pub use error::{Location, NameSet, WorldFileError, WorldFileErrorKind, WorldWarning};
 pub use numbers::parse_with_numbers;
 pub use overrides::KeyPath;
@@ -235,9 +238,10 @@ pub fn with_model(model: Model) -> WorldDescription {
     }
 }
 
-/// Loads a world from `spec`: the path of a world file, or the Webots name of a shipped car
-/// model (e.g. `ToyotaPrius`: the default world with that car). An existing file wins over a
-/// model of the same name; an empty `spec` is the default world.
+/// Loads a world from `spec`: the path of a world file, the Webots name of a shipped car
+/// model (e.g. `ToyotaPrius`: the default world with that car), or the name of a shipped world
+/// ([`shipped`], e.g. `two-cars` or `two-cars.toml`). An existing file wins over a model or
+/// shipped world of the same name; an empty `spec` is the default world.
 ///
 /// This is what `vehicle-sim --world` and the C API's `VEHICLE_WORLD` accept.
 ///
@@ -245,30 +249,73 @@ pub fn with_model(model: Model) -> WorldDescription {
 /// A [`WorldFileError`] naming the file, line, column and key: unreadable file (or one longer
 /// than [`MAX_FILE_BYTES`]), invalid TOML,
 /// unknown key (with the closest valid names), wrong type, unknown model, invalid value, or a
-/// `spec` that is neither a file nor a model name.
+/// `spec` that is neither a file, a model nor a shipped world.
 pub fn load(spec: &str) -> Result<WorldDescription, WorldFileError> {
+    match resolve(spec)? {
+        Resolved::Model(model) => Ok(with_model(model)),
+        Resolved::Text { source, text } => parse_str(&source, &text),
+    }
+}
+
+/// Loads a world as [`load`] does, but a world file's errors are every one of them, in file
+/// order, with their lines ([`diagnostics`]): what `vehicle-sim --world` and the C API print.
+///
+/// # Errors
+/// As [`load`], with every error of the file.
+pub fn load_all(spec: &str) -> Result<WorldDescription, WorldFileErrors> {
+    match resolve(spec)? {
+        Resolved::Model(model) => Ok(with_model(model)),
+        Resolved::Text { source, text } => parse_all(&source, &text),
+    }
+}
+
+/// What a `--world` spec names: a built-in world, or the text of a file to read.
+enum Resolved {
+    /// The default world with a model (the BmwX5: the default world).
+    Model(Model),
+    /// A world file's text (from disk, or a shipped world's) and the name that messages
+    /// give it.
+    Text { source: String, text: String },
+}
+
+/// Resolves `spec` as [`load`] describes, reading the file it names.
+fn resolve(spec: &str) -> Result<Resolved, WorldFileError> {
     if spec.trim().is_empty() {
-        return Ok(default_world());
+        return Ok(Resolved::Model(Model::BmwX5));
     }
     let path = Path::new(spec);
     if !path.exists() {
         if let Some(model) = Model::from_name(spec) {
-            return Ok(with_model(model));
+            return Ok(Resolved::Model(model));
         }
-        let looks_like_path = spec.contains(['/', '\\']) || spec.ends_with(".toml");
+        if let Some(world) = shipped::world(spec) {
+            return Ok(Resolved::Text {
+                source: world.source(),
+                text: world.text.to_string(),
+            });
+        }
+        let looks_like_path = spec.contains(['/', '\\']);
         if !looks_like_path {
+            let candidates = error::model_names().chain(shipped::names());
             return Err(WorldFileError {
                 file: spec.to_string(),
                 location: None,
                 key: None,
                 kind: WorldFileErrorKind::NeitherFileNorModel {
                     name: spec.to_string(),
-                    suggestions: closest(spec, error::model_names()),
+                    suggestions: closest(spec, candidates),
                 },
             });
         }
     }
-    load_file(path)
+    let source = path.display().to_string();
+    let text = read_text(path).map_err(|m| WorldFileError {
+        file: source.clone(),
+        location: None,
+        key: None,
+        kind: WorldFileErrorKind::Io(m),
+    })?;
+    Ok(Resolved::Text { source, text })
 }
 
 /// Largest world or sweep file read (bytes): 16 MiB. The shipped worlds and sweeps are a few

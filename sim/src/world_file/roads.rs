@@ -8,6 +8,7 @@ use proto_geom::plausible::Compact;
 
 use super::error::{NameSet, WorldFileError, WorldFileErrorKind, WorldWarning};
 use super::read::{Section, missing};
+use super::shipped;
 use crate::road::{
     ContactPoint, Cubic, Curve, Junction, JunctionConnection, Lane, LaneKind, LaneSection,
     LineStyle, Profile, Road, RoadLink, RoadMark, RoadNetwork, Segment, chain,
@@ -74,8 +75,12 @@ pub(crate) fn read_roads(
         Some(toml::de::DeValue::String(_)) => {
             let name = root.string("road")?.unwrap_or_default();
             let path = Path::new(file).parent().unwrap_or(Path::new("")).join(name);
-            let imported = crate::road::opendrive::load(&path)
-                .map_err(|e| root.error("road", WorldFileErrorKind::InvalidValue(e.to_string())))?;
+            // A shipped world's includes are embedded with it.
+            let imported = match shipped::included(&path) {
+                Some(text) => crate::road::opendrive::parse_str(&path.display().to_string(), text),
+                None => crate::road::opendrive::load(&path),
+            }
+            .map_err(|e| root.error("road", WorldFileErrorKind::InvalidValue(e.to_string())))?;
             for w in imported.warnings {
                 warnings.push(root.src.warning(
                     root.key_span("road"),

@@ -5,9 +5,10 @@
 //! `fuzz/fuzz_targets/world_file.rs` (which includes this file by path). Invariants: nothing
 //! panics; an error names the file and, unless it is about a missing section, where (line or
 //! key); every message is one short line (apart from what it quotes of the text); a world that loads builds and steps with a finite
-//! state (see `simulation.rs`).
+//! state (see `simulation.rs`); `parse_all` loads the same world, or reports `parse_str`'s
+//! error among its errors, in file order.
 
-use sim::world_file::{WorldFileErrorKind, parse_str};
+use sim::world_file::{WorldFileErrorKind, parse_all, parse_str};
 
 use crate::control_loop::Op;
 use crate::simulation::{RobotOp, run};
@@ -27,6 +28,7 @@ const STEPS: usize = 3;
 /// # Errors
 /// The first broken invariant.
 pub fn check(text: &str) -> Result<(), String> {
+    check_all(text)?;
     match parse_str(FILE, text) {
         Err(e) => {
             let message = e.to_string();
@@ -54,6 +56,26 @@ pub fn check(text: &str) -> Result<(), String> {
             robot_ops.extend([RobotOp::Step; STEPS]);
             run(&world, &ops, &robot_ops)
         }
+    }
+}
+
+/// `Err` unless `parse_all` loads the world `parse_str` loads, or reports `parse_str`'s error
+/// among its errors, in file order, each rendered.
+fn check_all(text: &str) -> Result<(), String> {
+    match (parse_str(FILE, text), parse_all(FILE, text)) {
+        (Ok(a), Ok(b)) if a == b => Ok(()),
+        (Err(e), Err(all)) => {
+            let lines: Vec<_> = all
+                .errors
+                .iter()
+                .map(|e| e.location.map(|l| l.line))
+                .collect();
+            if !all.errors.contains(&e) || !lines.is_sorted() || all.to_string().is_empty() {
+                return Err(format!("parse_all {all:?} against parse_str {e:?}"));
+            }
+            Ok(())
+        }
+        (a, b) => Err(format!("parse_str {a:?} but parse_all {b:?}")),
     }
 }
 

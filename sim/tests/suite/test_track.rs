@@ -108,7 +108,10 @@ fn test_track(world: &world_file::WorldDescription) {
             "steering.svg",
             "lane_change.svg",
             "friction_use.svg",
-            "trajectory.svg"
+            "trajectory.svg",
+            // The straight runs (accel, brake, lane change) are far longer than the circle
+            // is wide: their lateral motion gets its own plot.
+            "lateral.svg"
         ]
     );
 }
