@@ -131,4 +131,7 @@ pub use vehicle::{
     ChassisSpec, Mounting, SpringDamper, SteeringSpec, TyreChoice, TyreSpec, TyreTelemetry,
     Vehicle, VehicleId, VehiclePlacement, VehicleSpec, VehicleState, WheelSpec,
 };
-pub use world::{MAX_SUBSTEPS, MAX_WHEEL_ROTATION_PER_SUBSTEP, ROAD_LIFT, World};
+pub use world::{
+    CONE_COLOR, CONE_HEIGHTS, CONE_RADII, Cone, DEFAULT_CONE_HEIGHT, DEFAULT_CONE_RADIUS,
+    DEFAULT_CONE_RCS, MAX_SUBSTEPS, MAX_WHEEL_ROTATION_PER_SUBSTEP, ROAD_LIFT, World,
+};

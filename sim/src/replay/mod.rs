@@ -23,6 +23,7 @@
 //! turns it into glTF's y-up frame once, at its root node (`webots_to_gltf`).
 
 mod animate;
+mod cone;
 pub mod overlay;
 mod recorder;
 mod scene;

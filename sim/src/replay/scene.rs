@@ -297,6 +297,14 @@ fn add_obstacles(scene: &mut Scene, world: usize, first: &Recording) {
                 height,
                 ..
             } => (shapes::ramp(length, width, height), format!("ramp_{i}")),
+            Obstacle::Cone { ref cone, .. } => {
+                let (mesh, paint) = super::cone::mesh(scene, cone);
+                let (at, yaw) = o.placement();
+                let name = format!("cone_{i}");
+                let mesh = scene.add_mesh(&name, mesh, paint);
+                scene.add_node(Some(world), &name, pose(at, yaw), Some(mesh));
+                continue;
+            }
         };
         let (at, yaw) = o.placement();
         let mesh = scene.add_mesh(&name, mesh, concrete);
