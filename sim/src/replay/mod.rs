@@ -24,6 +24,7 @@
 
 mod animate;
 mod cone;
+pub mod lidar_overlay;
 pub mod overlay;
 mod recorder;
 mod scene;
