@@ -310,7 +310,7 @@ pub struct WorldConfig {
     /// (dimensionless, 0 to 100: [`proto_geom::plausible::FRICTION`]). Webots:
     /// `ContactProperties.coulombFriction` (default 1).
     pub ground_friction: f64,
-    /// Static boxes and ramps.
+    /// Static boxes, ramps and traffic cones.
     pub obstacles: Vec<Obstacle>,
     /// Dynamic boxes, in the order [`World::bodies`](crate::World::bodies) reports them.
     pub bodies: Vec<BodySpec>,
