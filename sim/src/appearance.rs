@@ -2,9 +2,9 @@
 //! their colour, their `recognitionColors` and their `model` name (Webots' `Solid` fields).
 //!
 //! The world's physics knows shapes, not colours: a [`Simulation`](crate::Simulation) keeps one
-//! [`Appearance`] per box, ramp, dynamic box, car and robot, by default the colours the replay
-//! (`replay.glb`) draws them with, and no recognition colour, so that, as in Webots, nothing is
-//! recognised until it is given one.
+//! [`Appearance`] per box, ramp, cone, dynamic box, car and robot, by default the colours the
+//! replay (`replay.glb`) draws them with, and no recognition colour, so that, as in Webots,
+//! nothing is recognised until it is given one.
 
 use crate::error::ParamError;
 use crate::road::LaneKind;
@@ -43,7 +43,7 @@ pub const MAX_RECOGNITION_COLORS: usize = 64;
 /// One thing of the world a camera can see.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum SceneObject {
-    /// The static box or ramp of index `i` in `WorldConfig::obstacles`.
+    /// The static box, ramp or cone of index `i` in `WorldConfig::obstacles`.
     Obstacle(usize),
     /// The dynamic box of index `i` in `WorldConfig::bodies`.
     Body(usize),

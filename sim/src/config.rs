@@ -5,6 +5,7 @@ use crate::body::BodySpec;
 use crate::error::ParamError;
 use crate::geom::{DEFAULT_FRICTION, ground_rectangle};
 use crate::road::{Lane, RoadNetwork};
+use crate::world::Cone;
 use proto_geom::nalgebra::{Point2, Point3, Vector3};
 use proto_geom::plausible;
 
@@ -52,6 +53,15 @@ pub enum Obstacle {
         /// Webots' `radarCrossSection` (m², ≥ 0; 0, the default: radars do not see it).
         radar_cross_section: f64,
     },
+    /// A traffic cone standing on its base (rapier's exact cone).
+    Cone {
+        /// Its place, size and colour.
+        cone: Cone,
+        /// Coulomb friction (dimensionless, 0 to 100); `None` = the ground's.
+        friction: Option<f64>,
+        /// Webots' `radarCrossSection` (m², ≥ 0; 0: radars do not see it).
+        radar_cross_section: f64,
+    },
 }
 
 /// The six corners of a ramp's wedge in its own frame (m): x along the climb from the low
@@ -72,12 +82,14 @@ pub(crate) fn ramp_corners(length: f64, width: f64, height: f64) -> [[f64; 3]; 6
 
 impl Obstacle {
     /// Where the obstacle's own frame stands: its origin (m, world frame; a box's centre, the
-    /// middle of a ramp's low edge on the ground) and its heading (rad, counter-clockwise
-    /// about +z). The rapier collider and the replay's node are both placed by it.
+    /// middle of a ramp's low edge on the ground, a cone's base centre) and its heading (rad,
+    /// counter-clockwise about +z; 0 for a cone, which looks the same at every heading). The
+    /// replay's node is placed by it, and the rapier collider of a box or ramp.
     pub fn placement(&self) -> (Point3<f64>, f64) {
         match *self {
             Obstacle::Box { center, yaw, .. } => (center, yaw),
             Obstacle::Ramp { start, yaw, .. } => (Point3::new(start.x, start.y, 0.0), yaw),
+            Obstacle::Cone { ref cone, .. } => (cone.base, 0.0),
         }
     }
 
@@ -91,6 +103,10 @@ impl Obstacle {
             | Obstacle::Ramp {
                 radar_cross_section,
                 ..
+            }
+            | Obstacle::Cone {
+                radar_cross_section,
+                ..
             } => radar_cross_section,
         }
     }
@@ -98,7 +114,9 @@ impl Obstacle {
     /// Its Coulomb friction; `None` = the ground's.
     pub fn friction(&self) -> Option<f64> {
         match *self {
-            Obstacle::Box { friction, .. } | Obstacle::Ramp { friction, .. } => friction,
+            Obstacle::Box { friction, .. }
+            | Obstacle::Ramp { friction, .. }
+            | Obstacle::Cone { friction, .. } => friction,
         }
     }
 
@@ -130,6 +148,7 @@ impl Obstacle {
                 let radius = Vector3::new(length, width, height).norm() / 2.0;
                 (centre, radius)
             }
+            Obstacle::Cone { ref cone, .. } => (cone.centre(), cone.bounding_radius()),
         }
     }
 
@@ -139,10 +158,12 @@ impl Obstacle {
         match *self {
             Obstacle::Box { half_extents, .. } => half_extents.x,
             Obstacle::Ramp { length, .. } => length / 2.0,
+            Obstacle::Cone { ref cone, .. } => cone.radius,
         }
     }
 
-    /// The corners of its footprint on the ground (m, world x and y), counter-clockwise.
+    /// The corners of its footprint on the ground (m, world x and y), counter-clockwise; a
+    /// cone's is the square around its base.
     pub fn footprint(&self) -> [Point2<f64>; 4] {
         let (origin, yaw) = self.placement();
         let origin = origin.xy();
@@ -155,6 +176,9 @@ impl Obstacle {
             ),
             Obstacle::Ramp { length, width, .. } => {
                 ground_rectangle(origin, yaw, [0.0, length], width / 2.0)
+            }
+            Obstacle::Cone { ref cone, .. } => {
+                ground_rectangle(origin, 0.0, [-cone.radius, cone.radius], cone.radius)
             }
         }
     }
@@ -199,6 +223,17 @@ impl Obstacle {
                 ParamError::within("obstacle.ramp.height", *height, plausible::LENGTH)?;
                 if let Some(f) = friction {
                     ParamError::friction("obstacle.ramp.friction", *f)?;
+                }
+            }
+            Obstacle::Cone {
+                cone,
+                friction,
+                radar_cross_section,
+            } => {
+                ParamError::non_negative("obstacle.cone.radarCrossSection", *radar_cross_section)?;
+                cone.validate()?;
+                if let Some(f) = friction {
+                    ParamError::friction("obstacle.cone.friction", *f)?;
                 }
             }
         }
@@ -275,7 +310,7 @@ pub struct WorldConfig {
     /// (dimensionless, 0 to 100: [`proto_geom::plausible::FRICTION`]). Webots:
     /// `ContactProperties.coulombFriction` (default 1).
     pub ground_friction: f64,
-    /// Static boxes and ramps.
+    /// Static boxes, ramps and traffic cones.
     pub obstacles: Vec<Obstacle>,
     /// Dynamic boxes, in the order [`World::bodies`](crate::World::bodies) reports them.
     pub bodies: Vec<BodySpec>,
@@ -369,6 +404,8 @@ pub enum OutlineKind {
     Box,
     /// A `[[ramp]]`.
     Ramp,
+    /// A `[[cone]]`'s base.
+    Cone,
     /// A dynamic `[[body]]` box, where it starts.
     Body,
     /// A road's outer edge (an open line along the road).
@@ -383,6 +420,7 @@ impl OutlineKind {
         match self {
             OutlineKind::Box => "boxes",
             OutlineKind::Ramp => "ramps",
+            OutlineKind::Cone => "cones",
             OutlineKind::Body => "dynamic boxes (start)",
             OutlineKind::RoadEdge => "road edges",
             OutlineKind::LaneLine => "lane lines",
@@ -408,12 +446,14 @@ impl Outline {
             kind,
             points: corners.iter().map(|p| [p.x, p.y]).collect(),
         };
-        let obstacles = config.obstacles.iter().map(|o| {
-            let kind = match o {
-                Obstacle::Box { .. } => OutlineKind::Box,
-                Obstacle::Ramp { .. } => OutlineKind::Ramp,
-            };
-            outline(kind, o.footprint())
+        let obstacles = config.obstacles.iter().map(|o| match o {
+            Obstacle::Box { .. } => outline(OutlineKind::Box, o.footprint()),
+            Obstacle::Ramp { .. } => outline(OutlineKind::Ramp, o.footprint()),
+            // A 16-gon: round to a plot's eye at any zoom that shows a cone.
+            Obstacle::Cone { cone, .. } => Outline {
+                kind: OutlineKind::Cone,
+                points: cone.base_polygon(16).iter().map(|p| [p.x, p.y]).collect(),
+            },
         });
         let bodies = config
             .bodies

@@ -132,6 +132,7 @@ pub use vehicle::{
     Vehicle, VehicleId, VehiclePlacement, VehicleSpec, VehicleState, WheelSpec,
 };
 pub use world::{
-    MAX_SUBSTEPS, MAX_WHEEL_ROTATION_PER_SUBSTEP, Placement, ROAD_LIFT, World,
+    CONE_COLOR, CONE_HEIGHTS, CONE_RADII, Cone, DEFAULT_CONE_HEIGHT, DEFAULT_CONE_RADIUS,
+    DEFAULT_CONE_RCS, MAX_SUBSTEPS, MAX_WHEEL_ROTATION_PER_SUBSTEP, Placement, ROAD_LIFT, World,
     rotation_from_axis_angle,
 };

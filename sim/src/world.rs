@@ -8,7 +8,7 @@ use rapier3d::na::Unit;
 use rapier3d::parry::query::distance;
 use rapier3d::prelude::{
     CoefficientCombineRule, ColliderBuilder, ColliderHandle, IntegrationParameters, PhysicsWorld,
-    RigidBodyHandle, TriMeshFlags, Vector,
+    Pose, RigidBodyHandle, Rotation, TriMeshFlags, Vector,
 };
 
 use crate::body::{self, BodyPose};
@@ -126,10 +126,21 @@ impl World {
         );
         self.ground.add(ground, Surface::Uniform(mu));
         for (i, o) in self.config.obstacles.iter().enumerate() {
+            let (at, yaw) = o.placement();
+            let mut pose = geom::pose_xyz_yaw(&at, yaw);
             let shape = match *o {
                 Obstacle::Box { half_extents, .. } => {
                     let half = geom::vector(&half_extents);
                     ColliderBuilder::cuboid(half.x, half.y, half.z)
+                }
+                Obstacle::Cone { ref cone, .. } => {
+                    // rapier's cone stands on y, centred on its axis' middle: turned a
+                    // quarter about x, its y becomes the world's z.
+                    pose = Pose::from_parts(
+                        geom::point(&cone.centre()),
+                        Rotation::from_rotation_x(core::f32::consts::FRAC_PI_2),
+                    );
+                    ColliderBuilder::cone((cone.height / 2.0) as f32, cone.radius as f32)
                 }
                 Obstacle::Ramp {
                     length,
@@ -146,9 +157,8 @@ impl World {
                     }
                 }
             };
-            let (at, yaw) = o.placement();
             let friction = o.friction().unwrap_or(mu);
-            let collider = statics(shape, friction).position(geom::pose_xyz_yaw(&at, yaw));
+            let collider = statics(shape, friction).position(pose);
             let handle = self.physics.insert_collider(collider, None);
             self.ground.add(handle, Surface::Uniform(friction));
             self.obstacles.push((i, handle));
@@ -701,6 +711,12 @@ fn integration_parameters(config: &WorldConfig) -> IntegrationParameters {
         ..IntegrationParameters::default()
     }
 }
+
+mod cone;
+pub use cone::{
+    CONE_COLOR, CONE_HEIGHTS, CONE_RADII, Cone, DEFAULT_CONE_HEIGHT, DEFAULT_CONE_RADIUS,
+    DEFAULT_CONE_RCS,
+};
 
 // The ground's friction as both mountings read it in a world.
 #[cfg(test)]

@@ -559,3 +559,54 @@ fn json_metrics_of_a_robot_run_and_the_table() {
     assert!(!svg.contains("km/h"));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn a_built_in_scenario_writes_the_readings_of_the_worlds_devices() {
+    let dir = scratch("devices-brake");
+    let world = dir.join("gps.toml");
+    // One simulated second of `brake` (which starts at 100 km/h) with a GPS sampled every
+    // 100 ms: ten samples, at 0.1, 0.2 … 1.0 s, each of the same quantities.
+    std::fs::write(
+        &world,
+        "duration = 1.0\n[vehicle]\nmodel = \"BmwX5\"\n\
+         [[vehicle.device]]\ntype = \"GPS\"\nsamplingPeriod = 100\n",
+    )
+    .unwrap();
+    let out_dir = dir.join("out");
+    let out = vehicle_sim(&[
+        "--world",
+        world.to_str().unwrap(),
+        "--scenario",
+        "brake",
+        "--json",
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    let j = json_of(&out);
+    assert_eq!(j["scenario"], "brake");
+    let csv = std::fs::read_to_string(out_dir.join("devices.csv")).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(lines.next(), Some("time,car,device,quantity,value"));
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len() % 10, 0, "{csv}");
+    let per_sample = rows.len() / 10;
+    for (k, sample) in rows.chunks(per_sample).enumerate() {
+        for r in sample {
+            // Whole 10 ms steps summed in f64: 0.1 (k + 1) to well under a step.
+            let t: f64 = r[0].parse().unwrap();
+            assert!((t - 0.1 * (k + 1) as f64).abs() < 1e-9, "{r:?}");
+        }
+        let quantities: Vec<&str> = sample.iter().map(|r| r[3]).collect();
+        let first: Vec<&str> = rows[..per_sample].iter().map(|r| r[3]).collect();
+        assert_eq!(quantities, first);
+    }
+    // The GPS's position among them.
+    assert!(rows[..per_sample].iter().any(|r| r[3] == "x"), "{csv}");
+    assert!(
+        rows.iter().all(|r| r[1] == "BmwX5" && r[2] == "gps"),
+        "{csv}"
+    );
+    let metrics = std::fs::read_to_string(out_dir.join("metrics.json")).unwrap();
+    assert!(metrics.contains("\"devices.csv\""), "{metrics}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -142,8 +142,8 @@ fn triangles(
     }
 }
 
-/// A line primitive without material: positions only (no normals: lines are not lit by the
-/// glTF lighting model).
+/// A line or point primitive without material: positions only (no normals: lines and points
+/// are not lit by the glTF lighting model).
 fn lines(
     root: &mut json::Root,
     bin: &mut Vec<u8>,
@@ -325,6 +325,9 @@ impl Scene {
                 }
                 Geometry::Polyline(points) => {
                     lines(&mut root, &mut bin, points, json::mesh::Mode::LineStrip)
+                }
+                Geometry::Points(points) => {
+                    lines(&mut root, &mut bin, points, json::mesh::Mode::Points)
                 }
             };
             let primitive = json::mesh::Primitive {

@@ -115,6 +115,8 @@ pub enum Geometry {
     Segments(Vec<[f32; 3]>),
     /// One connected line through the points in order.
     Polyline(Vec<[f32; 3]>),
+    /// Separate points (glTF's `POINTS` mode; OBJ `p` elements), e.g. a lidar's returns.
+    Points(Vec<[f32; 3]>),
 }
 
 impl Geometry {
@@ -122,7 +124,7 @@ impl Geometry {
     pub fn triangle_count(&self) -> usize {
         match self {
             Geometry::Triangles(m) => m.triangle_count(),
-            Geometry::Segments(_) | Geometry::Polyline(_) => 0,
+            Geometry::Segments(_) | Geometry::Polyline(_) | Geometry::Points(_) => 0,
         }
     }
 }

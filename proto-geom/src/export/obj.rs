@@ -62,7 +62,9 @@ impl Scene {
                         }
                         base += m.vertices.len();
                     }
-                    Geometry::Segments(points) | Geometry::Polyline(points) => {
+                    Geometry::Segments(points)
+                    | Geometry::Polyline(points)
+                    | Geometry::Points(points) => {
                         for &v in points {
                             let p = point(v);
                             writeln!(w, "v {} {} {}", p.x as f32, p.y as f32, p.z as f32)?;
@@ -70,6 +72,10 @@ impl Scene {
                         if let Geometry::Segments(_) = part.geometry {
                             for i in (0..points.len() / 2).map(|k| base + 2 * k) {
                                 writeln!(w, "l {i} {}", i + 1)?;
+                            }
+                        } else if let Geometry::Points(_) = part.geometry {
+                            for i in base..base + points.len() {
+                                writeln!(w, "p {i}")?;
                             }
                         } else if points.len() >= 2 {
                             let all: Vec<String> =

@@ -153,6 +153,9 @@ pub(crate) fn animation(parts: &[Part<'_>], index: usize, nodes: &Nodes) -> Opti
     }
 
     super::overlay::add_channels(&mut a, t, frames, &nodes.radar_markers);
+    if let Some(clouds) = nodes.lidar_clouds.get(index) {
+        super::lidar_overlay::add_channels(&mut a, &times, clouds);
+    }
 
     // Only this part's trajectories and cones show while it plays.
     if nodes.parts.len() > 1 {

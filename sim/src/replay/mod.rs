@@ -23,6 +23,8 @@
 //! turns it into glTF's y-up frame once, at its root node (`webots_to_gltf`).
 
 mod animate;
+mod cone;
+pub mod lidar_overlay;
 pub mod overlay;
 mod recorder;
 mod scene;

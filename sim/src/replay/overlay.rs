@@ -9,7 +9,7 @@
 //! per marker and keyframe (a translation and a scale), at most 8 × 24 × 36,001 ≈ 7 MB per
 //! radar for the longest recording ([`super::MAX_FRAMES`]), a few kB for a typical minute.
 //! A radar reports more than eight targets only for a crowd of cars; the first eight in its
-//! order are drawn. Lidar points are not drawn (see `ARCHITECTURE.md`).
+//! order are drawn. Lidars draw their returns as points ([`super::lidar_overlay`]).
 //!
 //! Where. A target at distance `d` (m) and azimuth `a` (rad, > 0 to the right) is at
 //! `(d·cos a, −d·sin a, 0)` in the radar's frame (Webots gives no elevation: the target is

@@ -16,6 +16,7 @@ use crate::simulation::Simulation;
 use crate::vehicle::{Vehicle, VehicleSpec};
 use crate::world::World;
 
+use super::lidar_overlay::{self, CloudBudget, OverlayLidar};
 use super::overlay::{self, OverlayRadar};
 
 /// Most keyframes a replay holds per simulated second (Hz): a display's frame rate; more would
@@ -162,6 +163,10 @@ pub struct Frame {
     /// most [`MAX_TARGET_MARKERS`](super::overlay::MAX_TARGET_MARKERS); empty without the
     /// overlay.
     pub radar_targets: Vec<Vec<Point3<f64>>>,
+    /// One per lidar of [`Recording::lidars`] when this keyframe took clouds: the returns of
+    /// its sample since the last cloud taken (m, world frame, f32), empty if none
+    /// ([`super::lidar_overlay`]); empty without the overlay.
+    pub lidar_points: Vec<Vec<[f32; 3]>>,
 }
 
 impl Frame {
@@ -183,6 +188,7 @@ impl Frame {
                 .collect(),
             bodies: world.bodies(),
             radar_targets: Vec::new(),
+            lidar_points: Vec::new(),
         }
     }
 }
@@ -206,6 +212,9 @@ pub struct Recording {
     /// The radars whose targets the replay draws ([`super::overlay`]); empty without the
     /// overlay.
     pub radars: Vec<OverlayRadar>,
+    /// The lidars whose returns the replay draws ([`super::lidar_overlay`]); empty without
+    /// the overlay.
+    pub lidars: Vec<OverlayLidar>,
 }
 
 impl Recording {
@@ -248,6 +257,8 @@ pub struct Recorder {
     next_ms: u64,
     /// The time of the last frame kept (ms).
     last_ms: u64,
+    /// The lidar clouds' caps ([`super::lidar_overlay`]).
+    clouds: CloudBudget,
 }
 
 impl Recorder {
@@ -258,8 +269,9 @@ impl Recorder {
     }
 
     /// Starts recording the world of `sim`, each car with a driver drawn from its parameters,
-    /// and with [`Simulation::replay_overlay`] its radars' targets ([`super::overlay`]) when
-    /// sampled with [`Recorder::sample_simulation`].
+    /// and with [`Simulation::replay_overlay`] its radars' targets ([`super::overlay`]) and
+    /// its lidars' returns ([`super::lidar_overlay`]) when sampled with
+    /// [`Recorder::sample_simulation`].
     pub fn for_simulation(sim: &Simulation) -> Self {
         let mut recorder =
             Self::with_params(sim.world(), |v| sim.driver(v.id()).ok().map(|d| d.params()));
@@ -270,6 +282,13 @@ impl Recorder {
                 f.radar_targets = first;
             }
             recorder.recording.radars = radars;
+            let lidars = lidar_overlay::lidars(sim);
+            recorder.clouds = CloudBudget::new(lidars.len());
+            let first = recorder.clouds.clouds(sim, &lidars);
+            if let Some(f) = recorder.recording.frames.first_mut() {
+                f.lidar_points = first;
+            }
+            recorder.recording.lidars = lidars;
         }
         recorder
     }
@@ -303,7 +322,9 @@ impl Recorder {
                     .collect(),
                 frames: vec![first],
                 radars: Vec::new(),
+                lidars: Vec::new(),
             },
+            clouds: CloudBudget::new(0),
             period_ms: steps * step_ms,
             next_ms: now + steps * step_ms,
             last_ms: now,
@@ -326,11 +347,15 @@ impl Recorder {
         }
     }
 
-    /// The frame of `sim` now, with the targets of the recording's radars.
-    fn frame_of(&self, sim: &Simulation) -> Frame {
+    /// The frame of `sim` now, with the targets of the recording's radars and the clouds of
+    /// its lidars.
+    fn frame_of(&mut self, sim: &Simulation) -> Frame {
         let mut frame = Frame::of(sim.world());
         if !self.recording.radars.is_empty() {
             frame.radar_targets = overlay::targets(sim, &self.recording.radars);
+        }
+        if !self.recording.lidars.is_empty() {
+            frame.lidar_points = self.clouds.clouds(sim, &self.recording.lidars);
         }
         frame
     }
@@ -357,6 +382,7 @@ impl Recorder {
             self.period_ms *= 2;
             self.next_ms = self.last_ms + self.period_ms;
         }
+        self.clouds.enforce(&mut self.recording.frames);
     }
 
     /// Ends the recording with the present state of `world` (unless the last frame is already

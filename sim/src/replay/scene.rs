@@ -64,6 +64,8 @@ pub(crate) struct Nodes {
     pub(crate) parts: Vec<usize>,
     /// Each overlay radar's pool of target markers ([`super::overlay`]).
     pub(crate) radar_markers: Vec<Vec<usize>>,
+    /// Each part's lidar clouds ([`super::lidar_overlay`]).
+    pub(crate) lidar_clouds: Vec<Vec<super::lidar_overlay::CloudNode>>,
 }
 
 /// A frame at `at` (m) turned by `yaw` (rad) about +z.
@@ -197,19 +199,25 @@ pub(crate) fn build(parts: &[Part<'_>]) -> (Scene, Nodes) {
         .enumerate()
         .map(|(i, robot)| add_robot(&mut scene, world, i, robot, first))
         .collect();
-    let parts = parts
+    let groups = parts
         .iter()
         .map(|part| add_part(&mut scene, world, part, lift))
         .collect();
     let radar_markers = super::overlay::add_markers(&mut scene, world, first);
+    let lidar_clouds = parts
+        .iter()
+        .enumerate()
+        .map(|(p, part)| super::lidar_overlay::add_clouds(&mut scene, world, part.recording, p))
+        .collect();
     (
         scene,
         Nodes {
             cars,
             robots,
             bodies,
-            parts,
+            parts: groups,
             radar_markers,
+            lidar_clouds,
         },
     )
 }
@@ -303,6 +311,14 @@ fn add_obstacles(scene: &mut Scene, world: usize, first: &Recording) {
                 height,
                 ..
             } => (shapes::ramp(length, width, height), format!("ramp_{i}")),
+            Obstacle::Cone { ref cone, .. } => {
+                let (mesh, paint) = super::cone::mesh(scene, cone);
+                let (at, yaw) = o.placement();
+                let name = format!("cone_{i}");
+                let mesh = scene.add_mesh(&name, mesh, paint);
+                scene.add_node(Some(world), &name, pose(at, yaw), Some(mesh));
+                continue;
+            }
         };
         let (at, yaw) = o.placement();
         let mesh = scene.add_mesh(&name, mesh, concrete);

@@ -18,7 +18,7 @@ pub(crate) type Rect = [f64; 4];
 
 /// Appends the flat polygon `corners` (counter-clockwise seen from outside, so its normal is
 /// outward) as a fan of triangles with its own vertices.
-fn push_face(mesh: &mut RenderMesh, corners: &[[f64; 3]]) {
+pub(crate) fn push_face(mesh: &mut RenderMesh, corners: &[[f64; 3]]) {
     let [Some(a), Some(b), Some(c)] = [0, 1, 2].map(|i| corners.get(i)) else {
         return;
     };

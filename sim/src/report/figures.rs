@@ -274,6 +274,7 @@ fn trajectory(report: &RunReport, title: String) -> Figure {
         OutlineKind::LaneLine,
         OutlineKind::Box,
         OutlineKind::Ramp,
+        OutlineKind::Cone,
         OutlineKind::Body,
     ] {
         let outlines: Vec<&Vec<[f64; 2]>> = report

@@ -7,7 +7,7 @@ use vehicle_model::Driver;
 use crate::error::SimError;
 use crate::replay::Recorder;
 use crate::simulation::Simulation;
-use crate::telemetry::{DeviceReadings, Sample, Telemetry, VehicleKind};
+use crate::telemetry::{DeviceLog, Sample, Telemetry, VehicleKind};
 use crate::vehicle::{VehicleId, VehicleSpec, VehicleState};
 use crate::world_file::{CarDescription, WorldDescription};
 
@@ -31,6 +31,8 @@ pub(crate) struct CarRig {
     guides: Vec<Vec<[f64; 2]>>,
     cones: Vec<[f64; 2]>,
     recorder: Recorder,
+    /// The values the car's enabled devices sampled, for `devices.csv`.
+    devices: DeviceLog,
     next_progress: f64,
     /// The world's time limit for this scenario (s).
     pub(crate) limit: f64,
@@ -68,6 +70,7 @@ impl CarRig {
             guides: Vec::new(),
             cones: Vec::new(),
             recorder,
+            devices: DeviceLog::new(),
             next_progress: 0.0,
             limit,
             expected,
@@ -131,6 +134,7 @@ impl CarRig {
     pub(crate) fn step(&mut self, progress: &mut dyn FnMut(f64, f64)) -> Result<(), ScenarioError> {
         self.sim.step()?;
         self.recorder.sample(self.sim.world());
+        self.sim.log_sampled_devices(&mut self.devices);
         let sample = Sample::of_car(&self.sim, self.id)?;
         self.state = *self.sim.world().vehicle(self.id)?.state();
         let t = sample.time;
@@ -178,7 +182,7 @@ impl CarRig {
             guides: self.guides,
             cones: self.cones,
             replay: self.recorder.finish(self.sim.world()),
-            devices: DeviceReadings::default(),
+            devices: self.sim.device_readings(self.devices),
             unfinished: None,
         }
     }

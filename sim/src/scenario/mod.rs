@@ -337,8 +337,9 @@ pub struct ScenarioResult {
     pub cones: Vec<[f64; 2]>,
     /// The run sampled for its 3D replay.
     pub replay: Recording,
-    /// The readings of the devices the run sampled, for `devices.csv` (the `programme`
-    /// scenario's: the devices its world enables with `samplingPeriod`; empty otherwise).
+    /// The readings of the devices the run sampled, for `devices.csv`: those the world
+    /// enables with `samplingPeriod`, in the `programme` scenario and the car scenarios alike
+    /// (empty when none is enabled, and for the robot scenarios, whose robot has no devices).
     pub devices: DeviceReadings,
     /// Why the scenario could not run to its end, when it could not (e.g. a `--duration` that
     /// ended before braking started): the metrics of what never happened are

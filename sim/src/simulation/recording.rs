@@ -70,6 +70,17 @@ impl Simulation {
     /// devices (empty when not recording); the recording goes on with an empty device log.
     /// The `programme` scenario gives them to its result for `devices.csv`.
     pub(crate) fn take_device_readings(&mut self) -> DeviceReadings {
+        let log = self
+            .recording
+            .as_mut()
+            .map(Recording::take_devices)
+            .unwrap_or_default();
+        self.device_readings(log)
+    }
+
+    /// `log`, whose rows were pushed by [`Simulation::log_sampled_devices`], with the names of
+    /// the cars and their devices: what `devices.csv` is written from.
+    pub(crate) fn device_readings(&self, log: DeviceLog) -> DeviceReadings {
         let cars = self
             .cars
             .iter()
@@ -78,12 +89,31 @@ impl Simulation {
                 (c.name.clone(), devices.collect())
             })
             .collect();
-        let log = self
-            .recording
-            .as_mut()
-            .map(Recording::take_devices)
-            .unwrap_or_default();
         DeviceReadings::new(log, cars)
+    }
+
+    /// Pushes into `log` the values of every device that sampled in the last step (none at
+    /// the start: a device's first sample comes one period after enabling), cars and devices
+    /// by index in this simulation's order. A recorded run ([`Simulation::record`]) and the
+    /// built-in car scenarios log through it.
+    pub(crate) fn log_sampled_devices(&self, log: &mut DeviceLog) {
+        let now_ms = self.world().time_ms();
+        let time = self.world().time();
+        for (car, c) in (0..).zip(&self.cars) {
+            for (device, d) in (0..).zip(c.devices.all()) {
+                if d.sampled_at(now_ms) {
+                    d.for_each_recorded(|quantity, value| {
+                        log.push(DeviceRow {
+                            time,
+                            car,
+                            device,
+                            quantity,
+                            value,
+                        });
+                    });
+                }
+            }
+        }
     }
 }
 
@@ -159,7 +189,7 @@ impl Recording {
     /// Records the state after a step.
     pub(super) fn sample(&mut self, sim: &Simulation) {
         self.log_samples(sim);
-        self.log_devices(sim);
+        sim.log_sampled_devices(&mut self.devices);
         self.replay.sample_simulation(sim);
         let world = sim.world();
         for (i, a) in sim.cars.iter().enumerate() {
@@ -185,28 +215,6 @@ impl Recording {
             };
             if let Ok(s) = sample {
                 v.log.push(&s);
-            }
-        }
-    }
-
-    /// Logs the samples the devices took in this step (none at the start: a device's first
-    /// sample comes one period after enabling).
-    fn log_devices(&mut self, sim: &Simulation) {
-        let now_ms = sim.world().time_ms();
-        let time = sim.world().time();
-        for (car, c) in (0..).zip(&sim.cars) {
-            for (device, d) in (0..).zip(c.devices.all()) {
-                if d.sampled_at(now_ms) {
-                    d.for_each_recorded(|quantity, value| {
-                        self.devices.push(DeviceRow {
-                            time,
-                            car,
-                            device,
-                            quantity,
-                            value,
-                        });
-                    });
-                }
             }
         }
     }

@@ -31,6 +31,7 @@
 
 mod aero;
 mod bodies;
+mod cone;
 mod devices;
 pub mod diagnostics;
 mod error;
@@ -59,6 +60,7 @@ use crate::appearance::{Appearances, BODY_COLOR, OBSTACLE_COLOR, PALETTE, SceneO
 use crate::config::WorldConfig;
 use crate::devices::{GpsCoordinateSystem, GpsFrame};
 use crate::simulation::{DURATION_RULE, is_duration};
+use crate::world::CONE_COLOR;
 
 pub use diagnostics::{WorldFileErrors, parse_all};
 pub use error::{Location, NameSet, WorldFileError, WorldFileErrorKind, WorldWarning};
@@ -95,7 +97,7 @@ pub fn model_world_text(model: Model) -> String {
 }
 
 /// Top-level keys of a world file.
-const ROOT_KEYS: [&str; 15] = [
+const ROOT_KEYS: [&str; 16] = [
     "basicTimeStep",
     GPS_COORDINATE_SYSTEM,
     GPS_REFERENCE,
@@ -108,6 +110,7 @@ const ROOT_KEYS: [&str; 15] = [
     "ground",
     "box",
     "ramp",
+    "cone",
     "body",
     "road",
     "junction",
@@ -489,8 +492,8 @@ fn read_gps_frame(root: &Section<'_, '_>) -> Result<GpsFrame, WorldFileError> {
     Ok(frame)
 }
 
-/// The looks of the boxes, ramps (in `config.obstacles`' order: boxes first), dynamic boxes,
-/// cars and robot.
+/// The looks of the boxes, ramps, cones (in `config.obstacles`' order: boxes, ramps, then
+/// each `[[cone]]`'s `count` cones), dynamic boxes, cars and robot.
 fn read_looks(
     root: &Section<'_, '_>,
     cars: &[Section<'_, '_>],
@@ -498,12 +501,25 @@ fn read_looks(
 ) -> Result<Appearances, WorldFileError> {
     let mut found = Vec::new();
     let obstacles = root.tables("box")?.into_iter().chain(root.tables("ramp")?);
-    for (i, s) in obstacles.enumerate() {
+    let mut next = 0;
+    for s in obstacles {
         found.push(looks::read_look(
             &s,
-            SceneObject::Obstacle(i),
+            SceneObject::Obstacle(next),
             OBSTACLE_COLOR,
         )?);
+        next += 1;
+    }
+    for s in root.tables("cone")? {
+        let look = looks::read_look(&s, SceneObject::Obstacle(next), CONE_COLOR)?;
+        // Validated when the world was read.
+        let count = cone::count_of(&s)? as usize;
+        if let Some((_, look)) = look {
+            found.extend(
+                (next..next + count).map(|i| Some((SceneObject::Obstacle(i), look.clone()))),
+            );
+        }
+        next += count;
     }
     for (i, s) in root.tables("body")?.iter().enumerate() {
         found.push(looks::read_look(s, SceneObject::Body(i), BODY_COLOR)?);

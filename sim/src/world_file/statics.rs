@@ -1,5 +1,5 @@
 //! The world itself: `WorldInfo`-like top-level keys, `[ground]`, `[[box]]` and `[[ramp]]`
-//! (and, through [`super::bodies`], `[[body]]`).
+//! (and, through [`super::cone`] and [`super::bodies`], `[[cone]]` and `[[body]]`).
 
 use crate::config::{MAX_GRAVITY, Obstacle, WorldConfig};
 use proto_geom::nalgebra::{Point2, Point3, Vector3};
@@ -110,6 +110,7 @@ pub(crate) fn read_world(root: &Section<'_, '_>) -> Result<WorldConfig, WorldFil
         });
         validate_last_obstacle(&r, &config)?;
     }
+    super::cone::read_cones(root, &mut config)?;
     super::bodies::read_bodies(root, &mut config)?;
     config.validate().map_err(|e| {
         root.src.error(

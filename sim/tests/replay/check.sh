@@ -2,7 +2,8 @@
 # The replay checks that need Node.js and a browser: runs vehicle-sim on the default world
 # (test-track), the obstacles world (test-track), the e-puck world (square) and the ACC world
 # with the radar overlay (`replayOverlay = true`: marker nodes with step-interpolated
-# translation and scale channels), validates each
+# translation and scale channels), the double-lane-change world with the overlay (traffic
+# cones, a radar's markers and a lidar's POINTS clouds shown by scale channels), validates each
 # replay.glb with the Khronos glTF validator (0 errors and 0 warnings), then renders two of them
 # with <model-viewer> in headless Chromium at two animation times each (the screenshots must
 # differ and the console stay free of errors). Then opens report.html of the test track and
@@ -44,9 +45,12 @@ sim="$root/target/debug/vehicle-sim"
 { echo "replayOverlay = true"; cat sim/worlds/acc.toml; } >"$out/acc-overlay.toml"
 "$sim" --world "$out/acc-overlay.toml" --out "$out/acc-overlay" >/dev/null
 "$sim" --world sim/worlds/two-cars.toml --out "$out/two-cars" >/dev/null
+{ echo "replayOverlay = true"; cat sim/worlds/double-lane-change.toml; } >"$out/cones-overlay.toml"
+"$sim" --world "$out/cones-overlay.toml" --out "$out/cones-overlay" >/dev/null
 
 node "$here/validate.mjs" "$out/test-track/replay.glb" "$out/obstacles/replay.glb" \
-  "$out/e-puck/replay.glb" "$out/acc-overlay/replay.glb" "$out/two-cars/replay.glb"
+  "$out/e-puck/replay.glb" "$out/acc-overlay/replay.glb" "$out/two-cars/replay.glb" \
+  "$out/cones-overlay/replay.glb"
 # A C controller's run under VEHICLE_OUT (written by capi's test
 # a_controller_run_writes_the_outputs_of_the_same_programme, which `cargo test` runs first).
 controller_glb="$root/target/tmp/capi-c_programs/outputs-controller/replay.glb"

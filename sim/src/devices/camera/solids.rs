@@ -75,6 +75,11 @@ impl Solids {
                     height,
                     ..
                 } => wedge(length, width, height),
+                Obstacle::Cone { ref cone, .. } => cone.polyhedron(),
+            };
+            let default = match o {
+                Obstacle::Cone { cone, .. } => cone.color,
+                _ => OBSTACLE_COLOR,
             };
             let pose = Isometry3::from_parts(
                 Translation3::from(at.coords),
@@ -82,7 +87,7 @@ impl Solids {
             );
             push(
                 SceneObject::Obstacle(i),
-                OBSTACLE_COLOR,
+                default,
                 None,
                 pose,
                 corners,
