@@ -170,3 +170,36 @@ fn infra_red_fields_are_read_and_checked() {
         Some("vehicle.device[1].redColorSensitivity")
     );
 }
+
+#[test]
+fn a_cone_is_seen_in_its_own_colour_unless_the_world_sets_one() {
+    // A generic sensor beside each infra-red one reads the distance itself (its table is the
+    // identity), so the infra-red value follows from the formula with the cone's red.
+    let generic = "[[vehicle.device]]\ntype = \"DistanceSensor\"\nname = \"plain\"\n\
+                   translation = [2.5, 0, 0]\nlookupTable = [[0, 0, 0], [20, 20, 0]]\n";
+    let devices = [sensor("ir", 1, 1.0, 1.0), generic.to_string()].concat();
+    for (look, red) in [("", sim::CONE_COLOR[0]), ("color = [0.1, 0.5, 0.5]\n", 0.1)] {
+        let text = format!(
+            "[[cone]]\ntranslation = [{WALL_X}, 0, 0]\nheight = 1.5\nradius = 0.3\n{look}\
+             [vehicle]\nmodel = \"BmwX5\"\n{devices}"
+        );
+        let description = world_file::parse_str("ir.toml", &text).unwrap();
+        let (mut sim, _) = Simulation::from_description(&description).unwrap();
+        let id = sim.car_ids().next().unwrap();
+        for i in 0..sim.devices(id).unwrap().len() {
+            sim.enable_device(id, i, 20).unwrap();
+        }
+        for _ in 0..50 {
+            sim.step().unwrap();
+        }
+        let d = value(&sim, id, "plain");
+        assert!(d > 0.1 && d < 5.0, "the cone is in range: {d}");
+        let expected = infra_red(&[1.0], &[d], red, 1.0);
+        let got = value(&sim, id, "ir");
+        // Tolerance: as on the walls, f32 ray casts times at most 1/F = 5.
+        assert!(
+            (got - expected).abs() < 1e-4,
+            "{look:?}: {got} vs {expected}"
+        );
+    }
+}

@@ -343,14 +343,17 @@ fn sweep_file_errors_name_file_line_and_key() {
              invalid 'wheelbase' value -2 (must be > 0), used 4 instead."
         )
     );
+    // The list names every shipped world, whatever `sim/worlds` holds.
+    let worlds: Vec<&str> = sim::world_file::shipped::worlds().map(|w| w.name).collect();
     assert_eq!(
-        err("world = \"BmwX6\"\n").as_deref(),
-        Some(
+        err("world = \"BmwX6\"\n"),
+        Some(format!(
             "'BmwX6' is neither a world file, a shipped world nor a vehicle model; did you mean \
-             'BmwX5' or 'bmw-x5'? (worlds: acc, bmw-x5, city-loop, e-puck, highway, hilly-road, obstacles, \
-             sensors, tuned-prius, two-cars; models: Car, BmwX5, CitroenCZero, ToyotaPrius, LincolnMKZ, RangeRoverSportSVR, \
-             TeslaModel3, MercedesBenzSprinter, GreenPowerEVStar, Bus, Truck, Tractor)"
-        )
+             'BmwX5' or 'bmw-x5'? (worlds: {}; models: Car, BmwX5, CitroenCZero, ToyotaPrius, \
+             LincolnMKZ, RangeRoverSportSVR, TeslaModel3, MercedesBenzSprinter, GreenPowerEVStar, \
+             Bus, Truck, Tractor)",
+            worlds.join(", ")
+        ))
     );
     assert_eq!(
         err("scenario = \"square\"\n").as_deref(),

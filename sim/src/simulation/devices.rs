@@ -8,6 +8,7 @@ use proto_geom::nalgebra::{Isometry3, Translation3};
 
 use super::{Controlled, Simulation};
 use crate::appearance::{Appearance, Appearances, SceneObject, lane_color};
+use crate::config::Obstacle;
 use crate::devices::Surroundings;
 use crate::devices::camera::roads;
 use crate::devices::camera::solids::Solids;
@@ -26,10 +27,18 @@ use crate::world::World;
 fn reds(world: &World, looks: &Appearances) -> Reds {
     let vehicles = world.vehicles().len();
     let red = |object: SceneObject| looks.color(object, vehicles)[0];
+    // A cone's own colour is its default (as the camera and the replay draw it); a look set
+    // in the world file overrides it, as for any obstacle.
+    let obstacle_red = |i: usize| match world.config().obstacles.get(i) {
+        Some(Obstacle::Cone { cone, .. }) if looks.explicit(SceneObject::Obstacle(i)).is_none() => {
+            cone.color[0]
+        }
+        _ => red(SceneObject::Obstacle(i)),
+    };
     let colliders = world
         .obstacle_colliders()
         .iter()
-        .map(|&(i, c)| (c, red(SceneObject::Obstacle(i))))
+        .map(|&(i, c)| (c, obstacle_red(i)))
         .chain(
             world
                 .lane_colliders()
