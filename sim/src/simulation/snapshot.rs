@@ -39,7 +39,7 @@ pub enum SnapshotError {
 }
 
 /// The whole state of a [`Simulation`] at one instant (see [`Simulation::snapshot`]): the
-/// world ([`WorldSnapshot`]: rapier's sets, islands, broad and narrow phase with their contact
+/// world (`WorldSnapshot`: rapier's sets, islands, broad and narrow phase with their contact
 /// caches, every car's wheel, suspension and motor state), each car's driver library (control
 /// mode, targets, gearbox, cruise control), sensor devices (enabled state, last readings, noise
 /// generators) and keyboard, the lane followers, the `duration`, and how far the recording had

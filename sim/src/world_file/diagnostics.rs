@@ -5,7 +5,7 @@
 //! line blanked (a section header's whole section), until the file reads or an error repeats,
 //! so a file with three typos reports three errors. Blanking keeps the line numbers. An error
 //! that only the blanking could cause (invalid TOML, or an unlocated structure error such as
-//! "no [vehicle] section", after a first error) is not reported: the file was valid TOML, and
+//! "no `[vehicle]` section", after a first error) is not reported: the file was valid TOML, and
 //! the section existed.
 
 use core::fmt;
