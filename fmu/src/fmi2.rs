@@ -89,6 +89,22 @@ impl Component {
     }
 }
 
+impl Component {
+    /// Logs `text` as an error of this instance and answers `fmi2Error`: for the calls the
+    /// entry points refuse before they reach the instance (NULL arrays, absent types,
+    /// undeclared capabilities), which the instance's own messages do not carry.
+    fn refuse(&self, text: &str) -> Status {
+        log(
+            self.logger,
+            self.environment,
+            &self.instance.name,
+            ERROR,
+            text,
+        );
+        ERROR
+    }
+}
+
 /// Calls `logger` with `text` (its `%` doubled) as the format, in the category of `status`.
 fn log(logger: Option<Logger>, environment: *mut c_void, name: &str, status: Status, text: &str) {
     let Some(logger) = logger else {
@@ -297,19 +313,15 @@ pub extern "C" fn fmi2SetupExperiment(
     _stop_time: f64,
 ) -> Status {
     guard(c, |c| {
-        let result = if start_time == 0.0 && c.instance.phase() == Phase::Instantiated {
-            Ok(())
+        if start_time == 0.0 && c.instance.phase() == Phase::Instantiated {
+            OK
         } else {
-            Err(format!(
+            c.refuse(&format!(
                 "fmi2SetupExperiment with startTime {start_time} s in the {:?} state: the \
                  world starts at 0 s, before initialisation",
                 c.instance.phase()
             ))
-        };
-        if let Err(e) = &result {
-            log(c.logger, c.environment, &c.instance.name, ERROR, e);
         }
-        c.finish(result)
     })
 }
 
@@ -359,7 +371,7 @@ fn get_values(
 ) -> Status {
     guard(c, |c| {
         if n > 0 && vr.is_null() {
-            return c.finish(Err("NULL value references".to_string()));
+            return c.refuse("NULL value references");
         }
         // SAFETY: the tool passes `n` value references (checked non-NULL above when n > 0).
         let refs = if n == 0 {
@@ -391,7 +403,7 @@ fn set_values(
 ) -> Status {
     guard(c, |c| {
         if n > 0 && vr.is_null() {
-            return c.finish(Err("NULL value references".to_string()));
+            return c.refuse("NULL value references");
         }
         // SAFETY: as in `get_values`.
         let refs = if n == 0 {
@@ -490,15 +502,11 @@ pub unsafe extern "C" fn fmi2SetInteger(
 /// names none.
 fn no_variables(c: *mut c_void, nvr: usize, kind: &str) -> Status {
     guard(c, |c| {
-        let r = if nvr == 0 {
-            Ok(())
+        if nvr == 0 {
+            OK
         } else {
-            Err(format!("the FMU has no {kind} variables"))
-        };
-        if let Err(e) = &r {
-            log(c.logger, c.environment, &c.instance.name, ERROR, e);
+            c.refuse(&format!("the FMU has no {kind} variables"))
         }
-        c.finish(r)
     })
 }
 
@@ -564,9 +572,9 @@ pub extern "C" fn fmi2DoStep(
 /// Refuses an optional capability the model description does not declare.
 fn unsupported(c: *mut c_void, what: &str) -> Status {
     guard(c, |c| {
-        let text = format!("{what} is not supported by this FMU (see its modelDescription.xml)");
-        log(c.logger, c.environment, &c.instance.name, ERROR, &text);
-        ERROR
+        c.refuse(&format!(
+            "{what} is not supported by this FMU (see its modelDescription.xml)"
+        ))
     })
 }
 
@@ -656,7 +664,7 @@ pub extern "C" fn fmi2GetDirectionalDerivative(
 pub unsafe extern "C" fn fmi2GetFMUstate(c: *mut c_void, state: *mut *mut c_void) -> Status {
     guard(c, |c| {
         if state.is_null() {
-            return c.finish(Err("fmi2GetFMUstate: NULL state pointer".to_string()));
+            return c.refuse("fmi2GetFMUstate: NULL state pointer");
         }
         let saved = c.instance.state();
         // SAFETY: by the contract, `*state` is NULL or came from `Box::into_raw` below.
@@ -679,7 +687,7 @@ pub unsafe extern "C" fn fmi2SetFMUstate(c: *mut c_void, state: *mut c_void) -> 
     guard(c, |c| {
         // SAFETY: by the contract.
         let Some(saved) = (unsafe { state.cast::<State>().as_ref() }) else {
-            return c.finish(Err("fmi2SetFMUstate: NULL state".to_string()));
+            return c.refuse("fmi2SetFMUstate: NULL state");
         };
         let r = c.instance.set_state(saved);
         c.finish(r)

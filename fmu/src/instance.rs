@@ -381,20 +381,26 @@ fn parse(path: &Path, text: &str, numbers: &[(KeyPath, f64)]) -> Result<WorldDes
         .map_err(|e| e.to_string())
 }
 
+/// Refuses a world the FMU cannot drive: anything but exactly one car (`name` names the world
+/// in the message). The packager checks it too, so an FMU is never built for such a world.
+pub(crate) fn check_one_car(description: &WorldDescription, name: &str) -> Result<(), Refused> {
+    if description.cars.len() == 1 && description.robot.is_none() {
+        return Ok(());
+    }
+    Err(format!(
+        "the world {name} has {} cars{}: the FMU drives a world with exactly one car",
+        description.cars.len(),
+        if description.robot.is_some() {
+            " and a robot"
+        } else {
+            ""
+        }
+    ))
+}
+
 /// The simulation of `description` and the car the FMU drives: its only car.
 fn build(description: &WorldDescription) -> Result<(Simulation, VehicleId), Refused> {
-    if description.cars.len() != 1 || description.robot.is_some() {
-        return Err(format!(
-            "the world {} has {} cars{}: the FMU drives a world with exactly one car",
-            description.source,
-            description.cars.len(),
-            if description.robot.is_some() {
-                " and a robot"
-            } else {
-                ""
-            }
-        ));
-    }
+    check_one_car(description, &description.source)?;
     let (simulation, _) = Simulation::from_description(description).map_err(|e| e.to_string())?;
     let car = simulation
         .car_ids()

@@ -128,18 +128,7 @@ pub fn describe(world: &World) -> Result<(WorldDescription, Description), String
         .map_or_else(|| PathBuf::from(WORLD_FILE), |d| d.join(WORLD_FILE));
     let description = world_file::parse_str(&file.display().to_string(), &world.text)
         .map_err(|e| e.to_string())?;
-    if description.cars.len() != 1 || description.robot.is_some() {
-        return Err(format!(
-            "the world {} has {} cars{}: the FMU drives a world with exactly one car",
-            world.name,
-            description.cars.len(),
-            if description.robot.is_some() {
-                " and a robot"
-            } else {
-                ""
-            }
-        ));
-    }
+    crate::instance::check_one_car(&description, &world.name)?;
     let parameters = VARIABLES
         .iter()
         .filter(|v| v.causality == Causality::Parameter)
