@@ -19,6 +19,8 @@ pub enum Kind {
 /// What a variable is to the importing tool.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Causality {
+    /// The independent variable: simulated time (FMI 3.0 requires one; FMI 2.0 allows it).
+    Independent,
     /// Fixed before initialisation ends: a world-file key.
     Parameter,
     /// Set by the tool before each `fmi2DoStep`: a driver command.
@@ -46,14 +48,16 @@ pub struct Variable {
 
 /// A unit of the model description: its name and SI base-unit exponents `[kg, m, s, rad]`,
 /// with the factor to SI (`rpm` is rad/s × π/30).
-pub const UNITS: [(&str, [i32; 4], f64); 9] = [
+pub const UNITS: [(&str, [i32; 4], f64); 11] = [
     ("kg", [1, 0, 0, 0], 1.0),
+    ("s", [0, 0, 1, 0], 1.0),
     ("m", [0, 1, 0, 0], 1.0),
     ("m/s", [0, 1, -1, 0], 1.0),
     ("m/s2", [0, 1, -2, 0], 1.0),
     ("rad", [0, 0, 0, 1], 1.0),
     ("rad/s", [0, 0, -1, 1], 1.0),
     ("rpm", [0, 0, -1, 1], core::f64::consts::PI / 30.0),
+    ("N", [1, 1, -2, 0], 1.0),
     ("N.m", [1, 2, -2, 0], 1.0),
     ("W", [1, 2, -3, 0], 1.0),
 ];
@@ -91,7 +95,10 @@ const fn integer(
     }
 }
 
-use Causality::{Input, Output, Parameter};
+use Causality::{Independent, Input, Output, Parameter};
+
+/// Value reference of the independent variable, time.
+pub const TIME: u32 = 99;
 
 /// Value reference of the first input.
 pub const STEERING_ANGLE: u32 = 0;
@@ -110,7 +117,8 @@ pub const INDICATOR: u32 = 6;
 
 /// Every variable, in the order of `modelDescription.xml` (its `ModelVariables` indices are
 /// 1-based positions in this table).
-pub const VARIABLES: [Variable; 31] = [
+pub const VARIABLES: [Variable; 44] = [
+    real("time", TIME, Independent, Some("s"), "Simulated time"),
     real(
         "steering_angle",
         STEERING_ANGLE,
@@ -271,6 +279,90 @@ pub const VARIABLES: [Variable; 31] = [
         "Engaged gear in torque control, 0 in speed control (wbu_driver_get_gear)",
     ),
     real(
+        "slip_ratio_front_right",
+        118,
+        Output,
+        None,
+        "Longitudinal slip of the front right tyre, (w r - vx)/max(|vx|, 1 m/s): positive driving, -1 locked",
+    ),
+    real(
+        "slip_ratio_front_left",
+        119,
+        Output,
+        None,
+        "Longitudinal slip of the front left tyre, (w r - vx)/max(|vx|, 1 m/s): positive driving, -1 locked",
+    ),
+    real(
+        "slip_ratio_rear_right",
+        120,
+        Output,
+        None,
+        "Longitudinal slip of the rear right tyre, (w r - vx)/max(|vx|, 1 m/s): positive driving, -1 locked",
+    ),
+    real(
+        "slip_ratio_rear_left",
+        121,
+        Output,
+        None,
+        "Longitudinal slip of the rear left tyre, (w r - vx)/max(|vx|, 1 m/s): positive driving, -1 locked",
+    ),
+    real(
+        "slip_angle_front_right",
+        122,
+        Output,
+        Some("rad"),
+        "Slip angle of the front right tyre, atan2(-vy, max(|vx|, 1 m/s)): positive when the road pushes it left",
+    ),
+    real(
+        "slip_angle_front_left",
+        123,
+        Output,
+        Some("rad"),
+        "Slip angle of the front left tyre, atan2(-vy, max(|vx|, 1 m/s)): positive when the road pushes it left",
+    ),
+    real(
+        "slip_angle_rear_right",
+        124,
+        Output,
+        Some("rad"),
+        "Slip angle of the rear right tyre, atan2(-vy, max(|vx|, 1 m/s)): positive when the road pushes it left",
+    ),
+    real(
+        "slip_angle_rear_left",
+        125,
+        Output,
+        Some("rad"),
+        "Slip angle of the rear left tyre, atan2(-vy, max(|vx|, 1 m/s)): positive when the road pushes it left",
+    ),
+    real(
+        "tyre_load_front_right",
+        126,
+        Output,
+        Some("N"),
+        "Vertical load on the front right tyre (its suspension force)",
+    ),
+    real(
+        "tyre_load_front_left",
+        127,
+        Output,
+        Some("N"),
+        "Vertical load on the front left tyre (its suspension force)",
+    ),
+    real(
+        "tyre_load_rear_right",
+        128,
+        Output,
+        Some("N"),
+        "Vertical load on the rear right tyre (its suspension force)",
+    ),
+    real(
+        "tyre_load_rear_left",
+        129,
+        Output,
+        Some("N"),
+        "Vertical load on the rear left tyre (its suspension force)",
+    ),
+    real(
         "vehicle.mass",
         1000,
         Parameter,
@@ -367,6 +459,18 @@ pub fn output_of(t: &CarTelemetry, reference: u32) -> Option<f64> {
         115 => s.wheel_speeds[Wheel::RearLeft],
         116 => t.rpm.unwrap_or(0.0),
         117 => t.gear.map_or(0.0, |g| f64::from(g.number())),
+        118 => s.tyres[Wheel::FrontRight].slip_ratio,
+        119 => s.tyres[Wheel::FrontLeft].slip_ratio,
+        120 => s.tyres[Wheel::RearRight].slip_ratio,
+        121 => s.tyres[Wheel::RearLeft].slip_ratio,
+        122 => s.tyres[Wheel::FrontRight].slip_angle,
+        123 => s.tyres[Wheel::FrontLeft].slip_angle,
+        124 => s.tyres[Wheel::RearRight].slip_angle,
+        125 => s.tyres[Wheel::RearLeft].slip_angle,
+        126 => s.tyres[Wheel::FrontRight].fz,
+        127 => s.tyres[Wheel::FrontLeft].fz,
+        128 => s.tyres[Wheel::RearRight].fz,
+        129 => s.tyres[Wheel::RearLeft].fz,
         _ => return None,
     })
 }
@@ -399,7 +503,7 @@ mod tests {
             match v.causality {
                 Parameter => assert!(parameter_of(&world, v.reference).is_some()),
                 Output => assert!(output_of(&t, v.reference).is_some(), "{}", v.name),
-                Input => {}
+                Input | Independent => {}
             }
         }
     }
