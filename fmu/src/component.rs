@@ -167,7 +167,7 @@ impl Component {
 }
 
 /// Runs `body` on the component `c`; NULL is refused and a panic is `Fatal`.
-pub fn guard(c: *mut c_void, body: impl FnOnce(&mut Component) -> Status) -> Status {
+pub(crate) fn guard(c: *mut c_void, body: impl FnOnce(&mut Component) -> Status) -> Status {
     if c.is_null() {
         return ERROR;
     }
@@ -194,7 +194,7 @@ pub fn guard(c: *mut c_void, body: impl FnOnce(&mut Component) -> Status) -> Sta
 ///
 /// # Safety
 /// `p` is NULL or a NUL-terminated string valid for the call.
-pub unsafe fn text<'a>(p: *const c_char) -> Option<&'a str> {
+pub(crate) unsafe fn text<'a>(p: *const c_char) -> Option<&'a str> {
     if p.is_null() {
         return None;
     }
@@ -216,7 +216,7 @@ unsafe fn references<'a>(vr: *const u32, n: usize) -> &'a [u32] {
 }
 
 /// Reads `n` values of `kind` into `write(i, value)`.
-pub fn get_values(
+pub(crate) fn get_values(
     c: *mut c_void,
     vr: *const u32,
     n: usize,
@@ -244,7 +244,7 @@ pub fn get_values(
 }
 
 /// Sets `n` values of `kind` read by `read(i)`.
-pub fn set_values(
+pub(crate) fn set_values(
     c: *mut c_void,
     vr: *const u32,
     n: usize,
@@ -269,7 +269,7 @@ pub fn set_values(
 }
 
 /// Refuses a call on variables of a type the FMU has none of, unless it names none.
-pub fn no_variables(c: *mut c_void, nvr: usize, kind: &str) -> Status {
+pub(crate) fn no_variables(c: *mut c_void, nvr: usize, kind: &str) -> Status {
     guard(c, |c| {
         if nvr == 0 {
             OK
@@ -280,7 +280,7 @@ pub fn no_variables(c: *mut c_void, nvr: usize, kind: &str) -> Status {
 }
 
 /// Refuses an optional capability the model description does not declare.
-pub fn unsupported(c: *mut c_void, what: &str) -> Status {
+pub(crate) fn unsupported(c: *mut c_void, what: &str) -> Status {
     guard(c, |c| {
         c.refuse(&format!(
             "{what} is not supported by this FMU (see its modelDescription.xml)"
@@ -289,7 +289,7 @@ pub fn unsupported(c: *mut c_void, what: &str) -> Status {
 }
 
 /// Boxes a new instance for the tool (NULL with the reason logged when it cannot be built).
-pub fn instantiate(
+pub(crate) fn instantiate(
     built: Result<Instance, String>,
     logger: Logger,
     name: &str,
@@ -313,7 +313,7 @@ pub fn instantiate(
 ///
 /// # Safety
 /// `c` is NULL or an instance not yet freed.
-pub unsafe fn free(c: *mut c_void) {
+pub(crate) unsafe fn free(c: *mut c_void) {
     if !c.is_null() {
         // SAFETY: `c` came from `Box::into_raw` in `instantiate` and is freed once.
         drop(unsafe { Box::from_raw(c.cast::<Component>()) });
@@ -321,6 +321,6 @@ pub unsafe fn free(c: *mut c_void) {
 }
 
 /// Catches a panic of an entry point that returns no status (instantiation), as NULL.
-pub fn catch_null(body: impl FnOnce() -> *mut c_void) -> *mut c_void {
+pub(crate) fn catch_null(body: impl FnOnce() -> *mut c_void) -> *mut c_void {
     catch_unwind(AssertUnwindSafe(body)).unwrap_or(core::ptr::null_mut())
 }

@@ -466,6 +466,21 @@ unsupported_calls! {
     fmi3GetOutputDerivatives(
         _vr: *const u32, _nvr: usize, _orders: *const i32, _values: *mut f64, _n_values: usize
     );
+    // Model exchange's and scheduled execution's own calls: the interface types are not
+    // offered (their instantiation gives NULL), but tools resolve every symbol at load.
+    fmi3EnterContinuousTimeMode();
+    fmi3CompletedIntegratorStep(
+        _no_set_prior_state: Boolean, _enter_event_mode: *mut Boolean, _terminate: *mut Boolean
+    );
+    fmi3SetTime(_time: f64);
+    fmi3SetContinuousStates(_x: *const f64, _nx: usize);
+    fmi3GetContinuousStateDerivatives(_derivatives: *mut f64, _nx: usize);
+    fmi3GetEventIndicators(_indicators: *mut f64, _ni: usize);
+    fmi3GetContinuousStates(_x: *mut f64, _nx: usize);
+    fmi3GetNominalsOfContinuousStates(_nominals: *mut f64, _nx: usize);
+    fmi3GetNumberOfEventIndicators(_n: *mut usize);
+    fmi3GetNumberOfContinuousStates(_n: *mut usize);
+    fmi3ActivateModelPartition(_clock: u32, _activation_time: f64);
 }
 
 /// `fmi3DoStep`: runs the world from `current` (s) over `step` (s), a whole number of its

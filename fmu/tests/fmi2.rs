@@ -314,7 +314,7 @@ fn a_serialised_state_restores_in_a_second_instance_to_the_bit() {
             let t = f64::from(k) * 0.1;
             assert_eq!(set_real(c, THROTTLE, if t < 3.0 { 1.0 } else { 0.2 }), OK);
             assert_eq!(
-                set_real(c, STEERING_ANGLE, 0.1 * (t - 4.0).max(0.0).min(1.0)),
+                set_real(c, STEERING_ANGLE, 0.1 * (t - 4.0).clamp(0.0, 1.0)),
                 OK
             );
             assert_eq!(set_integer(c, GEAR, 1), OK);
