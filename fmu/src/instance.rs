@@ -9,6 +9,7 @@ use sim::world_file::{self, KeyPath, WorldDescription};
 use sim::{Simulation, VehicleId};
 use vehicle_model::IndicatorState;
 
+use crate::devices::{self, DeviceOutput};
 use crate::journal::{self, INPUTS, Journal, Serialised};
 use crate::model_description::guid;
 use crate::variables::{
@@ -104,6 +105,8 @@ pub struct Instance {
     description: WorldDescription,
     simulation: Simulation,
     car: VehicleId,
+    /// The outputs of the car's devices (value references from 2000).
+    device_outputs: Vec<DeviceOutput>,
     phase: Phase,
     /// Inputs by value reference (integers stored as f64 exactly).
     inputs: [f64; INPUTS],
@@ -128,6 +131,7 @@ impl Instance {
             .map_err(|e| format!("cannot read the world {}: {e}", world_path.display()))?;
         let description = parse(&world_path, &world_text, &[])?;
         let (simulation, car) = build(&description)?;
+        let device_outputs = device_outputs(&simulation, car)?;
         Ok(Instance {
             name: name.to_string(),
             version,
@@ -136,6 +140,7 @@ impl Instance {
             description,
             simulation,
             car,
+            device_outputs,
             phase: Phase::Instantiated,
             inputs: core::array::from_fn(|r| variables::input_start(r as u32)),
             applied: None,
@@ -243,6 +248,10 @@ impl Instance {
     /// # Errors
     /// An unknown reference, an output, a parameter after initialisation, a non-finite value.
     pub fn set(&mut self, reference: u32, kind: Kind, value: f64) -> Result<(), Refused> {
+        if let Some(o) = self.device_output(reference, kind) {
+            let name = o.name.clone();
+            return Err(self.refuse(format!("{name} is an output")));
+        }
         let Some(v) = variables::find(reference, kind) else {
             return Err(self.refuse(format!(
                 "no {kind:?} variable has value reference {reference}"
@@ -292,6 +301,12 @@ impl Instance {
     /// # Errors
     /// An unknown reference.
     pub fn get(&mut self, reference: u32, kind: Kind) -> Result<f64, Refused> {
+        if let Some(o) = self.device_output(reference, kind) {
+            return match self.simulation.devices(self.car) {
+                Ok(all) => Ok(devices::value(all, o)),
+                Err(e) => Err(self.refuse(e.to_string())),
+            };
+        }
         let Some(v) = variables::find(reference, kind) else {
             return Err(self.refuse(format!(
                 "no {kind:?} variable has value reference {reference}"
@@ -312,6 +327,16 @@ impl Instance {
             },
         };
         value.ok_or_else(|| self.refuse(format!("{} has no value", v.name)))
+    }
+
+    /// The device output of value reference `reference`, if it is one (they are all Real).
+    fn device_output(&self, reference: u32, kind: Kind) -> Option<&DeviceOutput> {
+        if kind != Kind::Real {
+            return None;
+        }
+        self.device_outputs
+            .iter()
+            .find(|o| o.reference == reference)
     }
 
     /// `GetFMUstate`: everything a later [`Instance::set_state`] needs to continue exactly as
@@ -577,13 +602,28 @@ pub(crate) fn check_one_car(description: &WorldDescription, name: &str) -> Resul
     ))
 }
 
-/// The simulation of `description` and the car the FMU drives: its only car.
-fn build(description: &WorldDescription) -> Result<(Simulation, VehicleId), Refused> {
+/// The simulation of `description` and the car the FMU drives: its only car, with its
+/// devices enabled ([`devices::enable`]).
+pub(crate) fn build(description: &WorldDescription) -> Result<(Simulation, VehicleId), Refused> {
     check_one_car(description, &description.source)?;
-    let (simulation, _) = Simulation::from_description(description).map_err(|e| e.to_string())?;
+    let (mut simulation, _) =
+        Simulation::from_description(description).map_err(|e| e.to_string())?;
     let car = simulation
         .car_ids()
         .next()
         .ok_or_else(|| "the world has no car".to_string())?;
+    let period_ms = simulation.world().config().basic_time_step_ms;
+    devices::enable(&mut simulation, car, period_ms)?;
     Ok((simulation, car))
+}
+
+/// The outputs of the devices of car `car`.
+pub(crate) fn device_outputs(
+    simulation: &Simulation,
+    car: VehicleId,
+) -> Result<Vec<DeviceOutput>, Refused> {
+    simulation
+        .devices(car)
+        .map(devices::outputs)
+        .map_err(|e| e.to_string())
 }

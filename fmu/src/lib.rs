@@ -13,7 +13,8 @@
 //! * [`journal`], the run as the inputs handed over and the steps run, which makes a state
 //!   serialisable;
 //! * [`variables`] lists the inputs (the driver's commands), outputs (what an ECU sees) and
-//!   parameters (world-file keys), one table for the description and the accessors;
+//!   parameters (world-file keys), one table for the description and the accessors, and
+//!   [`devices`] the outputs of the car's sensors, which depend on the world;
 //! * [`model_description`] writes `modelDescription.xml` for either version;
 //! * [`package`] writes the `.fmu` archive, for the `vehicle-fmu` command.
 //!
@@ -21,6 +22,7 @@
 //! positive steering turns right, as in Webots.
 
 pub mod component;
+pub mod devices;
 pub mod fmi2;
 pub mod fmi3;
 pub mod instance;

@@ -7,6 +7,7 @@
 
 use core::fmt::Write as _;
 
+use crate::devices::DeviceOutput;
 use crate::instance::Version;
 use crate::variables::{Causality, Kind, UNITS, VARIABLES, Variable};
 
@@ -24,6 +25,8 @@ pub struct Description {
     pub stop_time: Option<f64>,
     /// The start value of each parameter, in [`VARIABLES`] order (those of the world).
     pub parameters: Vec<(u32, f64)>,
+    /// The outputs of the car's devices, listed after [`VARIABLES`].
+    pub devices: Vec<DeviceOutput>,
 }
 
 /// The GUID of this build of the FMU: a hash of the crate version and the variable table,
@@ -197,36 +200,60 @@ pub fn write(d: &Description, version: Version) -> String {
             );
         }
     }
+    for o in &d.devices {
+        let unit = o
+            .unit
+            .map(|u| format!(r#" unit="{}""#, escape(u)))
+            .unwrap_or_default();
+        let attributes = format!(
+            r#"name="{}" valueReference="{}" causality="output" variability="continuous" description="{}""#,
+            escape(&o.name),
+            o.reference,
+            escape(&o.description)
+        );
+        if fmi3 {
+            let _ = writeln!(x, "    <Float64 {attributes}{unit}/>");
+        } else {
+            let _ = writeln!(
+                x,
+                "    <ScalarVariable {attributes}><Real{unit}/></ScalarVariable>"
+            );
+        }
+    }
     x.push_str("  </ModelVariables>\n");
+    // Every output as (1-based index in ModelVariables, value reference).
     let outputs = || {
         VARIABLES
             .iter()
             .enumerate()
             .filter(|(_, v)| v.causality == Causality::Output)
+            .map(|(i, v)| (i + 1, v.reference))
+            .chain(
+                d.devices
+                    .iter()
+                    .enumerate()
+                    .map(|(k, o)| (VARIABLES.len() + k + 1, o.reference)),
+            )
     };
     if fmi3 {
         // FMI 3.0 names the unknowns by value reference.
         x.push_str("  <ModelStructure>\n");
-        for (_, v) in outputs() {
-            let _ = writeln!(x, r#"    <Output valueReference="{}"/>"#, v.reference);
+        for (_, reference) in outputs() {
+            let _ = writeln!(x, r#"    <Output valueReference="{reference}"/>"#);
         }
-        for (_, v) in outputs() {
-            let _ = writeln!(
-                x,
-                r#"    <InitialUnknown valueReference="{}"/>"#,
-                v.reference
-            );
+        for (_, reference) in outputs() {
+            let _ = writeln!(x, r#"    <InitialUnknown valueReference="{reference}"/>"#);
         }
         x.push_str("  </ModelStructure>\n</fmiModelDescription>\n");
     } else {
         // FMI 2.0 by 1-based index in ModelVariables.
         x.push_str("  <ModelStructure>\n    <Outputs>\n");
-        for (i, _) in outputs() {
-            let _ = writeln!(x, r#"      <Unknown index="{}"/>"#, i + 1);
+        for (index, _) in outputs() {
+            let _ = writeln!(x, r#"      <Unknown index="{index}"/>"#);
         }
         x.push_str("    </Outputs>\n    <InitialUnknowns>\n");
-        for (i, _) in outputs() {
-            let _ = writeln!(x, r#"      <Unknown index="{}"/>"#, i + 1);
+        for (index, _) in outputs() {
+            let _ = writeln!(x, r#"      <Unknown index="{index}"/>"#);
         }
         x.push_str("    </InitialUnknowns>\n  </ModelStructure>\n</fmiModelDescription>\n");
     }
@@ -257,6 +284,7 @@ mod tests {
             step: 0.01,
             stop_time: Some(10.0),
             parameters: vec![(1000, 1500.0)],
+            devices: Vec::new(),
         };
         let outputs = VARIABLES
             .iter()

@@ -159,11 +159,15 @@ pub fn describe(world: &World) -> Result<(WorldDescription, Description), String
         .filter(|v| v.causality == Causality::Parameter)
         .filter_map(|v| parameter_of(&description, v.reference).map(|x| (v.reference, x)))
         .collect();
+    // The device outputs come from the built world, as the instance derives them.
+    let (simulation, car) = crate::instance::build(&description)?;
+    let devices = crate::instance::device_outputs(&simulation, car)?;
     let d = Description {
         model_name: world.name.clone(),
         step: description.config.dt(),
         stop_time: description.duration,
         parameters,
+        devices,
     };
     Ok((description, d))
 }
