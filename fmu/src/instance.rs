@@ -129,7 +129,7 @@ impl Instance {
         let world_path = resources.join(WORLD_FILE);
         let world_text = std::fs::read_to_string(&world_path)
             .map_err(|e| format!("cannot read the world {}: {e}", world_path.display()))?;
-        let description = parse(&world_path, &world_text, &[])?;
+        let description = parse(&world_path, &world_text)?;
         let (simulation, car) = build(&description)?;
         let device_outputs = device_outputs(&simulation, car)?;
         Ok(Instance {
@@ -521,12 +521,24 @@ impl Instance {
         &self,
         parameters: &[(u32, f64)],
     ) -> Result<(WorldDescription, Simulation, VehicleId), Refused> {
-        let mut numbers = Vec::with_capacity(parameters.len());
+        let mut settings = Vec::with_capacity(parameters.len());
         for &(reference, value) in parameters {
-            let name = variables::find(reference, Kind::Real).map_or("", |v| v.name);
-            numbers.push((KeyPath::parse(name).map_err(|e| e.to_string())?, value));
+            let mut name = variables::find(reference, Kind::Real)
+                .or_else(|| variables::find(reference, Kind::Integer))
+                .map_or("", |v| v.name);
+            // `tyre = "webots"` names the model without a table: the name replaces it there.
+            if reference == variables::TYRE_MODEL && tyre_is_a_name(&self.world_text) {
+                name = "vehicle.tyre";
+            }
+            let key = KeyPath::parse(name).map_err(|e| e.to_string())?;
+            settings.push((key, variables::setting(reference, value)?));
         }
-        let description = parse(&self.world_path, &self.world_text, &numbers)?;
+        let description = world_file::parse_with_settings(
+            &self.world_path.display().to_string(),
+            &self.world_text,
+            &settings,
+        )
+        .map_err(|e| e.to_string())?;
         let (simulation, car) = build(&description)?;
         Ok((description, simulation, car))
     }
@@ -579,10 +591,29 @@ impl Instance {
     }
 }
 
-/// The world of `text` at `path` with `numbers` set at their keys.
-fn parse(path: &Path, text: &str, numbers: &[(KeyPath, f64)]) -> Result<WorldDescription, Refused> {
-    world_file::parse_with_numbers(&path.display().to_string(), text, numbers)
-        .map_err(|e| e.to_string())
+/// True if the world's car names its tyre model by a string (`tyre = "webots"`) rather than a
+/// `[vehicle.tyre]` table.
+fn tyre_is_a_name(text: &str) -> bool {
+    use toml::de::{DeTable, DeValue};
+    let Ok(doc) = DeTable::parse(text) else {
+        return false;
+    };
+    let vehicle = doc.get_ref().get("vehicle").map(|v| v.get_ref());
+    let car = match vehicle {
+        Some(DeValue::Table(t)) => Some(t),
+        Some(DeValue::Array(cars)) => cars.first().and_then(|c| match c.get_ref() {
+            DeValue::Table(t) => Some(t),
+            _ => None,
+        }),
+        _ => None,
+    };
+    car.and_then(|t| t.get("tyre"))
+        .is_some_and(|tyre| matches!(tyre.get_ref(), DeValue::String(_)))
+}
+
+/// The world of `text` at `path`.
+fn parse(path: &Path, text: &str) -> Result<WorldDescription, Refused> {
+    world_file::parse_str(&path.display().to_string(), text).map_err(|e| e.to_string())
 }
 
 /// Refuses a world the FMU cannot drive: anything but exactly one car (`name` names the world

@@ -145,7 +145,16 @@ pub fn write(d: &Description, version: Version) -> String {
     }
     let _ = writeln!(x, r#" stepSize="{:?}"/>"#, d.step);
     x.push_str("  <ModelVariables>\n");
-    for v in &VARIABLES {
+    // A parameter the world has no value for (a magic-formula coefficient of a car on Webots'
+    // contact) is left out: FMI requires a parameter's start value.
+    let listed: Vec<&Variable> = VARIABLES
+        .iter()
+        .filter(|v| {
+            v.causality != Causality::Parameter
+                || d.parameters.iter().any(|(r, _)| *r == v.reference)
+        })
+        .collect();
+    for v in &listed {
         let mut attributes = format!(
             r#"name="{}" valueReference="{}" causality="{}" variability="{}" description="{}""#,
             escape(v.name),
@@ -223,7 +232,7 @@ pub fn write(d: &Description, version: Version) -> String {
     x.push_str("  </ModelVariables>\n");
     // Every output as (1-based index in ModelVariables, value reference).
     let outputs = || {
-        VARIABLES
+        listed
             .iter()
             .enumerate()
             .filter(|(_, v)| v.causality == Causality::Output)
@@ -232,7 +241,7 @@ pub fn write(d: &Description, version: Version) -> String {
                 d.devices
                     .iter()
                     .enumerate()
-                    .map(|(k, o)| (VARIABLES.len() + k + 1, o.reference)),
+                    .map(|(k, o)| (listed.len() + k + 1, o.reference)),
             )
     };
     if fmi3 {
@@ -290,10 +299,15 @@ mod tests {
             .iter()
             .filter(|v| v.causality == Causality::Output)
             .count();
+        // Only the parameter the world has a value for is listed.
+        let listed = VARIABLES
+            .iter()
+            .filter(|v| v.causality != Causality::Parameter || v.reference == 1000)
+            .count();
         let xml = write(&d, Version::Fmi2);
         assert!(xml.contains(r#"fmiVersion="2.0""#));
         assert!(xml.contains(r#"modelName="w &amp; &lt;x&gt;""#));
-        assert_eq!(xml.matches("<ScalarVariable ").count(), VARIABLES.len());
+        assert_eq!(xml.matches("<ScalarVariable ").count(), listed);
         assert!(xml.contains(r#"<Real unit="kg" start="1500.0"/>"#));
         assert!(xml.contains(r#"stopTime="10.0" stepSize="0.01""#));
         assert_eq!(xml.matches("<Unknown ").count(), 2 * outputs);
@@ -302,7 +316,7 @@ mod tests {
         assert!(xml.contains(&format!(r#"instantiationToken="{}""#, guid())));
         assert_eq!(
             xml.matches("<Float64 ").count() + xml.matches("<Int32 ").count(),
-            VARIABLES.len()
+            listed
         );
         assert!(xml.contains(r#"causality="independent""#));
         assert!(xml.contains(r#"unit="kg" start="1500.0"/>"#));

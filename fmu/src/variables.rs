@@ -3,9 +3,9 @@
 //! model description, `fmi2GetReal`/`fmi2SetReal` and their integer twins, so a variable
 //! cannot be described one way and served another.
 
-use sim::CarTelemetry;
-use sim::world_file::WorldDescription;
-use vehicle_model::Wheel;
+use sim::world_file::{Setting, WorldDescription};
+use sim::{CarTelemetry, TyreChoice};
+use vehicle_model::{Direction, TyreField, Wheel};
 
 /// The FMI type of a variable.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -117,7 +117,7 @@ pub const INDICATOR: u32 = 6;
 
 /// Every variable, in the order of `modelDescription.xml` (its `ModelVariables` indices are
 /// 1-based positions in this table).
-pub const VARIABLES: [Variable; 44] = [
+pub const VARIABLES: [Variable; 50] = [
     real("time", TIME, Independent, Some("s"), "Simulated time"),
     real(
         "steering_angle",
@@ -404,7 +404,81 @@ pub const VARIABLES: [Variable; 44] = [
         None,
         "Coulomb friction of the ground (world file [ground] friction)",
     ),
+    integer(
+        "vehicle.tyre.model",
+        TYRE_MODEL,
+        Parameter,
+        "Tyre model: 0 the slip-based Magic Formula tyre (\"magic-formula\"), 1 Webots' contact (\"webots\")",
+    ),
+    real(
+        "vehicle.tyre.longitudinal.peak_friction",
+        1007,
+        Parameter,
+        None,
+        "Peak of the longitudinal force over the load at the nominal load on a road of friction 1 (magic-formula tyre)",
+    ),
+    real(
+        "vehicle.tyre.lateral.peak_friction",
+        1008,
+        Parameter,
+        None,
+        "Peak of the lateral force over the load at the nominal load on a road of friction 1 (magic-formula tyre)",
+    ),
+    real(
+        "vehicle.tyre.longitudinal.stiffness",
+        1009,
+        Parameter,
+        None,
+        "Longitudinal slip stiffness in loads per unit slip ratio (magic-formula tyre)",
+    ),
+    real(
+        "vehicle.tyre.lateral.stiffness",
+        1010,
+        Parameter,
+        None,
+        "Cornering stiffness in loads per radian (magic-formula tyre)",
+    ),
+    real(
+        "vehicle.tyre.rolling_resistance",
+        1011,
+        Parameter,
+        None,
+        "Rolling-resistance coefficient: torque c Fz r (magic-formula tyre)",
+    ),
 ];
+
+/// Value reference of the tyre-model parameter.
+pub const TYRE_MODEL: u32 = 1006;
+
+/// The world-file value of parameter `reference` set to `value`: the number, or for the tyre
+/// model the name its integer stands for.
+///
+/// # Errors
+/// A tyre-model integer that names no model.
+pub fn setting(reference: u32, value: f64) -> Result<Setting, String> {
+    if reference != TYRE_MODEL {
+        return Ok(Setting::Number(value));
+    }
+    match value {
+        0.0 => Ok(Setting::Text("magic-formula".to_string())),
+        1.0 => Ok(Setting::Text("webots".to_string())),
+        _ => Err(format!(
+            "vehicle.tyre.model = {value}: 0 (magic-formula) or 1 (webots)"
+        )),
+    }
+}
+
+/// The tyre coefficient of parameter `reference`, if it is one.
+fn tyre_field(reference: u32) -> Option<TyreField> {
+    Some(match reference {
+        1007 => TyreField::PeakFriction(Direction::Longitudinal),
+        1008 => TyreField::PeakFriction(Direction::Lateral),
+        1009 => TyreField::Stiffness(Direction::Longitudinal),
+        1010 => TyreField::Stiffness(Direction::Lateral),
+        1011 => TyreField::RollingResistance,
+        _ => return None,
+    })
+}
 
 /// The variable of value reference `reference` and type `kind`, if there is one.
 pub fn find(reference: u32, kind: Kind) -> Option<&'static Variable> {
@@ -422,10 +496,25 @@ pub fn input_start(reference: u32) -> f64 {
 }
 
 /// The value of parameter `reference` in the world of `description` (its first car's),
-/// `None` for an unknown reference or a world without a car.
+/// `None` for an unknown reference, a world without a car, or a magic-formula coefficient of
+/// a car on Webots' contact (the model description then leaves the parameter out).
 pub fn parameter_of(description: &WorldDescription, reference: u32) -> Option<f64> {
     let car = description.car()?;
     let p = &car.params;
+    if let Some(field) = tyre_field(reference) {
+        return match &car.tyre {
+            // The coefficients that do not depend on the tyre's radius or load: the class's
+            // default unless the world sets them.
+            TyreChoice::MagicFormula { class, overrides } => Some(
+                overrides
+                    .iter()
+                    .rev()
+                    .find(|(f, _)| *f == field)
+                    .map_or_else(|| class.params::<f64>(1.0, 1.0).get(field), |(_, v)| *v),
+            ),
+            TyreChoice::Webots(_) => None,
+        };
+    }
     Some(match reference {
         1000 => p.body.mass,
         1001 => p.brake_coefficient,
@@ -433,6 +522,10 @@ pub fn parameter_of(description: &WorldDescription, reference: u32) -> Option<f6
         1003 => p.engine.max_power,
         1004 => p.time_0_to_100,
         1005 => description.config.ground_friction,
+        TYRE_MODEL => match car.tyre {
+            TyreChoice::MagicFormula { .. } => 0.0,
+            TyreChoice::Webots(_) => 1.0,
+        },
         _ => return None,
     })
 }
@@ -501,7 +594,7 @@ mod tests {
         let t = sim.telemetry(id).unwrap();
         for v in &VARIABLES {
             match v.causality {
-                Parameter => assert!(parameter_of(&world, v.reference).is_some()),
+                Parameter => assert!(parameter_of(&world, v.reference).is_some(), "{}", v.name),
                 Output => assert!(output_of(&t, v.reference).is_some(), "{}", v.name),
                 Input | Independent => {}
             }

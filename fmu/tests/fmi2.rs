@@ -372,3 +372,57 @@ fn a_serialised_state_restores_in_a_second_instance_to_the_bit() {
         fmi2FreeInstance(b);
     }
 }
+
+#[test]
+fn tyre_parameters_reach_the_world() {
+    // The longitudinal peak friction bounds the drive force: 0.2 of the car's weight at most
+    // (less on the driven axle alone), so at most 0.2 · 9.81 · 2 = 3.92 m/s after 2 s.
+    let slippery = instantiate("tyre-mu", WORLD);
+    assert_eq!(
+        get_real(slippery, 1007),
+        1.0,
+        "the passenger-car class's default"
+    );
+    assert_eq!(fmi2EnterInitializationMode(slippery), OK);
+    assert_eq!(set_real(slippery, 1007, 0.2), OK);
+    assert_eq!(fmi2ExitInitializationMode(slippery), OK);
+    assert_eq!(get_real(slippery, 1007), 0.2);
+    // Webots' contact instead of the slip tyre, set on a world that names the tyre by a
+    // string: the parameter replaces it.
+    let webots = instantiate(
+        "tyre-webots",
+        "basicTimeStep = 10\n[vehicle]\nmodel = \"TeslaModel3\"\ntyre = \"magic-formula\"\n",
+    );
+    let mut model = 0;
+    // SAFETY: one reference, one value.
+    assert_eq!(unsafe { fmi2GetInteger(webots, &1006, 1, &mut model) }, OK);
+    assert_eq!(model, 0);
+    assert_eq!(fmi2EnterInitializationMode(webots), OK);
+    assert_eq!(set_integer(webots, 1006, 1), OK);
+    assert_eq!(fmi2ExitInitializationMode(webots), OK);
+    // SAFETY: one reference, one value.
+    assert_eq!(unsafe { fmi2GetInteger(webots, &1006, 1, &mut model) }, OK);
+    assert_eq!(model, 1);
+    for c in [slippery, webots] {
+        assert_eq!(set_real(c, THROTTLE, 1.0), OK);
+        assert_eq!(set_integer(c, GEAR, 1), OK);
+        assert_eq!(fmi2DoStep(c, 0.0, 2.0, 1), OK);
+    }
+    assert!(
+        get_real(slippery, 106) < 3.93,
+        "{}",
+        get_real(slippery, 106)
+    );
+    assert!(get_real(webots, 106) > 3.93, "{}", get_real(webots, 106));
+    // A tyre model that is neither is refused at the end of initialisation.
+    let bad = instantiate("tyre-bad", WORLD);
+    assert_eq!(fmi2EnterInitializationMode(bad), OK);
+    assert_eq!(set_integer(bad, 1006, 7), OK);
+    assert_eq!(fmi2ExitInitializationMode(bad), ERROR);
+    // SAFETY: each freed once.
+    unsafe {
+        fmi2FreeInstance(slippery);
+        fmi2FreeInstance(webots);
+        fmi2FreeInstance(bad);
+    }
+}
