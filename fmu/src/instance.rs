@@ -5,8 +5,7 @@
 
 use std::path::{Path, PathBuf};
 
-use sim::world_file::{self, KeyPath, WorldDescription};
-use sim::{Simulation, VehicleId};
+use sim::traffic::{TrafficNote, TrafficPosition};
 use vehicle_model::IndicatorState;
 
 use crate::devices::{self, DeviceOutput};
@@ -16,6 +15,7 @@ use crate::variables::{
     self, BRAKE_INTENSITY, CONTROL_MODE, CRUISING_SPEED, Causality, GEAR, INDICATOR, Kind,
     STEERING_ANGLE, THROTTLE,
 };
+use crate::world::{self, Built};
 
 /// The file of the world in the FMU's `resources` directory.
 pub const WORLD_FILE: &str = "world.toml";
@@ -83,6 +83,7 @@ impl Phase {
 #[derive(Clone)]
 pub struct State {
     snapshot: Option<sim::Snapshot>,
+    traffic: TrafficPosition,
     world: u64,
     phase: Phase,
     inputs: [f64; INPUTS],
@@ -101,10 +102,8 @@ pub struct Instance {
     world_path: PathBuf,
     /// Its text.
     world_text: String,
-    /// Its description with the parameters as set.
-    description: WorldDescription,
-    simulation: Simulation,
-    car: VehicleId,
+    /// The world as built with the parameters set.
+    world: Built,
     /// The outputs of the car's devices (value references from 2000).
     device_outputs: Vec<DeviceOutput>,
     phase: Phase,
@@ -129,17 +128,14 @@ impl Instance {
         let world_path = resources.join(WORLD_FILE);
         let world_text = std::fs::read_to_string(&world_path)
             .map_err(|e| format!("cannot read the world {}: {e}", world_path.display()))?;
-        let description = parse(&world_path, &world_text)?;
-        let (simulation, car) = build(&description)?;
-        let device_outputs = device_outputs(&simulation, car)?;
+        let built = world::build(world::parse(&world_path, &world_text)?)?;
+        let device_outputs = device_outputs(&built)?;
         Ok(Instance {
             name: name.to_string(),
             version,
             world_path,
             world_text,
-            description,
-            simulation,
-            car,
+            world: built,
             device_outputs,
             phase: Phase::Instantiated,
             inputs: core::array::from_fn(|r| variables::input_start(r as u32)),
@@ -191,11 +187,7 @@ impl Instance {
         )?;
         if !self.parameters.is_empty() {
             match self.rebuild(&self.parameters) {
-                Ok((description, simulation, car)) => {
-                    self.description = description;
-                    self.simulation = simulation;
-                    self.car = car;
-                }
+                Ok(built) => self.world = built,
                 Err(e) => return Err(self.refuse(e)),
             }
         }
@@ -302,7 +294,7 @@ impl Instance {
     /// An unknown reference.
     pub fn get(&mut self, reference: u32, kind: Kind) -> Result<f64, Refused> {
         if let Some(o) = self.device_output(reference, kind) {
-            return match self.simulation.devices(self.car) {
+            return match self.world.simulation.devices(self.world.car) {
                 Ok(all) => Ok(devices::value(all, o)),
                 Err(e) => Err(self.refuse(e.to_string())),
             };
@@ -320,8 +312,10 @@ impl Instance {
                 .iter()
                 .find(|(r, _)| *r == reference)
                 .map(|(_, value)| *value)
-                .or_else(|| variables::parameter_of(&self.description, reference)),
-            Causality::Output => match self.simulation.telemetry(self.car) {
+                .or_else(|| {
+                    variables::parameter_of(&self.world.description, self.world.driven, reference)
+                }),
+            Causality::Output => match self.world.simulation.telemetry(self.world.car) {
                 Ok(t) => variables::output_of(&t, reference),
                 Err(e) => return Err(self.refuse(e.to_string())),
             },
@@ -343,7 +337,8 @@ impl Instance {
     /// this instance would from here.
     pub fn state(&self) -> State {
         State {
-            snapshot: Some(self.simulation.snapshot()),
+            snapshot: Some(self.world.simulation.snapshot()),
+            traffic: self.world.traffic.position(),
             world: journal::fingerprint(self.world_text.as_bytes()),
             phase: self.phase,
             inputs: self.inputs,
@@ -371,8 +366,10 @@ impl Instance {
         let restored = state
             .snapshot
             .as_ref()
-            .is_some_and(|snap| self.simulation.restore(snap).is_ok());
-        if !restored && let Err(e) = self.replay(state) {
+            .is_some_and(|snap| self.world.simulation.restore(snap).is_ok());
+        if restored {
+            self.world.traffic.set_position(&state.traffic);
+        } else if let Err(e) = self.replay(state) {
             return Err(self.refuse(format!("{function}: {e}")));
         }
         self.phase = state.phase;
@@ -392,10 +389,7 @@ impl Instance {
         } else {
             &[]
         };
-        let (description, simulation, car) = self.rebuild(parameters)?;
-        self.description = description;
-        self.simulation = simulation;
-        self.car = car;
+        self.world = self.rebuild(parameters)?;
         self.applied = None;
         for stretch in state.journal.stretches() {
             self.inputs = stretch.inputs;
@@ -454,6 +448,8 @@ impl Instance {
         }
         Ok(State {
             snapshot: None,
+            // The replay brings the traffic to its place.
+            traffic: self.world.traffic.position(),
             world: s.world,
             phase,
             inputs: s.inputs,
@@ -465,7 +461,7 @@ impl Instance {
 
     /// The simulated time (s).
     pub fn time(&self) -> f64 {
-        self.simulation.world().time()
+        self.world.simulation.world().time()
     }
 
     /// `DoStep` from `at` (s) over `step` (s): a whole number of `basicTimeStep`s, the
@@ -477,7 +473,7 @@ impl Instance {
     /// is then terminated).
     pub fn do_step(&mut self, at: f64, step: f64) -> Result<(), Refused> {
         self.expect(&[Phase::Stepping], &self.version.name("DoStep"))?;
-        let dt = self.simulation.world().dt();
+        let dt = self.world.simulation.world().dt();
         let now = self.time();
         // The tool adds its steps in floating point; 1 µs is far below any basicTimeStep.
         if !at.is_finite() || (at - now).abs() > 1e-6 {
@@ -506,10 +502,21 @@ impl Instance {
         })
     }
 
-    /// Runs `steps` basic steps.
+    /// Runs `steps` basic steps, the other cars' programmes issuing their commands before
+    /// each (their warnings to the logger).
     fn run(&mut self, steps: u64) -> Result<(), Refused> {
         for _ in 0..steps {
-            self.simulation
+            for note in self.world.traffic.issue_due(&mut self.world.simulation) {
+                let text = match note {
+                    TrafficNote::Driver { warning, .. } => format!("another car: {warning}"),
+                    TrafficNote::FollowLane { error, .. } => {
+                        format!("another car: follow_lane: {error}")
+                    }
+                };
+                self.messages.push((Severity::Warning, text));
+            }
+            self.world
+                .simulation
                 .step()
                 .map_err(|e| format!("the simulation failed: {e}"))?;
         }
@@ -517,30 +524,13 @@ impl Instance {
     }
 
     /// The world of this instance's file with `parameters` at their keys, built.
-    fn rebuild(
-        &self,
-        parameters: &[(u32, f64)],
-    ) -> Result<(WorldDescription, Simulation, VehicleId), Refused> {
-        let mut settings = Vec::with_capacity(parameters.len());
-        for &(reference, value) in parameters {
-            let mut name = variables::find(reference, Kind::Real)
-                .or_else(|| variables::find(reference, Kind::Integer))
-                .map_or("", |v| v.name);
-            // `tyre = "webots"` names the model without a table: the name replaces it there.
-            if reference == variables::TYRE_MODEL && tyre_is_a_name(&self.world_text) {
-                name = "vehicle.tyre";
-            }
-            let key = KeyPath::parse(name).map_err(|e| e.to_string())?;
-            settings.push((key, variables::setting(reference, value)?));
-        }
-        let description = world_file::parse_with_settings(
-            &self.world_path.display().to_string(),
+    fn rebuild(&self, parameters: &[(u32, f64)]) -> Result<Built, Refused> {
+        world::build(world::with_parameters(
+            &self.world_path,
             &self.world_text,
-            &settings,
-        )
-        .map_err(|e| e.to_string())?;
-        let (simulation, car) = build(&description)?;
-        Ok((description, simulation, car))
+            parameters,
+            self.world.driven,
+        )?)
     }
 
     /// Hands the inputs that changed since the last step to the driver (all of them before
@@ -552,7 +542,7 @@ impl Instance {
         let previous = self.applied.unwrap_or([f64::NAN; INPUTS]);
         let changed =
             |r: u32| first || previous[r as usize].to_bits() != inputs[r as usize].to_bits();
-        let Ok(driver) = self.simulation.driver_mut(self.car) else {
+        let Ok(driver) = self.world.simulation.driver_mut(self.world.car) else {
             return;
         };
         let mut warnings = Vec::new();
@@ -591,70 +581,11 @@ impl Instance {
     }
 }
 
-/// True if the world's car names its tyre model by a string (`tyre = "webots"`) rather than a
-/// `[vehicle.tyre]` table.
-fn tyre_is_a_name(text: &str) -> bool {
-    use toml::de::{DeTable, DeValue};
-    let Ok(doc) = DeTable::parse(text) else {
-        return false;
-    };
-    let vehicle = doc.get_ref().get("vehicle").map(|v| v.get_ref());
-    let car = match vehicle {
-        Some(DeValue::Table(t)) => Some(t),
-        Some(DeValue::Array(cars)) => cars.first().and_then(|c| match c.get_ref() {
-            DeValue::Table(t) => Some(t),
-            _ => None,
-        }),
-        _ => None,
-    };
-    car.and_then(|t| t.get("tyre"))
-        .is_some_and(|tyre| matches!(tyre.get_ref(), DeValue::String(_)))
-}
-
-/// The world of `text` at `path`.
-fn parse(path: &Path, text: &str) -> Result<WorldDescription, Refused> {
-    world_file::parse_str(&path.display().to_string(), text).map_err(|e| e.to_string())
-}
-
-/// Refuses a world the FMU cannot drive: anything but exactly one car (`name` names the world
-/// in the message). The packager checks it too, so an FMU is never built for such a world.
-pub(crate) fn check_one_car(description: &WorldDescription, name: &str) -> Result<(), Refused> {
-    if description.cars.len() == 1 && description.robot.is_none() {
-        return Ok(());
-    }
-    Err(format!(
-        "the world {name} has {} cars{}: the FMU drives a world with exactly one car",
-        description.cars.len(),
-        if description.robot.is_some() {
-            " and a robot"
-        } else {
-            ""
-        }
-    ))
-}
-
-/// The simulation of `description` and the car the FMU drives: its only car, with its
-/// devices enabled ([`devices::enable`]).
-pub(crate) fn build(description: &WorldDescription) -> Result<(Simulation, VehicleId), Refused> {
-    check_one_car(description, &description.source)?;
-    let (mut simulation, _) =
-        Simulation::from_description(description).map_err(|e| e.to_string())?;
-    let car = simulation
-        .car_ids()
-        .next()
-        .ok_or_else(|| "the world has no car".to_string())?;
-    let period_ms = simulation.world().config().basic_time_step_ms;
-    devices::enable(&mut simulation, car, period_ms)?;
-    Ok((simulation, car))
-}
-
-/// The outputs of the devices of car `car`.
-pub(crate) fn device_outputs(
-    simulation: &Simulation,
-    car: VehicleId,
-) -> Result<Vec<DeviceOutput>, Refused> {
-    simulation
-        .devices(car)
+/// The outputs of the devices of the driven car.
+pub(crate) fn device_outputs(world: &Built) -> Result<Vec<DeviceOutput>, Refused> {
+    world
+        .simulation
+        .devices(world.car)
         .map(devices::outputs)
         .map_err(|e| e.to_string())
 }

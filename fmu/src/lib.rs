@@ -9,7 +9,8 @@
 //!   versions share;
 //! * [`instance::Instance`], one world, the co-simulation state machine, inputs and
 //!   parameters, in safe Rust over the `sim` crate (the same engine as `vehicle-sim`, the C
-//!   API and Python);
+//!   API and Python), and [`world`], how it reads and builds its world (the driven car and
+//!   the traffic);
 //! * [`journal`], the run as the inputs handed over and the steps run, which makes a state
 //!   serialisable;
 //! * [`variables`] lists the inputs (the driver's commands), outputs (what an ECU sees) and
@@ -31,3 +32,4 @@ pub mod model_description;
 pub mod package;
 pub mod states;
 pub mod variables;
+pub mod world;

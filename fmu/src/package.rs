@@ -145,7 +145,8 @@ impl World {
 /// The model description of `world`, read as the FMU will read it.
 ///
 /// # Errors
-/// What is wrong with the world (as its reader says), or a world that is not one car.
+/// What is wrong with the world (as its reader says), or a world the FMU cannot drive (a
+/// robot, or several cars of which not exactly one has no programme).
 pub fn describe(world: &World) -> Result<(WorldDescription, Description), String> {
     let file = world
         .directory
@@ -153,15 +154,16 @@ pub fn describe(world: &World) -> Result<(WorldDescription, Description), String
         .map_or_else(|| PathBuf::from(WORLD_FILE), |d| d.join(WORLD_FILE));
     let description = world_file::parse_str(&file.display().to_string(), &world.text)
         .map_err(|e| e.to_string())?;
-    crate::instance::check_one_car(&description, &world.name)?;
+    // The driven car and its device outputs come from the built world, as the instance
+    // derives them.
+    let built = crate::world::build(description.clone())?;
+    let devices = crate::instance::device_outputs(&built)?;
+    let driven = built.driven;
     let parameters = VARIABLES
         .iter()
         .filter(|v| v.causality == Causality::Parameter)
-        .filter_map(|v| parameter_of(&description, v.reference).map(|x| (v.reference, x)))
+        .filter_map(|v| parameter_of(&description, driven, v.reference).map(|x| (v.reference, x)))
         .collect();
-    // The device outputs come from the built world, as the instance derives them.
-    let (simulation, car) = crate::instance::build(&description)?;
-    let devices = crate::instance::device_outputs(&simulation, car)?;
     let d = Description {
         model_name: world.name.clone(),
         step: description.config.dt(),

@@ -495,11 +495,11 @@ pub fn input_start(reference: u32) -> f64 {
     }
 }
 
-/// The value of parameter `reference` in the world of `description` (its first car's),
-/// `None` for an unknown reference, a world without a car, or a magic-formula coefficient of
-/// a car on Webots' contact (the model description then leaves the parameter out).
-pub fn parameter_of(description: &WorldDescription, reference: u32) -> Option<f64> {
-    let car = description.car()?;
+/// The value of parameter `reference` for car `driven` of the world of `description`, `None`
+/// for an unknown reference or car, or a magic-formula coefficient of a car on Webots'
+/// contact (the model description then leaves the parameter out).
+pub fn parameter_of(description: &WorldDescription, driven: usize, reference: u32) -> Option<f64> {
+    let car = description.cars.get(driven)?;
     let p = &car.params;
     if let Some(field) = tyre_field(reference) {
         return match &car.tyre {
@@ -594,7 +594,7 @@ mod tests {
         let t = sim.telemetry(id).unwrap();
         for v in &VARIABLES {
             match v.causality {
-                Parameter => assert!(parameter_of(&world, v.reference).is_some(), "{}", v.name),
+                Parameter => assert!(parameter_of(&world, 0, v.reference).is_some(), "{}", v.name),
                 Output => assert!(output_of(&t, v.reference).is_some(), "{}", v.name),
                 Input | Independent => {}
             }
