@@ -117,6 +117,9 @@ pub struct Instance {
     parameters: Vec<(u32, f64)>,
     /// Messages for the logger, taken by [`Instance::take_messages`].
     messages: Vec<(Severity, String)>,
+    /// The driven car's telemetry since the last step, measured at the first output read:
+    /// a tool reads a dozen outputs per step, and each would measure the car again.
+    telemetry: Option<sim::CarTelemetry>,
 }
 
 impl Instance {
@@ -143,6 +146,7 @@ impl Instance {
             journal: Journal::default(),
             parameters: Vec::new(),
             messages: Vec::new(),
+            telemetry: None,
         })
     }
 
@@ -186,6 +190,7 @@ impl Instance {
             &self.version.name("ExitInitializationMode"),
         )?;
         if !self.parameters.is_empty() {
+            self.telemetry = None;
             match self.rebuild(&self.parameters) {
                 Ok(built) => self.world = built,
                 Err(e) => return Err(self.refuse(e)),
@@ -315,10 +320,17 @@ impl Instance {
                 .or_else(|| {
                     variables::parameter_of(&self.world.description, self.world.driven, reference)
                 }),
-            Causality::Output => match self.world.simulation.telemetry(self.world.car) {
-                Ok(t) => variables::output_of(&t, reference),
-                Err(e) => return Err(self.refuse(e.to_string())),
-            },
+            Causality::Output => {
+                if self.telemetry.is_none() {
+                    match self.world.simulation.telemetry(self.world.car) {
+                        Ok(t) => self.telemetry = Some(t),
+                        Err(e) => return Err(self.refuse(e.to_string())),
+                    }
+                }
+                self.telemetry
+                    .as_ref()
+                    .and_then(|t| variables::output_of(t, reference))
+            }
         };
         value.ok_or_else(|| self.refuse(format!("{} has no value", v.name)))
     }
@@ -363,6 +375,7 @@ impl Instance {
                 self.world_path.display()
             )));
         }
+        self.telemetry = None;
         let restored = state
             .snapshot
             .as_ref()
@@ -505,6 +518,7 @@ impl Instance {
     /// Runs `steps` basic steps, the other cars' programmes issuing their commands before
     /// each (their warnings to the logger).
     fn run(&mut self, steps: u64) -> Result<(), Refused> {
+        self.telemetry = None;
         for _ in 0..steps {
             for note in self.world.traffic.issue_due(&mut self.world.simulation) {
                 let text = match note {
