@@ -22,6 +22,7 @@ use std::process::{Command, ExitCode};
 use ackermann::{DriveType, Geometry, PerWheel, WheelAngles};
 use benches::control::{ControlLoop, LoopMode};
 use benches::fixtures;
+use benches::fmu::{FmuLoop, NativeLoop};
 use benches::peer::{PeerParams, RayCastCar};
 use benches::scenes::{CarScene, RobotScene, ring_road_world};
 use powertrain::{Engine, EngineType, LimitedSlip, split_torque};
@@ -133,6 +134,18 @@ const CASES: &[Case] = &[
         function: "cg_car_step",
         steps: 100,
         run: run_joints_car,
+    },
+    Case {
+        name: "fmu_native_step",
+        function: "cg_fmu_native_step",
+        steps: 100,
+        run: run_fmu_native,
+    },
+    Case {
+        name: "fmu_do_step",
+        function: "cg_fmu_do_step",
+        steps: 100,
+        run: run_fmu,
     },
     Case {
         name: "sim_differential_wheels_physics",
@@ -409,6 +422,39 @@ fn run_joints_car(steps: u64) {
 }
 
 #[inline(never)]
+fn cg_fmu_native_step(l: &mut NativeLoop) {
+    l.step().unwrap();
+}
+
+/// A controller's 10 ms step on the TeslaModel3's default world (`benches::fmu`): compare
+/// with `fmu_do_step`.
+fn run_fmu_native(steps: u64) {
+    let mut l = NativeLoop::new().unwrap();
+    for _ in 0..200 {
+        l.step().unwrap();
+    }
+    for _ in 0..steps {
+        cg_fmu_native_step(&mut l);
+    }
+}
+
+#[inline(never)]
+fn cg_fmu_do_step(l: &mut FmuLoop) {
+    l.step().unwrap();
+}
+
+/// The same step through the FMU's entry points.
+fn run_fmu(steps: u64) {
+    let mut l = FmuLoop::new().unwrap();
+    for _ in 0..200 {
+        l.step().unwrap();
+    }
+    for _ in 0..steps {
+        cg_fmu_do_step(&mut l);
+    }
+}
+
+#[inline(never)]
 fn cg_robot_step(scene: &mut RobotScene) {
     scene.step().unwrap();
 }
@@ -529,6 +575,12 @@ fn bench_all() -> ExitCode {
                 );
             }
         }
+    }
+    if let (Some(fmu), Some(native)) = (ir("fmu_do_step"), ir("fmu_native_step")) {
+        println!(
+            "  fmu_do_step / fmu_native_step = {:.3}x (target <= 1.2x)",
+            fmu / native
+        );
     }
     if failed {
         ExitCode::FAILURE

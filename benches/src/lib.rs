@@ -5,7 +5,8 @@
 //! The benchmarks themselves are in `benches/`: `kernels` (Ackermann angles, engine torque,
 //! torque split), `simulation` (physics steps of the `sim` world beside the peer),
 //! `callgrind` (instruction counts under valgrind), `replay` (what `replay.glb` adds to a
-//! run) and `sweep` (a sweep's cases per second on 1 and 2 threads). See `README.md` for the commands and the
+//! run), `sweep` (a sweep's cases per second on 1 and 2 threads) and `fmu` (an FMU step
+//! against the native one). See `README.md` for the commands and the
 //! latest numbers.
 //!
 //! ```
@@ -20,6 +21,7 @@
 
 pub mod control;
 pub mod fixtures;
+pub mod fmu;
 pub mod peer;
 pub mod report;
 pub mod scenes;

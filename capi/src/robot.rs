@@ -6,8 +6,7 @@ use std::ffi::c_int;
 use std::path::PathBuf;
 
 use sim::keyboard::Keyboard;
-use sim::lane_following::FollowCommand;
-use sim::programme::Programme;
+use sim::traffic::{Traffic, TrafficNote, driven_car};
 use sim::world_file::{self, WorldDescription};
 use sim::{RobotId, SimError, Simulation, VehicleId};
 
@@ -75,17 +74,7 @@ pub(crate) struct Robot {
     /// The images of `wb_display_image_*`, by handle.
     pub(crate) images: Images,
     /// The world's other cars, each running its programme.
-    others: Vec<Programmed>,
-}
-
-/// A car the controller does not drive: its programme and the next step due.
-struct Programmed {
-    id: VehicleId,
-    programme: Programme,
-    next: usize,
-    /// Its lane follower's commands (`follow_lane` …) and the next one due.
-    lanes: Programme<FollowCommand>,
-    lanes_next: usize,
+    others: Traffic,
 }
 
 impl Robot {
@@ -121,33 +110,11 @@ impl Robot {
     /// others run theirs); records it if `outputs` names a directory.
     fn build(description: &WorldDescription, outputs: Option<PathBuf>) -> Result<Robot, String> {
         let cars = &description.cars;
-        let driven = match (cars.len(), description.robot.is_some()) {
-            (1, false) | (0, true) => 0,
-            (n, false) if n > 1 => {
-                let free: Vec<usize> = (0..n)
-                    .filter(|&i| cars[i].programme.is_empty() && cars[i].lanes.is_empty())
-                    .collect();
-                match free[..] {
-                    [one] => one,
-                    _ => {
-                        return Err(format!(
-                            "cannot drive the world {}: of its {n} cars {} have no programme, \
-                             and a controller drives the one car without a programme (the \
-                             others run theirs)",
-                            description.source,
-                            free.len()
-                        ));
-                    }
-                }
-            }
-            _ => {
-                return Err(format!(
-                    "cannot drive the world {}: it holds {}, and a controller drives exactly \
-                     one car or robot",
-                    description.source,
-                    description.vehicles_label()
-                ));
-            }
+        // A robot alone is driven; otherwise the car the traffic rule leaves free.
+        let driven = if cars.is_empty() && description.robot.is_some() {
+            0
+        } else {
+            driven_car(description)?
         };
         let (mut simulation, reports) = Simulation::from_description(description)
             .map_err(|e| format!("cannot build the world {}: {e}", description.source))?;
@@ -175,19 +142,7 @@ impl Robot {
             );
         }
         let ids: Vec<VehicleId> = simulation.car_ids().collect();
-        let others = ids
-            .iter()
-            .zip(cars)
-            .enumerate()
-            .filter(|&(i, _)| i != driven)
-            .map(|(_, (&id, car))| Programmed {
-                id,
-                programme: car.programme.clone(),
-                next: 0,
-                lanes: car.lanes.clone(),
-                lanes_next: 0,
-            })
-            .collect();
+        let others = Traffic::new(description, &ids, driven);
         let body = match (ids.get(driven).copied(), simulation.robot_ids().next()) {
             (Some(id), _) => Body::Car {
                 id,
@@ -232,35 +187,17 @@ impl Robot {
 
     /// Puts the other cars' programmes back to their start, for a simulation reset to time 0.
     pub(crate) fn rewind_programmes(&mut self) {
-        for other in &mut self.others {
-            other.next = 0;
-            other.lanes_next = 0;
-        }
+        self.others.rewind();
     }
 
-    /// Gives the other cars' drivers the commands of their programmes due now.
+    /// Gives the other cars' drivers the commands of their programmes due now; the driver
+    /// library's warnings as a controller's own, a refused `follow_lane` as a warning.
     fn run_programmes(&mut self) {
-        let t = self.simulation.world().time();
-        for other in &mut self.others {
-            let mut cursor = other.programme.cursor_at(other.next);
-            if let Ok(driver) = self.simulation.driver_mut(other.id) {
-                for (_, warning) in cursor.apply_due(t, driver) {
-                    crate::message::warning(&warning);
-                }
-            }
-            other.next = cursor.position();
-            let mut lanes = other.lanes.cursor_at(other.lanes_next);
-            let due: Vec<FollowCommand> = lanes.due(t).map(|(_, c)| *c).collect();
-            other.lanes_next = lanes.position();
-            for command in due {
-                let applied = match command {
-                    FollowCommand::Follow(request) => {
-                        self.simulation.follow_lane(other.id, request)
-                    }
-                    FollowCommand::Stop => self.simulation.stop_following_lane(other.id),
-                };
-                if let Err(e) = applied {
-                    eprintln!("Warning: follow_lane: {e}");
+        for note in self.others.issue_due(&mut self.simulation) {
+            match note {
+                TrafficNote::Driver { warning, .. } => crate::message::warning(&warning),
+                TrafficNote::FollowLane { error, .. } => {
+                    eprintln!("Warning: follow_lane: {error}");
                 }
             }
         }

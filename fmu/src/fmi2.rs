@@ -1,177 +1,37 @@
 //! The FMI 2.0 co-simulation entry points (`fmi2Functions.h` of the FMI 2.0.3 standard),
 //! `extern "C"` over [`Instance`].
 //!
-//! Every entry point runs behind `guard`: a Rust panic never unwinds into the tool (it
-//! becomes `fmi2Fatal` with a logged message), and a NULL or dangling component is refused
-//! without touching memory where the pointer can be checked. The instance's messages go to the
-//! tool's logger with the status of the call, as its format string with every `%` doubled:
-//! the logger is printf-like, and tools that cannot read C varargs (FMPy's ctypes logger)
-//! show the format string itself, so the text must be the format, made safe.
+//! Every entry point runs behind [`guard`]: a Rust panic never unwinds into the tool (it
+//! becomes `fmi2Fatal` with a logged message), and a NULL component is refused without
+//! touching memory. The instance's messages go to the tool's logger with the status of the
+//! call ([`crate::component::Logger`] says how).
 
 // The C ABI of the standard: raw pointers from the tool, variadic logger calls.
 #![allow(unsafe_code)]
 
 use core::ffi::{c_char, c_int, c_void};
-use std::ffi::{CStr, CString};
-use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::PathBuf;
 
-use crate::instance::{Instance, LOG_CATEGORIES, Phase, Severity, State};
+use crate::component::{
+    DISCARD, ERROR, Fmi2Logger, Logger, OK, Status, catch_null, get_values, guard, instantiate,
+    no_variables, set_values, text, unsupported,
+};
+use crate::instance::{Instance, Phase, Version};
 use crate::model_description::guid;
+use crate::states;
 use crate::variables::Kind;
-
-/// `fmi2Status`.
-type Status = c_int;
-const OK: Status = 0;
-const WARNING: Status = 1;
-const DISCARD: Status = 2;
-const ERROR: Status = 3;
-const FATAL: Status = 4;
 
 /// `fmi2CoSimulation` of `fmi2Type`.
 const CO_SIMULATION: c_int = 1;
 
-/// `fmi2CallbackLogger`.
-type Logger = unsafe extern "C" fn(
-    component_environment: *mut c_void,
-    instance_name: *const c_char,
-    status: Status,
-    category: *const c_char,
-    message: *const c_char,
-    ...
-);
-
 /// `fmi2CallbackFunctions`.
 #[repr(C)]
 pub struct CallbackFunctions {
-    logger: Option<Logger>,
+    logger: Option<Fmi2Logger>,
     allocate_memory: Option<unsafe extern "C" fn(usize, usize) -> *mut c_void>,
     free_memory: Option<unsafe extern "C" fn(*mut c_void)>,
     step_finished: Option<unsafe extern "C" fn(*mut c_void, Status)>,
     component_environment: *mut c_void,
-}
-
-/// What `fmi2Component` points to.
-struct Component {
-    instance: Instance,
-    logger: Option<Logger>,
-    environment: *mut c_void,
-    /// `fmi2SetDebugLogging`: warnings are logged only when on; errors always are.
-    logging: bool,
-}
-
-impl Component {
-    /// Sends the instance's messages to the logger; the status of a call that `result`
-    /// ended with (a warning makes `OK` a `WARNING`).
-    fn finish(&mut self, result: Result<(), String>) -> Status {
-        let messages = self.instance.take_messages();
-        let mut status = if result.is_ok() { OK } else { ERROR };
-        for (severity, text) in messages {
-            let level = match severity {
-                Severity::Warning => {
-                    status = status.max(WARNING);
-                    if !self.logging {
-                        continue;
-                    }
-                    WARNING
-                }
-                Severity::Error => ERROR,
-            };
-            log(
-                self.logger,
-                self.environment,
-                &self.instance.name,
-                level,
-                &text,
-            );
-        }
-        status
-    }
-}
-
-impl Component {
-    /// Logs `text` as an error of this instance and answers `fmi2Error`: for the calls the
-    /// entry points refuse before they reach the instance (NULL arrays, absent types,
-    /// undeclared capabilities), which the instance's own messages do not carry.
-    fn refuse(&self, text: &str) -> Status {
-        log(
-            self.logger,
-            self.environment,
-            &self.instance.name,
-            ERROR,
-            text,
-        );
-        ERROR
-    }
-}
-
-/// Calls `logger` with `text` (its `%` doubled) as the format, in the category of `status`.
-fn log(logger: Option<Logger>, environment: *mut c_void, name: &str, status: Status, text: &str) {
-    let Some(logger) = logger else {
-        return;
-    };
-    let category = if status >= ERROR {
-        LOG_CATEGORIES[1]
-    } else {
-        LOG_CATEGORIES[0]
-    };
-    let clean = |s: &str| CString::new(s.replace('\0', " ")).unwrap_or_default();
-    let (name, category, format) = (
-        clean(name),
-        clean(category),
-        clean(&text.replace('%', "%%")),
-    );
-    // SAFETY: the tool gave this logger for this environment; every string is a valid C
-    // string for the call, and the format has no conversion (each `%` is doubled), so it
-    // reads no variadic argument.
-    unsafe {
-        logger(
-            environment,
-            name.as_ptr(),
-            status,
-            category.as_ptr(),
-            format.as_ptr(),
-        );
-    }
-}
-
-/// Runs `body` on the component `c`; NULL is refused and a panic is `fmi2Fatal`.
-fn guard(c: *mut c_void, body: impl FnOnce(&mut Component) -> Status) -> Status {
-    if c.is_null() {
-        return ERROR;
-    }
-    // SAFETY: a non-NULL component is one `fmi2Instantiate` returned and `fmi2FreeInstance`
-    // has not freed (the standard's contract with the tool); the tool calls an instance from
-    // one thread at a time.
-    let component = unsafe { &mut *c.cast::<Component>() };
-    let logger = component.logger;
-    let environment = component.environment;
-    let name = component.instance.name.clone();
-    match catch_unwind(AssertUnwindSafe(|| body(component))) {
-        Ok(status) => status,
-        Err(_) => {
-            log(
-                logger,
-                environment,
-                &name,
-                FATAL,
-                "internal error (a panic in the FMU); the instance must be freed",
-            );
-            FATAL
-        }
-    }
-}
-
-/// The string behind `p`, `None` for NULL or invalid UTF-8.
-///
-/// # Safety
-/// `p` is NULL or a NUL-terminated string valid for the call.
-unsafe fn text<'a>(p: *const c_char) -> Option<&'a str> {
-    if p.is_null() {
-        return None;
-    }
-    // SAFETY: by the function's contract.
-    unsafe { CStr::from_ptr(p) }.to_str().ok()
 }
 
 /// The directory of a `file:` URI (`file:///a/b`, `file:/a/b`, `file://localhost/a/b`),
@@ -228,11 +88,13 @@ pub unsafe extern "C" fn fmi2Instantiate(
     _visible: c_int,
     logging_on: c_int,
 ) -> *mut c_void {
-    let outcome = catch_unwind(AssertUnwindSafe(|| {
+    catch_null(|| {
         // SAFETY: the tool passes valid callback functions or NULL.
         let callbacks = unsafe { functions.as_ref() };
-        let logger = callbacks.and_then(|f| f.logger);
-        let environment = callbacks.map_or(core::ptr::null_mut(), |f| f.component_environment);
+        let logger = Logger::fmi2(
+            callbacks.and_then(|f| f.logger),
+            callbacks.map_or(core::ptr::null_mut(), |f| f.component_environment),
+        );
         // SAFETY: valid C strings or NULL, by the contract above.
         let (name, id, location) = unsafe {
             (
@@ -241,38 +103,25 @@ pub unsafe extern "C" fn fmi2Instantiate(
                 text(fmu_resource_location),
             )
         };
-        let refuse = |why: String| {
-            log(logger, environment, name, ERROR, &why);
-            core::ptr::null_mut()
+        let built = if fmu_type != CO_SIMULATION {
+            Err("this FMU is for co-simulation only (fmuType 1)".to_string())
+        } else if id != Some(guid().as_str()) {
+            Err(format!(
+                "GUID {} does not match this binary's {}",
+                id.unwrap_or("(none)"),
+                guid()
+            ))
+        } else {
+            match location.and_then(directory_of) {
+                Some(resources) => Instance::new(name, &resources, Version::Fmi2),
+                None => Err(format!(
+                    "fmuResourceLocation {:?} is not a file: URI",
+                    location.unwrap_or("(none)")
+                )),
+            }
         };
-        if fmu_type != CO_SIMULATION {
-            return refuse("this FMU is for co-simulation only (fmuType 1)".to_string());
-        }
-        let ours = guid();
-        if id != Some(ours.as_str()) {
-            return refuse(format!(
-                "GUID {} does not match this binary's {ours}",
-                id.unwrap_or("(none)")
-            ));
-        }
-        let Some(resources) = location.and_then(directory_of) else {
-            return refuse(format!(
-                "fmuResourceLocation {:?} is not a file: URI",
-                location.unwrap_or("(none)")
-            ));
-        };
-        match Instance::new(name, &resources) {
-            Ok(instance) => Box::into_raw(Box::new(Component {
-                instance,
-                logger,
-                environment,
-                logging: logging_on != 0,
-            }))
-            .cast::<c_void>(),
-            Err(why) => refuse(why),
-        }
-    }));
-    outcome.unwrap_or(core::ptr::null_mut())
+        instantiate(built, logger, name, logging_on != 0)
+    })
 }
 
 /// `fmi2FreeInstance`.
@@ -281,10 +130,8 @@ pub unsafe extern "C" fn fmi2Instantiate(
 /// `c` is NULL or an instance not yet freed.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2FreeInstance(c: *mut c_void) {
-    if !c.is_null() {
-        // SAFETY: `c` came from `Box::into_raw` in `fmi2Instantiate` and is freed once.
-        drop(unsafe { Box::from_raw(c.cast::<Component>()) });
-    }
+    // SAFETY: by the contract.
+    unsafe { crate::component::free(c) }
 }
 
 /// `fmi2SetDebugLogging`: warnings are logged when on (errors always are).
@@ -358,67 +205,6 @@ pub extern "C" fn fmi2Reset(c: *mut c_void) -> Status {
     guard(c, |c| {
         let r = c.instance.reset();
         c.finish(r)
-    })
-}
-
-/// Reads `n` values of `kind` into `write(i, value)`.
-fn get_values(
-    c: *mut c_void,
-    vr: *const u32,
-    n: usize,
-    kind: Kind,
-    mut write: impl FnMut(usize, f64),
-) -> Status {
-    guard(c, |c| {
-        if n > 0 && vr.is_null() {
-            return c.refuse("NULL value references");
-        }
-        // SAFETY: the tool passes `n` value references (checked non-NULL above when n > 0).
-        let refs = if n == 0 {
-            &[][..]
-        } else {
-            unsafe { core::slice::from_raw_parts(vr, n) }
-        };
-        let mut result = Ok(());
-        for (i, &r) in refs.iter().enumerate() {
-            match c.instance.get(r, kind) {
-                Ok(v) => write(i, v),
-                Err(e) => {
-                    result = Err(e);
-                    break;
-                }
-            }
-        }
-        c.finish(result)
-    })
-}
-
-/// Sets `n` values of `kind` read by `read(i)`.
-fn set_values(
-    c: *mut c_void,
-    vr: *const u32,
-    n: usize,
-    kind: Kind,
-    read: impl Fn(usize) -> f64,
-) -> Status {
-    guard(c, |c| {
-        if n > 0 && vr.is_null() {
-            return c.refuse("NULL value references");
-        }
-        // SAFETY: as in `get_values`.
-        let refs = if n == 0 {
-            &[][..]
-        } else {
-            unsafe { core::slice::from_raw_parts(vr, n) }
-        };
-        let mut result = Ok(());
-        for (i, &r) in refs.iter().enumerate() {
-            if let Err(e) = c.instance.set(r, kind, read(i)) {
-                result = Err(e);
-                break;
-            }
-        }
-        c.finish(result)
     })
 }
 
@@ -498,18 +284,6 @@ pub unsafe extern "C" fn fmi2SetInteger(
     })
 }
 
-/// Refuses a call on variables of a type the FMU has none of (Boolean, String), unless it
-/// names none.
-fn no_variables(c: *mut c_void, nvr: usize, kind: &str) -> Status {
-    guard(c, |c| {
-        if nvr == 0 {
-            OK
-        } else {
-            c.refuse(&format!("the FMU has no {kind} variables"))
-        }
-    })
-}
-
 /// `fmi2GetBoolean`: the FMU has no Boolean variables.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2GetBoolean(
@@ -566,15 +340,6 @@ pub extern "C" fn fmi2DoStep(
     guard(c, |c| {
         let r = c.instance.do_step(current, step);
         c.finish(r)
-    })
-}
-
-/// Refuses an optional capability the model description does not declare.
-fn unsupported(c: *mut c_void, what: &str) -> Status {
-    guard(c, |c| {
-        c.refuse(&format!(
-            "{what} is not supported by this FMU (see its modelDescription.xml)"
-        ))
     })
 }
 
@@ -662,36 +427,19 @@ pub extern "C" fn fmi2GetDirectionalDerivative(
 /// `state` is valid; `*state` is NULL or a state of this FMU not yet freed.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2GetFMUstate(c: *mut c_void, state: *mut *mut c_void) -> Status {
-    guard(c, |c| {
-        if state.is_null() {
-            return c.refuse("fmi2GetFMUstate: NULL state pointer");
-        }
-        let saved = c.instance.state();
-        // SAFETY: by the contract, `*state` is NULL or came from `Box::into_raw` below.
-        unsafe {
-            match (*state).cast::<State>().as_mut() {
-                Some(existing) => *existing = saved,
-                None => *state = Box::into_raw(Box::new(saved)).cast::<c_void>(),
-            }
-        }
-        OK
-    })
+    // SAFETY: by the contract.
+    unsafe { states::get(c, state, "fmi2GetFMUstate") }
 }
 
-/// `fmi2SetFMUstate`: back to a state `fmi2GetFMUstate` saved.
+/// `fmi2SetFMUstate`: back to a state `fmi2GetFMUstate` saved or `fmi2DeSerializeFMUstate`
+/// read, in this or another instance of the same world.
 ///
 /// # Safety
 /// `state` is a state of this FMU not yet freed.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2SetFMUstate(c: *mut c_void, state: *mut c_void) -> Status {
-    guard(c, |c| {
-        // SAFETY: by the contract.
-        let Some(saved) = (unsafe { state.cast::<State>().as_ref() }) else {
-            return c.refuse("fmi2SetFMUstate: NULL state");
-        };
-        let r = c.instance.set_state(saved);
-        c.finish(r)
-    })
+    // SAFETY: by the contract.
+    unsafe { states::set(c, state, "fmi2SetFMUstate") }
 }
 
 /// `fmi2FreeFMUstate`: frees `*state` and sets it to NULL.
@@ -700,51 +448,53 @@ pub unsafe extern "C" fn fmi2SetFMUstate(c: *mut c_void, state: *mut c_void) -> 
 /// `state` is valid; `*state` is NULL or a state of this FMU not yet freed.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2FreeFMUstate(c: *mut c_void, state: *mut *mut c_void) -> Status {
-    guard(c, |_| {
-        if !state.is_null() {
-            // SAFETY: by the contract, from `Box::into_raw` in `fmi2GetFMUstate`.
-            unsafe {
-                let p = (*state).cast::<State>();
-                if !p.is_null() {
-                    drop(Box::from_raw(p));
-                }
-                *state = core::ptr::null_mut();
-            }
-        }
-        OK
-    })
+    // SAFETY: by the contract.
+    unsafe { states::free(c, state) }
 }
 
-/// `fmi2SerializedFMUstateSize`: `canSerializeFMUstate` is false.
+/// `fmi2SerializedFMUstateSize`.
+///
+/// # Safety
+/// `state` is a state of this FMU not yet freed; `size` is valid.
 #[unsafe(no_mangle)]
-pub extern "C" fn fmi2SerializedFMUstateSize(
+pub unsafe extern "C" fn fmi2SerializedFMUstateSize(
     c: *mut c_void,
-    _state: *mut c_void,
-    _size: *mut usize,
+    state: *mut c_void,
+    size: *mut usize,
 ) -> Status {
-    unsupported(c, "fmi2SerializedFMUstateSize")
+    // SAFETY: by the contract.
+    unsafe { states::size(c, state, size, "fmi2SerializedFMUstateSize") }
 }
 
-/// `fmi2SerializeFMUstate`: `canSerializeFMUstate` is false.
+/// `fmi2SerializeFMUstate`: the journal of the run, which any instance of the same world
+/// replays to the same bits (see [`crate::journal`]).
+///
+/// # Safety
+/// `state` is a state of this FMU not yet freed; `bytes` holds `size` bytes.
 #[unsafe(no_mangle)]
-pub extern "C" fn fmi2SerializeFMUstate(
+pub unsafe extern "C" fn fmi2SerializeFMUstate(
     c: *mut c_void,
-    _state: *mut c_void,
-    _bytes: *mut u8,
-    _size: usize,
+    state: *mut c_void,
+    bytes: *mut u8,
+    size: usize,
 ) -> Status {
-    unsupported(c, "fmi2SerializeFMUstate")
+    // SAFETY: by the contract.
+    unsafe { states::serialise(c, state, bytes, size, "fmi2SerializeFMUstate") }
 }
 
-/// `fmi2DeSerializeFMUstate`: `canSerializeFMUstate` is false.
+/// `fmi2DeSerializeFMUstate`.
+///
+/// # Safety
+/// `bytes` holds `size` bytes; `state` is valid, `*state` NULL or a state not yet freed.
 #[unsafe(no_mangle)]
-pub extern "C" fn fmi2DeSerializeFMUstate(
+pub unsafe extern "C" fn fmi2DeSerializeFMUstate(
     c: *mut c_void,
-    _bytes: *const u8,
-    _size: usize,
-    _state: *mut *mut c_void,
+    bytes: *const u8,
+    size: usize,
+    state: *mut *mut c_void,
 ) -> Status {
-    unsupported(c, "fmi2DeSerializeFMUstate")
+    // SAFETY: by the contract.
+    unsafe { states::deserialise(c, bytes, size, state, "fmi2DeSerializeFMUstate") }
 }
 
 #[cfg(test)]

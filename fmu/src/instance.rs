@@ -1,17 +1,21 @@
-//! One FMU instance in safe Rust: its world, the FMI 2.0 co-simulation state machine, the
-//! inputs and parameters as last set, and the messages for the tool's logger. The C entry
-//! points ([`crate::fmi2`]) only marshal to and from it.
+//! One FMU instance in safe Rust: its world, the co-simulation state machine (the same for
+//! FMI 2.0 and 3.0 as this FMU uses them: no event mode, no intermediate updates), the inputs
+//! and parameters as last set, the journal of the run, and the messages for the tool's logger.
+//! The C entry points ([`crate::fmi2`], [`crate::fmi3`]) only marshal to and from it.
 
 use std::path::{Path, PathBuf};
 
-use sim::world_file::{self, KeyPath, WorldDescription};
-use sim::{Simulation, VehicleId};
+use sim::traffic::{TrafficNote, TrafficPosition};
 use vehicle_model::IndicatorState;
 
+use crate::devices::{self, DeviceOutput};
+use crate::journal::{self, INPUTS, Journal, Serialised};
+use crate::model_description::guid;
 use crate::variables::{
     self, BRAKE_INTENSITY, CONTROL_MODE, CRUISING_SPEED, Causality, GEAR, INDICATOR, Kind,
     STEERING_ANGLE, THROTTLE,
 };
+use crate::world::{self, Built};
 
 /// The file of the world in the FMU's `resources` directory.
 pub const WORLD_FILE: &str = "world.toml";
@@ -31,7 +35,27 @@ pub enum Severity {
 /// A refused call: its message, already logged.
 pub type Refused = String;
 
-/// Where an instance is in FMI 2.0's co-simulation state machine (FMI 2.0.3, §4.2.4).
+/// The FMI version an instance was created through, for the function names in its messages.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Version {
+    /// FMI 2.0 (`fmi2*`).
+    Fmi2,
+    /// FMI 3.0 (`fmi3*`).
+    Fmi3,
+}
+
+impl Version {
+    /// The C name of `function` (e.g. `DoStep`) in this version.
+    pub fn name(self, function: &str) -> String {
+        match self {
+            Version::Fmi2 => format!("fmi2{function}"),
+            Version::Fmi3 => format!("fmi3{function}"),
+        }
+    }
+}
+
+/// Where an instance is in the co-simulation state machine (FMI 2.0.3 §4.2.4; FMI 3.0's
+/// without event mode, §4.2.1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Phase {
     /// After `fmi2Instantiate` or `fmi2Reset`: parameters and inputs may be set.
@@ -44,37 +68,58 @@ pub enum Phase {
     Terminated,
 }
 
-/// A saved instance state (`fmi2FMUstate`): the world's snapshot and the driver inputs and
-/// phase around it.
+impl Phase {
+    const ALL: [Phase; 4] = [
+        Phase::Instantiated,
+        Phase::Initialising,
+        Phase::Stepping,
+        Phase::Terminated,
+    ];
+}
+
+/// A saved instance state (`fmi2FMUstate`, `fmi3FMUState`): the world's snapshot (absent in a
+/// state read from bytes), the journal that rebuilds it anywhere, and the inputs, parameters
+/// and phase around it.
 #[derive(Clone)]
 pub struct State {
-    snapshot: sim::Snapshot,
+    snapshot: Option<sim::Snapshot>,
+    traffic: TrafficPosition,
+    world: u64,
     phase: Phase,
-    inputs: [f64; 7],
-    applied: Option<[f64; 7]>,
+    inputs: [f64; INPUTS],
+    applied: Option<[f64; INPUTS]>,
+    parameters: Vec<(u32, f64)>,
+    journal: Journal,
 }
 
 /// One instance.
 pub struct Instance {
     /// The instance name the tool gave, for its logger.
     pub name: String,
+    /// The FMI version it was created through.
+    version: Version,
     /// The world file's path in the resources.
     world_path: PathBuf,
     /// Its text.
     world_text: String,
-    /// Its description with the parameters as set.
-    description: WorldDescription,
-    simulation: Simulation,
-    car: VehicleId,
+    /// The world as built with the parameters set.
+    world: Built,
+    /// The outputs of the car's devices (value references from 2000).
+    device_outputs: Vec<DeviceOutput>,
     phase: Phase,
     /// Inputs by value reference (integers stored as f64 exactly).
-    inputs: [f64; 7],
+    inputs: [f64; INPUTS],
     /// The inputs the driver last received, `None` before the first step.
-    applied: Option<[f64; 7]>,
+    applied: Option<[f64; INPUTS]>,
+    /// The run since the world was built.
+    journal: Journal,
     /// Parameters set by the tool, by value reference.
     parameters: Vec<(u32, f64)>,
     /// Messages for the logger, taken by [`Instance::take_messages`].
     messages: Vec<(Severity, String)>,
+    /// The driven car's telemetry since the last step, measured at the first output read:
+    /// a tool reads a dozen outputs per step, and each would measure the car again.
+    telemetry: Option<sim::CarTelemetry>,
 }
 
 impl Instance {
@@ -82,24 +127,26 @@ impl Instance {
     ///
     /// # Errors
     /// Why the world cannot be loaded, built or driven, as a sentence.
-    pub fn new(name: &str, resources: &Path) -> Result<Instance, Refused> {
+    pub fn new(name: &str, resources: &Path, version: Version) -> Result<Instance, Refused> {
         let world_path = resources.join(WORLD_FILE);
         let world_text = std::fs::read_to_string(&world_path)
             .map_err(|e| format!("cannot read the world {}: {e}", world_path.display()))?;
-        let description = parse(&world_path, &world_text, &[])?;
-        let (simulation, car) = build(&description)?;
+        let built = world::build(world::parse(&world_path, &world_text)?)?;
+        let device_outputs = device_outputs(&built)?;
         Ok(Instance {
             name: name.to_string(),
+            version,
             world_path,
             world_text,
-            description,
-            simulation,
-            car,
+            world: built,
+            device_outputs,
             phase: Phase::Instantiated,
             inputs: core::array::from_fn(|r| variables::input_start(r as u32)),
             applied: None,
+            journal: Journal::default(),
             parameters: Vec::new(),
             messages: Vec::new(),
+            telemetry: None,
         })
     }
 
@@ -119,41 +166,33 @@ impl Instance {
         message
     }
 
-    /// `fmi2EnterInitializationMode`.
+    /// `EnterInitializationMode`.
     ///
     /// # Errors
     /// Outside [`Phase::Instantiated`].
     pub fn enter_initialisation(&mut self) -> Result<(), Refused> {
-        self.expect(&[Phase::Instantiated], "fmi2EnterInitializationMode")?;
+        self.expect(
+            &[Phase::Instantiated],
+            &self.version.name("EnterInitializationMode"),
+        )?;
         self.phase = Phase::Initialising;
         Ok(())
     }
 
-    /// `fmi2ExitInitializationMode`: rebuilds the world with the parameters set.
+    /// `ExitInitializationMode`: rebuilds the world with the parameters set.
     ///
     /// # Errors
     /// Outside [`Phase::Initialising`], or a parameter the world refuses (named with its
     /// value and rule).
     pub fn exit_initialisation(&mut self) -> Result<(), Refused> {
-        self.expect(&[Phase::Initialising], "fmi2ExitInitializationMode")?;
+        self.expect(
+            &[Phase::Initialising],
+            &self.version.name("ExitInitializationMode"),
+        )?;
         if !self.parameters.is_empty() {
-            let mut numbers = Vec::with_capacity(self.parameters.len());
-            for &(reference, value) in &self.parameters {
-                let name = variables::find(reference, Kind::Real).map_or("", |v| v.name);
-                let key = KeyPath::parse(name).map_err(|e| e.to_string());
-                match key {
-                    Ok(key) => numbers.push((key, value)),
-                    Err(e) => return Err(self.refuse(e)),
-                }
-            }
-            let built = parse(&self.world_path, &self.world_text, &numbers)
-                .and_then(|d| build(&d).map(|(s, c)| (d, s, c)));
-            match built {
-                Ok((description, simulation, car)) => {
-                    self.description = description;
-                    self.simulation = simulation;
-                    self.car = car;
-                }
+            self.telemetry = None;
+            match self.rebuild(&self.parameters) {
+                Ok(built) => self.world = built,
                 Err(e) => return Err(self.refuse(e)),
             }
         }
@@ -161,17 +200,17 @@ impl Instance {
         Ok(())
     }
 
-    /// `fmi2Terminate`.
+    /// `Terminate`.
     ///
     /// # Errors
     /// Outside [`Phase::Stepping`].
     pub fn terminate(&mut self) -> Result<(), Refused> {
-        self.expect(&[Phase::Stepping], "fmi2Terminate")?;
+        self.expect(&[Phase::Stepping], &self.version.name("Terminate"))?;
         self.phase = Phase::Terminated;
         Ok(())
     }
 
-    /// `fmi2Reset`: the instance as `fmi2Instantiate` left it.
+    /// `Reset`: the instance as instantiation left it.
     ///
     /// # Errors
     /// The world can no longer be built (it could at instantiation: only if its file changed).
@@ -179,6 +218,7 @@ impl Instance {
         match Instance::new(
             &self.name,
             self.world_path.parent().unwrap_or(Path::new(".")),
+            self.version,
         ) {
             Ok(fresh) => {
                 *self = fresh;
@@ -200,11 +240,15 @@ impl Instance {
         }
     }
 
-    /// `fmi2SetReal` / `fmi2SetInteger` of one variable.
+    /// `SetReal`/`SetInteger` (FMI 2) or `SetFloat64`/`SetInt32` (FMI 3) of one variable.
     ///
     /// # Errors
     /// An unknown reference, an output, a parameter after initialisation, a non-finite value.
     pub fn set(&mut self, reference: u32, kind: Kind, value: f64) -> Result<(), Refused> {
+        if let Some(o) = self.device_output(reference, kind) {
+            let name = o.name.clone();
+            return Err(self.refuse(format!("{name} is an output")));
+        }
         let Some(v) = variables::find(reference, kind) else {
             return Err(self.refuse(format!(
                 "no {kind:?} variable has value reference {reference}"
@@ -214,12 +258,21 @@ impl Instance {
             return Err(self.refuse(format!("{} = {value}: must be finite", v.name)));
         }
         match v.causality {
-            Causality::Output => Err(self.refuse(format!("{} is an output", v.name))),
+            Causality::Output | Causality::Independent => Err(self.refuse(format!(
+                "{} is an {}: the tool reads it",
+                v.name,
+                if v.causality == Causality::Output {
+                    "output"
+                } else {
+                    "independent variable"
+                }
+            ))),
             Causality::Parameter => {
                 if self.phase != Phase::Instantiated && self.phase != Phase::Initialising {
                     return Err(self.refuse(format!(
-                        "{} is a parameter: it is set before fmi2ExitInitializationMode",
-                        v.name
+                        "{} is a parameter: it is set before {}",
+                        v.name,
+                        self.version.name("ExitInitializationMode")
                     )));
                 }
                 self.parameters.retain(|(r, _)| *r != reference);
@@ -228,7 +281,11 @@ impl Instance {
             }
             Causality::Input => {
                 if self.phase == Phase::Terminated {
-                    return Err(self.refuse(format!("{} is set after fmi2Terminate", v.name)));
+                    return Err(self.refuse(format!(
+                        "{} is set after {}",
+                        v.name,
+                        self.version.name("Terminate")
+                    )));
                 }
                 self.inputs[reference as usize] = value;
                 Ok(())
@@ -236,64 +293,191 @@ impl Instance {
         }
     }
 
-    /// `fmi2GetReal` / `fmi2GetInteger` of one variable.
+    /// `GetReal`/`GetInteger` (FMI 2) or `GetFloat64`/`GetInt32` (FMI 3) of one variable.
     ///
     /// # Errors
     /// An unknown reference.
     pub fn get(&mut self, reference: u32, kind: Kind) -> Result<f64, Refused> {
+        if let Some(o) = self.device_output(reference, kind) {
+            return match self.world.simulation.devices(self.world.car) {
+                Ok(all) => Ok(devices::value(all, o)),
+                Err(e) => Err(self.refuse(e.to_string())),
+            };
+        }
         let Some(v) = variables::find(reference, kind) else {
             return Err(self.refuse(format!(
                 "no {kind:?} variable has value reference {reference}"
             )));
         };
         let value = match v.causality {
+            Causality::Independent => Some(self.time()),
             Causality::Input => Some(self.inputs[reference as usize]),
             Causality::Parameter => self
                 .parameters
                 .iter()
                 .find(|(r, _)| *r == reference)
                 .map(|(_, value)| *value)
-                .or_else(|| variables::parameter_of(&self.description, reference)),
-            Causality::Output => match self.simulation.telemetry(self.car) {
-                Ok(t) => variables::output_of(&t, reference),
-                Err(e) => return Err(self.refuse(e.to_string())),
-            },
+                .or_else(|| {
+                    variables::parameter_of(&self.world.description, self.world.driven, reference)
+                }),
+            Causality::Output => {
+                if self.telemetry.is_none() {
+                    match self.world.simulation.telemetry(self.world.car) {
+                        Ok(t) => self.telemetry = Some(t),
+                        Err(e) => return Err(self.refuse(e.to_string())),
+                    }
+                }
+                self.telemetry
+                    .as_ref()
+                    .and_then(|t| variables::output_of(t, reference))
+            }
         };
         value.ok_or_else(|| self.refuse(format!("{} has no value", v.name)))
     }
 
-    /// `fmi2GetFMUstate`: everything a later [`Instance::set_state`] needs to continue
-    /// exactly as this instance would from here.
+    /// The device output of value reference `reference`, if it is one (they are all Real).
+    fn device_output(&self, reference: u32, kind: Kind) -> Option<&DeviceOutput> {
+        if kind != Kind::Real {
+            return None;
+        }
+        self.device_outputs
+            .iter()
+            .find(|o| o.reference == reference)
+    }
+
+    /// `GetFMUstate`: everything a later [`Instance::set_state`] needs to continue exactly as
+    /// this instance would from here.
     pub fn state(&self) -> State {
         State {
-            snapshot: self.simulation.snapshot(),
+            snapshot: Some(self.world.simulation.snapshot()),
+            traffic: self.world.traffic.position(),
+            world: journal::fingerprint(self.world_text.as_bytes()),
             phase: self.phase,
             inputs: self.inputs,
             applied: self.applied,
+            parameters: self.parameters.clone(),
+            journal: self.journal.clone(),
         }
     }
 
-    /// `fmi2SetFMUstate`: back to `state`, which this instance saved since its last
-    /// initialisation (or reset).
+    /// `SetFMUstate`: back to `state`. A state this instance saved since its world was last
+    /// built comes back from the engine's snapshot; any other state of the same world (saved
+    /// by another instance, before a reset, or read from bytes) is rebuilt by replaying its
+    /// journal in a fresh world, which gives the same bits (the engine is deterministic).
     ///
     /// # Errors
-    /// A state of another instance or of before a reset (the world refuses it; nothing changes).
+    /// A state of another world (nothing changes), or a world that can no longer be built.
     pub fn set_state(&mut self, state: &State) -> Result<(), Refused> {
-        if let Err(e) = self.simulation.restore(&state.snapshot) {
-            return Err(self.refuse(format!("fmi2SetFMUstate: {e}")));
+        let function = self.version.name("SetFMUState");
+        if state.world != journal::fingerprint(self.world_text.as_bytes()) {
+            return Err(self.refuse(format!(
+                "{function}: the state is of another world than this instance's {}",
+                self.world_path.display()
+            )));
+        }
+        self.telemetry = None;
+        let restored = state
+            .snapshot
+            .as_ref()
+            .is_some_and(|snap| self.world.simulation.restore(snap).is_ok());
+        if restored {
+            self.world.traffic.set_position(&state.traffic);
+        } else if let Err(e) = self.replay(state) {
+            return Err(self.refuse(format!("{function}: {e}")));
         }
         self.phase = state.phase;
         self.inputs = state.inputs;
         self.applied = state.applied;
+        self.parameters.clone_from(&state.parameters);
+        self.journal = state.journal.clone();
         Ok(())
+    }
+
+    /// Rebuilds the world of `state` (with its parameters once initialised) and replays its
+    /// journal, discarding the driver's warnings (they were logged when the run was first made).
+    fn replay(&mut self, state: &State) -> Result<(), Refused> {
+        let initialised = matches!(state.phase, Phase::Stepping | Phase::Terminated);
+        let parameters = if initialised {
+            state.parameters.as_slice()
+        } else {
+            &[]
+        };
+        self.world = self.rebuild(parameters)?;
+        self.applied = None;
+        for stretch in state.journal.stretches() {
+            self.inputs = stretch.inputs;
+            self.apply_inputs();
+            self.run(stretch.steps)?;
+        }
+        self.messages
+            .retain(|(severity, _)| *severity == Severity::Error);
+        Ok(())
+    }
+
+    /// The bytes of `state` (`SerializeFMUstate`), loadable by any instance of this FMU with
+    /// the same world.
+    pub fn serialise(state: &State) -> Vec<u8> {
+        Serialised {
+            guid: guid(),
+            world: state.world,
+            phase: Phase::ALL
+                .iter()
+                .position(|p| *p == state.phase)
+                .unwrap_or(0) as u8,
+            inputs: state.inputs,
+            applied: state.applied,
+            parameters: state.parameters.clone(),
+            stretches: state.journal.stretches(),
+        }
+        .to_bytes()
+    }
+
+    /// The state in `bytes` (`DeSerializeFMUstate`); it is checked against this instance's
+    /// world when set.
+    ///
+    /// # Errors
+    /// Bytes that are not a state of this FMU (another format, another build, damaged).
+    pub fn deserialise(&mut self, bytes: &[u8]) -> Result<State, Refused> {
+        let function = self.version.name("DeserializeFMUState");
+        let s = match Serialised::from_bytes(bytes) {
+            Ok(s) => s,
+            Err(e) => return Err(self.refuse(format!("{function}: {e}"))),
+        };
+        if s.guid != guid() {
+            return Err(self.refuse(format!(
+                "{function}: the state was saved by another build of the FMU (GUID {}, this \
+                 one {})",
+                s.guid,
+                guid()
+            )));
+        }
+        let Some(&phase) = Phase::ALL.get(usize::from(s.phase)) else {
+            return Err(self.refuse(format!("{function}: unknown phase {}", s.phase)));
+        };
+        if !s.inputs.iter().all(|v| v.is_finite())
+            || !s.parameters.iter().all(|(_, v)| v.is_finite())
+        {
+            return Err(self.refuse(format!("{function}: the state holds a non-finite value")));
+        }
+        Ok(State {
+            snapshot: None,
+            // The replay brings the traffic to its place.
+            traffic: self.world.traffic.position(),
+            world: s.world,
+            phase,
+            inputs: s.inputs,
+            applied: s.applied,
+            parameters: s.parameters,
+            journal: Journal::from_stretches(&s.stretches),
+        })
     }
 
     /// The simulated time (s).
     pub fn time(&self) -> f64 {
-        self.simulation.world().time()
+        self.world.simulation.world().time()
     }
 
-    /// `fmi2DoStep` from `at` (s) over `step` (s): a whole number of `basicTimeStep`s, the
+    /// `DoStep` from `at` (s) over `step` (s): a whole number of `basicTimeStep`s, the
     /// inputs handed to the driver first.
     ///
     /// # Errors
@@ -301,13 +485,14 @@ impl Instance {
     /// that is not a positive multiple of `basicTimeStep`, or a physics failure (the instance
     /// is then terminated).
     pub fn do_step(&mut self, at: f64, step: f64) -> Result<(), Refused> {
-        self.expect(&[Phase::Stepping], "fmi2DoStep")?;
-        let dt = self.simulation.world().dt();
+        self.expect(&[Phase::Stepping], &self.version.name("DoStep"))?;
+        let dt = self.world.simulation.world().dt();
         let now = self.time();
         // The tool adds its steps in floating point; 1 µs is far below any basicTimeStep.
         if !at.is_finite() || (at - now).abs() > 1e-6 {
             return Err(self.refuse(format!(
-                "fmi2DoStep from t = {at} s, but the FMU is at t = {now} s"
+                "{} from t = {at} s, but the FMU is at t = {now} s",
+                self.version.name("DoStep")
             )));
         }
         let steps = (step / dt).round();
@@ -318,13 +503,48 @@ impl Instance {
             )));
         }
         self.apply_inputs();
-        for _ in 0..steps as u64 {
-            if let Err(e) = self.simulation.step() {
-                self.phase = Phase::Terminated;
-                return Err(self.refuse(format!("the simulation failed: {e}")));
+        let ran = self.run(steps as u64);
+        // The journal holds what ran, a failed step included, so a state saved after a
+        // failure replays to the same failure.
+        if let Some(inputs) = self.applied {
+            self.journal.push(inputs, steps as u64);
+        }
+        ran.map_err(|e| {
+            self.phase = Phase::Terminated;
+            self.refuse(e)
+        })
+    }
+
+    /// Runs `steps` basic steps, the other cars' programmes issuing their commands before
+    /// each (their warnings to the logger).
+    fn run(&mut self, steps: u64) -> Result<(), Refused> {
+        self.telemetry = None;
+        for _ in 0..steps {
+            for note in self.world.traffic.issue_due(&mut self.world.simulation) {
+                let text = match note {
+                    TrafficNote::Driver { warning, .. } => format!("another car: {warning}"),
+                    TrafficNote::FollowLane { error, .. } => {
+                        format!("another car: follow_lane: {error}")
+                    }
+                };
+                self.messages.push((Severity::Warning, text));
             }
+            self.world
+                .simulation
+                .step()
+                .map_err(|e| format!("the simulation failed: {e}"))?;
         }
         Ok(())
+    }
+
+    /// The world of this instance's file with `parameters` at their keys, built.
+    fn rebuild(&self, parameters: &[(u32, f64)]) -> Result<Built, Refused> {
+        world::build(world::with_parameters(
+            &self.world_path,
+            &self.world_text,
+            parameters,
+            self.world.driven,
+        )?)
     }
 
     /// Hands the inputs that changed since the last step to the driver (all of them before
@@ -333,10 +553,10 @@ impl Instance {
     fn apply_inputs(&mut self) {
         let inputs = self.inputs;
         let first = self.applied.is_none();
-        let previous = self.applied.unwrap_or([f64::NAN; 7]);
+        let previous = self.applied.unwrap_or([f64::NAN; INPUTS]);
         let changed =
             |r: u32| first || previous[r as usize].to_bits() != inputs[r as usize].to_bits();
-        let Ok(driver) = self.simulation.driver_mut(self.car) else {
+        let Ok(driver) = self.world.simulation.driver_mut(self.world.car) else {
             return;
         };
         let mut warnings = Vec::new();
@@ -375,36 +595,11 @@ impl Instance {
     }
 }
 
-/// The world of `text` at `path` with `numbers` set at their keys.
-fn parse(path: &Path, text: &str, numbers: &[(KeyPath, f64)]) -> Result<WorldDescription, Refused> {
-    world_file::parse_with_numbers(&path.display().to_string(), text, numbers)
+/// The outputs of the devices of the driven car.
+pub(crate) fn device_outputs(world: &Built) -> Result<Vec<DeviceOutput>, Refused> {
+    world
+        .simulation
+        .devices(world.car)
+        .map(devices::outputs)
         .map_err(|e| e.to_string())
-}
-
-/// Refuses a world the FMU cannot drive: anything but exactly one car (`name` names the world
-/// in the message). The packager checks it too, so an FMU is never built for such a world.
-pub(crate) fn check_one_car(description: &WorldDescription, name: &str) -> Result<(), Refused> {
-    if description.cars.len() == 1 && description.robot.is_none() {
-        return Ok(());
-    }
-    Err(format!(
-        "the world {name} has {} cars{}: the FMU drives a world with exactly one car",
-        description.cars.len(),
-        if description.robot.is_some() {
-            " and a robot"
-        } else {
-            ""
-        }
-    ))
-}
-
-/// The simulation of `description` and the car the FMU drives: its only car.
-fn build(description: &WorldDescription) -> Result<(Simulation, VehicleId), Refused> {
-    check_one_car(description, &description.source)?;
-    let (simulation, _) = Simulation::from_description(description).map_err(|e| e.to_string())?;
-    let car = simulation
-        .car_ids()
-        .next()
-        .ok_or_else(|| "the world has no car".to_string())?;
-    Ok((simulation, car))
 }

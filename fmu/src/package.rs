@@ -11,15 +11,40 @@ use toml::de::{DeTable, DeValue};
 use vehicle_model::Model;
 use zip::write::SimpleFileOptions;
 
-use crate::instance::WORLD_FILE;
+use crate::instance::{Version, WORLD_FILE};
 use crate::model_description::{self, Description, MODEL_IDENTIFIER};
 use crate::variables::{Causality, VARIABLES, parameter_of};
 
-/// FMI 2.0's name of the platform this library was built for (`binaries/<platform>/`).
+/// The name of the platform this library was built for (`binaries/<platform>/`) in FMI
+/// `version`: FMI 2.0's `linux64` …, FMI 3.0's platform tuple `x86_64-linux` ….
 ///
 /// # Errors
-/// A platform FMI 2.0 has no name for.
-pub fn platform() -> Result<&'static str, String> {
+/// A platform the version has no name for.
+pub fn platform(version: Version) -> Result<String, String> {
+    if version == Version::Fmi3 {
+        let arch = match std::env::consts::ARCH {
+            "x86_64" => "x86_64",
+            "aarch64" => "aarch64",
+            "x86" => "x86",
+            other => {
+                return Err(format!(
+                    "FMI 3.0 names no platform tuple for the {other} architecture"
+                ));
+            }
+        };
+        let os = match std::env::consts::OS {
+            "linux" => "linux",
+            "windows" => "windows",
+            "macos" => "darwin",
+            other => return Err(format!("FMI 3.0 names no platform tuple for {other}")),
+        };
+        return Ok(format!("{arch}-{os}"));
+    }
+    platform_fmi2().map(str::to_string)
+}
+
+/// FMI 2.0's platform directory name.
+fn platform_fmi2() -> Result<&'static str, String> {
     if cfg!(all(target_os = "linux", target_pointer_width = "64")) {
         Ok("linux64")
     } else if cfg!(all(target_os = "windows", target_pointer_width = "64")) {
@@ -120,7 +145,8 @@ impl World {
 /// The model description of `world`, read as the FMU will read it.
 ///
 /// # Errors
-/// What is wrong with the world (as its reader says), or a world that is not one car.
+/// What is wrong with the world (as its reader says), or a world the FMU cannot drive (a
+/// robot, or several cars of which not exactly one has no programme).
 pub fn describe(world: &World) -> Result<(WorldDescription, Description), String> {
     let file = world
         .directory
@@ -128,27 +154,37 @@ pub fn describe(world: &World) -> Result<(WorldDescription, Description), String
         .map_or_else(|| PathBuf::from(WORLD_FILE), |d| d.join(WORLD_FILE));
     let description = world_file::parse_str(&file.display().to_string(), &world.text)
         .map_err(|e| e.to_string())?;
-    crate::instance::check_one_car(&description, &world.name)?;
+    // The driven car and its device outputs come from the built world, as the instance
+    // derives them.
+    let built = crate::world::build(description.clone())?;
+    let devices = crate::instance::device_outputs(&built)?;
+    let driven = built.driven;
     let parameters = VARIABLES
         .iter()
         .filter(|v| v.causality == Causality::Parameter)
-        .filter_map(|v| parameter_of(&description, v.reference).map(|x| (v.reference, x)))
+        .filter_map(|v| parameter_of(&description, driven, v.reference).map(|x| (v.reference, x)))
         .collect();
     let d = Description {
         model_name: world.name.clone(),
         step: description.config.dt(),
         stop_time: description.duration,
         parameters,
+        devices,
     };
     Ok((description, d))
 }
 
-/// Writes the FMU of `world` to `out`, with the shared library `library` (built by
-/// `cargo build -p vehicle-fmu`).
+/// Writes the FMU of `world` for FMI `version` to `out`, with the shared library `library`
+/// (built by `cargo build -p vehicle-fmu`; the same library serves both versions).
 ///
 /// # Errors
 /// What is wrong with the world, the library or writing the archive, as a sentence.
-pub fn write_fmu(world: &World, library: &Path, out: &Path) -> Result<(), String> {
+pub fn write_fmu(
+    world: &World,
+    library: &Path,
+    out: &Path,
+    version: Version,
+) -> Result<(), String> {
     let (_, description) = describe(world)?;
     let binary = std::fs::read(library).map_err(|e| {
         format!(
@@ -177,13 +213,13 @@ pub fn write_fmu(world: &World, library: &Path, out: &Path) -> Result<(), String
     let mut entries: Vec<(String, Vec<u8>, u32)> = vec![
         (
             "modelDescription.xml".to_string(),
-            model_description::write(&description).into_bytes(),
+            model_description::write(&description, version).into_bytes(),
             0o644,
         ),
         (
             format!(
                 "binaries/{}/{MODEL_IDENTIFIER}{}",
-                platform()?,
+                platform(version)?,
                 std::env::consts::DLL_SUFFIX
             ),
             binary,

@@ -3,9 +3,9 @@
 //! model description, `fmi2GetReal`/`fmi2SetReal` and their integer twins, so a variable
 //! cannot be described one way and served another.
 
-use sim::CarTelemetry;
-use sim::world_file::WorldDescription;
-use vehicle_model::Wheel;
+use sim::world_file::{Setting, WorldDescription};
+use sim::{CarTelemetry, TyreChoice};
+use vehicle_model::{Direction, TyreField, Wheel};
 
 /// The FMI type of a variable.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -19,6 +19,8 @@ pub enum Kind {
 /// What a variable is to the importing tool.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Causality {
+    /// The independent variable: simulated time (FMI 3.0 requires one; FMI 2.0 allows it).
+    Independent,
     /// Fixed before initialisation ends: a world-file key.
     Parameter,
     /// Set by the tool before each `fmi2DoStep`: a driver command.
@@ -46,14 +48,16 @@ pub struct Variable {
 
 /// A unit of the model description: its name and SI base-unit exponents `[kg, m, s, rad]`,
 /// with the factor to SI (`rpm` is rad/s × π/30).
-pub const UNITS: [(&str, [i32; 4], f64); 9] = [
+pub const UNITS: [(&str, [i32; 4], f64); 11] = [
     ("kg", [1, 0, 0, 0], 1.0),
+    ("s", [0, 0, 1, 0], 1.0),
     ("m", [0, 1, 0, 0], 1.0),
     ("m/s", [0, 1, -1, 0], 1.0),
     ("m/s2", [0, 1, -2, 0], 1.0),
     ("rad", [0, 0, 0, 1], 1.0),
     ("rad/s", [0, 0, -1, 1], 1.0),
     ("rpm", [0, 0, -1, 1], core::f64::consts::PI / 30.0),
+    ("N", [1, 1, -2, 0], 1.0),
     ("N.m", [1, 2, -2, 0], 1.0),
     ("W", [1, 2, -3, 0], 1.0),
 ];
@@ -91,7 +95,10 @@ const fn integer(
     }
 }
 
-use Causality::{Input, Output, Parameter};
+use Causality::{Independent, Input, Output, Parameter};
+
+/// Value reference of the independent variable, time.
+pub const TIME: u32 = 99;
 
 /// Value reference of the first input.
 pub const STEERING_ANGLE: u32 = 0;
@@ -110,7 +117,8 @@ pub const INDICATOR: u32 = 6;
 
 /// Every variable, in the order of `modelDescription.xml` (its `ModelVariables` indices are
 /// 1-based positions in this table).
-pub const VARIABLES: [Variable; 31] = [
+pub const VARIABLES: [Variable; 50] = [
+    real("time", TIME, Independent, Some("s"), "Simulated time"),
     real(
         "steering_angle",
         STEERING_ANGLE,
@@ -271,6 +279,90 @@ pub const VARIABLES: [Variable; 31] = [
         "Engaged gear in torque control, 0 in speed control (wbu_driver_get_gear)",
     ),
     real(
+        "slip_ratio_front_right",
+        118,
+        Output,
+        None,
+        "Longitudinal slip of the front right tyre, (w r - vx)/max(|vx|, 1 m/s): positive driving, -1 locked",
+    ),
+    real(
+        "slip_ratio_front_left",
+        119,
+        Output,
+        None,
+        "Longitudinal slip of the front left tyre, (w r - vx)/max(|vx|, 1 m/s): positive driving, -1 locked",
+    ),
+    real(
+        "slip_ratio_rear_right",
+        120,
+        Output,
+        None,
+        "Longitudinal slip of the rear right tyre, (w r - vx)/max(|vx|, 1 m/s): positive driving, -1 locked",
+    ),
+    real(
+        "slip_ratio_rear_left",
+        121,
+        Output,
+        None,
+        "Longitudinal slip of the rear left tyre, (w r - vx)/max(|vx|, 1 m/s): positive driving, -1 locked",
+    ),
+    real(
+        "slip_angle_front_right",
+        122,
+        Output,
+        Some("rad"),
+        "Slip angle of the front right tyre, atan2(-vy, max(|vx|, 1 m/s)): positive when the road pushes it left",
+    ),
+    real(
+        "slip_angle_front_left",
+        123,
+        Output,
+        Some("rad"),
+        "Slip angle of the front left tyre, atan2(-vy, max(|vx|, 1 m/s)): positive when the road pushes it left",
+    ),
+    real(
+        "slip_angle_rear_right",
+        124,
+        Output,
+        Some("rad"),
+        "Slip angle of the rear right tyre, atan2(-vy, max(|vx|, 1 m/s)): positive when the road pushes it left",
+    ),
+    real(
+        "slip_angle_rear_left",
+        125,
+        Output,
+        Some("rad"),
+        "Slip angle of the rear left tyre, atan2(-vy, max(|vx|, 1 m/s)): positive when the road pushes it left",
+    ),
+    real(
+        "tyre_load_front_right",
+        126,
+        Output,
+        Some("N"),
+        "Vertical load on the front right tyre (its suspension force)",
+    ),
+    real(
+        "tyre_load_front_left",
+        127,
+        Output,
+        Some("N"),
+        "Vertical load on the front left tyre (its suspension force)",
+    ),
+    real(
+        "tyre_load_rear_right",
+        128,
+        Output,
+        Some("N"),
+        "Vertical load on the rear right tyre (its suspension force)",
+    ),
+    real(
+        "tyre_load_rear_left",
+        129,
+        Output,
+        Some("N"),
+        "Vertical load on the rear left tyre (its suspension force)",
+    ),
+    real(
         "vehicle.mass",
         1000,
         Parameter,
@@ -312,7 +404,81 @@ pub const VARIABLES: [Variable; 31] = [
         None,
         "Coulomb friction of the ground (world file [ground] friction)",
     ),
+    integer(
+        "vehicle.tyre.model",
+        TYRE_MODEL,
+        Parameter,
+        "Tyre model: 0 the slip-based Magic Formula tyre (\"magic-formula\"), 1 Webots' contact (\"webots\")",
+    ),
+    real(
+        "vehicle.tyre.longitudinal.peak_friction",
+        1007,
+        Parameter,
+        None,
+        "Peak of the longitudinal force over the load at the nominal load on a road of friction 1 (magic-formula tyre)",
+    ),
+    real(
+        "vehicle.tyre.lateral.peak_friction",
+        1008,
+        Parameter,
+        None,
+        "Peak of the lateral force over the load at the nominal load on a road of friction 1 (magic-formula tyre)",
+    ),
+    real(
+        "vehicle.tyre.longitudinal.stiffness",
+        1009,
+        Parameter,
+        None,
+        "Longitudinal slip stiffness in loads per unit slip ratio (magic-formula tyre)",
+    ),
+    real(
+        "vehicle.tyre.lateral.stiffness",
+        1010,
+        Parameter,
+        None,
+        "Cornering stiffness in loads per radian (magic-formula tyre)",
+    ),
+    real(
+        "vehicle.tyre.rolling_resistance",
+        1011,
+        Parameter,
+        None,
+        "Rolling-resistance coefficient: torque c Fz r (magic-formula tyre)",
+    ),
 ];
+
+/// Value reference of the tyre-model parameter.
+pub const TYRE_MODEL: u32 = 1006;
+
+/// The world-file value of parameter `reference` set to `value`: the number, or for the tyre
+/// model the name its integer stands for.
+///
+/// # Errors
+/// A tyre-model integer that names no model.
+pub fn setting(reference: u32, value: f64) -> Result<Setting, String> {
+    if reference != TYRE_MODEL {
+        return Ok(Setting::Number(value));
+    }
+    match value {
+        0.0 => Ok(Setting::Text("magic-formula".to_string())),
+        1.0 => Ok(Setting::Text("webots".to_string())),
+        _ => Err(format!(
+            "vehicle.tyre.model = {value}: 0 (magic-formula) or 1 (webots)"
+        )),
+    }
+}
+
+/// The tyre coefficient of parameter `reference`, if it is one.
+fn tyre_field(reference: u32) -> Option<TyreField> {
+    Some(match reference {
+        1007 => TyreField::PeakFriction(Direction::Longitudinal),
+        1008 => TyreField::PeakFriction(Direction::Lateral),
+        1009 => TyreField::Stiffness(Direction::Longitudinal),
+        1010 => TyreField::Stiffness(Direction::Lateral),
+        1011 => TyreField::RollingResistance,
+        _ => return None,
+    })
+}
 
 /// The variable of value reference `reference` and type `kind`, if there is one.
 pub fn find(reference: u32, kind: Kind) -> Option<&'static Variable> {
@@ -329,11 +495,26 @@ pub fn input_start(reference: u32) -> f64 {
     }
 }
 
-/// The value of parameter `reference` in the world of `description` (its first car's),
-/// `None` for an unknown reference or a world without a car.
-pub fn parameter_of(description: &WorldDescription, reference: u32) -> Option<f64> {
-    let car = description.car()?;
+/// The value of parameter `reference` for car `driven` of the world of `description`, `None`
+/// for an unknown reference or car, or a magic-formula coefficient of a car on Webots'
+/// contact (the model description then leaves the parameter out).
+pub fn parameter_of(description: &WorldDescription, driven: usize, reference: u32) -> Option<f64> {
+    let car = description.cars.get(driven)?;
     let p = &car.params;
+    if let Some(field) = tyre_field(reference) {
+        return match &car.tyre {
+            // The coefficients that do not depend on the tyre's radius or load: the class's
+            // default unless the world sets them.
+            TyreChoice::MagicFormula { class, overrides } => Some(
+                overrides
+                    .iter()
+                    .rev()
+                    .find(|(f, _)| *f == field)
+                    .map_or_else(|| class.params::<f64>(1.0, 1.0).get(field), |(_, v)| *v),
+            ),
+            TyreChoice::Webots(_) => None,
+        };
+    }
     Some(match reference {
         1000 => p.body.mass,
         1001 => p.brake_coefficient,
@@ -341,6 +522,10 @@ pub fn parameter_of(description: &WorldDescription, reference: u32) -> Option<f6
         1003 => p.engine.max_power,
         1004 => p.time_0_to_100,
         1005 => description.config.ground_friction,
+        TYRE_MODEL => match car.tyre {
+            TyreChoice::MagicFormula { .. } => 0.0,
+            TyreChoice::Webots(_) => 1.0,
+        },
         _ => return None,
     })
 }
@@ -367,6 +552,18 @@ pub fn output_of(t: &CarTelemetry, reference: u32) -> Option<f64> {
         115 => s.wheel_speeds[Wheel::RearLeft],
         116 => t.rpm.unwrap_or(0.0),
         117 => t.gear.map_or(0.0, |g| f64::from(g.number())),
+        118 => s.tyres[Wheel::FrontRight].slip_ratio,
+        119 => s.tyres[Wheel::FrontLeft].slip_ratio,
+        120 => s.tyres[Wheel::RearRight].slip_ratio,
+        121 => s.tyres[Wheel::RearLeft].slip_ratio,
+        122 => s.tyres[Wheel::FrontRight].slip_angle,
+        123 => s.tyres[Wheel::FrontLeft].slip_angle,
+        124 => s.tyres[Wheel::RearRight].slip_angle,
+        125 => s.tyres[Wheel::RearLeft].slip_angle,
+        126 => s.tyres[Wheel::FrontRight].fz,
+        127 => s.tyres[Wheel::FrontLeft].fz,
+        128 => s.tyres[Wheel::RearRight].fz,
+        129 => s.tyres[Wheel::RearLeft].fz,
         _ => return None,
     })
 }
@@ -397,9 +594,9 @@ mod tests {
         let t = sim.telemetry(id).unwrap();
         for v in &VARIABLES {
             match v.causality {
-                Parameter => assert!(parameter_of(&world, v.reference).is_some()),
+                Parameter => assert!(parameter_of(&world, 0, v.reference).is_some(), "{}", v.name),
                 Output => assert!(output_of(&t, v.reference).is_some(), "{}", v.name),
-                Input => {}
+                Input | Independent => {}
             }
         }
     }

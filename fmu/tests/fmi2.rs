@@ -141,12 +141,23 @@ fn bad_call_order_and_bad_values_are_errors_not_crashes() {
     // A parameter after initialisation.
     assert_eq!(set_real(c, 1000, 1500.0), ERROR);
     assert_eq!(fmi2DoStep(c, 0.0, 0.01, 1), OK);
-    // Unsupported capabilities answer an error.
+    // Unsupported capabilities answer an error; a NULL state too.
+    assert_eq!(fmi2CancelStep(c), ERROR);
     let mut size = 0usize;
+    // SAFETY: a NULL state is refused before it is read.
     assert_eq!(
-        fmi2SerializedFMUstateSize(c, std::ptr::null_mut(), &mut size),
+        unsafe { fmi2SerializedFMUstateSize(c, std::ptr::null_mut(), &mut size) },
         ERROR
     );
+    // Bytes that are not a state are refused.
+    let mut state = std::ptr::null_mut();
+    let junk = [7u8; 40];
+    // SAFETY: 40 valid bytes, a valid pointer to NULL.
+    assert_eq!(
+        unsafe { fmi2DeSerializeFMUstate(c, junk.as_ptr(), junk.len(), &mut state) },
+        ERROR
+    );
+    assert!(state.is_null());
     // NULL component.
     assert_eq!(fmi2DoStep(std::ptr::null_mut(), 0.0, 0.01, 1), ERROR);
     // SAFETY: freed once.
@@ -268,11 +279,22 @@ fn a_state_saved_at_5_s_and_set_back_replays_to_10_s_identically() {
     assert_eq!(unsafe { fmi2SetFMUstate(c, state) }, OK);
     let again = drive(c, 50, 100);
     assert_eq!(first, again);
-    // A state does not cross instances.
+    // Another instance of the same world takes the state by replaying its journal, and goes
+    // on exactly as the first did.
     let other = instantiate("state-other", WORLD);
     initialise(other);
-    // SAFETY: a state of another instance: refused by the world, no memory touched wrongly.
-    assert_eq!(unsafe { fmi2SetFMUstate(other, state) }, ERROR);
+    // SAFETY: a state of this FMU, not yet freed.
+    assert_eq!(unsafe { fmi2SetFMUstate(other, state) }, OK);
+    assert_eq!(drive(other, 50, 100), first);
+    // An instance of another world refuses it and is left as it was.
+    let elsewhere = instantiate(
+        "state-elsewhere",
+        "basicTimeStep = 10\n[vehicle]\nmodel = \"Bus\"\n",
+    );
+    initialise(elsewhere);
+    // SAFETY: a state of this FMU, not yet freed.
+    assert_eq!(unsafe { fmi2SetFMUstate(elsewhere, state) }, ERROR);
+    assert_eq!(get_real(elsewhere, 99), 0.0);
     // SAFETY: freed once; the pointer is cleared.
     assert_eq!(unsafe { fmi2FreeFMUstate(c, &mut state) }, OK);
     assert!(state.is_null());
@@ -280,5 +302,127 @@ fn a_state_saved_at_5_s_and_set_back_replays_to_10_s_identically() {
     unsafe {
         fmi2FreeInstance(c);
         fmi2FreeInstance(other);
+        fmi2FreeInstance(elsewhere);
+    }
+}
+
+#[test]
+fn a_serialised_state_restores_in_a_second_instance_to_the_bit() {
+    let drive = |c: *mut c_void, from: u32, to: u32| {
+        let mut trace = Vec::new();
+        for k in from..to {
+            let t = f64::from(k) * 0.1;
+            assert_eq!(set_real(c, THROTTLE, if t < 3.0 { 1.0 } else { 0.2 }), OK);
+            assert_eq!(
+                set_real(c, STEERING_ANGLE, 0.1 * (t - 4.0).clamp(0.0, 1.0)),
+                OK
+            );
+            assert_eq!(set_integer(c, GEAR, 1), OK);
+            assert_eq!(fmi2DoStep(c, t, 0.1, 1), OK);
+            trace.push([99, 100, 101, 105, 106, 116, 118].map(|vr| get_real(c, vr).to_bits()));
+        }
+        trace
+    };
+    // Parameters are part of the state: the second instance is built without them.
+    let c = instantiate("serial-a", WORLD);
+    assert_eq!(fmi2EnterInitializationMode(c), OK);
+    assert_eq!(set_real(c, 1000, 2100.0), OK);
+    assert_eq!(set_real(c, 1005, 0.7), OK);
+    assert_eq!(fmi2ExitInitializationMode(c), OK);
+    drive(c, 0, 50);
+    let mut state = std::ptr::null_mut();
+    let mut size = 0usize;
+    // SAFETY: valid pointers; the state is this FMU's.
+    let bytes = unsafe {
+        assert_eq!(fmi2GetFMUstate(c, &mut state), OK);
+        assert_eq!(fmi2SerializedFMUstateSize(c, state, &mut size), OK);
+        let mut bytes = vec![0u8; size];
+        assert_eq!(
+            fmi2SerializeFMUstate(c, state, bytes.as_mut_ptr(), size),
+            OK
+        );
+        // A buffer of the wrong size is refused.
+        assert_eq!(
+            fmi2SerializeFMUstate(c, state, bytes.as_mut_ptr(), size - 1),
+            ERROR
+        );
+        bytes
+    };
+    let first = drive(c, 50, 80);
+    let b = instantiate("serial-b", WORLD);
+    initialise(b);
+    let mut read = std::ptr::null_mut();
+    // SAFETY: `bytes` holds `size` bytes; a valid pointer to NULL.
+    unsafe {
+        assert_eq!(
+            fmi2DeSerializeFMUstate(b, bytes.as_ptr(), size, &mut read),
+            OK
+        );
+        assert_eq!(fmi2SetFMUstate(b, read), OK);
+    }
+    assert_eq!(get_real(b, 1000), 2100.0);
+    assert_eq!(get_real(b, 1005), 0.7);
+    assert_eq!(get_real(b, 99), 5.0);
+    assert_eq!(drive(b, 50, 80), first);
+    // SAFETY: each freed once.
+    unsafe {
+        assert_eq!(fmi2FreeFMUstate(c, &mut state), OK);
+        assert_eq!(fmi2FreeFMUstate(b, &mut read), OK);
+        fmi2FreeInstance(c);
+        fmi2FreeInstance(b);
+    }
+}
+
+#[test]
+fn tyre_parameters_reach_the_world() {
+    // The longitudinal peak friction bounds the drive force: 0.2 of the car's weight at most
+    // (less on the driven axle alone), so at most 0.2 · 9.81 · 2 = 3.92 m/s after 2 s.
+    let slippery = instantiate("tyre-mu", WORLD);
+    assert_eq!(
+        get_real(slippery, 1007),
+        1.0,
+        "the passenger-car class's default"
+    );
+    assert_eq!(fmi2EnterInitializationMode(slippery), OK);
+    assert_eq!(set_real(slippery, 1007, 0.2), OK);
+    assert_eq!(fmi2ExitInitializationMode(slippery), OK);
+    assert_eq!(get_real(slippery, 1007), 0.2);
+    // Webots' contact instead of the slip tyre, set on a world that names the tyre by a
+    // string: the parameter replaces it.
+    let webots = instantiate(
+        "tyre-webots",
+        "basicTimeStep = 10\n[vehicle]\nmodel = \"TeslaModel3\"\ntyre = \"magic-formula\"\n",
+    );
+    let mut model = 0;
+    // SAFETY: one reference, one value.
+    assert_eq!(unsafe { fmi2GetInteger(webots, &1006, 1, &mut model) }, OK);
+    assert_eq!(model, 0);
+    assert_eq!(fmi2EnterInitializationMode(webots), OK);
+    assert_eq!(set_integer(webots, 1006, 1), OK);
+    assert_eq!(fmi2ExitInitializationMode(webots), OK);
+    // SAFETY: one reference, one value.
+    assert_eq!(unsafe { fmi2GetInteger(webots, &1006, 1, &mut model) }, OK);
+    assert_eq!(model, 1);
+    for c in [slippery, webots] {
+        assert_eq!(set_real(c, THROTTLE, 1.0), OK);
+        assert_eq!(set_integer(c, GEAR, 1), OK);
+        assert_eq!(fmi2DoStep(c, 0.0, 2.0, 1), OK);
+    }
+    assert!(
+        get_real(slippery, 106) < 3.93,
+        "{}",
+        get_real(slippery, 106)
+    );
+    assert!(get_real(webots, 106) > 3.93, "{}", get_real(webots, 106));
+    // A tyre model that is neither is refused at the end of initialisation.
+    let bad = instantiate("tyre-bad", WORLD);
+    assert_eq!(fmi2EnterInitializationMode(bad), OK);
+    assert_eq!(set_integer(bad, 1006, 7), OK);
+    assert_eq!(fmi2ExitInitializationMode(bad), ERROR);
+    // SAFETY: each freed once.
+    unsafe {
+        fmi2FreeInstance(slippery);
+        fmi2FreeInstance(webots);
+        fmi2FreeInstance(bad);
     }
 }

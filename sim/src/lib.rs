@@ -100,6 +100,7 @@ pub mod road;
 pub mod scenario;
 pub mod sweep;
 pub mod telemetry;
+pub mod traffic;
 pub mod world_file;
 
 mod config;

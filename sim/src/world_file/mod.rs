@@ -64,7 +64,7 @@ use crate::world::CONE_COLOR;
 
 pub use diagnostics::{WorldFileErrors, parse_all};
 pub use error::{Location, NameSet, WorldFileError, WorldFileErrorKind, WorldWarning};
-pub use numbers::parse_with_numbers;
+pub use numbers::{Setting, parse_with_numbers, parse_with_settings};
 pub use overrides::KeyPath;
 pub use robot::RobotDescription;
 pub use vehicle::CarDescription;
