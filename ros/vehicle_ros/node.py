@@ -104,7 +104,7 @@ class _Robot:
             rospy.Service(
                 f"{prefix}get_basic_time_step",
                 get_float,
-                lambda _r: get_floatResponse(car.getBasicTimeStep()),
+                lambda _r: get_floatResponse(calls.call(car.getBasicTimeStep)),
             ),
             rospy.Service(
                 f"{prefix}get_device_list",

@@ -110,8 +110,13 @@ class _Device:
         self._basic_step = basic_step
         self._publishers: Dict[str, rospy.Publisher] = {}
         self._services: List[rospy.Service] = []
-        self._serve("get_model", get_string, lambda _r: get_stringResponse(device.getModel()))
-        self._serve("get_name", get_string, lambda _r: get_stringResponse(device.getName()))
+        # Even the name and model are read on the main thread: every library call is.
+        self._serve(
+            "get_model", get_string, lambda _r: get_stringResponse(calls.call(device.getModel))
+        )
+        self._serve(
+            "get_name", get_string, lambda _r: get_stringResponse(calls.call(device.getName))
+        )
         self._serve("get_node_type", get_int, lambda _r: get_intResponse(self.kind))
         if self.kind in _SAMPLED:
             self._serve("enable", set_int, self._enable)
