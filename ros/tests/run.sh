@@ -86,6 +86,39 @@ if ! grep -q "steering" "$LOGS/node.log"; then
 fi
 echo "ok   the node's stderr has the C API's warnings"
 
+# Webots' prefix rule: a second car's node with --name ego serves everything under /ego/,
+# beside the first node's root names; Ctrl-C (SIGINT) ends it with status 0.
+"$VENV/bin/vehicle-ros" --world ros/tests/worlds/ros.toml --name ego >"$LOGS/node-ego.log" 2>&1 &
+EGO_PID=$!
+"$VENV/bin/python" - <<'PY'
+import rosgraph, rospy, sys
+rospy.init_node("prefix_check")
+rospy.wait_for_service("/ego/robot/get_device_list", timeout=30)  # the last one advertised
+master = rosgraph.Master("/prefix_check")
+services = {name for name, _ in master.getSystemState()[2]}
+topics = {name for name, _ in master.getTopicTypes()}
+wanted = ["/ego/automobile/set_gear", "/ego/gps/enable", "/ego/robot/get_time", "/automobile/set_gear"]
+missing = [n for n in wanted if n not in services]
+missing += [n for n in ["/ego/automobile/current_speed", "/automobile/current_speed"] if n not in topics]
+providers = dict(master.getSystemState()[2])
+if providers.get("/ego/automobile/set_gear") != ["/ego"]:
+    missing.append("/ego/automobile/set_gear served by the node /ego")
+if missing:
+    sys.exit(f"FAIL the --name ego node lacks {missing}")
+print("ok   --name ego serves /ego/automobile/..., /ego/<device>/..., beside /automobile/...")
+PY
+kill -INT "$EGO_PID"
+set +e
+wait "$EGO_PID"
+status=$?
+set -e
+if [ "$status" -ne 0 ] || ! grep -q "interrupted" "$LOGS/node-ego.log"; then
+  echo "FAIL vehicle-ros --name ego after SIGINT: status $status" >&2
+  tail -n 20 "$LOGS/node-ego.log" >&2
+  exit 1
+fi
+echo "ok   vehicle-ros exits 0 on SIGINT"
+
 # The master goes away: the node notices within its check period and exits 0.
 kill "$MASTER_PID"
 wait "$MASTER_PID" 2>/dev/null || true
