@@ -4,7 +4,7 @@
 //! Python or a world file is the same car.
 
 use proto_geom::SensorSlots;
-use vehicle_model::{Aero, BrakeBalance, CarParams, Driver, Model, ParamReport};
+use vehicle_model::{Aero, BrakeBalance, CarParams, Driver, Model, ParamReport, RoadLoad};
 
 use crate::devices::{CarDevices, DeviceSpec};
 use crate::keyboard::{KeyPress, Keyboard};
@@ -58,6 +58,8 @@ pub struct CarBuilder {
     keys: Vec<KeyPress>,
     /// Its body's aerodynamic coefficients, `None` for no air (Webots').
     aero: Option<Aero<f64>>,
+    /// Its wheels' road-load losses, `None` for Webots' wheel damping alone.
+    road_load: Option<RoadLoad<f64>>,
 }
 
 /// A car built from a [`CarBuilder`]: its driver, its body and where it starts.
@@ -93,6 +95,7 @@ impl CarBuilder {
             slots: None,
             keys: Vec::new(),
             aero: None,
+            road_load: None,
         }
     }
 
@@ -181,6 +184,15 @@ impl CarBuilder {
         self
     }
 
+    /// Its wheels' road-load losses ([`RoadLoad`]; e.g. [`RoadLoad::default`]), which replace
+    /// the `wheelsDampingConstant`; `None` (the default, Webots'): that damping alone. Checked
+    /// when the car is added.
+    #[must_use]
+    pub fn road_load(mut self, road_load: Option<RoadLoad<f64>>) -> Self {
+        self.road_load = road_load;
+        self
+    }
+
     /// The sensor-slot frames its devices may sit in (those of a shipped model by default;
     /// none for [`CarBuilder::new`]).
     #[must_use]
@@ -244,6 +256,7 @@ impl CarBuilder {
         let mut spec = VehicleSpec::from_car_with(driver.params(), &self.tyre)?;
         spec.mounting = self.mounting;
         spec.aero = self.aero;
+        spec.road_load = self.road_load;
         spec.validate()?;
         Ok(BuiltCar {
             driver,
@@ -277,6 +290,7 @@ impl From<&CarDescription> for CarBuilder {
             slots: slots_of(car.model),
             keys: car.keys.clone(),
             aero: car.aero,
+            road_load: car.road_load,
         }
     }
 }

@@ -155,6 +155,7 @@ mod mode;
 mod model;
 mod params;
 mod pure_pursuit;
+mod road_load;
 mod sound;
 pub mod tyre;
 mod warning;
@@ -178,6 +179,7 @@ pub use params::{
     WheelMotor, WheelSetting, WheelSlot, is_physical_inertia, wheel_slot_name,
 };
 pub use pure_pursuit::{LOOKAHEAD_TIME, MIN_LOOKAHEAD, PurePursuit, PurePursuitError};
+pub use road_load::{RoadLoad, RoadLoadError};
 pub use sound::{BLINKER_SOUND_FILE, SoundCommand, Sounds};
 pub use tyre::{
     ContactVelocity, Direction, FreeSpin, Linearised, MagicFormula, SlipCurve, SpinPrediction,

@@ -8,7 +8,7 @@ use proto_geom::plausible::Compact;
 use toml::de::DeValue;
 use vehicle_model::{
     Aero, BrakeBalance, CarParams, FieldError, FieldKind, FieldPath, FieldValue, Model,
-    ParamWarning, Wheel, WheelSetting, WheelSlot,
+    ParamWarning, RoadLoad, Wheel, WheelSetting, WheelSlot,
 };
 
 use super::devices::{DEVICE, read_devices};
@@ -18,7 +18,7 @@ use super::error::{
 use super::lane_programme::read_lane_programme;
 use super::programme::{PROGRAMME, read_car_keys, read_car_programme};
 use super::read::{Section, as_f64, describe};
-use super::{aero, tyre};
+use super::{aero, losses, tyre};
 use crate::devices::DeviceSpec;
 use crate::error::ParamError;
 use crate::keyboard::KeyPress;
@@ -42,9 +42,10 @@ const BRAKE_BALANCES: [(&str, BrakeBalance<f64>); 2] = [
 ];
 
 /// The keys of `[vehicle]` that are neither Webots fields nor wheel slots.
-const OWN_KEYS: [&str; 12] = [
+const OWN_KEYS: [&str; 13] = [
     "model",
     aero::KEY,
+    losses::KEY,
     "color",
     "recognitionColors",
     "tyre",
@@ -103,6 +104,9 @@ pub struct CarDescription {
     /// The air on its body (`aero = true` for the model's coefficients, or `[vehicle.aero]`);
     /// `None` (the default, as in Webots): no air.
     pub aero: Option<Aero<f64>>,
+    /// Its wheels' road-load losses (`losses = "road-load"` or `[vehicle.losses]`); `None`
+    /// (the default, `losses = "webots"`): Webots' `wheelsDampingConstant` alone.
+    pub road_load: Option<RoadLoad<f64>>,
 }
 
 impl CarDescription {
@@ -131,6 +135,7 @@ impl CarDescription {
                 seed: 0,
                 radar_cross_section: 0.0,
                 aero: None,
+                road_load: None,
             },
             messages,
         ))
@@ -167,7 +172,12 @@ pub(crate) fn read_vehicle(
         })?,
     };
     let tyre = tyre::read_tyre(s, model)?;
-    let aero = aero::read_aero(s, model)?;
+    let road_load = losses::read_losses(s)?;
+    // The road-load set is the realistic car, air included, unless `aero` says otherwise.
+    let aero = match aero::read_aero(s, model)? {
+        None if road_load.is_some() && s.value(aero::KEY).is_none() => Some(model.aero()),
+        other => other,
+    };
     let mounting = match s.string(MOUNTING)? {
         None => Mounting::default(),
         Some(name) => MOUNTINGS
@@ -302,6 +312,7 @@ pub(crate) fn read_vehicle(
         seed,
         radar_cross_section,
         aero,
+        road_load,
     })
 }
 
