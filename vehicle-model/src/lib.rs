@@ -149,6 +149,7 @@ pub mod actuator;
 mod aero;
 mod brake_balance;
 mod driver;
+pub mod energy;
 mod io;
 mod lights;
 mod mode;
