@@ -6,6 +6,7 @@ use core::ops::Range;
 use proto_geom::WheelField;
 use proto_geom::plausible::Compact;
 use toml::de::DeValue;
+use vehicle_model::energy::EnergyParams;
 use vehicle_model::{
     Aero, BrakeBalance, CarParams, FieldError, FieldKind, FieldPath, FieldValue, Model,
     ParamWarning, RoadLoad, Wheel, WheelSetting, WheelSlot,
@@ -42,10 +43,11 @@ const BRAKE_BALANCES: [(&str, BrakeBalance<f64>); 2] = [
 ];
 
 /// The keys of `[vehicle]` that are neither Webots fields nor wheel slots.
-const OWN_KEYS: [&str; 13] = [
+const OWN_KEYS: [&str; 14] = [
     "model",
     aero::KEY,
     losses::KEY,
+    ENERGY,
     "color",
     "recognitionColors",
     "tyre",
@@ -57,6 +59,9 @@ const OWN_KEYS: [&str; 13] = [
     SEED,
     RADAR_CROSS_SECTION,
 ];
+
+/// The key of a car's energy accounting in `[vehicle]` (a boolean).
+const ENERGY: &str = "energy";
 
 /// The key of the car solid's `radarCrossSection` (m²) in `[vehicle]`.
 const RADAR_CROSS_SECTION: &str = "radarCrossSection";
@@ -107,6 +112,9 @@ pub struct CarDescription {
     /// Its wheels' road-load losses (`losses = "road-load"` or `[vehicle.losses]`); `None`
     /// (the default, `losses = "webots"`): Webots' `wheelsDampingConstant` alone.
     pub road_load: Option<RoadLoad<f64>>,
+    /// Its energy accounting (`energy = true`: the defaults of its `engineType`,
+    /// `EnergyParams::of_engine`, its battery full); `None` (the default): none.
+    pub energy: Option<EnergyParams<f64>>,
 }
 
 impl CarDescription {
@@ -136,6 +144,7 @@ impl CarDescription {
                 radar_cross_section: 0.0,
                 aero: None,
                 road_load: None,
+                energy: None,
             },
             messages,
         ))
@@ -291,6 +300,10 @@ pub(crate) fn read_vehicle(
     let keys = read_car_keys(s)?;
     let devices = read_devices(s, model)?;
     let seed = s.unsigned(SEED)?.unwrap_or(0);
+    let energy = s
+        .boolean(ENERGY)?
+        .unwrap_or(false)
+        .then(|| EnergyParams::of_engine(&params.engine));
     let radar_cross_section = s.number(RADAR_CROSS_SECTION)?.unwrap_or(0.0);
     ParamError::non_negative(RADAR_CROSS_SECTION, radar_cross_section).map_err(|e| {
         s.error(
@@ -313,6 +326,7 @@ pub(crate) fn read_vehicle(
         radar_cross_section,
         aero,
         road_load,
+        energy,
     })
 }
 
