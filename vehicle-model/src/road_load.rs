@@ -64,8 +64,8 @@ const DEFAULT_DRAG_TORQUE: f64 = 1.0;
 const DEFAULT_VISCOUS_DRAG: f64 = 0.0125;
 
 impl<T: Real> Default for RoadLoad<T> {
-    /// The estimates at [`DEFAULT_DRAG_TORQUE`] (1 N·m) and [`DEFAULT_VISCOUS_DRAG`]
-    /// (0.0125 N·m·s/rad), the same for every model.
+    /// The estimates of 1 N·m of constant drag and 0.0125 N·m·s/rad of viscous drag per
+    /// wheel (their reasons are at their constants in the source), the same for every model.
     fn default() -> Self {
         RoadLoad {
             drag_torque: T::from_f64(DEFAULT_DRAG_TORQUE),
