@@ -4,12 +4,13 @@
 //! Python or a world file is the same car.
 
 use proto_geom::SensorSlots;
-use vehicle_model::{Aero, BrakeBalance, CarParams, Driver, Model, ParamReport};
+use vehicle_model::energy::EnergyParams;
+use vehicle_model::{Aero, BrakeBalance, CarParams, Driver, Model, ParamReport, RoadLoad};
 
 use crate::devices::{CarDevices, DeviceSpec};
 use crate::keyboard::{KeyPress, Keyboard};
 
-use crate::error::{ParamError, SimError};
+use crate::error::{ParamError, Rule, SimError};
 use crate::placement::car_placement;
 use crate::vehicle::{Mounting, TyreChoice, VehiclePlacement, VehicleSpec};
 use crate::world_file::CarDescription;
@@ -58,6 +59,10 @@ pub struct CarBuilder {
     keys: Vec<KeyPress>,
     /// Its body's aerodynamic coefficients, `None` for no air (Webots').
     aero: Option<Aero<f64>>,
+    /// Its wheels' road-load losses, `None` for Webots' wheel damping alone.
+    road_load: Option<RoadLoad<f64>>,
+    /// Its energy accounting and its battery's starting charge, `None` for none.
+    energy: Option<(EnergyParams<f64>, f64)>,
 }
 
 /// A car built from a [`CarBuilder`]: its driver, its body and where it starts.
@@ -71,6 +76,7 @@ pub(crate) struct BuiltCar {
     pub devices: CarDevices,
     pub keyboard: Keyboard,
     pub radar_cross_section: f64,
+    pub energy: Option<(EnergyParams<f64>, f64)>,
 }
 
 impl CarBuilder {
@@ -93,6 +99,8 @@ impl CarBuilder {
             slots: None,
             keys: Vec::new(),
             aero: None,
+            road_load: None,
+            energy: None,
         }
     }
 
@@ -181,6 +189,26 @@ impl CarBuilder {
         self
     }
 
+    /// Its wheels' road-load losses ([`RoadLoad`]; e.g. [`RoadLoad::default`]), which replace
+    /// the `wheelsDampingConstant`; `None` (the default, Webots'): that damping alone. Checked
+    /// when the car is added.
+    #[must_use]
+    pub fn road_load(mut self, road_load: Option<RoadLoad<f64>>) -> Self {
+        self.road_load = road_load;
+        self
+    }
+
+    /// Its energy accounting ([`EnergyParams`]; e.g. `EnergyParams::of_engine` of its
+    /// engine) with its battery charged to `soc` (dimensionless, in [0, 1]): read with
+    /// [`Simulation::energy`](crate::Simulation::energy); an electric car whose battery
+    /// empties gets no more drive torque. `None` (the default, Webots'): no accounting.
+    /// Checked when the car is added.
+    #[must_use]
+    pub fn energy(mut self, energy: Option<EnergyParams<f64>>, soc: f64) -> Self {
+        self.energy = energy.map(|e| (e, soc));
+        self
+    }
+
     /// The sensor-slot frames its devices may sit in (those of a shipped model by default;
     /// none for [`CarBuilder::new`]).
     #[must_use]
@@ -236,6 +264,9 @@ impl CarBuilder {
     pub(crate) fn build(self, step_ms: u32) -> Result<BuiltCar, SimError> {
         let placement = self.start();
         ParamError::non_negative("radarCrossSection", self.radar_cross_section)?;
+        if let Some((energy, soc)) = &self.energy {
+            check_energy(energy, *soc)?;
+        }
         let devices = CarDevices::build(&self.devices, self.slots.as_ref(), self.seed)?;
         let (mut driver, report) = Driver::new(self.params, step_ms);
         driver
@@ -244,6 +275,7 @@ impl CarBuilder {
         let mut spec = VehicleSpec::from_car_with(driver.params(), &self.tyre)?;
         spec.mounting = self.mounting;
         spec.aero = self.aero;
+        spec.road_load = self.road_load;
         spec.validate()?;
         Ok(BuiltCar {
             driver,
@@ -255,6 +287,7 @@ impl CarBuilder {
             devices,
             keyboard: Keyboard::new(self.keys),
             radar_cross_section: self.radar_cross_section,
+            energy: self.energy,
         })
     }
 }
@@ -277,8 +310,36 @@ impl From<&CarDescription> for CarBuilder {
             slots: slots_of(car.model),
             keys: car.keys.clone(),
             aero: car.aero,
+            road_load: car.road_load,
+            energy: car.energy.map(|e| (e, 1.0)),
         }
     }
+}
+
+/// Checks the battery and machine of `energy` and the starting charge `soc`.
+fn check_energy(energy: &EnergyParams<f64>, soc: f64) -> Result<(), ParamError> {
+    if !(0.0..=1.0).contains(&soc) {
+        return Err(ParamError {
+            field: "state_of_charge",
+            value: soc,
+            rule: Rule::Text("within [0, 1]"),
+        });
+    }
+    if let Some(battery) = energy.battery {
+        battery.validated().map_err(|e| ParamError {
+            field: e.field,
+            value: e.value,
+            rule: Rule::Text(e.rule),
+        })?;
+    }
+    if let Some(motor) = energy.motor {
+        motor.validated().map_err(|e| ParamError {
+            field: e.field,
+            value: e.value,
+            rule: Rule::Text("finite and >= 0"),
+        })?;
+    }
+    Ok(())
 }
 
 /// The sensor-slot frames of `model`, `None` for the plain `Car` and the models without them.

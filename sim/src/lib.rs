@@ -127,7 +127,9 @@ pub use diff_wheels::{
 };
 pub use error::{BodyOwner, BodyPart, ParamError, Rule, SimError};
 pub use geom::DEFAULT_FRICTION;
-pub use simulation::{CarTelemetry, MAX_DURATION, Simulation, Snapshot, SnapshotError};
+pub use simulation::{
+    CarTelemetry, EnergyReport, MAX_DURATION, Simulation, Snapshot, SnapshotError,
+};
 pub use vehicle::{
     ChassisSpec, Mounting, SpringDamper, SteeringSpec, TyreChoice, TyreSpec, TyreTelemetry,
     Vehicle, VehicleId, VehiclePlacement, VehicleSpec, VehicleState, WheelSpec,

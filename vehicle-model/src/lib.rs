@@ -149,12 +149,14 @@ pub mod actuator;
 mod aero;
 mod brake_balance;
 mod driver;
+pub mod energy;
 mod io;
 mod lights;
 mod mode;
 mod model;
 mod params;
 mod pure_pursuit;
+mod road_load;
 mod sound;
 pub mod tyre;
 mod warning;
@@ -178,6 +180,7 @@ pub use params::{
     WheelMotor, WheelSetting, WheelSlot, is_physical_inertia, wheel_slot_name,
 };
 pub use pure_pursuit::{LOOKAHEAD_TIME, MIN_LOOKAHEAD, PurePursuit, PurePursuitError};
+pub use road_load::{RoadLoad, RoadLoadError};
 pub use sound::{BLINKER_SOUND_FILE, SoundCommand, Sounds};
 pub use tyre::{
     ContactVelocity, Direction, FreeSpin, Linearised, MagicFormula, SlipCurve, SpinPrediction,

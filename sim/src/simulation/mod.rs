@@ -9,6 +9,7 @@
 //! recording of every vehicle that gives a run's telemetry, metrics and replay.
 
 mod devices;
+mod energy;
 mod lanes;
 mod recording;
 mod snapshot;
@@ -34,6 +35,8 @@ use crate::telemetry::TelemetryLog;
 use crate::vehicle::{VehicleId, VehicleState};
 use crate::world::World;
 use crate::world_file::{RobotDescription, WorldDescription};
+use energy::EnergyMeter;
+pub use energy::EnergyReport;
 use recording::Recording;
 pub use snapshot::{Snapshot, SnapshotError};
 
@@ -65,6 +68,8 @@ struct Controlled {
     keyboard: Keyboard,
     /// Its built-in lane-following driver, while it follows a lane.
     follower: Option<LaneFollower>,
+    /// Its energy accounting, if asked for ([`CarBuilder::energy`]).
+    energy: Option<EnergyMeter>,
 }
 
 /// A robot's handle and name.
@@ -227,6 +232,9 @@ impl Simulation {
             .set_radar_cross_section(built.radar_cross_section)?;
         let mut devices = built.devices;
         devices.start_at(self.world.time_ms());
+        let energy = built
+            .energy
+            .map(|(params, soc)| EnergyMeter::new(params, built.driver.params().engine, soc));
         self.cars.push(Controlled {
             id,
             driver: built.driver,
@@ -235,6 +243,7 @@ impl Simulation {
             devices,
             keyboard: built.keyboard,
             follower: None,
+            energy,
         });
         Ok((id, built.report))
     }
@@ -446,7 +455,10 @@ impl Simulation {
                 let state = self.world.vehicle(car.id)?.state();
                 follower.drive(&self.world.config().roads, state, t, &mut car.driver);
             }
-            let commands = *car.driver.step(&sensors);
+            let mut commands = *car.driver.step(&sensors);
+            if let Some(meter) = &car.energy {
+                meter.limit(&mut commands);
+            }
             self.world.vehicle_mut(car.id)?.set_commands(&commands);
         }
         Ok(())
@@ -481,12 +493,42 @@ impl Simulation {
                 car.keyboard.refresh(now_ms);
             }
             self.refresh_devices()?;
+            self.meter_energy()?;
             if let Some(mut recording) = self.recording.take() {
                 recording.sample(self);
                 self.recording = Some(recording);
             }
         }
         result
+    }
+
+    /// Accounts the last step's energy of every car with a meter.
+    fn meter_energy(&mut self) -> Result<(), SimError> {
+        let dt = self.world.dt();
+        for car in &mut self.cars {
+            let Some(meter) = &mut car.energy else {
+                continue;
+            };
+            let vehicle = self.world.vehicle(car.id)?;
+            let Some(commands) = vehicle.commands() else {
+                continue;
+            };
+            let ratio = (car.driver.control_mode() == ControlMode::Torque)
+                .then(|| car.driver.gear().ok())
+                .flatten()
+                .map(|g| car.driver.powertrain().gearbox().ratio(g));
+            meter.step(commands, vehicle.state(), ratio, dt);
+        }
+        Ok(())
+    }
+
+    /// What car `id`'s powertrain did since it was added, and its battery's charge; `None`
+    /// for a car without energy accounting ([`CarBuilder::energy`]).
+    ///
+    /// # Errors
+    /// [`SimError::UnknownVehicle`] for an unknown car.
+    pub fn energy(&self, id: VehicleId) -> Result<Option<EnergyReport>, SimError> {
+        Ok(self.car(id)?.energy.as_ref().map(|m| *m.report()))
     }
 
     /// The telemetry of car `id` after the last step.

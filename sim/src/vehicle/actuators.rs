@@ -89,7 +89,7 @@ impl Vehicle {
         let inertia = self.spec.wheels[w].spin_inertia();
         let wheel = vehicle_model::actuator::WheelSpin {
             inertia,
-            damping: self.spec.wheels_damping,
+            damping: self.viscous_wheel_drag(),
         };
         let omega = wheel.step(omega, drive.torque().unwrap_or(0.0), dt);
         let brake = if brake.is_finite() {

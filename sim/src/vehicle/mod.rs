@@ -75,6 +75,7 @@ mod contact;
 mod inertia;
 mod joints;
 mod multibody;
+mod road_load;
 mod spec;
 mod state;
 mod step;

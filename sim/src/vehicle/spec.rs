@@ -5,7 +5,7 @@ use ackermann::{PerWheel, Wheel};
 use proto_geom::nalgebra::{Point3, Vector3};
 use proto_geom::plausible;
 use proto_geom::{VehicleDimensions, VehicleLayout};
-use vehicle_model::{Aero, CarParams, TyreClass, TyreField, TyreModel, WebotsContact};
+use vehicle_model::{Aero, CarParams, RoadLoad, TyreClass, TyreField, TyreModel, WebotsContact};
 
 use crate::error::{ParamError, Rule};
 
@@ -186,6 +186,10 @@ pub struct VehicleSpec {
     /// level midway between the axles, lift at the axles), relative to the world's wind;
     /// `None` (the default, as in Webots): no air.
     pub aero: Option<Aero<f64>>,
+    /// The wheels' driveline losses ([`RoadLoad`]: a constant and a viscous drag), which then
+    /// replace [`VehicleSpec::wheels_damping`]; `None` (the default, as in Webots): the
+    /// viscous `wheelsDampingConstant` alone.
+    pub road_load: Option<RoadLoad<f64>>,
 }
 
 /// The tyre model of `choice` for a wheel of `radius` (m) carrying `load` (N) at rest.
@@ -306,6 +310,13 @@ impl VehicleSpec {
         self.check_mounting().map_err(|(_, e)| e)?;
         if let Some(aero) = self.aero {
             aero.validated().map_err(|e| ParamError {
+                field: e.field,
+                value: e.value,
+                rule: Rule::Text(e.rule),
+            })?;
+        }
+        if let Some(losses) = self.road_load {
+            losses.validated().map_err(|e| ParamError {
                 field: e.field,
                 value: e.value,
                 rule: Rule::Text(e.rule),
@@ -453,6 +464,7 @@ impl VehicleSpec {
             },
             mounting: Mounting::Cast,
             aero: None,
+            road_load: None,
         };
         spec.validate()?;
         // One nominal load for all four tyres, the car's mean static wheel load: the tyre's

@@ -39,10 +39,15 @@ impl Vehicle {
         self.predictions[w] = None;
         self.spin_steps[w] = None;
         row.grip = match *self.spec.tyres.of(w) {
-            TyreModel::Webots(c) => Grip::Coulomb {
-                compliance: c.force_dependent_slip.map(|fds| (fds / dt) as f32),
-                friction: road as f32,
-            },
+            TyreModel::Webots(c) => {
+                if let Spin::Free { brake_impulse, .. } = &mut row.spin {
+                    *brake_impulse += (self.constant_wheel_drag() * dt) as f32;
+                }
+                Grip::Coulomb {
+                    compliance: c.force_dependent_slip.map(|fds| (fds / dt) as f32),
+                    friction: road as f32,
+                }
+            }
             TyreModel::MagicFormula(tyre) => {
                 let lin = match &mut row.spin {
                     Spin::Imposed => {
@@ -56,8 +61,12 @@ impl Vehicle {
                         // switches the torque of a wheel spinning past its grip on and off
                         // every step, and a sub-stepped wheel rings under that switching.
                         let braked = *brake_impulse > 0.0;
-                        let rolling =
-                            tyre.rolling_resistance_torque(load, f64::from(contact.radius));
+                        // The rolling resistance and the road-load set's constant drag resist
+                        // the spin as the brake does, after the choice above: they do not
+                        // make a rolling wheel a braked one.
+                        let rolling = tyre
+                            .rolling_resistance_torque(load, f64::from(contact.radius))
+                            + self.constant_wheel_drag();
                         *brake_impulse += (rolling * dt) as f32;
                         // The spin the wheel starts the step with; the drive torque's spin-up
                         // (already in `row.omega`) and the brake act within the sub-steps.

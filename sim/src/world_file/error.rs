@@ -126,6 +126,8 @@ pub enum NameSet {
     LineType,
     /// A junction connection's `contactPoint`: `start`, `end`.
     ContactPoint,
+    /// `[vehicle] losses`: `webots`, `road-load`.
+    Losses,
 }
 
 impl fmt::Display for NameSet {
@@ -149,6 +151,7 @@ impl fmt::Display for NameSet {
             NameSet::SegmentType => "road segment type",
             NameSet::LineType => "road line type",
             NameSet::ContactPoint => "contact point",
+            NameSet::Losses => "wheel loss set",
         })
     }
 }

@@ -37,6 +37,7 @@ pub mod diagnostics;
 mod error;
 mod lane_programme;
 mod looks;
+mod losses;
 mod numbers;
 mod overrides;
 mod programme;

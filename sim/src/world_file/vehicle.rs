@@ -6,9 +6,10 @@ use core::ops::Range;
 use proto_geom::WheelField;
 use proto_geom::plausible::Compact;
 use toml::de::DeValue;
+use vehicle_model::energy::EnergyParams;
 use vehicle_model::{
     Aero, BrakeBalance, CarParams, FieldError, FieldKind, FieldPath, FieldValue, Model,
-    ParamWarning, Wheel, WheelSetting, WheelSlot,
+    ParamWarning, RoadLoad, Wheel, WheelSetting, WheelSlot,
 };
 
 use super::devices::{DEVICE, read_devices};
@@ -18,7 +19,7 @@ use super::error::{
 use super::lane_programme::read_lane_programme;
 use super::programme::{PROGRAMME, read_car_keys, read_car_programme};
 use super::read::{Section, as_f64, describe};
-use super::{aero, tyre};
+use super::{aero, losses, tyre};
 use crate::devices::DeviceSpec;
 use crate::error::ParamError;
 use crate::keyboard::KeyPress;
@@ -42,9 +43,11 @@ const BRAKE_BALANCES: [(&str, BrakeBalance<f64>); 2] = [
 ];
 
 /// The keys of `[vehicle]` that are neither Webots fields nor wheel slots.
-const OWN_KEYS: [&str; 12] = [
+const OWN_KEYS: [&str; 14] = [
     "model",
     aero::KEY,
+    losses::KEY,
+    ENERGY,
     "color",
     "recognitionColors",
     "tyre",
@@ -56,6 +59,9 @@ const OWN_KEYS: [&str; 12] = [
     SEED,
     RADAR_CROSS_SECTION,
 ];
+
+/// The key of a car's energy accounting in `[vehicle]` (a boolean).
+const ENERGY: &str = "energy";
 
 /// The key of the car solid's `radarCrossSection` (m²) in `[vehicle]`.
 const RADAR_CROSS_SECTION: &str = "radarCrossSection";
@@ -103,6 +109,12 @@ pub struct CarDescription {
     /// The air on its body (`aero = true` for the model's coefficients, or `[vehicle.aero]`);
     /// `None` (the default, as in Webots): no air.
     pub aero: Option<Aero<f64>>,
+    /// Its wheels' road-load losses (`losses = "road-load"` or `[vehicle.losses]`); `None`
+    /// (the default, `losses = "webots"`): Webots' `wheelsDampingConstant` alone.
+    pub road_load: Option<RoadLoad<f64>>,
+    /// Its energy accounting (`energy = true`: the defaults of its `engineType`,
+    /// `EnergyParams::of_engine`, its battery full); `None` (the default): none.
+    pub energy: Option<EnergyParams<f64>>,
 }
 
 impl CarDescription {
@@ -131,6 +143,8 @@ impl CarDescription {
                 seed: 0,
                 radar_cross_section: 0.0,
                 aero: None,
+                road_load: None,
+                energy: None,
             },
             messages,
         ))
@@ -167,7 +181,12 @@ pub(crate) fn read_vehicle(
         })?,
     };
     let tyre = tyre::read_tyre(s, model)?;
-    let aero = aero::read_aero(s, model)?;
+    let road_load = losses::read_losses(s)?;
+    // The road-load set is the realistic car, air included, unless `aero` says otherwise.
+    let aero = match aero::read_aero(s, model)? {
+        None if road_load.is_some() && s.value(aero::KEY).is_none() => Some(model.aero()),
+        other => other,
+    };
     let mounting = match s.string(MOUNTING)? {
         None => Mounting::default(),
         Some(name) => MOUNTINGS
@@ -281,6 +300,10 @@ pub(crate) fn read_vehicle(
     let keys = read_car_keys(s)?;
     let devices = read_devices(s, model)?;
     let seed = s.unsigned(SEED)?.unwrap_or(0);
+    let energy = s
+        .boolean(ENERGY)?
+        .unwrap_or(false)
+        .then(|| EnergyParams::of_engine(&params.engine));
     let radar_cross_section = s.number(RADAR_CROSS_SECTION)?.unwrap_or(0.0);
     ParamError::non_negative(RADAR_CROSS_SECTION, radar_cross_section).map_err(|e| {
         s.error(
@@ -302,6 +325,8 @@ pub(crate) fn read_vehicle(
         seed,
         radar_cross_section,
         aero,
+        road_load,
+        energy,
     })
 }
 

@@ -1,0 +1,149 @@
+//! A car's energy over a run ([`EnergyMeter`]): after every physics step, the driven wheels'
+//! power goes through `vehicle_model::energy` (machine losses, battery, regenerative braking,
+//! fuel) and the meter integrates what flowed, and keeps the battery's state of charge. An
+//! electric car whose battery is empty gets no more drive torque.
+//!
+//! The wheel power is the driven wheels' commanded torque times their spin, so the meter
+//! counts torque control (throttle and brake, Webots' `wbu_driver_set_throttle`); in speed
+//! control the spin is imposed and no torque is known, and the step counts no wheel power.
+
+use vehicle_model::energy::{DriveState, EnergyParams, PowerFlow};
+use vehicle_model::{Commands, EngineParams, EngineType, Wheel, WheelDrive};
+
+use crate::vehicle::VehicleState;
+
+/// rad/s per rpm.
+const RAD_PER_S_PER_RPM: f64 = std::f64::consts::PI / 30.0;
+
+/// What a car's powertrain did since it was added (SI units) and its battery's charge.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct EnergyReport {
+    /// The battery's state of charge (dimensionless, in [0, 1]; 0 without a battery).
+    pub soc: f64,
+    /// Energy the battery gave at its terminals (J; net of what it took back).
+    pub battery_energy: f64,
+    /// Heat in the battery's internal resistance (J).
+    pub battery_loss: f64,
+    /// The electric machine's losses (J).
+    pub motor_loss: f64,
+    /// Energy the driven wheels received from the powertrain (J; net, a combustion engine's
+    /// braking curve counted negative).
+    pub wheel_energy: f64,
+    /// Energy regenerative braking took back at the wheels (J).
+    pub regenerated: f64,
+    /// Fuel burnt (kg).
+    pub fuel: f64,
+    /// Distance driven (m, the chassis' forward speed integrated).
+    pub distance: f64,
+    /// The last step's flows.
+    pub last: PowerFlow<f64>,
+}
+
+/// A car's energy accounting.
+#[derive(Debug, Clone)]
+pub(crate) struct EnergyMeter {
+    params: EnergyParams<f64>,
+    engine: EngineParams<f64>,
+    report: EnergyReport,
+}
+
+impl EnergyMeter {
+    /// A meter for a car of `engine` with `params`, its battery at `soc` (clamped to [0, 1]).
+    pub(crate) fn new(params: EnergyParams<f64>, engine: EngineParams<f64>, soc: f64) -> Self {
+        let soc = if params.battery.is_some() {
+            soc.clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        EnergyMeter {
+            params,
+            engine,
+            report: EnergyReport {
+                soc,
+                ..EnergyReport::default()
+            },
+        }
+    }
+
+    /// What the car's powertrain did so far.
+    pub(crate) fn report(&self) -> &EnergyReport {
+        &self.report
+    }
+
+    /// True if the car is electric and its battery is empty: its drive gives nothing.
+    pub(crate) fn drained(&self) -> bool {
+        self.engine.engine_type == EngineType::Electric
+            && self.params.battery.is_some()
+            && self.report.soc <= 0.0
+    }
+
+    /// Cuts the forward drive torque of `commands` if [`EnergyMeter::drained`].
+    pub(crate) fn limit(&self, commands: &mut Commands<f64>) {
+        if self.drained() {
+            for w in Wheel::ALL {
+                if let WheelDrive::Torque(t) = commands.drive[w]
+                    && t > 0.0
+                {
+                    commands.drive[w] = WheelDrive::Torque(0.0);
+                }
+            }
+        }
+    }
+
+    /// Accounts one step of `dt` s in which `commands` drove the car now in `state` through
+    /// a gear of `ratio` (engine speed over wheel spin; `None` outside torque control). The
+    /// engine speed is the driven wheels' end-of-step spin times the ratio, as Webots
+    /// estimates it.
+    pub(crate) fn step(
+        &mut self,
+        commands: &Commands<f64>,
+        state: &VehicleState,
+        ratio: Option<f64>,
+        dt: f64,
+    ) {
+        let mut wheel_power = 0.0;
+        let mut brake_torque = 0.0;
+        let mut spin = 0.0;
+        let mut driven = 0.0;
+        for w in Wheel::ALL {
+            if let WheelDrive::Torque(t) = commands.drive[w] {
+                let omega = state.wheel_speeds[w];
+                wheel_power += t * omega;
+                brake_torque += commands.brake_torque[w].max(0.0);
+                spin += omega.abs();
+                driven += 1.0;
+            }
+        }
+        let ratio = ratio.filter(|r| r.is_finite()).unwrap_or(0.0).abs();
+        let wheel_speed = if driven > 0.0 { spin / driven } else { 0.0 };
+        let rpm = wheel_speed * ratio / RAD_PER_S_PER_RPM;
+        let flow = self.params.flow(
+            &self.engine,
+            &DriveState {
+                rpm,
+                wheel_power: if wheel_power.is_finite() {
+                    wheel_power
+                } else {
+                    0.0
+                },
+                brake_torque,
+                wheel_speed,
+                speed: state.forward_speed,
+                ratio,
+            },
+        );
+        let r = &mut self.report;
+        if let Some(battery) = self.params.battery {
+            let s = battery.step(r.soc, flow.battery, dt);
+            r.soc = s.soc;
+            r.battery_energy += s.power * dt;
+            r.battery_loss += s.loss * dt;
+        }
+        r.motor_loss += flow.motor_loss * dt;
+        r.wheel_energy += wheel_power * dt;
+        r.regenerated += flow.regenerated * dt;
+        r.fuel += flow.fuel_rate * dt;
+        r.distance += state.forward_speed * dt;
+        r.last = flow;
+    }
+}

@@ -1,0 +1,67 @@
+//! `[vehicle] losses`: what slows a car's wheels besides the tyres' rolling resistance.
+//! `losses = "webots"` (the default) keeps Webots' viscous `wheelsDampingConstant`;
+//! `losses = "road-load"` replaces it with the road-load set ([`RoadLoad::default`]: a
+//! constant and a viscous drag per wheel) and, unless `aero` is written, turns the air on; a
+//! table `[vehicle.losses]` is `"road-load"` with any of its values overridden.
+
+use proto_geom::plausible::Compact;
+use toml::de::DeValue;
+use vehicle_model::RoadLoad;
+
+use super::error::{NameSet, WorldFileError, WorldFileErrorKind};
+use super::read::{Section, describe};
+
+/// The key in `[vehicle]`.
+pub(crate) const KEY: &str = "losses";
+/// The names `losses` takes.
+const NAMES: [&str; 2] = ["webots", "road-load"];
+/// The keys of `[vehicle.losses]`, as [`vehicle_model::RoadLoadError::field`] names them.
+const TABLE_KEYS: [&str; 2] = ["drag_torque", "viscous_drag"];
+
+/// Reads `losses` of `[vehicle]` (a name or a table): `None` for Webots' damping, else the
+/// road-load set.
+pub(crate) fn read_losses(
+    vehicle: &Section<'_, '_>,
+) -> Result<Option<RoadLoad<f64>>, WorldFileError> {
+    match vehicle.value(KEY) {
+        None => return Ok(None),
+        Some(DeValue::String(name)) => {
+            return match name.as_ref() {
+                "webots" => Ok(None),
+                "road-load" => Ok(Some(RoadLoad::default())),
+                other => Err(vehicle.unknown_name(KEY, NameSet::Losses, other, &NAMES)),
+            };
+        }
+        Some(DeValue::Table(_)) => {}
+        Some(v) => {
+            return Err(vehicle.error(
+                KEY,
+                WorldFileErrorKind::WrongType {
+                    expected: format!("\"webots\", \"road-load\" or a table [vehicle.{KEY}]"),
+                    found: describe(v),
+                },
+            ));
+        }
+    }
+    let Some(t) = vehicle.table(KEY)? else {
+        return Ok(None);
+    };
+    t.check_keys(&TABLE_KEYS)?;
+    let mut losses = RoadLoad::<f64>::default();
+    let fields = [&mut losses.drag_torque, &mut losses.viscous_drag];
+    for (key, field) in TABLE_KEYS.into_iter().zip(fields) {
+        if let Some(v) = t.number(key)? {
+            *field = v;
+        }
+    }
+    losses.validated().map(Some).map_err(|e| {
+        // The key written, or the table itself when a default is at fault (none is).
+        let kind =
+            WorldFileErrorKind::InvalidValue(format!("{}: must be {}", Compact(e.value), e.rule));
+        if t.key_span(e.field).is_some() {
+            t.error(e.field, kind)
+        } else {
+            vehicle.error(KEY, kind)
+        }
+    })
+}

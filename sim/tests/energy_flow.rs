@@ -1,0 +1,113 @@
+//! A car's energy accounting (`CarBuilder::energy`, `Simulation::energy`): the battery's
+//! energy closes against the wheel power, the machine's losses and what regenerative braking
+//! took back; the state of charge never leaves [0, 1]; an electric car whose battery empties
+//! stops driving; a combustion car burns fuel and has no battery.
+#![allow(clippy::unwrap_used)]
+
+use sim::{CarBuilder, EnergyReport, Simulation, VehicleId, World, WorldConfig};
+use vehicle_model::energy::EnergyParams;
+use vehicle_model::{Model, RoadLoad};
+
+/// A simulation of one `model` with its default energy parts, its battery at `soc`, the
+/// road-load losses and its air.
+fn car(model: Model, soc: f64) -> (Simulation, VehicleId) {
+    let mut sim = Simulation::new(World::new(WorldConfig::default()).unwrap());
+    let engine = model.params::<f64>().engine;
+    let builder = CarBuilder::of_model(model)
+        .aero(Some(model.aero()))
+        .road_load(Some(RoadLoad::default()))
+        .energy(Some(EnergyParams::of_engine(&engine)), soc);
+    let (id, _) = sim.add_car(builder).unwrap();
+    (sim, id)
+}
+
+/// Steps `seconds` s, checking after each step that the charge is in [0, 1]; returns the
+/// last report.
+fn run(sim: &mut Simulation, id: VehicleId, seconds: f64) -> EnergyReport {
+    let steps = (seconds / sim.world().dt()).round() as usize;
+    for _ in 0..steps {
+        sim.step().unwrap();
+        let soc = sim.energy(id).unwrap().unwrap().soc;
+        assert!((0.0..=1.0).contains(&soc), "state of charge {soc}");
+    }
+    sim.energy(id).unwrap().unwrap()
+}
+
+#[test]
+fn the_battery_energy_closes_against_wheel_energy_losses_and_regeneration() {
+    let (mut sim, id) = car(Model::TeslaModel3, 0.9);
+    let d = sim.driver_mut(id).unwrap();
+    d.set_gear(1);
+    d.set_throttle(0.6);
+    let start = sim.world().mechanical_energy(id).unwrap();
+    let r = run(&mut sim, id, 8.0);
+    // No energy from nowhere: the car gained at most what its wheels were given.
+    let gained = sim.world().mechanical_energy(id).unwrap() - start;
+    assert!(
+        gained > 0.0 && gained <= r.wheel_energy,
+        "{gained} J of {r:?}"
+    );
+    let d = sim.driver_mut(id).unwrap();
+    d.set_throttle(0.0);
+    d.set_brake_intensity(0.3);
+    let r = run(&mut sim, id, 8.0);
+    assert!(r.regenerated > 1e4, "{r:?}");
+    assert!(r.wheel_energy > 1e5, "{r:?}");
+    // An electric car's battery gives the wheels' energy and the machine's losses, less what
+    // braking took back: 0.5 %, the tolerance (the accounting is exact per step but
+    // for a step the battery's limits clip, none here).
+    let expected = r.wheel_energy + r.motor_loss - r.regenerated;
+    assert!(
+        (r.battery_energy - expected).abs() <= 0.005 * expected,
+        "battery {} J, wheels + losses − regenerated {expected} J",
+        r.battery_energy
+    );
+    assert!(r.soc < 0.9);
+}
+
+#[test]
+fn a_drained_battery_stops_the_car() {
+    // 0.05 % of about 75 kWh: 135 kJ, a few seconds at full throttle.
+    let (mut sim, id) = car(Model::TeslaModel3, 0.0005);
+    let d = sim.driver_mut(id).unwrap();
+    d.set_gear(1);
+    d.set_throttle(1.0);
+    let r = run(&mut sim, id, 10.0);
+    assert_eq!(r.soc, 0.0, "{r:?}");
+    let speed = sim.telemetry(id).unwrap().speed;
+    let later = run(&mut sim, id, 10.0);
+    let slower = sim.telemetry(id).unwrap().speed;
+    // Full throttle, yet the car slows under its losses and draws nothing more.
+    assert!(slower < speed, "{slower} m/s after {speed} m/s");
+    assert!(later.battery_energy <= r.battery_energy + 1e-9, "{later:?}");
+}
+
+#[test]
+fn a_combustion_car_burns_fuel_and_keeps_no_battery() {
+    let (mut sim, id) = car(Model::BmwX5, 1.0);
+    let d = sim.driver_mut(id).unwrap();
+    d.set_gear(1);
+    d.set_throttle(0.5);
+    let r = run(&mut sim, id, 5.0);
+    assert_eq!((r.soc, r.battery_energy, r.regenerated), (0.0, 0.0, 0.0));
+    assert!(r.fuel > 0.0 && r.wheel_energy > 0.0, "{r:?}");
+    // The fuel's energy over the wheels': the inverse of the engine's mean efficiency,
+    // which a Willans line at 0.38 indicated keeps between 1/0.38 and about 1/0.1.
+    let ratio = r.fuel * vehicle_model::energy::PETROL_LHV / r.wheel_energy;
+    assert!((1.0 / 0.38..10.0).contains(&ratio), "{ratio}");
+}
+
+#[test]
+fn a_world_file_turns_the_accounting_on_with_the_engine_s_defaults() {
+    let text = "[vehicle]\nmodel = \"ToyotaPrius\"\nenergy = true\n";
+    let w = sim::world_file::parse_str("w.toml", text).unwrap();
+    let engine = Model::ToyotaPrius.params::<f64>().engine;
+    assert_eq!(
+        w.car().unwrap().energy,
+        Some(EnergyParams::of_engine(&engine))
+    );
+    let (mut sim, _) = Simulation::from_description(&w).unwrap();
+    let id = sim.car_ids().next().unwrap();
+    sim.step().unwrap();
+    assert_eq!(sim.energy(id).unwrap().unwrap().soc, 1.0);
+}

@@ -1,0 +1,292 @@
+//! Where a step's wheel power comes from, engine type by engine type, as Webots' `Car`
+//! defines its torque (`powertrain::Engine::torque`): the combustion curve `f(rpm)`, the
+//! electric part `e(rpm)`, and for the power-split hybrid the engine held at
+//! `hybridPowerSplitRPM` giving `1 − hybridPowerSplitRatio` of its torque to the wheels and
+//! the rest to its generator. Webots scales their sum by the throttle, so each part gives
+//! the wheels its share `c/(c + e)` or `e/(c + e)` of the wheel power.
+//!
+//! The wheel power arrives through a lossless gearbox (the driveline's losses are the
+//! [`crate::RoadLoad`] set's, at the wheels); the electric machine's losses are
+//! [`MotorLosses`], the engine's fuel [`FuelModel`]'s, and braking torque on the driven
+//! wheels goes back through the machine as far as [`RegenBlend`] lets it. A machine neither
+//! driving nor braking is not charged its spin losses: the road-load set's drag holds them.
+
+use ackermann::Real;
+use powertrain::{EngineParams, EngineType};
+
+use super::{Battery, FuelModel, MotorLosses, RegenBlend};
+
+/// rad/s per rpm.
+const RAD_PER_S_PER_RPM: f64 = core::f64::consts::PI / 30.0;
+
+/// The energy parts of a car's powertrain: the machine, battery and regeneration of an
+/// electric or hybrid car, the fuel model of a combustion engine or hybrid.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EnergyParams<T> {
+    /// The electric machine's losses; `None` for a combustion car.
+    pub motor: Option<MotorLosses<T>>,
+    /// The traction battery; `None` for a combustion car.
+    pub battery: Option<Battery<T>>,
+    /// Regenerative braking; `None` without a machine.
+    pub regen: Option<RegenBlend<T>>,
+    /// The combustion engine's fuel; `None` for an electric car.
+    pub fuel: Option<FuelModel<T>>,
+}
+
+/// A step's power flows (W, and kg/s of fuel).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PowerFlow<T> {
+    /// Power the battery gives at its terminals (W; negative while it charges).
+    pub battery: T,
+    /// The electric machine's losses (W, ≥ 0), the generator's included.
+    pub motor_loss: T,
+    /// Power the machine takes back from braking, at the wheels (W, ≥ 0).
+    pub regenerated: T,
+    /// Braking torque left to the friction brakes of the driven wheels (N·m, ≥ 0).
+    pub friction_brake: T,
+    /// Fuel burnt (kg/s, ≥ 0).
+    pub fuel_rate: T,
+}
+
+/// A driven car's state for one step, as the driver library sees it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DriveState<T> {
+    /// The engine speed estimate (rpm, ≥ 0): Webots' from the wheel speed and the gear.
+    pub rpm: T,
+    /// Power the engine gives the driven wheels (W): the sum of their drive torque times
+    /// spin; negative for a combustion engine's braking curve.
+    pub wheel_power: T,
+    /// The friction brake torque asked for on the driven wheels (N·m, ≥ 0, their sum).
+    pub brake_torque: T,
+    /// The driven wheels' mean spin (rad/s).
+    pub wheel_speed: T,
+    /// The car's speed (m/s).
+    pub speed: T,
+    /// Engine speed over wheel spin (dimensionless, the gear's ratio; 0 in neutral).
+    pub ratio: T,
+}
+
+impl<T: Real> EnergyParams<T> {
+    /// The defaults for `engine`: an electric car gets a machine rated at its
+    /// `engineMaxTorque`/`engineMaxPower` ([`MotorLosses::rated`]), the electric car's pack
+    /// ([`Battery::electric_car`]) and full regeneration up to its power; a hybrid the same
+    /// machine, the hybrid pack ([`Battery::hybrid`]) and a petrol engine of its curve's
+    /// torque; a combustion car that engine alone.
+    pub fn of_engine(engine: &EngineParams<T>) -> Self {
+        let t = engine.engine_type;
+        let machine = t.has_electric();
+        let peak = peak_torque(engine);
+        let top_speed = engine.max_rpm * T::from_f64(RAD_PER_S_PER_RPM);
+        EnergyParams {
+            motor: machine
+                .then(|| MotorLosses::rated(engine.max_torque, engine.max_power, top_speed)),
+            battery: machine.then(|| match t {
+                EngineType::Electric => Battery::electric_car(),
+                _ => Battery::hybrid(),
+            }),
+            regen: machine.then(|| RegenBlend::of_machine(engine.max_power)),
+            fuel: t
+                .has_combustion()
+                .then(|| FuelModel::petrol(peak, top_speed)),
+        }
+    }
+
+    /// The power flows of one step of a car with `engine` in `state`.
+    pub fn flow(&self, engine: &EngineParams<T>, state: &DriveState<T>) -> PowerFlow<T> {
+        let zero = PowerFlow {
+            friction_brake: state.brake_torque.max(T::ZERO),
+            ..PowerFlow::default()
+        };
+        let rpm = state.rpm.finite_or(T::ZERO).abs();
+        let omega = rpm * T::from_f64(RAD_PER_S_PER_RPM);
+        let wheel_power = state.wheel_power.finite_or(T::ZERO);
+        let (combustion, electric) = parts(engine, rpm);
+        let total = combustion + electric;
+        let electric_share = if total > T::ZERO && electric > T::ZERO {
+            (electric / total).clamp(T::ZERO, T::ONE)
+        } else {
+            T::ZERO
+        };
+        let mut flow = zero;
+        // The machine's share, at its own speed.
+        let electric_power = wheel_power * electric_share;
+        if let Some(motor) = self.motor
+            && omega > T::ZERO
+            && electric_power != T::ZERO
+        {
+            let torque = electric_power / omega;
+            flow.battery += motor.electrical_power(torque, omega);
+            flow.motor_loss += motor.loss(torque, omega);
+        }
+        // The engine's share.
+        let combustion_power = wheel_power - electric_power;
+        if let Some(fuel) = self.fuel
+            && combustion_power > T::ZERO
+        {
+            match engine.engine_type {
+                EngineType::PowerSplitHybrid => {
+                    // The engine at the split speed gives its torque `θ·f`; the wheels get
+                    // `(1 − r)·θ·f` at the engine-speed estimate, the generator the rest of
+                    // the engine's power.
+                    let split = engine.hybrid_power_split_rpm * T::from_f64(RAD_PER_S_PER_RPM);
+                    let to_wheels = T::ONE - engine.hybrid_power_split_ratio;
+                    if omega > T::ZERO && to_wheels > T::ZERO {
+                        let engine_torque = combustion_power / (to_wheels * omega);
+                        flow.fuel_rate += fuel.fuel_rate(engine_torque, split);
+                        let generator = engine_torque * split - combustion_power;
+                        if let Some(motor) = self.motor {
+                            let torque = -generator / split;
+                            flow.battery += motor.electrical_power(torque, split);
+                            flow.motor_loss += motor.loss(torque, split);
+                        }
+                    }
+                }
+                _ => {
+                    let w = omega.max(engine.min_rpm * T::from_f64(RAD_PER_S_PER_RPM));
+                    flow.fuel_rate += fuel.fuel_rate(combustion_power / w, w);
+                }
+            }
+        }
+        // Braking: the machine's share of the driven wheels' brake torque, back through the
+        // gear to the machine.
+        if let (Some(regen), Some(motor)) = (self.regen, self.motor) {
+            let ratio = state.ratio.finite_or(T::ZERO).abs();
+            let wheel_speed = state.wheel_speed.finite_or(T::ZERO).abs();
+            let most = engine.max_torque * ratio;
+            let split = regen.split(state.brake_torque, state.speed, wheel_speed, most);
+            if ratio > T::ZERO && split.regenerative > T::ZERO {
+                let machine_speed = wheel_speed * ratio;
+                let torque = -split.regenerative / ratio;
+                flow.regenerated = split.regenerative * wheel_speed;
+                flow.friction_brake = split.friction;
+                flow.battery += motor.electrical_power(torque, machine_speed);
+                flow.motor_loss += motor.loss(torque, machine_speed);
+            }
+        }
+        flow
+    }
+}
+
+/// The combustion and electric parts of `engine`'s torque at `rpm` (N·m, before the
+/// throttle), as `powertrain::Engine::torque` sums them.
+fn parts<T: Real>(engine: &EngineParams<T>, rpm: T) -> (T, T) {
+    if rpm >= engine.max_rpm {
+        return (T::ZERO, T::ZERO);
+    }
+    let on = rpm >= engine.min_rpm;
+    let combustion = match engine.engine_type {
+        EngineType::Combustion => curve(engine, rpm.max(engine.min_rpm)),
+        EngineType::Electric => T::ZERO,
+        EngineType::ParallelHybrid if on => curve(engine, rpm),
+        EngineType::PowerSplitHybrid if on => {
+            (T::ONE - engine.hybrid_power_split_ratio)
+                * curve(engine, engine.hybrid_power_split_rpm)
+        }
+        EngineType::ParallelHybrid | EngineType::PowerSplitHybrid => T::ZERO,
+    };
+    let electric = if engine.engine_type.has_electric() {
+        let omega = rpm * T::from_f64(RAD_PER_S_PER_RPM);
+        if omega > T::ZERO {
+            engine.max_torque.min(engine.max_power / omega)
+        } else {
+            engine.max_torque
+        }
+    } else {
+        T::ZERO
+    };
+    (combustion.max(T::ZERO), electric)
+}
+
+/// The combustion curve `a + b·x + c·x²` (N·m) at `x` rpm.
+fn curve<T: Real>(engine: &EngineParams<T>, x: T) -> T {
+    let [a, b, c] = engine.function_coefficients;
+    a + b * x + c * x * x
+}
+
+/// The combustion curve's largest torque between `engineMinRPM` and `engineMaxRPM` (N·m,
+/// at least 1): at an end or at the parabola's vertex.
+fn peak_torque<T: Real>(engine: &EngineParams<T>) -> T {
+    let [_, b, c] = engine.function_coefficients;
+    let mut best = curve(engine, engine.min_rpm).max(curve(engine, engine.max_rpm));
+    if c < T::ZERO {
+        let vertex = -b / (T::TWO * c);
+        if vertex > engine.min_rpm && vertex < engine.max_rpm {
+            best = best.max(curve(engine, vertex));
+        }
+    }
+    best.finite_or(T::ONE).max(T::ONE)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Model;
+
+    /// A car in a gear of ratio 9 whose engine turns at `rpm`, on 0.35 m wheels.
+    fn state(rpm: f64, wheel_power: f64, brake: f64) -> DriveState<f64> {
+        let wheel_speed = rpm * RAD_PER_S_PER_RPM / 9.0;
+        DriveState {
+            rpm,
+            wheel_power,
+            brake_torque: brake,
+            wheel_speed,
+            speed: wheel_speed * 0.35,
+            ratio: 9.0,
+        }
+    }
+
+    #[test]
+    fn an_electric_car_draws_the_wheel_power_plus_the_machine_s_losses() {
+        let engine = Model::TeslaModel3.params::<f64>().engine;
+        let e = EnergyParams::of_engine(&engine);
+        assert!(e.fuel.is_none() && e.battery.is_some());
+        let rpm = 50.0 * 9.0 / RAD_PER_S_PER_RPM;
+        let f = e.flow(&engine, &state(rpm, 20_000.0, 0.0));
+        assert!((f.battery - 20_000.0 - f.motor_loss).abs() < 1e-9, "{f:?}");
+        assert!(f.motor_loss > 0.0 && f.fuel_rate == 0.0);
+        // Braking at 800 N·m on the wheels spinning at 50 rad/s: 40 kW, within the machine's
+        // torque and power, so it takes it all; the battery gets it less the losses.
+        let f = e.flow(&engine, &state(rpm, 0.0, 800.0));
+        assert!((f.regenerated - 800.0 * 50.0).abs() < 1e-9, "{f:?}");
+        assert_eq!(f.friction_brake, 0.0);
+        assert!(
+            (f.battery + f.regenerated - f.motor_loss).abs() < 1e-9,
+            "{f:?}"
+        );
+    }
+
+    #[test]
+    fn a_combustion_car_burns_fuel_and_has_no_battery() {
+        let engine = Model::BmwX5.params::<f64>().engine;
+        let e = EnergyParams::of_engine(&engine);
+        assert!(e.battery.is_none() && e.regen.is_none());
+        let f = e.flow(&engine, &state(3000.0, 30_000.0, 500.0));
+        assert!(f.fuel_rate > 0.0 && f.battery == 0.0);
+        assert_eq!(f.friction_brake, 500.0);
+        // The fuel's power over the wheel power: the engine's efficiency, 0.2–0.38.
+        let eta = 30_000.0 / (f.fuel_rate * crate::energy::PETROL_LHV);
+        assert!((0.2..0.38).contains(&eta), "{eta}");
+    }
+
+    #[test]
+    fn a_power_split_hybrid_charges_from_the_generator_what_the_wheels_do_not_take() {
+        let engine = Model::ToyotaPrius.params::<f64>().engine;
+        let e = EnergyParams::of_engine(&engine);
+        let rpm = 2000.0_f64.max(engine.min_rpm);
+        let (c, el) = parts(&engine, rpm);
+        let wheel = 20_000.0;
+        let f = e.flow(&engine, &state(rpm, wheel, 0.0));
+        // The engine's share of the wheel power, and the generator's power: the engine's
+        // output at the split speed less that share.
+        let omega = rpm * RAD_PER_S_PER_RPM;
+        let combustion_power = wheel * c / (c + el);
+        let split = engine.hybrid_power_split_rpm * RAD_PER_S_PER_RPM;
+        let engine_torque = combustion_power / ((1.0 - engine.hybrid_power_split_ratio) * omega);
+        let generator = engine_torque * split - combustion_power;
+        let motor = e.motor.unwrap();
+        let expected = motor.electrical_power(wheel * el / (c + el) / omega, omega)
+            + motor.electrical_power(-generator / split, split);
+        assert!((f.battery - expected).abs() < 1e-9, "{f:?} vs {expected}");
+        assert!(f.fuel_rate > 0.0);
+    }
+}
