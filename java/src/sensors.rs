@@ -1,0 +1,105 @@
+//! `WebotsNative`, device part: the GPS, inertial unit, gyro, accelerometer, compass and lidar
+//! functions for the Java device classes, through the C API's Rust twins of its array getters
+//! (`car::values`, `car::lidar_values`: the same checks and messages as the C functions).
+//! Units: m, m/s, rad, rad/s, m/s², periods in ms.
+
+use jni::sys::{jdouble, jdoubleArray, jfloatArray, jint};
+use sim::devices::DeviceKind;
+
+use crate::{double_array, float_array, tag};
+
+natives! { "com_cyberbotics_webots_controller_WebotsNative";
+    /// `wb_gps_enable` (ms).
+    fn gpsEnable(env, device: jint, period: jint) => car::wb_gps_enable(tag(device), period);
+    /// `wb_gps_disable`.
+    fn gpsDisable(env, device: jint) => car::wb_gps_disable(tag(device));
+    /// `wb_gps_get_sampling_period` (ms).
+    fn gpsGetSamplingPeriod(env, device: jint) -> jint => car::wb_gps_get_sampling_period(tag(device));
+    /// `wb_gps_get_values` (m).
+    fn gpsGetValues(env, device: jint) -> jdoubleArray =>
+        double_array(&mut env, car::values::wb_gps_get_values(tag(device)).as_ref().map(|v| &v[..]));
+    /// `wb_gps_get_speed` (m/s).
+    fn gpsGetSpeed(env, device: jint) -> jdouble => car::wb_gps_get_speed(tag(device));
+    /// `wb_gps_get_speed_vector` (m/s).
+    fn gpsGetSpeedVector(env, device: jint) -> jdoubleArray =>
+        double_array(&mut env, car::values::wb_gps_get_speed_vector(tag(device)).as_ref().map(|v| &v[..]));
+    /// `wb_gps_get_coordinate_system` (0 local, 1 WGS84).
+    fn gpsGetCoordinateSystem(env, device: jint) -> jint => car::wb_gps_get_coordinate_system(tag(device));
+
+    /// `wb_inertial_unit_enable` (ms).
+    fn inertialUnitEnable(env, device: jint, period: jint) => car::wb_inertial_unit_enable(tag(device), period);
+    /// `wb_inertial_unit_disable`.
+    fn inertialUnitDisable(env, device: jint) => car::wb_inertial_unit_disable(tag(device));
+    /// `wb_inertial_unit_get_sampling_period` (ms).
+    fn inertialUnitGetSamplingPeriod(env, device: jint) -> jint => car::wb_inertial_unit_get_sampling_period(tag(device));
+    /// `wb_inertial_unit_get_noise` (rad).
+    fn inertialUnitGetNoise(env, device: jint) -> jdouble => car::wb_inertial_unit_get_noise(tag(device));
+    /// `wb_inertial_unit_get_roll_pitch_yaw` (rad).
+    fn inertialUnitGetRollPitchYaw(env, device: jint) -> jdoubleArray =>
+        double_array(&mut env, Some(&car::values::wb_inertial_unit_get_roll_pitch_yaw(tag(device))[..]));
+    /// `wb_inertial_unit_get_quaternion` (`[x, y, z, w]`).
+    fn inertialUnitGetQuaternion(env, device: jint) -> jdoubleArray =>
+        double_array(&mut env, car::values::wb_inertial_unit_get_quaternion(tag(device)).as_ref().map(|v| &v[..]));
+
+    /// `wb_gyro_enable` (ms).
+    fn gyroEnable(env, device: jint, period: jint) => car::wb_gyro_enable(tag(device), period);
+    /// `wb_gyro_disable`.
+    fn gyroDisable(env, device: jint) => car::wb_gyro_disable(tag(device));
+    /// `wb_gyro_get_sampling_period` (ms).
+    fn gyroGetSamplingPeriod(env, device: jint) -> jint => car::wb_gyro_get_sampling_period(tag(device));
+    /// `wb_gyro_get_values` (rad/s).
+    fn gyroGetValues(env, device: jint) -> jdoubleArray => triaxial(&mut env, DeviceKind::Gyro, device);
+
+    /// `wb_accelerometer_enable` (ms).
+    fn accelerometerEnable(env, device: jint, period: jint) => car::wb_accelerometer_enable(tag(device), period);
+    /// `wb_accelerometer_disable`.
+    fn accelerometerDisable(env, device: jint) => car::wb_accelerometer_disable(tag(device));
+    /// `wb_accelerometer_get_sampling_period` (ms).
+    fn accelerometerGetSamplingPeriod(env, device: jint) -> jint => car::wb_accelerometer_get_sampling_period(tag(device));
+    /// `wb_accelerometer_get_values` (m/s²).
+    fn accelerometerGetValues(env, device: jint) -> jdoubleArray => triaxial(&mut env, DeviceKind::Accelerometer, device);
+
+    /// `wb_compass_enable` (ms).
+    fn compassEnable(env, device: jint, period: jint) => car::wb_compass_enable(tag(device), period);
+    /// `wb_compass_disable`.
+    fn compassDisable(env, device: jint) => car::wb_compass_disable(tag(device));
+    /// `wb_compass_get_sampling_period` (ms).
+    fn compassGetSamplingPeriod(env, device: jint) -> jint => car::wb_compass_get_sampling_period(tag(device));
+    /// `wb_compass_get_values` (the north direction, unit vector).
+    fn compassGetValues(env, device: jint) -> jdoubleArray => triaxial(&mut env, DeviceKind::Compass, device);
+
+    /// `wb_lidar_enable` (ms).
+    fn lidarEnable(env, device: jint, period: jint) => car::wb_lidar_enable(tag(device), period);
+    /// `wb_lidar_disable`.
+    fn lidarDisable(env, device: jint) => car::wb_lidar_disable(tag(device));
+    /// `wb_lidar_get_sampling_period` (ms).
+    fn lidarGetSamplingPeriod(env, device: jint) -> jint => car::wb_lidar_get_sampling_period(tag(device));
+    /// `wb_lidar_get_range_image` (m, layer after layer).
+    fn lidarGetRangeImage(env, device: jint) -> jfloatArray =>
+        float_array(&mut env, car::lidar_values::range_image(tag(device)).as_deref());
+    /// `wb_lidar_get_layer_range_image` (m).
+    fn lidarGetLayerRangeImage(env, device: jint, layer: jint) -> jfloatArray =>
+        float_array(&mut env, car::lidar_values::layer_range_image(tag(device), layer).as_deref());
+    /// `wb_lidar_get_horizontal_resolution`.
+    fn lidarGetHorizontalResolution(env, device: jint) -> jint => car::wb_lidar_get_horizontal_resolution(tag(device));
+    /// `wb_lidar_get_number_of_layers`.
+    fn lidarGetNumberOfLayers(env, device: jint) -> jint => car::wb_lidar_get_number_of_layers(tag(device));
+    /// `wb_lidar_get_fov` (rad).
+    fn lidarGetFov(env, device: jint) -> jdouble => car::wb_lidar_get_fov(tag(device));
+    /// `wb_lidar_get_vertical_fov` (rad).
+    fn lidarGetVerticalFov(env, device: jint) -> jdouble => car::wb_lidar_get_vertical_fov(tag(device));
+    /// `wb_lidar_get_min_range` (m).
+    fn lidarGetMinRange(env, device: jint) -> jdouble => car::wb_lidar_get_min_range(tag(device));
+    /// `wb_lidar_get_max_range` (m).
+    fn lidarGetMaxRange(env, device: jint) -> jdouble => car::wb_lidar_get_max_range(tag(device));
+}
+
+/// The three values of the gyro, accelerometer or compass `device` as a Java `double[]`.
+fn triaxial(env: &mut jni::JNIEnv<'_>, kind: DeviceKind, device: jint) -> jdoubleArray {
+    double_array(
+        env,
+        car::values::triaxial_values(kind, tag(device))
+            .as_ref()
+            .map(|v| &v[..]),
+    )
+}
