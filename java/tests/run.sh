@@ -9,7 +9,9 @@
 #     the range image as float[], the loop ending at the world's duration;
 #   * identical stdout: every driver/car getter, GPS and lidar value after every step, as raw
 #     bits, equal to the C ABI's for the same calls;
-#   * identical, non-empty stderr: the bad input's warnings are the C API's own.
+#   * identical, non-empty stderr: the bad input's warnings are the C API's own;
+#   * VehicleDriver.java, Webots' reference controller, compiles and runs to the world's end
+#     with nothing on stderr.
 # Needs cargo, cc, javac, jar and java.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -37,5 +39,11 @@ java -ea -cp "$jar:$work" -Djava.library.path="$prefix/lib" DriveParity >"$work/
 diff -u "$work/c.out" "$work/java.out" || { echo "$0: Java getters differ from C's" >&2; exit 1; }
 diff -u "$work/c.err" "$work/java.err" || { echo "$0: Java's stderr differs from C's" >&2; exit 1; }
 [ -s "$work/c.err" ] || { echo "$0: the bad input printed no warning" >&2; exit 1; }
+# Webots' reference controller, unchanged: compiled as a user would (javac -cp vehicle.jar) and
+# run to the world's end; the driver library writes nothing to stderr for it.
+javac -cp "$jar" -d "$work" "$here/VehicleDriver.java"
+java -cp "$jar:$work" -Djava.library.path="$prefix/lib" VehicleDriver 2>"$work/driver.err"
+[ ! -s "$work/driver.err" ] || { echo "$0: VehicleDriver wrote to stderr:" >&2; cat "$work/driver.err" >&2; exit 1; }
+
 echo "java/tests/run.sh: $(wc -l <"$work/java.out") lines of getters equal to C's; stderr equal ($(wc -l <"$work/c.err") lines):"
 sed 's/^/  /' "$work/c.err"
