@@ -1,4 +1,5 @@
-//! `WebotsNative`, device part: the GPS, inertial unit, gyro, accelerometer, compass and lidar
+//! `WebotsNative`, device part: the GPS, inertial unit, gyro, accelerometer, compass, distance
+//! sensor and lidar
 //! functions for the Java device classes, through the C API's Rust twins of its array getters
 //! (`car::values`, `car::lidar_values`: the same checks and messages as the C functions).
 //! Units: m, m/s, rad, rad/s, m/s², periods in ms.
@@ -67,6 +68,23 @@ natives! { "com_cyberbotics_webots_controller_WebotsNative";
     fn compassGetSamplingPeriod(env, device: jint) -> jint => car::wb_compass_get_sampling_period(tag(device));
     /// `wb_compass_get_values` (the north direction, unit vector).
     fn compassGetValues(env, device: jint) -> jdoubleArray => triaxial(&mut env, DeviceKind::Compass, device);
+
+    /// `wb_distance_sensor_enable` (ms).
+    fn distanceSensorEnable(env, device: jint, period: jint) => car::wb_distance_sensor_enable(tag(device), period);
+    /// `wb_distance_sensor_disable`.
+    fn distanceSensorDisable(env, device: jint) => car::wb_distance_sensor_disable(tag(device));
+    /// `wb_distance_sensor_get_sampling_period` (ms).
+    fn distanceSensorGetSamplingPeriod(env, device: jint) -> jint => car::wb_distance_sensor_get_sampling_period(tag(device));
+    /// `wb_distance_sensor_get_value` (the lookup table's output for the measured distance).
+    fn distanceSensorGetValue(env, device: jint) -> jdouble => car::wb_distance_sensor_get_value(tag(device));
+    /// `wb_distance_sensor_get_max_value`.
+    fn distanceSensorGetMaxValue(env, device: jint) -> jdouble => car::wb_distance_sensor_get_max_value(tag(device));
+    /// `wb_distance_sensor_get_min_value`.
+    fn distanceSensorGetMinValue(env, device: jint) -> jdouble => car::wb_distance_sensor_get_min_value(tag(device));
+    /// `wb_distance_sensor_get_aperture` (rad).
+    fn distanceSensorGetAperture(env, device: jint) -> jdouble => car::wb_distance_sensor_get_aperture(tag(device));
+    /// `wb_distance_sensor_get_type` (`GENERIC`, `INFRA_RED`, `SONAR`, `LASER`).
+    fn distanceSensorGetType(env, device: jint) -> jint => car::wb_distance_sensor_get_type(tag(device));
 
     /// `wb_lidar_enable` (ms).
     fn lidarEnable(env, device: jint, period: jint) => car::wb_lidar_enable(tag(device), period);

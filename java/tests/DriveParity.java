@@ -1,4 +1,5 @@
 import com.cyberbotics.webots.controller.Device;
+import com.cyberbotics.webots.controller.DistanceSensor;
 import com.cyberbotics.webots.controller.GPS;
 import com.cyberbotics.webots.controller.Lidar;
 import com.cyberbotics.webots.controller.vehicle.Car;
@@ -31,7 +32,7 @@ public class DriveParity {
     line.setLength(0);
   }
 
-  static void printState(Car car, GPS gps, Lidar lidar) {
+  static void printState(Car car, GPS gps, Lidar lidar, DistanceSensor front) {
     d("t", car.getTime());
     d("steer", car.getSteeringAngle());
     d("target", car.getTargetCruisingSpeed());
@@ -70,6 +71,7 @@ public class DriveParity {
     for (double x : p) d("gps", x);
     for (double x : v) d("gpsv", x);
     d("gpss", gps.getSpeed());
+    d("front", front.getValue());
     float[] image = lidar.getRangeImage();
     assert image.length == lidar.getHorizontalResolution() * lidar.getNumberOfLayers() : image.length;
     for (float r : image) line.append(String.format(" r=%08x", Float.floatToRawIntBits(r)));
@@ -97,8 +99,12 @@ public class DriveParity {
     assert lidar.getMaxRange() == 30.0 && lidar.getFov() == 0.8;
     assert gps.getCoordinateSystem() == GPS.LOCAL;
     assert car.getControlMode() == -1 : "no control mode before the first command";
+    DistanceSensor front = car.getDistanceSensor("front");
+    assert front != null && car.getDistanceSensor("gps") == null;
+    assert front.getType() == DistanceSensor.LASER && front.getMaxValue() == 20.0;
     gps.enable(10);
     lidar.enable(10);
+    front.enable(10);
     assert gps.getSamplingPeriod() == 10 && lidar.getSamplingPeriod() == 10;
 
     car.setCruisingSpeed(30.0);
@@ -137,7 +143,7 @@ public class DriveParity {
         car.setWipersMode(Driver.FAST);
         car.setBrake(0.4);
       }
-      printState(car, gps, lidar);
+      printState(car, gps, lidar, front);
     }
     line.append("end steps=").append(steps);
     d("t", car.getTime());
@@ -149,6 +155,9 @@ public class DriveParity {
     assert Math.abs(car.getTime() - 2.0) < 1e-9 : car.getTime();
     assert car.getThrottle() == 1.0 : "throttle 2.0 clamped to 1: " + car.getThrottle();
     assert car.getControlMode() == Driver.TORQUE;
+    // The box's face is 11.5 m ahead of the start; the car has driven towards it, so the laser
+    // reads less than that but more than 0 (it never reached the box).
+    assert front.getValue() > 0.0 && front.getValue() < 11.5 : front.getValue();
     car.delete();
   }
 }

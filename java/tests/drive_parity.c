@@ -1,7 +1,7 @@
 /*
  * drive_parity: the C twin of DriveParity.java. Both drive java/tests/worlds/drive.toml with the
  * same calls in the same order (bad input included) and print every driver and car getter, the
- * GPS and the lidar range image after each step as raw bits; run.sh requires their stdout and
+ * GPS, the distance sensor and the lidar range image after each step as raw bits; run.sh requires their stdout and
  * stderr to be identical, so every Java getter returns the C ABI's value for the same state
  * and every warning reaches stderr exactly as from C.
  * It calls the deprecated functions too (Java has them), hence -Wno-deprecated-declarations.
@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include <webots/distance_sensor.h>
 #include <webots/gps.h>
 #include <webots/lidar.h>
 #include <webots/robot.h>
@@ -27,7 +28,7 @@ static void i(const char *name, int x) {
   printf(" %s=%d", name, x);
 }
 
-static void print_state(WbDeviceTag gps, WbDeviceTag lidar) {
+static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front) {
   int w, k;
   d("t", wb_robot_get_time());
   d("steer", wbu_driver_get_steering_angle());
@@ -68,6 +69,7 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar) {
     for (k = 0; k < 3; ++k) d("gpsv", v[k]);
     d("gpss", wb_gps_get_speed(gps));
   }
+  d("front", wb_distance_sensor_get_value(front));
   {
     const float *image = wb_lidar_get_range_image(lidar);
     const int n = wb_lidar_get_horizontal_resolution(lidar) * wb_lidar_get_number_of_layers(lidar);
@@ -82,13 +84,15 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar) {
 }
 
 int main(void) {
-  WbDeviceTag gps, lidar;
+  WbDeviceTag gps, lidar, front;
   int steps = 0;
   wbu_driver_init();
   gps = wb_robot_get_device("gps");
   lidar = wb_robot_get_device("lidar");
   wb_gps_enable(gps, 10);
   wb_lidar_enable(lidar, 10);
+  front = wb_robot_get_device("front");
+  wb_distance_sensor_enable(front, 10);
 
   wbu_driver_set_cruising_speed(30.0);
   wbu_driver_set_steering_angle(0.1);
@@ -123,7 +127,7 @@ int main(void) {
       wbu_driver_set_wipers_mode(FAST);
       wbu_driver_set_brake(0.4);
     }
-    print_state(gps, lidar);
+    print_state(gps, lidar, front);
   }
   printf("end steps=%d", steps);
   d("t", wb_robot_get_time());

@@ -11,6 +11,7 @@ public class Robot {
   // webots/nodes.h values of the device types this binding wraps.
   private static final int NODE_ACCELEROMETER = 35;
   private static final int NODE_COMPASS = 39;
+  private static final int NODE_DISTANCE_SENSOR = 42;
   private static final int NODE_GPS = 44;
   private static final int NODE_GYRO = 45;
   private static final int NODE_INERTIAL_UNIT = 46;
@@ -85,6 +86,11 @@ public class Robot {
     return (Compass) device(WebotsNative.robotGetDevice(name), NODE_COMPASS);
   }
 
+  /** The distance sensor {@code name}; {@code null} if missing or not a distance sensor. */
+  public DistanceSensor getDistanceSensor(String name) {
+    return (DistanceSensor) device(WebotsNative.robotGetDevice(name), NODE_DISTANCE_SENSOR);
+  }
+
   /** The lidar {@code name}; {@code null} if missing or not a lidar. */
   public Lidar getLidar(String name) {
     return (Lidar) device(WebotsNative.robotGetDevice(name), NODE_LIDAR);
@@ -106,6 +112,7 @@ public class Robot {
         case NODE_GYRO: device = new Gyro(tag); break;
         case NODE_ACCELEROMETER: device = new Accelerometer(tag); break;
         case NODE_COMPASS: device = new Compass(tag); break;
+        case NODE_DISTANCE_SENSOR: device = new DistanceSensor(tag); break;
         case NODE_LIDAR: device = new Lidar(tag); break;
         default: device = new Device(tag); break;
       }

@@ -60,6 +60,15 @@ final class WebotsNative {
   static native int compassGetSamplingPeriod(int tag);
   static native double[] compassGetValues(int tag);
 
+  static native void distanceSensorEnable(int tag, int samplingPeriod);
+  static native void distanceSensorDisable(int tag);
+  static native int distanceSensorGetSamplingPeriod(int tag);
+  static native double distanceSensorGetValue(int tag);
+  static native double distanceSensorGetMaxValue(int tag);
+  static native double distanceSensorGetMinValue(int tag);
+  static native double distanceSensorGetAperture(int tag);
+  static native int distanceSensorGetType(int tag);
+
   static native void lidarEnable(int tag, int samplingPeriod);
   static native void lidarDisable(int tag);
   static native int lidarGetSamplingPeriod(int tag);
