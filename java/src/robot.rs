@@ -1,5 +1,5 @@
-//! `WebotsNative`, robot part: `wb_robot_*` and `wb_device_*` for
-//! `com.cyberbotics.webots.controller.Robot` and `Device`. Times in s, steps in ms.
+//! `WebotsNative`, robot part: `wb_robot_*`, `wb_keyboard_*` and `wb_device_*` for
+//! `com.cyberbotics.webots.controller.Robot`, `Keyboard` and `Device`. Times in s, steps in ms.
 
 use std::ffi::{CStr, CString, c_char};
 
@@ -26,6 +26,14 @@ natives! { "com_cyberbotics_webots_controller_WebotsNative";
     fn robotGetDeviceByIndex(env, index: jint) -> jint => jint::from(car::wb_robot_get_device_by_index(index));
     /// `wb_robot_get_device`: the tag of the device `name`, 0 if the robot has none.
     fn robotGetDevice(env, name: JString<'_>) -> jint => device_by_name(&mut env, &name);
+    /// `wb_keyboard_enable` (ms).
+    fn keyboardEnable(env, period: jint) => car::wb_keyboard_enable(period);
+    /// `wb_keyboard_disable`.
+    fn keyboardDisable(env) => car::wb_keyboard_disable();
+    /// `wb_keyboard_get_sampling_period` (ms).
+    fn keyboardGetSamplingPeriod(env) -> jint => car::wb_keyboard_get_sampling_period();
+    /// `wb_keyboard_get_key`: the next key pressed (with modifier bits), -1 when none is left.
+    fn keyboardGetKey(env) -> jint => car::wb_keyboard_get_key();
     /// `wb_device_get_node_type` (`WB_NODE_*`).
     fn deviceGetNodeType(env, device: jint) -> jint => car::wb_device_get_node_type(tag(device));
     /// `wb_device_get_name`; `null` for a wrong tag.

@@ -1,6 +1,7 @@
 import com.cyberbotics.webots.controller.Device;
 import com.cyberbotics.webots.controller.DistanceSensor;
 import com.cyberbotics.webots.controller.GPS;
+import com.cyberbotics.webots.controller.Keyboard;
 import com.cyberbotics.webots.controller.Lidar;
 import com.cyberbotics.webots.controller.vehicle.Car;
 import com.cyberbotics.webots.controller.vehicle.Driver;
@@ -13,6 +14,7 @@ import com.cyberbotics.webots.controller.vehicle.Driver;
  */
 public class DriveParity {
   static final StringBuilder line = new StringBuilder();
+  static final java.util.List<Integer> keys = new java.util.ArrayList<Integer>();
 
   static void d(String name, double x) {
     line.append(String.format(" %s=%016x", name, Double.doubleToRawLongBits(x)));
@@ -72,6 +74,10 @@ public class DriveParity {
     for (double x : v) d("gpsv", x);
     d("gpss", gps.getSpeed());
     d("front", front.getValue());
+    for (int key = car.getKeyboard().getKey(); key != -1; key = car.getKeyboard().getKey()) {
+      i("key", key);
+      keys.add(key);
+    }
     float[] image = lidar.getRangeImage();
     assert image.length == lidar.getHorizontalResolution() * lidar.getNumberOfLayers() : image.length;
     for (float r : image) line.append(String.format(" r=%08x", Float.floatToRawIntBits(r)));
@@ -105,6 +111,8 @@ public class DriveParity {
     gps.enable(10);
     lidar.enable(10);
     front.enable(10);
+    car.getKeyboard().enable(10);
+    assert car.getKeyboard().getSamplingPeriod() == 10;
     assert gps.getSamplingPeriod() == 10 && lidar.getSamplingPeriod() == 10;
 
     car.setCruisingSpeed(30.0);
@@ -157,6 +165,7 @@ public class DriveParity {
     assert car.getControlMode() == Driver.TORQUE;
     // The box's face is 11.5 m ahead of the start; the car has driven towards it, so the laser
     // reads less than that but more than 0 (it never reached the box).
+    assert keys.contains(Keyboard.CONTROL + Keyboard.UP) && keys.contains((int) 'A') : keys;
     assert front.getValue() > 0.0 && front.getValue() < 11.5 : front.getValue();
     car.delete();
   }

@@ -13,6 +13,7 @@
 
 #include <webots/distance_sensor.h>
 #include <webots/gps.h>
+#include <webots/keyboard.h>
 #include <webots/lidar.h>
 #include <webots/robot.h>
 #include <webots/vehicle/car.h>
@@ -71,6 +72,10 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front) {
   }
   d("front", wb_distance_sensor_get_value(front));
   {
+    int key;
+    while ((key = wb_keyboard_get_key()) != -1) i("key", key);
+  }
+  {
     const float *image = wb_lidar_get_range_image(lidar);
     const int n = wb_lidar_get_horizontal_resolution(lidar) * wb_lidar_get_number_of_layers(lidar);
     for (k = 0; k < n; ++k) {
@@ -93,6 +98,7 @@ int main(void) {
   wb_lidar_enable(lidar, 10);
   front = wb_robot_get_device("front");
   wb_distance_sensor_enable(front, 10);
+  wb_keyboard_enable(10);
 
   wbu_driver_set_cruising_speed(30.0);
   wbu_driver_set_steering_angle(0.1);

@@ -19,6 +19,7 @@ public class Robot {
 
   // One Java object per device tag, as in Webots.
   private static final Map<Integer, Device> devices = new HashMap<Integer, Device>();
+  private static final Keyboard keyboard = new Keyboard();
 
   /** Loads the world (the C API's {@code wb_robot_init}: exits with its error otherwise). */
   public Robot() {
@@ -44,6 +45,11 @@ public class Robot {
   /** The world's {@code basicTimeStep} (ms). */
   public double getBasicTimeStep() {
     return WebotsNative.robotGetBasicTimeStep();
+  }
+
+  /** The keyboard (the keys the world's programme presses). */
+  public Keyboard getKeyboard() {
+    return keyboard;
   }
 
   /** The number of devices of the robot. */

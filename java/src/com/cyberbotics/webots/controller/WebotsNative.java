@@ -26,6 +26,10 @@ final class WebotsNative {
   static native int robotGetNumberOfDevices();
   static native int robotGetDeviceByIndex(int index);
   static native int robotGetDevice(String name);
+  static native void keyboardEnable(int samplingPeriod);
+  static native void keyboardDisable();
+  static native int keyboardGetSamplingPeriod();
+  static native int keyboardGetKey();
   static native int deviceGetNodeType(int tag);
   static native String deviceGetName(int tag);
   static native String deviceGetModel(int tag);
