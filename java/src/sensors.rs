@@ -1,5 +1,5 @@
 //! `WebotsNative`, device part: the GPS, inertial unit, gyro, accelerometer, compass, distance
-//! sensor and lidar
+//! sensor, radar and lidar
 //! functions for the Java device classes, through the C API's Rust twins of its array getters
 //! (`car::values`, `car::lidar_values`: the same checks and messages as the C functions).
 //! Units: m, m/s, rad, rad/s, m/s², periods in ms.
@@ -85,6 +85,32 @@ natives! { "com_cyberbotics_webots_controller_WebotsNative";
     fn distanceSensorGetAperture(env, device: jint) -> jdouble => car::wb_distance_sensor_get_aperture(tag(device));
     /// `wb_distance_sensor_get_type` (`GENERIC`, `INFRA_RED`, `SONAR`, `LASER`).
     fn distanceSensorGetType(env, device: jint) -> jint => car::wb_distance_sensor_get_type(tag(device));
+
+    /// `wb_radar_enable` (ms).
+    fn radarEnable(env, device: jint, period: jint) => car::wb_radar_enable(tag(device), period);
+    /// `wb_radar_disable`.
+    fn radarDisable(env, device: jint) => car::wb_radar_disable(tag(device));
+    /// `wb_radar_get_sampling_period` (ms).
+    fn radarGetSamplingPeriod(env, device: jint) -> jint => car::wb_radar_get_sampling_period(tag(device));
+    /// `wb_radar_get_number_of_targets`.
+    fn radarGetNumberOfTargets(env, device: jint) -> jint => car::wb_radar_get_number_of_targets(tag(device));
+    /// `wb_radar_get_targets`, flattened: distance (m), received power (dBm), radial speed
+    /// (m/s) and azimuth (rad) of each target in turn (`Radar.getTargets` builds the objects).
+    fn radarGetTargets(env, device: jint) -> jdoubleArray => {
+        let flat: Vec<f64> = car::radar_targets(tag(device))
+            .iter()
+            .flat_map(|t| [t.distance, t.received_power, t.speed, t.azimuth])
+            .collect();
+        double_array(&mut env, Some(&flat))
+    };
+    /// `wb_radar_get_min_range` (m).
+    fn radarGetMinRange(env, device: jint) -> jdouble => car::wb_radar_get_min_range(tag(device));
+    /// `wb_radar_get_max_range` (m).
+    fn radarGetMaxRange(env, device: jint) -> jdouble => car::wb_radar_get_max_range(tag(device));
+    /// `wb_radar_get_horizontal_fov` (rad).
+    fn radarGetHorizontalFov(env, device: jint) -> jdouble => car::wb_radar_get_horizontal_fov(tag(device));
+    /// `wb_radar_get_vertical_fov` (rad).
+    fn radarGetVerticalFov(env, device: jint) -> jdouble => car::wb_radar_get_vertical_fov(tag(device));
 
     /// `wb_lidar_enable` (ms).
     fn lidarEnable(env, device: jint, period: jint) => car::wb_lidar_enable(tag(device), period);

@@ -3,6 +3,8 @@ import com.cyberbotics.webots.controller.DistanceSensor;
 import com.cyberbotics.webots.controller.GPS;
 import com.cyberbotics.webots.controller.Keyboard;
 import com.cyberbotics.webots.controller.Lidar;
+import com.cyberbotics.webots.controller.Radar;
+import com.cyberbotics.webots.controller.RadarTarget;
 import com.cyberbotics.webots.controller.vehicle.Car;
 import com.cyberbotics.webots.controller.vehicle.Driver;
 
@@ -14,6 +16,7 @@ import com.cyberbotics.webots.controller.vehicle.Driver;
  */
 public class DriveParity {
   static final StringBuilder line = new StringBuilder();
+  static int seenTargets = 0;
   static final java.util.List<Integer> keys = new java.util.ArrayList<Integer>();
 
   static void d(String name, double x) {
@@ -34,7 +37,7 @@ public class DriveParity {
     line.setLength(0);
   }
 
-  static void printState(Car car, GPS gps, Lidar lidar, DistanceSensor front) {
+  static void printState(Car car, GPS gps, Lidar lidar, DistanceSensor front, Radar radar) {
     d("t", car.getTime());
     d("steer", car.getSteeringAngle());
     d("target", car.getTargetCruisingSpeed());
@@ -74,6 +77,15 @@ public class DriveParity {
     for (double x : v) d("gpsv", x);
     d("gpss", gps.getSpeed());
     d("front", front.getValue());
+    RadarTarget[] targets = radar.getTargets();
+    assert targets.length == radar.getNumberOfTargets();
+    for (RadarTarget target : targets) {
+      d("rd", target.getDistance());
+      d("rp", target.getReceivedPower());
+      d("rs", target.getSpeed());
+      d("ra", target.getAzimuth());
+      seenTargets++;
+    }
     for (int key = car.getKeyboard().getKey(); key != -1; key = car.getKeyboard().getKey()) {
       i("key", key);
       keys.add(key);
@@ -112,6 +124,9 @@ public class DriveParity {
     lidar.enable(10);
     front.enable(10);
     car.getKeyboard().enable(10);
+    Radar radar = car.getRadar("radar");
+    assert radar != null;
+    radar.enable(10);
     assert car.getKeyboard().getSamplingPeriod() == 10;
     assert gps.getSamplingPeriod() == 10 && lidar.getSamplingPeriod() == 10;
 
@@ -151,7 +166,7 @@ public class DriveParity {
         car.setWipersMode(Driver.FAST);
         car.setBrake(0.4);
       }
-      printState(car, gps, lidar, front);
+      printState(car, gps, lidar, front, radar);
     }
     line.append("end steps=").append(steps);
     d("t", car.getTime());
@@ -165,6 +180,7 @@ public class DriveParity {
     assert car.getControlMode() == Driver.TORQUE;
     // The box's face is 11.5 m ahead of the start; the car has driven towards it, so the laser
     // reads less than that but more than 0 (it never reached the box).
+    assert seenTargets > 0 : "the radar sees the parked car";
     assert keys.contains(Keyboard.CONTROL + Keyboard.UP) && keys.contains((int) 'A') : keys;
     assert front.getValue() > 0.0 && front.getValue() < 11.5 : front.getValue();
     car.delete();

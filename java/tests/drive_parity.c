@@ -15,6 +15,7 @@
 #include <webots/gps.h>
 #include <webots/keyboard.h>
 #include <webots/lidar.h>
+#include <webots/radar.h>
 #include <webots/robot.h>
 #include <webots/vehicle/car.h>
 #include <webots/vehicle/driver.h>
@@ -29,7 +30,7 @@ static void i(const char *name, int x) {
   printf(" %s=%d", name, x);
 }
 
-static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front) {
+static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, WbDeviceTag radar) {
   int w, k;
   d("t", wb_robot_get_time());
   d("steer", wbu_driver_get_steering_angle());
@@ -72,6 +73,16 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front) {
   }
   d("front", wb_distance_sensor_get_value(front));
   {
+    const WbRadarTarget *targets = wb_radar_get_targets(radar);
+    const int n = wb_radar_get_number_of_targets(radar);
+    for (k = 0; k < n; ++k) {
+      d("rd", targets[k].distance);
+      d("rp", targets[k].received_power);
+      d("rs", targets[k].speed);
+      d("ra", targets[k].azimuth);
+    }
+  }
+  {
     int key;
     while ((key = wb_keyboard_get_key()) != -1) i("key", key);
   }
@@ -89,7 +100,7 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front) {
 }
 
 int main(void) {
-  WbDeviceTag gps, lidar, front;
+  WbDeviceTag gps, lidar, front, radar;
   int steps = 0;
   wbu_driver_init();
   gps = wb_robot_get_device("gps");
@@ -99,6 +110,8 @@ int main(void) {
   front = wb_robot_get_device("front");
   wb_distance_sensor_enable(front, 10);
   wb_keyboard_enable(10);
+  radar = wb_robot_get_device("radar");
+  wb_radar_enable(radar, 10);
 
   wbu_driver_set_cruising_speed(30.0);
   wbu_driver_set_steering_angle(0.1);
@@ -133,7 +146,7 @@ int main(void) {
       wbu_driver_set_wipers_mode(FAST);
       wbu_driver_set_brake(0.4);
     }
-    print_state(gps, lidar, front);
+    print_state(gps, lidar, front, radar);
   }
   printf("end steps=%d", steps);
   d("t", wb_robot_get_time());

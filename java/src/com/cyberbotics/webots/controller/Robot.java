@@ -16,6 +16,7 @@ public class Robot {
   private static final int NODE_GYRO = 45;
   private static final int NODE_INERTIAL_UNIT = 46;
   private static final int NODE_LIDAR = 48;
+  private static final int NODE_RADAR = 54;
 
   // One Java object per device tag, as in Webots.
   private static final Map<Integer, Device> devices = new HashMap<Integer, Device>();
@@ -97,6 +98,11 @@ public class Robot {
     return (DistanceSensor) device(WebotsNative.robotGetDevice(name), NODE_DISTANCE_SENSOR);
   }
 
+  /** The radar {@code name}; {@code null} if missing or not a radar. */
+  public Radar getRadar(String name) {
+    return (Radar) device(WebotsNative.robotGetDevice(name), NODE_RADAR);
+  }
+
   /** The lidar {@code name}; {@code null} if missing or not a lidar. */
   public Lidar getLidar(String name) {
     return (Lidar) device(WebotsNative.robotGetDevice(name), NODE_LIDAR);
@@ -120,6 +126,7 @@ public class Robot {
         case NODE_COMPASS: device = new Compass(tag); break;
         case NODE_DISTANCE_SENSOR: device = new DistanceSensor(tag); break;
         case NODE_LIDAR: device = new Lidar(tag); break;
+        case NODE_RADAR: device = new Radar(tag); break;
         default: device = new Device(tag); break;
       }
       devices.put(tag, device);

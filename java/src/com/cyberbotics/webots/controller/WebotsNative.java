@@ -73,6 +73,16 @@ final class WebotsNative {
   static native double distanceSensorGetAperture(int tag);
   static native int distanceSensorGetType(int tag);
 
+  static native void radarEnable(int tag, int samplingPeriod);
+  static native void radarDisable(int tag);
+  static native int radarGetSamplingPeriod(int tag);
+  static native int radarGetNumberOfTargets(int tag);
+  static native double[] radarGetTargets(int tag);
+  static native double radarGetMinRange(int tag);
+  static native double radarGetMaxRange(int tag);
+  static native double radarGetHorizontalFov(int tag);
+  static native double radarGetVerticalFov(int tag);
+
   static native void lidarEnable(int tag, int samplingPeriod);
   static native void lidarDisable(int tag);
   static native int lidarGetSamplingPeriod(int tag);
