@@ -1,5 +1,5 @@
 //! `WebotsNative`, device part: the GPS, inertial unit, gyro, accelerometer, compass, distance
-//! sensor, radar and lidar
+//! sensor, radar, lidar and road sensor (the project's extension, `vehicle_road_sensor_*`)
 //! functions for the Java device classes, through the C API's Rust twins of its array getters
 //! (`car::values`, `car::lidar_values`: the same checks and messages as the C functions).
 //! Units: m, m/s, rad, rad/s, m/s², periods in ms.
@@ -111,6 +111,39 @@ natives! { "com_cyberbotics_webots_controller_WebotsNative";
     fn radarGetHorizontalFov(env, device: jint) -> jdouble => car::wb_radar_get_horizontal_fov(tag(device));
     /// `wb_radar_get_vertical_fov` (rad).
     fn radarGetVerticalFov(env, device: jint) -> jdouble => car::wb_radar_get_vertical_fov(tag(device));
+
+    /// `vehicle_road_sensor_enable` (ms).
+    fn roadSensorEnable(env, device: jint, period: jint) => car::vehicle_road_sensor_enable(tag(device), period);
+    /// `vehicle_road_sensor_disable`.
+    fn roadSensorDisable(env, device: jint) => car::vehicle_road_sensor_disable(tag(device));
+    /// `vehicle_road_sensor_get_sampling_period` (ms).
+    fn roadSensorGetSamplingPeriod(env, device: jint) -> jint => car::vehicle_road_sensor_get_sampling_period(tag(device));
+    /// `vehicle_road_sensor_get_lookahead`.
+    fn roadSensorGetLookahead(env, device: jint) -> jdouble => car::vehicle_road_sensor_get_lookahead(tag(device));
+    /// `vehicle_road_sensor_get_road`.
+    fn roadSensorGetRoad(env, device: jint) -> jint => car::vehicle_road_sensor_get_road(tag(device));
+    /// `vehicle_road_sensor_get_lane`.
+    fn roadSensorGetLane(env, device: jint) -> jint => car::vehicle_road_sensor_get_lane(tag(device));
+    /// `vehicle_road_sensor_get_station`.
+    fn roadSensorGetStation(env, device: jint) -> jdouble => car::vehicle_road_sensor_get_station(tag(device));
+    /// `vehicle_road_sensor_get_lateral_offset`.
+    fn roadSensorGetLateralOffset(env, device: jint) -> jdouble => car::vehicle_road_sensor_get_lateral_offset(tag(device));
+    /// `vehicle_road_sensor_get_heading_error`.
+    fn roadSensorGetHeadingError(env, device: jint) -> jdouble => car::vehicle_road_sensor_get_heading_error(tag(device));
+    /// `vehicle_road_sensor_get_curvature`.
+    fn roadSensorGetCurvature(env, device: jint) -> jdouble => car::vehicle_road_sensor_get_curvature(tag(device));
+    /// `vehicle_road_sensor_get_curvature_ahead`.
+    fn roadSensorGetCurvatureAhead(env, device: jint) -> jdouble => car::vehicle_road_sensor_get_curvature_ahead(tag(device));
+    /// `vehicle_road_sensor_get_left_line_distance`.
+    fn roadSensorGetLeftLineDistance(env, device: jint) -> jdouble => car::vehicle_road_sensor_get_left_line_distance(tag(device));
+    /// `vehicle_road_sensor_get_right_line_distance`.
+    fn roadSensorGetRightLineDistance(env, device: jint) -> jdouble => car::vehicle_road_sensor_get_right_line_distance(tag(device));
+    /// `vehicle_road_sensor_get_left_edge_distance`.
+    fn roadSensorGetLeftEdgeDistance(env, device: jint) -> jdouble => car::vehicle_road_sensor_get_left_edge_distance(tag(device));
+    /// `vehicle_road_sensor_get_right_edge_distance`.
+    fn roadSensorGetRightEdgeDistance(env, device: jint) -> jdouble => car::vehicle_road_sensor_get_right_edge_distance(tag(device));
+    /// `vehicle_road_sensor_get_lane_width`.
+    fn roadSensorGetLaneWidth(env, device: jint) -> jdouble => car::vehicle_road_sensor_get_lane_width(tag(device));
 
     /// `wb_lidar_enable` (ms).
     fn lidarEnable(env, device: jint, period: jint) => car::wb_lidar_enable(tag(device), period);

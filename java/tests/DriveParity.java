@@ -5,6 +5,7 @@ import com.cyberbotics.webots.controller.Keyboard;
 import com.cyberbotics.webots.controller.Lidar;
 import com.cyberbotics.webots.controller.Radar;
 import com.cyberbotics.webots.controller.RadarTarget;
+import com.cyberbotics.webots.controller.RoadSensor;
 import com.cyberbotics.webots.controller.vehicle.Car;
 import com.cyberbotics.webots.controller.vehicle.Driver;
 
@@ -37,7 +38,7 @@ public class DriveParity {
     line.setLength(0);
   }
 
-  static void printState(Car car, GPS gps, Lidar lidar, DistanceSensor front, Radar radar) {
+  static void printState(Car car, GPS gps, Lidar lidar, DistanceSensor front, Radar radar, RoadSensor lanes) {
     d("t", car.getTime());
     d("steer", car.getSteeringAngle());
     d("target", car.getTargetCruisingSpeed());
@@ -77,6 +78,19 @@ public class DriveParity {
     for (double x : v) d("gpsv", x);
     d("gpss", gps.getSpeed());
     d("front", front.getValue());
+    i("road", lanes.getRoad());
+    i("lane", lanes.getLane());
+    d("lookahead", lanes.getLookahead());
+    d("station", lanes.getStation());
+    d("lateral_offset", lanes.getLateralOffset());
+    d("heading_error", lanes.getHeadingError());
+    d("curvature", lanes.getCurvature());
+    d("curvature_ahead", lanes.getCurvatureAhead());
+    d("left_line_distance", lanes.getLeftLineDistance());
+    d("right_line_distance", lanes.getRightLineDistance());
+    d("left_edge_distance", lanes.getLeftEdgeDistance());
+    d("right_edge_distance", lanes.getRightEdgeDistance());
+    d("lane_width", lanes.getLaneWidth());
     RadarTarget[] targets = radar.getTargets();
     assert targets.length == radar.getNumberOfTargets();
     for (RadarTarget target : targets) {
@@ -127,6 +141,9 @@ public class DriveParity {
     Radar radar = car.getRadar("radar");
     assert radar != null;
     radar.enable(10);
+    RoadSensor lanes = car.getRoadSensor("lanes");
+    assert lanes != null && car.getRoadSensor("radar") == null;
+    lanes.enable(10);
     assert car.getKeyboard().getSamplingPeriod() == 10;
     assert gps.getSamplingPeriod() == 10 && lidar.getSamplingPeriod() == 10;
 
@@ -166,7 +183,7 @@ public class DriveParity {
         car.setWipersMode(Driver.FAST);
         car.setBrake(0.4);
       }
-      printState(car, gps, lidar, front, radar);
+      printState(car, gps, lidar, front, radar, lanes);
     }
     line.append("end steps=").append(steps);
     d("t", car.getTime());
@@ -180,6 +197,7 @@ public class DriveParity {
     assert car.getControlMode() == Driver.TORQUE;
     // The box's face is 11.5 m ahead of the start; the car has driven towards it, so the laser
     // reads less than that but more than 0 (it never reached the box).
+    assert lanes.getRoad() == 0 && lanes.getLaneWidth() == 3.5 : lanes.getRoad() + " " + lanes.getLaneWidth();
     assert seenTargets > 0 : "the radar sees the parked car";
     assert keys.contains(Keyboard.CONTROL + Keyboard.UP) && keys.contains((int) 'A') : keys;
     assert front.getValue() > 0.0 && front.getValue() < 11.5 : front.getValue();

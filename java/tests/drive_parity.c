@@ -19,6 +19,7 @@
 #include <webots/robot.h>
 #include <webots/vehicle/car.h>
 #include <webots/vehicle/driver.h>
+#include <webots/vehicle/road_sensor.h>
 
 static void d(const char *name, double x) {
   uint64_t bits;
@@ -30,7 +31,7 @@ static void i(const char *name, int x) {
   printf(" %s=%d", name, x);
 }
 
-static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, WbDeviceTag radar) {
+static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, WbDeviceTag radar, WbDeviceTag lanes) {
   int w, k;
   d("t", wb_robot_get_time());
   d("steer", wbu_driver_get_steering_angle());
@@ -72,6 +73,19 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, W
     d("gpss", wb_gps_get_speed(gps));
   }
   d("front", wb_distance_sensor_get_value(front));
+  i("road", vehicle_road_sensor_get_road(lanes));
+  i("lane", vehicle_road_sensor_get_lane(lanes));
+  d("lookahead", vehicle_road_sensor_get_lookahead(lanes));
+  d("station", vehicle_road_sensor_get_station(lanes));
+  d("lateral_offset", vehicle_road_sensor_get_lateral_offset(lanes));
+  d("heading_error", vehicle_road_sensor_get_heading_error(lanes));
+  d("curvature", vehicle_road_sensor_get_curvature(lanes));
+  d("curvature_ahead", vehicle_road_sensor_get_curvature_ahead(lanes));
+  d("left_line_distance", vehicle_road_sensor_get_left_line_distance(lanes));
+  d("right_line_distance", vehicle_road_sensor_get_right_line_distance(lanes));
+  d("left_edge_distance", vehicle_road_sensor_get_left_edge_distance(lanes));
+  d("right_edge_distance", vehicle_road_sensor_get_right_edge_distance(lanes));
+  d("lane_width", vehicle_road_sensor_get_lane_width(lanes));
   {
     const WbRadarTarget *targets = wb_radar_get_targets(radar);
     const int n = wb_radar_get_number_of_targets(radar);
@@ -100,7 +114,7 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, W
 }
 
 int main(void) {
-  WbDeviceTag gps, lidar, front, radar;
+  WbDeviceTag gps, lidar, front, radar, lanes;
   int steps = 0;
   wbu_driver_init();
   gps = wb_robot_get_device("gps");
@@ -112,6 +126,8 @@ int main(void) {
   wb_keyboard_enable(10);
   radar = wb_robot_get_device("radar");
   wb_radar_enable(radar, 10);
+  lanes = wb_robot_get_device("lanes");
+  vehicle_road_sensor_enable(lanes, 10);
 
   wbu_driver_set_cruising_speed(30.0);
   wbu_driver_set_steering_angle(0.1);
@@ -146,7 +162,7 @@ int main(void) {
       wbu_driver_set_wipers_mode(FAST);
       wbu_driver_set_brake(0.4);
     }
-    print_state(gps, lidar, front, radar);
+    print_state(gps, lidar, front, radar, lanes);
   }
   printf("end steps=%d", steps);
   d("t", wb_robot_get_time());

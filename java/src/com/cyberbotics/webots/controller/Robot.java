@@ -17,6 +17,8 @@ public class Robot {
   private static final int NODE_INERTIAL_UNIT = 46;
   private static final int NODE_LIDAR = 48;
   private static final int NODE_RADAR = 54;
+  // webots/vehicle/road_sensor.h: VEHICLE_NODE_ROAD_SENSOR, the project's extension.
+  private static final int NODE_ROAD_SENSOR = 1000;
 
   // One Java object per device tag, as in Webots.
   private static final Map<Integer, Device> devices = new HashMap<Integer, Device>();
@@ -103,6 +105,11 @@ public class Robot {
     return (Radar) device(WebotsNative.robotGetDevice(name), NODE_RADAR);
   }
 
+  /** The road sensor {@code name} (the project's extension); {@code null} if missing or not one. */
+  public RoadSensor getRoadSensor(String name) {
+    return (RoadSensor) device(WebotsNative.robotGetDevice(name), NODE_ROAD_SENSOR);
+  }
+
   /** The lidar {@code name}; {@code null} if missing or not a lidar. */
   public Lidar getLidar(String name) {
     return (Lidar) device(WebotsNative.robotGetDevice(name), NODE_LIDAR);
@@ -127,6 +134,7 @@ public class Robot {
         case NODE_DISTANCE_SENSOR: device = new DistanceSensor(tag); break;
         case NODE_LIDAR: device = new Lidar(tag); break;
         case NODE_RADAR: device = new Radar(tag); break;
+        case NODE_ROAD_SENSOR: device = new RoadSensor(tag); break;
         default: device = new Device(tag); break;
       }
       devices.put(tag, device);

@@ -83,6 +83,23 @@ final class WebotsNative {
   static native double radarGetHorizontalFov(int tag);
   static native double radarGetVerticalFov(int tag);
 
+  static native void roadSensorEnable(int tag, int samplingPeriod);
+  static native void roadSensorDisable(int tag);
+  static native int roadSensorGetSamplingPeriod(int tag);
+  static native double roadSensorGetLookahead(int tag);
+  static native int roadSensorGetRoad(int tag);
+  static native int roadSensorGetLane(int tag);
+  static native double roadSensorGetStation(int tag);
+  static native double roadSensorGetLateralOffset(int tag);
+  static native double roadSensorGetHeadingError(int tag);
+  static native double roadSensorGetCurvature(int tag);
+  static native double roadSensorGetCurvatureAhead(int tag);
+  static native double roadSensorGetLeftLineDistance(int tag);
+  static native double roadSensorGetRightLineDistance(int tag);
+  static native double roadSensorGetLeftEdgeDistance(int tag);
+  static native double roadSensorGetRightEdgeDistance(int tag);
+  static native double roadSensorGetLaneWidth(int tag);
+
   static native void lidarEnable(int tag, int samplingPeriod);
   static native void lidarDisable(int tag);
   static native int lidarGetSamplingPeriod(int tag);
