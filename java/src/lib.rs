@@ -22,7 +22,7 @@
 #![allow(unsafe_code)]
 
 use jni::JNIEnv;
-use jni::sys::{jdoubleArray, jfloatArray, jint, jsize};
+use jni::sys::{jdoubleArray, jfloatArray, jint, jintArray, jsize};
 
 /// Defines JNI entry points of one Java class: each `fn name(args) -> ret => body;` becomes
 /// `Java_<class>_<name>`, a static native method (`JNIEnv` and `jclass` first), whose body is
@@ -80,6 +80,20 @@ fn float_array(env: &mut JNIEnv<'_>, values: Option<&[f32]>) -> jfloatArray {
     };
     match env.new_float_array(len) {
         Ok(array) if env.set_float_array_region(&array, 0, values).is_ok() => array.into_raw(),
+        _ => std::ptr::null_mut(),
+    }
+}
+
+/// A new Java `int[]` holding `values`; `null` for `None` or when the JVM cannot allocate it.
+fn int_array(env: &mut JNIEnv<'_>, values: Option<&[i32]>) -> jintArray {
+    let Some(values) = values else {
+        return std::ptr::null_mut();
+    };
+    let Ok(len) = jsize::try_from(values.len()) else {
+        return std::ptr::null_mut();
+    };
+    match env.new_int_array(len) {
+        Ok(array) if env.set_int_array_region(&array, 0, values).is_ok() => array.into_raw(),
         _ => std::ptr::null_mut(),
     }
 }

@@ -1,13 +1,13 @@
 //! `WebotsNative`, device part: the GPS, inertial unit, gyro, accelerometer, compass, distance
-//! sensor, radar, lidar and road sensor (the project's extension, `vehicle_road_sensor_*`)
+//! sensor, radar, camera, lidar and road sensor (the project's extension, `vehicle_road_sensor_*`)
 //! functions for the Java device classes, through the C API's Rust twins of its array getters
 //! (`car::values`, `car::lidar_values`: the same checks and messages as the C functions).
 //! Units: m, m/s, rad, rad/s, m/s², periods in ms.
 
-use jni::sys::{jdouble, jdoubleArray, jfloatArray, jint};
+use jni::sys::{jdouble, jdoubleArray, jfloatArray, jint, jintArray};
 use sim::devices::DeviceKind;
 
-use crate::{double_array, float_array, tag};
+use crate::{double_array, float_array, int_array, tag};
 
 natives! { "com_cyberbotics_webots_controller_WebotsNative";
     /// `wb_gps_enable` (ms).
@@ -144,6 +144,31 @@ natives! { "com_cyberbotics_webots_controller_WebotsNative";
     fn roadSensorGetRightEdgeDistance(env, device: jint) -> jdouble => car::vehicle_road_sensor_get_right_edge_distance(tag(device));
     /// `vehicle_road_sensor_get_lane_width`.
     fn roadSensorGetLaneWidth(env, device: jint) -> jdouble => car::vehicle_road_sensor_get_lane_width(tag(device));
+
+    /// `wb_camera_enable` (ms).
+    fn cameraEnable(env, device: jint, period: jint) => car::wb_camera_enable(tag(device), period);
+    /// `wb_camera_disable`.
+    fn cameraDisable(env, device: jint) => car::wb_camera_disable(tag(device));
+    /// `wb_camera_get_sampling_period` (ms).
+    fn cameraGetSamplingPeriod(env, device: jint) -> jint => car::wb_camera_get_sampling_period(tag(device));
+    /// `wb_camera_get_width` (pixels).
+    fn cameraGetWidth(env, device: jint) -> jint => car::wb_camera_get_width(tag(device));
+    /// `wb_camera_get_height` (pixels).
+    fn cameraGetHeight(env, device: jint) -> jint => car::wb_camera_get_height(tag(device));
+    /// `wb_camera_get_fov` (rad).
+    fn cameraGetFov(env, device: jint) -> jdouble => car::wb_camera_get_fov(tag(device));
+    /// `wb_camera_get_near` (m).
+    fn cameraGetNear(env, device: jint) -> jdouble => car::wb_camera_get_near(tag(device));
+    /// `wb_camera_get_image` as Webots' Java gives it: one `int` per pixel, `0xAARRGGBB`
+    /// (the C image's BGRA bytes read as a little-endian 32-bit word), row after row.
+    fn cameraGetImage(env, device: jint) -> jintArray => {
+        let pixels = car::camera_values::wb_camera_get_image(tag(device)).map(|bgra| {
+            bgra.chunks_exact(4)
+                .map(|p| i32::from_le_bytes([p[0], p[1], p[2], p[3]]))
+                .collect::<Vec<_>>()
+        });
+        int_array(&mut env, pixels.as_deref())
+    };
 
     /// `wb_lidar_enable` (ms).
     fn lidarEnable(env, device: jint, period: jint) => car::wb_lidar_enable(tag(device), period);

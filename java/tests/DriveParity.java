@@ -1,3 +1,4 @@
+import com.cyberbotics.webots.controller.Camera;
 import com.cyberbotics.webots.controller.Device;
 import com.cyberbotics.webots.controller.DistanceSensor;
 import com.cyberbotics.webots.controller.GPS;
@@ -18,6 +19,7 @@ import com.cyberbotics.webots.controller.vehicle.Driver;
 public class DriveParity {
   static final StringBuilder line = new StringBuilder();
   static int seenTargets = 0;
+  static int images = 0;
   static final java.util.List<Integer> keys = new java.util.ArrayList<Integer>();
 
   static void d(String name, double x) {
@@ -38,7 +40,7 @@ public class DriveParity {
     line.setLength(0);
   }
 
-  static void printState(Car car, GPS gps, Lidar lidar, DistanceSensor front, Radar radar, RoadSensor lanes) {
+  static void printState(Car car, GPS gps, Lidar lidar, DistanceSensor front, Radar radar, RoadSensor lanes, Camera camera) {
     d("t", car.getTime());
     d("steer", car.getSteeringAngle());
     d("target", car.getTargetCruisingSpeed());
@@ -78,6 +80,12 @@ public class DriveParity {
     for (double x : v) d("gpsv", x);
     d("gpss", gps.getSpeed());
     d("front", front.getValue());
+    int[] pixels = camera.getImage();
+    if (pixels != null) {
+      assert pixels.length == camera.getWidth() * camera.getHeight();
+      for (int pixel : pixels) line.append(String.format(" px=%08x", pixel));
+      images++;
+    }
     i("road", lanes.getRoad());
     i("lane", lanes.getLane());
     d("lookahead", lanes.getLookahead());
@@ -144,6 +152,9 @@ public class DriveParity {
     RoadSensor lanes = car.getRoadSensor("lanes");
     assert lanes != null && car.getRoadSensor("radar") == null;
     lanes.enable(10);
+    Camera camera = car.getCamera("camera");
+    assert camera != null && camera.getWidth() == 16 && camera.getHeight() == 8;
+    camera.enable(100);
     assert car.getKeyboard().getSamplingPeriod() == 10;
     assert gps.getSamplingPeriod() == 10 && lidar.getSamplingPeriod() == 10;
 
@@ -183,7 +194,7 @@ public class DriveParity {
         car.setWipersMode(Driver.FAST);
         car.setBrake(0.4);
       }
-      printState(car, gps, lidar, front, radar, lanes);
+      printState(car, gps, lidar, front, radar, lanes, camera);
     }
     line.append("end steps=").append(steps);
     d("t", car.getTime());
@@ -198,6 +209,9 @@ public class DriveParity {
     // The box's face is 11.5 m ahead of the start; the car has driven towards it, so the laser
     // reads less than that but more than 0 (it never reached the box).
     assert lanes.getRoad() == 0 && lanes.getLaneWidth() == 3.5 : lanes.getRoad() + " " + lanes.getLaneWidth();
+    assert images > 0 : "the camera gave images";
+    assert Camera.pixelGetRed(0x00ab1234) == 0xab && Camera.pixelGetGreen(0x00ab1234) == 0x12
+        && Camera.pixelGetBlue(0x00ab1234) == 0x34;
     assert seenTargets > 0 : "the radar sees the parked car";
     assert keys.contains(Keyboard.CONTROL + Keyboard.UP) && keys.contains((int) 'A') : keys;
     assert front.getValue() > 0.0 && front.getValue() < 11.5 : front.getValue();

@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include <webots/camera.h>
 #include <webots/distance_sensor.h>
 #include <webots/gps.h>
 #include <webots/keyboard.h>
@@ -31,7 +32,7 @@ static void i(const char *name, int x) {
   printf(" %s=%d", name, x);
 }
 
-static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, WbDeviceTag radar, WbDeviceTag lanes) {
+static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, WbDeviceTag radar, WbDeviceTag lanes, WbDeviceTag camera) {
   int w, k;
   d("t", wb_robot_get_time());
   d("steer", wbu_driver_get_steering_angle());
@@ -73,6 +74,15 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, W
     d("gpss", wb_gps_get_speed(gps));
   }
   d("front", wb_distance_sensor_get_value(front));
+  {
+    /* Java's pixels: 0xAARRGGBB from the BGRA bytes. */
+    const unsigned char *image = wb_camera_get_image(camera);
+    const int n = wb_camera_get_width(camera) * wb_camera_get_height(camera);
+    for (k = 0; image != NULL && k < n; ++k) {
+      const unsigned char *p = image + 4 * k;
+      printf(" px=%08x", ((unsigned)p[3] << 24) | ((unsigned)p[2] << 16) | ((unsigned)p[1] << 8) | p[0]);
+    }
+  }
   i("road", vehicle_road_sensor_get_road(lanes));
   i("lane", vehicle_road_sensor_get_lane(lanes));
   d("lookahead", vehicle_road_sensor_get_lookahead(lanes));
@@ -114,7 +124,7 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, W
 }
 
 int main(void) {
-  WbDeviceTag gps, lidar, front, radar, lanes;
+  WbDeviceTag gps, lidar, front, radar, lanes, camera;
   int steps = 0;
   wbu_driver_init();
   gps = wb_robot_get_device("gps");
@@ -128,6 +138,8 @@ int main(void) {
   wb_radar_enable(radar, 10);
   lanes = wb_robot_get_device("lanes");
   vehicle_road_sensor_enable(lanes, 10);
+  camera = wb_robot_get_device("camera");
+  wb_camera_enable(camera, 100);
 
   wbu_driver_set_cruising_speed(30.0);
   wbu_driver_set_steering_angle(0.1);
@@ -162,7 +174,7 @@ int main(void) {
       wbu_driver_set_wipers_mode(FAST);
       wbu_driver_set_brake(0.4);
     }
-    print_state(gps, lidar, front, radar, lanes);
+    print_state(gps, lidar, front, radar, lanes, camera);
   }
   printf("end steps=%d", steps);
   d("t", wb_robot_get_time());

@@ -10,6 +10,7 @@ import java.util.Map;
 public class Robot {
   // webots/nodes.h values of the device types this binding wraps.
   private static final int NODE_ACCELEROMETER = 35;
+  private static final int NODE_CAMERA = 38;
   private static final int NODE_COMPASS = 39;
   private static final int NODE_DISTANCE_SENSOR = 42;
   private static final int NODE_GPS = 44;
@@ -110,6 +111,11 @@ public class Robot {
     return (RoadSensor) device(WebotsNative.robotGetDevice(name), NODE_ROAD_SENSOR);
   }
 
+  /** The camera {@code name}; {@code null} if missing or not a camera. */
+  public Camera getCamera(String name) {
+    return (Camera) device(WebotsNative.robotGetDevice(name), NODE_CAMERA);
+  }
+
   /** The lidar {@code name}; {@code null} if missing or not a lidar. */
   public Lidar getLidar(String name) {
     return (Lidar) device(WebotsNative.robotGetDevice(name), NODE_LIDAR);
@@ -133,6 +139,7 @@ public class Robot {
         case NODE_COMPASS: device = new Compass(tag); break;
         case NODE_DISTANCE_SENSOR: device = new DistanceSensor(tag); break;
         case NODE_LIDAR: device = new Lidar(tag); break;
+        case NODE_CAMERA: device = new Camera(tag); break;
         case NODE_RADAR: device = new Radar(tag); break;
         case NODE_ROAD_SENSOR: device = new RoadSensor(tag); break;
         default: device = new Device(tag); break;

@@ -100,6 +100,15 @@ final class WebotsNative {
   static native double roadSensorGetRightEdgeDistance(int tag);
   static native double roadSensorGetLaneWidth(int tag);
 
+  static native void cameraEnable(int tag, int samplingPeriod);
+  static native void cameraDisable(int tag);
+  static native int cameraGetSamplingPeriod(int tag);
+  static native int cameraGetWidth(int tag);
+  static native int cameraGetHeight(int tag);
+  static native double cameraGetFov(int tag);
+  static native double cameraGetNear(int tag);
+  static native int[] cameraGetImage(int tag);
+
   static native void lidarEnable(int tag, int samplingPeriod);
   static native void lidarDisable(int tag);
   static native int lidarGetSamplingPeriod(int tag);
