@@ -7,10 +7,16 @@
 #   PREFIX/lib/controller/libcar.so   libcar.a      the car library, and all the state
 #   PREFIX/lib/controller/libdriver.so libdriver.a  the driver library (a shim over libcar)
 #   PREFIX/lib/pkgconfig/webots-vehicle.pc          cflags and libs for pkg-config
+#   PREFIX/lib/java/vehicle.jar                     the Java classes (when javac and jar exist)
+#   PREFIX/lib/libvehicle_java.so                   their JNI library (java/, vehicle-java)
 # after which a controller builds with
 #   cc my_controller.c $(pkg-config --cflags --libs webots-vehicle)   # PKG_CONFIG_PATH=PREFIX/lib/pkgconfig
 # or, without pkg-config,
 #   cc my_controller.c -I PREFIX/include -L PREFIX/lib/controller -ldriver -lcar -Wl,-rpath,PREFIX/lib/controller
+# and a Java controller with
+#   javac -cp PREFIX/lib/java/vehicle.jar MyController.java
+#   java -cp PREFIX/lib/java/vehicle.jar:. -Djava.library.path=PREFIX/lib MyController
+# Without javac or jar on the PATH the Java part is skipped with a message (the rest is staged).
 #
 # Environment: CARGO (default cargo), CC (default cc), AR (default ar), CARGO_TARGET_DIR.
 # Linux (ELF) only: libdriver.so records libcar.so as DT_NEEDED with RUNPATH $ORIGIN.
@@ -96,5 +102,21 @@ Cflags: -I\${includedir}
 Libs: -L\${libdir} -ldriver -lcar -Wl,-rpath,\${libdir}
 Libs.private: $native
 PC
+
+# The Java binding: the JDK's javac and jar only (no Maven or Gradle), classes for Java 8 as
+# Webots compiles its own; the JNI library holds the C API itself (capi as an rlib).
+if command -v javac >/dev/null 2>&1 && command -v jar >/dev/null 2>&1; then
+  echo "stage.sh: building the Java binding (vehicle.jar, libvehicle_java.so)" >&2
+  "$CARGO" build --manifest-path "$workspace/Cargo.toml" -p vehicle-java --lib --profile "$profile"
+  [ -f "$build/libvehicle_java.so" ] || { echo "$0: $build/libvehicle_java.so was not built" >&2; exit 1; }
+  mkdir -p "$prefix/lib/java" "$work/classes"
+  javac -Xlint:-options -Xlint -Werror --release 8 -d "$work/classes" \
+    $(find "$workspace/java/src" -name '*.java' | sort)
+  jar cf "$work/vehicle.jar" -C "$work/classes" .
+  put "$work/vehicle.jar" "$prefix/lib/java/vehicle.jar"
+  put "$build/libvehicle_java.so" "$prefix/lib/libvehicle_java.so"
+else
+  echo "stage.sh: javac or jar not found: the Java binding (lib/java/vehicle.jar) is not staged" >&2
+fi
 
 echo "stage.sh: staged in $prefix" >&2

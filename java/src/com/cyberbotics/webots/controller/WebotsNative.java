@@ -1,0 +1,123 @@
+package com.cyberbotics.webots.controller;
+
+/**
+ * The native methods of the controller package: each is one function of the C API
+ * (libvehicle_java, java/src/robot.rs and sensors.rs). Units are the C API's: ms, s, m, m/s,
+ * rad, rad/s, m/s^2.
+ */
+final class WebotsNative {
+  static {
+    try {
+      System.loadLibrary("vehicle_java");
+    } catch (UnsatisfiedLinkError e) {
+      // Webots' (SWIG's) message and exit status when its JNI library is missing.
+      System.err.println("Native code library failed to load. See the chapter on Dynamic Linking Problems in the SWIG Java documentation for help.\n" + e);
+      System.exit(1);
+    }
+  }
+
+  private WebotsNative() {}
+
+  static native int robotInit();
+  static native void robotCleanup();
+  static native int robotStep(int duration);
+  static native double robotGetTime();
+  static native double robotGetBasicTimeStep();
+  static native int robotGetNumberOfDevices();
+  static native int robotGetDeviceByIndex(int index);
+  static native int robotGetDevice(String name);
+  static native void keyboardEnable(int samplingPeriod);
+  static native void keyboardDisable();
+  static native int keyboardGetSamplingPeriod();
+  static native int keyboardGetKey();
+  static native int deviceGetNodeType(int tag);
+  static native String deviceGetName(int tag);
+  static native String deviceGetModel(int tag);
+
+  static native void gpsEnable(int tag, int samplingPeriod);
+  static native void gpsDisable(int tag);
+  static native int gpsGetSamplingPeriod(int tag);
+  static native double[] gpsGetValues(int tag);
+  static native double gpsGetSpeed(int tag);
+  static native double[] gpsGetSpeedVector(int tag);
+  static native int gpsGetCoordinateSystem(int tag);
+
+  static native void inertialUnitEnable(int tag, int samplingPeriod);
+  static native void inertialUnitDisable(int tag);
+  static native int inertialUnitGetSamplingPeriod(int tag);
+  static native double inertialUnitGetNoise(int tag);
+  static native double[] inertialUnitGetRollPitchYaw(int tag);
+  static native double[] inertialUnitGetQuaternion(int tag);
+
+  static native void gyroEnable(int tag, int samplingPeriod);
+  static native void gyroDisable(int tag);
+  static native int gyroGetSamplingPeriod(int tag);
+  static native double[] gyroGetValues(int tag);
+
+  static native void accelerometerEnable(int tag, int samplingPeriod);
+  static native void accelerometerDisable(int tag);
+  static native int accelerometerGetSamplingPeriod(int tag);
+  static native double[] accelerometerGetValues(int tag);
+
+  static native void compassEnable(int tag, int samplingPeriod);
+  static native void compassDisable(int tag);
+  static native int compassGetSamplingPeriod(int tag);
+  static native double[] compassGetValues(int tag);
+
+  static native void distanceSensorEnable(int tag, int samplingPeriod);
+  static native void distanceSensorDisable(int tag);
+  static native int distanceSensorGetSamplingPeriod(int tag);
+  static native double distanceSensorGetValue(int tag);
+  static native double distanceSensorGetMaxValue(int tag);
+  static native double distanceSensorGetMinValue(int tag);
+  static native double distanceSensorGetAperture(int tag);
+  static native int distanceSensorGetType(int tag);
+
+  static native void radarEnable(int tag, int samplingPeriod);
+  static native void radarDisable(int tag);
+  static native int radarGetSamplingPeriod(int tag);
+  static native int radarGetNumberOfTargets(int tag);
+  static native double[] radarGetTargets(int tag);
+  static native double radarGetMinRange(int tag);
+  static native double radarGetMaxRange(int tag);
+  static native double radarGetHorizontalFov(int tag);
+  static native double radarGetVerticalFov(int tag);
+
+  static native void roadSensorEnable(int tag, int samplingPeriod);
+  static native void roadSensorDisable(int tag);
+  static native int roadSensorGetSamplingPeriod(int tag);
+  static native double roadSensorGetLookahead(int tag);
+  static native int roadSensorGetRoad(int tag);
+  static native int roadSensorGetLane(int tag);
+  static native double roadSensorGetStation(int tag);
+  static native double roadSensorGetLateralOffset(int tag);
+  static native double roadSensorGetHeadingError(int tag);
+  static native double roadSensorGetCurvature(int tag);
+  static native double roadSensorGetCurvatureAhead(int tag);
+  static native double roadSensorGetLeftLineDistance(int tag);
+  static native double roadSensorGetRightLineDistance(int tag);
+  static native double roadSensorGetLeftEdgeDistance(int tag);
+  static native double roadSensorGetRightEdgeDistance(int tag);
+  static native double roadSensorGetLaneWidth(int tag);
+
+  static native void cameraEnable(int tag, int samplingPeriod);
+  static native void cameraDisable(int tag);
+  static native int cameraGetSamplingPeriod(int tag);
+  static native int cameraGetWidth(int tag);
+  static native int cameraGetHeight(int tag);
+  static native double cameraGetFov(int tag);
+  static native double cameraGetNear(int tag);
+  static native int[] cameraGetImage(int tag);
+
+  static native void lidarEnable(int tag, int samplingPeriod);
+  static native void lidarDisable(int tag);
+  static native int lidarGetSamplingPeriod(int tag);
+  static native float[] lidarGetRangeImage(int tag);
+  static native float[] lidarGetLayerRangeImage(int tag, int layer);
+  static native int lidarGetHorizontalResolution(int tag);
+  static native int lidarGetNumberOfLayers(int tag);
+  static native double lidarGetFov(int tag);
+  static native double lidarGetVerticalFov(int tag);
+  static native double lidarGetMinRange(int tag);
+  static native double lidarGetMaxRange(int tag);
+}
