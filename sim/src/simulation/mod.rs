@@ -31,7 +31,7 @@ use crate::keyboard::Keyboard;
 use crate::lane_following::LaneFollower;
 use crate::report::OutputError;
 use crate::scenario::RunReport;
-use crate::telemetry::TelemetryLog;
+use crate::telemetry::{Retention, TelemetryLog};
 use crate::vehicle::{VehicleId, VehicleState};
 use crate::world::World;
 use crate::world_file::{RobotDescription, WorldDescription};
@@ -555,7 +555,34 @@ impl Simulation {
     /// [`Simulation::report`] and [`Simulation::save`] give what was recorded. Recording
     /// again starts afresh.
     pub fn record(&mut self, run: &str) {
-        self.recording = Some(Recording::start(self, run));
+        self.record_with(run, Retention::All);
+    }
+
+    /// [`Simulation::record`] keeping what `retention` says of the vehicles' samples: all,
+    /// the last `n` or only the last (whose [`TelemetryLog::last`] is always there). A
+    /// bounded recording (not [`Retention::All`]) keeps its memory whatever the run's length:
+    /// it records no device rows (`devices.csv` stays empty) and the replay only its first
+    /// frame; its metrics are those of the samples it holds.
+    ///
+    /// ```
+    /// use sim::telemetry::Retention;
+    /// use sim::{CarBuilder, Simulation, World, WorldConfig};
+    /// use std::num::NonZeroUsize;
+    /// use vehicle_model::Model;
+    /// let mut sim = Simulation::new(World::new(WorldConfig::default())?);
+    /// let (id, _) = sim.add_car(CarBuilder::of_model(Model::BmwX5))?;
+    /// sim.record_with("run", Retention::Last(NonZeroUsize::new(10).unwrap()));
+    /// for _ in 0..100 {
+    ///     sim.step()?;
+    /// }
+    /// let log = sim.car_log(id).unwrap();
+    /// // The t = 0 sample and one per step were recorded, the last 10 are held.
+    /// assert_eq!((log.recorded(), log.len()), (101, 10));
+    /// assert_eq!(log.last().unwrap()[0], 1.0); // time_s of the last sample
+    /// # Ok::<(), sim::SimError>(())
+    /// ```
+    pub fn record_with(&mut self, run: &str, retention: Retention) {
+        self.recording = Some(Recording::start(self, run, retention));
     }
 
     /// True while recording.

@@ -12,7 +12,8 @@ use crate::replay::Recorder;
 use crate::report::{self, OutputError};
 use crate::scenario::{DepartureMeter, Metric, MotionMeter, RunReport, ScenarioResult};
 use crate::telemetry::{
-    CsvWriter, DeviceLog, DeviceReadings, DeviceRow, Sample, Telemetry, TelemetryLog, VehicleKind,
+    CsvWriter, DeviceLog, DeviceReadings, DeviceRow, LogMark, Retention, Sample, Telemetry,
+    TelemetryLog, VehicleKind,
 };
 use crate::vehicle::VehicleId;
 
@@ -36,6 +37,9 @@ struct VehicleLog {
 /// The recording of a run: see [`Simulation::record`].
 pub(super) struct Recording {
     run: String,
+    /// What the vehicles' logs keep; a bounded recording keeps no device rows and no replay
+    /// frames after the first (both grow with the run).
+    retention: Retention,
     vehicles: Vec<VehicleLog>,
     /// The devices' samples, cars and devices by index in the simulation's order.
     devices: DeviceLog,
@@ -58,7 +62,7 @@ static NEXT_RECORDING: AtomicU64 = AtomicU64::new(0);
 #[derive(Debug, Clone)]
 pub(super) struct RecordingMark {
     serial: u64,
-    samples: Vec<usize>,
+    samples: Vec<LogMark>,
     device_rows: usize,
     replay: Recorder,
     min_gap: f64,
@@ -118,8 +122,9 @@ impl Simulation {
 }
 
 impl Recording {
-    /// Starts recording `sim` now: a first sample of every vehicle.
-    pub(super) fn start(sim: &Simulation, run: &str) -> Recording {
+    /// Starts recording `sim` now, keeping what `retention` says: a first sample of every
+    /// vehicle.
+    pub(super) fn start(sim: &Simulation, run: &str, retention: Retention) -> Recording {
         let vehicles = sim
             .cars
             .iter()
@@ -132,11 +137,12 @@ impl Recording {
             .map(|(name, target)| VehicleLog {
                 name,
                 target,
-                log: TelemetryLog::new(),
+                log: TelemetryLog::with_retention(retention),
             })
             .collect();
         let mut recording = Recording {
             run: run.to_string(),
+            retention,
             vehicles,
             devices: DeviceLog::new(),
             replay: Recorder::for_simulation(sim),
@@ -153,7 +159,7 @@ impl Recording {
     pub(super) fn mark(&self) -> RecordingMark {
         RecordingMark {
             serial: self.serial,
-            samples: self.vehicles.iter().map(|v| v.log.len()).collect(),
+            samples: self.vehicles.iter().map(|v| v.log.mark()).collect(),
             device_rows: self.devices.len(),
             replay: self.replay.clone(),
             min_gap: self.min_gap,
@@ -172,9 +178,9 @@ impl Recording {
         if mark.serial != self.serial || self.devices.len() < mark.device_rows {
             return Err(SnapshotError::OtherRecording);
         }
-        for (v, &len) in self.vehicles.iter_mut().zip(&mark.samples) {
+        for (v, log_mark) in self.vehicles.iter_mut().zip(&mark.samples) {
             v.log
-                .truncate(len)
+                .rewind(log_mark)
                 .map_err(|e| SnapshotError::Io(e.to_string()))?;
         }
         self.devices
@@ -189,8 +195,10 @@ impl Recording {
     /// Records the state after a step.
     pub(super) fn sample(&mut self, sim: &Simulation) {
         self.log_samples(sim);
-        sim.log_sampled_devices(&mut self.devices);
-        self.replay.sample_simulation(sim);
+        if self.retention == Retention::All {
+            sim.log_sampled_devices(&mut self.devices);
+            self.replay.sample_simulation(sim);
+        }
         let world = sim.world();
         for (i, a) in sim.cars.iter().enumerate() {
             for b in sim.cars.iter().skip(i + 1) {

@@ -4,12 +4,14 @@
 mod device_log;
 mod device_readings;
 mod log;
+mod rows;
 
 use std::io::Write;
 
 pub use device_log::{DEVICE_MEMORY_ROWS, DEVICES_CSV_HEADER, DeviceLog, DeviceRow};
 pub use device_readings::DeviceReadings;
-pub use log::{MEMORY_ROWS, Row, TelemetryLog};
+pub use log::{LogMark, MEMORY_ROWS, Retention, Row, TelemetryLog};
+pub use rows::SharedRows;
 
 use vehicle_model::{KMH_PER_MS, PerWheel, Wheel};
 
