@@ -166,7 +166,7 @@ pub(crate) fn read_vehicle(
             )
         })?,
     };
-    let tyre = tyre::read_tyre(s, model)?;
+    let tyre = tyre::read_tyre(s, model, warnings)?;
     let aero = aero::read_aero(s, model)?;
     let mounting = match s.string(MOUNTING)? {
         None => Mounting::default(),
