@@ -7,6 +7,7 @@ use crate::world_file::{CarDescription, WorldDescription};
 
 use super::car::{CarRig, KMH};
 use super::lane::{LaneSection, TRACK_LENGTH, double_lane_change, reference_y};
+use super::manoeuvres;
 use super::{Metric, Scenario, ScenarioError, ScenarioResult, fit_circle, limit};
 
 /// 100 km/h in m/s.
@@ -83,7 +84,7 @@ fn hits_cone(cone: [f64; 2], x: f64, y: f64, yaw: f64, wheelbase: f64, width: f6
 /// is not a vehicle behaviour.
 const ACCEL_WINDOW: f64 = 0.1;
 
-type Progress<'a> = &'a mut dyn FnMut(f64, f64);
+pub(super) type Progress<'a> = &'a mut dyn FnMut(f64, f64);
 
 /// Runs the single car scenario `scenario` on a fresh world.
 pub(crate) fn run(
@@ -102,6 +103,9 @@ pub(crate) fn run(
         Scenario::Brake => (brake, t0100 + 8.0),
         Scenario::Circle => (circle, 40.0),
         Scenario::LaneChange => (lane_change, 0.6 * t0100 + 12.0),
+        Scenario::StepSteer => (manoeuvres::step_steer, 2.0 * t0100 + 10.0),
+        Scenario::ConstantRadius => (manoeuvres::constant_radius, 70.0),
+        Scenario::SineWithDwell => (manoeuvres::sine_with_dwell, 2.0 * t0100 + 12.0),
         Scenario::TestTrack | Scenario::Square | Scenario::Spin | Scenario::Programme => {
             return Err(ScenarioError::WrongVehicle {
                 scenario,
@@ -235,7 +239,7 @@ fn steady(rig: &CarRig, target: f64) -> bool {
 }
 
 /// Cruises at `target` (m/s) until the speed is steady, for at most `max_time` (s).
-fn cruise_until_steady(
+pub(super) fn cruise_until_steady(
     rig: &mut CarRig,
     target: f64,
     max_time: f64,

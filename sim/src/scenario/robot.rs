@@ -172,6 +172,9 @@ pub(crate) fn run(
         | Scenario::Brake
         | Scenario::Circle
         | Scenario::LaneChange
+        | Scenario::StepSteer
+        | Scenario::ConstantRadius
+        | Scenario::SineWithDwell
         | Scenario::TestTrack
         | Scenario::Programme => Err(ScenarioError::WrongVehicle {
             scenario,
