@@ -111,3 +111,22 @@ fn sine_with_dwell_on_the_shipped_bmw_x5_spins() {
     assert!(number(&r, "lateral_displacement_m") >= 1.83);
     assert_eq!(value(&r, "passes_fmvss126"), Value::Bool(false));
 }
+
+#[test]
+fn split_mu_stops_between_the_two_frictions_and_turns() {
+    let r = run("[vehicle]\nmodel = \"BmwX5\"\n", Scenario::SplitMu);
+    let v = number(&r, "initial_speed_kmh") / 3.6;
+    let d = number(&r, "stop_distance_m");
+    let g = 9.81;
+    // Longer than a stop at the ground's friction (1) and the tyre's peak (1) on all four
+    // wheels, shorter than one at the strip's 0.3 on all four, sliding at 0.75 of the peak.
+    assert!(
+        d > v * v / (2.0 * g) && d < v * v / (2.0 * 0.3 * 0.75 * g),
+        "{d}"
+    );
+    // Braking harder on the left with the steering held straight yaws the car (without ABS it
+    // spins): far more than the run-up's few milliradians.
+    assert!(number(&r, "heading_change_rad").abs() > 0.1);
+    // The run-up's driver kept the right wheels on the strip (track ≈ 1.6 m).
+    assert!(number(&r, "offset_at_braking_m").abs() < 0.7);
+}

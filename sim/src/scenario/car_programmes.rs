@@ -7,8 +7,8 @@ use crate::world_file::{CarDescription, WorldDescription};
 
 use super::car::{CarRig, KMH};
 use super::lane::{LaneSection, TRACK_LENGTH, double_lane_change, reference_y};
-use super::manoeuvres;
 use super::{Metric, Scenario, ScenarioError, ScenarioResult, fit_circle, limit};
+use super::{manoeuvres, split_mu};
 
 /// 100 km/h in m/s.
 const V100: f64 = 100.0 / KMH;
@@ -93,6 +93,10 @@ pub(crate) fn run(
     scenario: Scenario,
     progress: Progress<'_>,
 ) -> Result<ScenarioResult, ScenarioError> {
+    if scenario == Scenario::SplitMu {
+        // Its own world: the ground with a low-friction strip.
+        return split_mu::run(world, car, progress);
+    }
     let t0100 = car.params.time_0_to_100;
     // Each programme and the simulated time it expects (s), for the progress bar;
     // `test-track` is run as its parts, and the robot programmes are not for a car.
@@ -106,7 +110,11 @@ pub(crate) fn run(
         Scenario::StepSteer => (manoeuvres::step_steer, 2.0 * t0100 + 10.0),
         Scenario::ConstantRadius => (manoeuvres::constant_radius, 70.0),
         Scenario::SineWithDwell => (manoeuvres::sine_with_dwell, 2.0 * t0100 + 12.0),
-        Scenario::TestTrack | Scenario::Square | Scenario::Spin | Scenario::Programme => {
+        Scenario::SplitMu
+        | Scenario::TestTrack
+        | Scenario::Square
+        | Scenario::Spin
+        | Scenario::Programme => {
             return Err(ScenarioError::WrongVehicle {
                 scenario,
                 vehicle: world.vehicles_label(),

@@ -17,6 +17,7 @@
 //! | `step-steer` | car | ISO 7401 step steer at 80 km/h to 4 m/s² | `response_time_s`, `peak_response_time_s`, `overshoot_percent`, `steady_yaw_gain_per_s` |
 //! | `constant-radius` | car | ISO 4138 steady-state driving on a 40 m radius, 0.5–4 m/s² | `understeer_gradient_rad_per_mps2` |
 //! | `sine-with-dwell` | car | FMVSS 126 sine with dwell at 80 km/h | `yaw_ratio_1_0`, `yaw_ratio_1_75`, `lateral_displacement_m`, `passes_fmvss126` |
+//! | `split-mu` | car | braking from 80 km/h, right wheels on friction 0.3 | `stop_distance_m`, `heading_change_rad` |
 //! | `test-track` | car | all five above, each on a fresh world | all of the above |
 //! | `square` | robot | a square of side 10 × `axleLength`, open loop | final pose, `closure_error_m` |
 //! | `spin` | robot | turns on the spot for 10 s | final pose, `turns` |
@@ -35,6 +36,7 @@ mod manoeuvres;
 mod metrics;
 mod plausibility;
 mod programme;
+mod split_mu;
 
 pub use plausibility::{
     MIN_STEPS_PER_BOUNCE, MIN_TYRE_FRICTION, bounce_period, notes as plausibility_notes,
@@ -75,6 +77,8 @@ pub enum Scenario {
     ConstantRadius,
     /// FMVSS 126 sine with dwell.
     SineWithDwell,
+    /// Straight-line braking on split friction.
+    SplitMu,
     /// Every car scenario in turn.
     TestTrack,
     /// A DifferentialWheels robot drives a square.
@@ -87,7 +91,7 @@ pub enum Scenario {
 
 impl Scenario {
     /// Every scenario.
-    pub const ALL: [Scenario; 12] = [
+    pub const ALL: [Scenario; 13] = [
         Scenario::AccelSpeed,
         Scenario::AccelTorque,
         Scenario::Brake,
@@ -96,6 +100,7 @@ impl Scenario {
         Scenario::StepSteer,
         Scenario::ConstantRadius,
         Scenario::SineWithDwell,
+        Scenario::SplitMu,
         Scenario::TestTrack,
         Scenario::Square,
         Scenario::Spin,
@@ -122,6 +127,7 @@ impl Scenario {
             Scenario::StepSteer => "step-steer",
             Scenario::ConstantRadius => "constant-radius",
             Scenario::SineWithDwell => "sine-with-dwell",
+            Scenario::SplitMu => "split-mu",
             Scenario::TestTrack => "test-track",
             Scenario::Square => "square",
             Scenario::Spin => "spin",
@@ -150,6 +156,9 @@ impl Scenario {
             }
             Scenario::SineWithDwell => {
                 "FMVSS 126 sine with dwell at 80 km/h: yaw-rate ratios, displacement, pass/fail"
+            }
+            Scenario::SplitMu => {
+                "split-mu braking from 80 km/h, right wheels on friction 0.3: stop, heading"
             }
             Scenario::TestTrack => "all five car scenarios in turn",
             Scenario::Square => "DifferentialWheels: drive a square, open loop",
@@ -217,6 +226,7 @@ impl Scenario {
             Scenario::LaneChange => 60.0,
             Scenario::StepSteer | Scenario::SineWithDwell => 90.0,
             Scenario::ConstantRadius => 120.0,
+            Scenario::SplitMu => 90.0,
             Scenario::TestTrack => 360.0,
             Scenario::Square => 600.0,
             Scenario::Spin => 10.0,

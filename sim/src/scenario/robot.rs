@@ -175,6 +175,7 @@ pub(crate) fn run(
         | Scenario::StepSteer
         | Scenario::ConstantRadius
         | Scenario::SineWithDwell
+        | Scenario::SplitMu
         | Scenario::TestTrack
         | Scenario::Programme => Err(ScenarioError::WrongVehicle {
             scenario,
