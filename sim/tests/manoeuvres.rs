@@ -130,3 +130,16 @@ fn split_mu_stops_between_the_two_frictions_and_turns() {
     // The run-up's driver kept the right wheels on the strip (track ≈ 1.6 m).
     assert!(number(&r, "offset_at_braking_m").abs() < 0.7);
 }
+
+#[test]
+fn iso_3888_enters_at_its_speed_and_judges_the_cones() {
+    let r = run("[vehicle]\nmodel = \"BmwX5\"\n", Scenario::Iso3888);
+    // The cruise control's 60 km/h less the tyres' slip (a few tenths of a km/h).
+    assert!((number(&r, "entry_speed_kmh") - 60.0).abs() < 1.0);
+    // Coasting through the track (throttle released at the entry) loses speed.
+    assert!(number(&r, "exit_speed_kmh") < number(&r, "entry_speed_kmh"));
+    let hits = number(&r, "cones_hit");
+    assert_eq!(value(&r, "passed"), Value::Bool(hits == 0.0));
+    // The cones drawn: both edges of the three lanes, at most 5 m apart.
+    assert_eq!(r.results[0].cones.len(), 2 * (4 + 4 + 4));
+}

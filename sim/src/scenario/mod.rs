@@ -17,6 +17,7 @@
 //! | `step-steer` | car | ISO 7401 step steer at 80 km/h to 4 m/s² | `response_time_s`, `peak_response_time_s`, `overshoot_percent`, `steady_yaw_gain_per_s` |
 //! | `constant-radius` | car | ISO 4138 steady-state driving on a 40 m radius, 0.5–4 m/s² | `understeer_gradient_rad_per_mps2` |
 //! | `sine-with-dwell` | car | FMVSS 126 sine with dwell at 80 km/h | `yaw_ratio_1_0`, `yaw_ratio_1_75`, `lateral_displacement_m`, `passes_fmvss126` |
+//! | `iso-3888` | car | ISO 3888-2 obstacle-avoidance lane change entered at 60 km/h, throttle released | `passed`, `entry_speed_kmh`, `cones_hit` |
 //! | `split-mu` | car | braking from 80 km/h, right wheels on friction 0.3 | `stop_distance_m`, `heading_change_rad` |
 //! | `test-track` | car | all five above, each on a fresh world | all of the above |
 //! | `square` | robot | a square of side 10 × `axleLength`, open loop | final pose, `closure_error_m` |
@@ -29,6 +30,7 @@
 mod car;
 mod car_programmes;
 mod fit;
+mod iso_3888;
 mod lane;
 mod lane_departure;
 pub mod manoeuvre_metrics;
@@ -79,6 +81,8 @@ pub enum Scenario {
     SineWithDwell,
     /// Straight-line braking on split friction.
     SplitMu,
+    /// ISO 3888-2 obstacle-avoidance double lane change.
+    Iso3888,
     /// Every car scenario in turn.
     TestTrack,
     /// A DifferentialWheels robot drives a square.
@@ -91,7 +95,7 @@ pub enum Scenario {
 
 impl Scenario {
     /// Every scenario.
-    pub const ALL: [Scenario; 13] = [
+    pub const ALL: [Scenario; 14] = [
         Scenario::AccelSpeed,
         Scenario::AccelTorque,
         Scenario::Brake,
@@ -101,6 +105,7 @@ impl Scenario {
         Scenario::ConstantRadius,
         Scenario::SineWithDwell,
         Scenario::SplitMu,
+        Scenario::Iso3888,
         Scenario::TestTrack,
         Scenario::Square,
         Scenario::Spin,
@@ -128,6 +133,7 @@ impl Scenario {
             Scenario::ConstantRadius => "constant-radius",
             Scenario::SineWithDwell => "sine-with-dwell",
             Scenario::SplitMu => "split-mu",
+            Scenario::Iso3888 => "iso-3888",
             Scenario::TestTrack => "test-track",
             Scenario::Square => "square",
             Scenario::Spin => "spin",
@@ -156,6 +162,9 @@ impl Scenario {
             }
             Scenario::SineWithDwell => {
                 "FMVSS 126 sine with dwell at 80 km/h: yaw-rate ratios, displacement, pass/fail"
+            }
+            Scenario::Iso3888 => {
+                "ISO 3888-2 obstacle avoidance at 60 km/h, cones for the car's width: pass/fail"
             }
             Scenario::SplitMu => {
                 "split-mu braking from 80 km/h, right wheels on friction 0.3: stop, heading"
@@ -227,6 +236,7 @@ impl Scenario {
             Scenario::StepSteer | Scenario::SineWithDwell => 90.0,
             Scenario::ConstantRadius => 120.0,
             Scenario::SplitMu => 90.0,
+            Scenario::Iso3888 => 60.0,
             Scenario::TestTrack => 360.0,
             Scenario::Square => 600.0,
             Scenario::Spin => 10.0,

@@ -176,6 +176,7 @@ pub(crate) fn run(
         | Scenario::ConstantRadius
         | Scenario::SineWithDwell
         | Scenario::SplitMu
+        | Scenario::Iso3888
         | Scenario::TestTrack
         | Scenario::Programme => Err(ScenarioError::WrongVehicle {
             scenario,
