@@ -79,7 +79,7 @@ pub const KEYS: [&str; 39] = [
 const META_SECTIONS: [&str; 2] = ["MDI_HEADER", "UNITS"];
 
 /// The Magic Formula variant this reader maps: `FITTYP = 6` (MF 5.2 / PAC2002).
-pub const FITTYP_MF52: f64 = 6.0;
+pub const FITTYP_MF52: u32 = 6;
 
 /// A value read: the number (in SI units for lengths and forces) and its line (1-based).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -333,7 +333,8 @@ impl<'a> TirFile<'a> {
             let value = match KEYS[i] {
                 "UNLOADED_RADIUS" => value * length,
                 "FNOMIN" => value * force,
-                "FITTYP" if value != FITTYP_MF52 => {
+                // An integer code: compared as written, not as a float.
+                "FITTYP" if e.value.parse::<u32>() != Ok(FITTYP_MF52) => {
                     return Err(err(TirErrorKind::UnsupportedFittyp));
                 }
                 _ => value,
