@@ -11,7 +11,7 @@ use core::f64::consts::PI;
 
 use super::car::{CarRig, KMH};
 use super::car_programmes::{Progress, cruise_until_steady};
-use super::manoeuvre_metrics::{sine_with_dwell, step_response, understeer_gradient};
+use super::manoeuvre_metrics::{StepResponse, sine_with_dwell, step_response, understeer_gradient};
 use super::{Metric, Scenario, ScenarioError, ScenarioResult};
 
 /// Test speed of the step steer and the sine with dwell (km/h): ISO 7401's 80 km/h, FMVSS
@@ -125,7 +125,10 @@ pub(super) fn step_steer(
 ) -> Result<ScenarioResult, ScenarioError> {
     let amplitude = match prepare(&mut rig, STEP_LATERAL_ACCEL, progress)? {
         Ok(a) => a,
-        Err(why) => return Ok(unfinished(rig, Scenario::StepSteer, why)),
+        Err(why) => {
+            let metrics = step_metrics(None, None, None);
+            return Ok(unfinished(rig, Scenario::StepSteer, metrics, why));
+        }
     };
     let t0 = rig.time();
     let mut samples = vec![(0.0, 0.0, rig.state().yaw_rate)];
@@ -144,44 +147,7 @@ pub(super) fn step_steer(
     // with, the one set at its start.
     let response = step_response(&samples, STEADY_WINDOW);
     let steady_ay = (!ay.is_empty()).then(|| ay.iter().sum::<f64>() / ay.len() as f64);
-    let metrics = vec![
-        Metric::number(
-            "steer_amplitude_rad",
-            "road-wheel steer of the step",
-            "rad",
-            amplitude,
-        ),
-        Metric::maybe(
-            "response_time_s",
-            "yaw-rate response time (50 % steer to 90 %)",
-            "s",
-            response.map(|r| r.response_time),
-        ),
-        Metric::maybe(
-            "peak_response_time_s",
-            "yaw-rate peak response time",
-            "s",
-            response.map(|r| r.peak_response_time),
-        ),
-        Metric::maybe(
-            "overshoot_percent",
-            "yaw-rate overshoot",
-            "%",
-            response.map(|r| 100.0 * r.overshoot),
-        ),
-        Metric::maybe(
-            "steady_yaw_gain_per_s",
-            "steady yaw-rate gain (yaw rate / road-wheel steer)",
-            "1/s",
-            response.map(|r| r.steady_yaw_gain),
-        ),
-        Metric::maybe(
-            "steady_lateral_accel_mps2",
-            "steady lateral acceleration v·r",
-            "m/s²",
-            steady_ay,
-        ),
-    ];
+    let metrics = step_metrics(Some(amplitude), response, steady_ay);
     Ok(rig.finish(Scenario::StepSteer, metrics))
 }
 
@@ -314,7 +280,10 @@ pub(super) fn sine_with_dwell(
 ) -> Result<ScenarioResult, ScenarioError> {
     let base = match prepare(&mut rig, 0.3 * G, progress)? {
         Ok(a) => a,
-        Err(why) => return Ok(unfinished(rig, Scenario::SineWithDwell, why)),
+        Err(why) => {
+            let metrics = swd_metrics(None, None, None);
+            return Ok(unfinished(rig, Scenario::SineWithDwell, metrics, why));
+        }
     };
     let amplitude = SWD_MULTIPLE * base;
     rig.driver_mut()?.set_throttle(0.0);
@@ -343,11 +312,79 @@ pub(super) fn sine_with_dwell(
         },
     )?;
     let ratios = sine_with_dwell::yaw_ratios(&yaw_rates);
+    let metrics = swd_metrics(Some(amplitude), ratios, displacement);
+    Ok(rig.finish(Scenario::SineWithDwell, metrics))
+}
+
+/// The result of a manoeuvre that could not start, with `why` and its `metrics` (unmeasured).
+fn unfinished(
+    rig: CarRig,
+    scenario: Scenario,
+    metrics: Vec<Metric>,
+    why: String,
+) -> ScenarioResult {
+    let mut result = rig.finish(scenario, metrics);
+    result.unfinished = Some(why);
+    result
+}
+
+/// The step steer's metrics (the same keys whether or not the step was driven, for sweeps).
+fn step_metrics(
+    amplitude: Option<f64>,
+    response: Option<StepResponse>,
+    steady_ay: Option<f64>,
+) -> Vec<Metric> {
+    vec![
+        Metric::maybe(
+            "steer_amplitude_rad",
+            "road-wheel steer of the step",
+            "rad",
+            amplitude,
+        ),
+        Metric::maybe(
+            "response_time_s",
+            "yaw-rate response time (50 % steer to 90 %)",
+            "s",
+            response.map(|r| r.response_time),
+        ),
+        Metric::maybe(
+            "peak_response_time_s",
+            "yaw-rate peak response time",
+            "s",
+            response.map(|r| r.peak_response_time),
+        ),
+        Metric::maybe(
+            "overshoot_percent",
+            "yaw-rate overshoot",
+            "%",
+            response.map(|r| 100.0 * r.overshoot),
+        ),
+        Metric::maybe(
+            "steady_yaw_gain_per_s",
+            "steady yaw-rate gain (yaw rate / road-wheel steer)",
+            "1/s",
+            response.map(|r| r.steady_yaw_gain),
+        ),
+        Metric::maybe(
+            "steady_lateral_accel_mps2",
+            "steady lateral acceleration v·r",
+            "m/s²",
+            steady_ay,
+        ),
+    ]
+}
+
+/// The sine with dwell's metrics (the same keys whether or not it was driven, for sweeps).
+fn swd_metrics(
+    amplitude: Option<f64>,
+    ratios: Option<(f64, f64)>,
+    displacement: Option<f64>,
+) -> Vec<Metric> {
     let passes = ratios
         .zip(displacement)
         .map(|(r, d)| sine_with_dwell::passes(r, d));
-    let metrics = vec![
-        Metric::number(
+    vec![
+        Metric::maybe(
             "steer_amplitude_rad",
             "road-wheel amplitude (6.5 × steer of 0.3 g)",
             "rad",
@@ -372,13 +409,5 @@ pub(super) fn sine_with_dwell(
             displacement,
         ),
         Metric::maybe_flag("passes_fmvss126", "passes FMVSS 126", passes),
-    ];
-    Ok(rig.finish(Scenario::SineWithDwell, metrics))
-}
-
-/// The result of a manoeuvre that could not start, with `why`.
-fn unfinished(rig: CarRig, scenario: Scenario, why: String) -> ScenarioResult {
-    let mut result = rig.finish(scenario, Vec::new());
-    result.unfinished = Some(why);
-    result
+    ]
 }
