@@ -184,7 +184,8 @@ pub use road_load::{RoadLoad, RoadLoadError};
 pub use sound::{BLINKER_SOUND_FILE, SoundCommand, Sounds};
 pub use tyre::{
     ContactVelocity, Direction, FreeSpin, Linearised, MagicFormula, SlipCurve, SpinPrediction,
-    SpinStep, TransientSlip, TyreClass, TyreError, TyreField, TyreModel, TyreParams, WebotsContact,
+    SpinStep, TirError, TirErrorKind, TirFile, TransientSlip, TyreClass, TyreError, TyreField,
+    TyreModel, TyreParams, WebotsContact,
 };
 pub use warning::{EnumKind, Warning};
 pub use wipers::{

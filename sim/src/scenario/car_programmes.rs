@@ -8,6 +8,7 @@ use crate::world_file::{CarDescription, WorldDescription};
 use super::car::{CarRig, KMH};
 use super::lane::{LaneSection, TRACK_LENGTH, double_lane_change, reference_y};
 use super::{Metric, Scenario, ScenarioError, ScenarioResult, fit_circle, limit};
+use super::{iso_3888, manoeuvres, split_mu};
 
 /// 100 km/h in m/s.
 const V100: f64 = 100.0 / KMH;
@@ -33,9 +34,9 @@ const LANE_OFFSET: f64 = 3.5;
 /// servo's 0.1 s and the yaw response's 0.2–0.3 s on slipping tyres: 0.8 s at least)
 /// overshoots each lane and oscillates; one that aims further than about 0.9 s (15 m at
 /// 60 km/h) cuts the corners of the 25–30 m lane sections. Driver models preview 0.5–1.5 s.
-const PREVIEW_TIME: f64 = 0.85;
+pub(super) const PREVIEW_TIME: f64 = 0.85;
 /// Shortest look-ahead of the lane-change driver (m), at walking pace.
-const MIN_LOOKAHEAD: f64 = 4.0;
+pub(super) const MIN_LOOKAHEAD: f64 = 4.0;
 /// Longest look-ahead of the lane-change driver (m): beyond it the driver would cut the
 /// 25–30 m lane sections.
 const MAX_LOOKAHEAD: f64 = 25.0;
@@ -47,12 +48,12 @@ const CONE_SPACING: f64 = 5.0;
 /// edges, so each cone's centre stands this far outside the lane edge, and the car hits it
 /// when its footprint comes this close to the centre: when it reaches the lane edge beside a
 /// cone. Crossing the edge between two cones hits nothing.
-const CONE_BASE_RADIUS: f64 = 0.15;
+pub(super) const CONE_BASE_RADIUS: f64 = 0.15;
 
 /// The cones of the lane change (track frame from the entry, m): both edges of every gate,
 /// at both ends and at most [`CONE_SPACING`] apart between, `outset` (m) outside the edge
 /// (0: on the edge, as drawn; [`CONE_BASE_RADIUS`]: the bases' centres).
-fn cone_layout(gates: &[LaneSection], outset: f64) -> Vec<[f64; 2]> {
+pub(super) fn cone_layout(gates: &[LaneSection], outset: f64) -> Vec<[f64; 2]> {
     let mut cones = Vec::new();
     for g in gates {
         for side in [-0.5, 0.5] {
@@ -69,7 +70,14 @@ fn cone_layout(gates: &[LaneSection], outset: f64) -> Vec<[f64; 2]> {
 /// True when the cone at `cone` touches the footprint of a car whose rear-axle centre is at
 /// `(x, y)` heading `yaw` (rad) (all in the track frame, m): the cone's base (a disc of
 /// [`CONE_BASE_RADIUS`]) meets the rectangle from the rear to the front axle, `width` wide.
-fn hits_cone(cone: [f64; 2], x: f64, y: f64, yaw: f64, wheelbase: f64, width: f64) -> bool {
+pub(super) fn hits_cone(
+    cone: [f64; 2],
+    x: f64,
+    y: f64,
+    yaw: f64,
+    wheelbase: f64,
+    width: f64,
+) -> bool {
     let (s, c) = yaw.sin_cos();
     let (dx, dy) = (cone[0] - x, cone[1] - y);
     let (along, across) = (c * dx + s * dy, -s * dx + c * dy);
@@ -83,7 +91,7 @@ fn hits_cone(cone: [f64; 2], x: f64, y: f64, yaw: f64, wheelbase: f64, width: f6
 /// is not a vehicle behaviour.
 const ACCEL_WINDOW: f64 = 0.1;
 
-type Progress<'a> = &'a mut dyn FnMut(f64, f64);
+pub(super) type Progress<'a> = &'a mut dyn FnMut(f64, f64);
 
 /// Runs the single car scenario `scenario` on a fresh world.
 pub(crate) fn run(
@@ -92,6 +100,10 @@ pub(crate) fn run(
     scenario: Scenario,
     progress: Progress<'_>,
 ) -> Result<ScenarioResult, ScenarioError> {
+    if scenario == Scenario::SplitMu {
+        // Its own world: the ground with a low-friction strip.
+        return split_mu::run(world, car, progress);
+    }
     let t0100 = car.params.time_0_to_100;
     // Each programme and the simulated time it expects (s), for the progress bar;
     // `test-track` is run as its parts, and the robot programmes are not for a car.
@@ -102,7 +114,15 @@ pub(crate) fn run(
         Scenario::Brake => (brake, t0100 + 8.0),
         Scenario::Circle => (circle, 40.0),
         Scenario::LaneChange => (lane_change, 0.6 * t0100 + 12.0),
-        Scenario::TestTrack | Scenario::Square | Scenario::Spin | Scenario::Programme => {
+        Scenario::StepSteer => (manoeuvres::step_steer, 2.0 * t0100 + 10.0),
+        Scenario::ConstantRadius => (manoeuvres::constant_radius, 70.0),
+        Scenario::SineWithDwell => (manoeuvres::sine_with_dwell, 2.0 * t0100 + 12.0),
+        Scenario::Iso3888 => (iso_3888::run, 0.6 * t0100 + 10.0),
+        Scenario::SplitMu
+        | Scenario::TestTrack
+        | Scenario::Square
+        | Scenario::Spin
+        | Scenario::Programme => {
             return Err(ScenarioError::WrongVehicle {
                 scenario,
                 vehicle: world.vehicles_label(),
@@ -218,7 +238,7 @@ fn expected_deceleration(rig: &CarRig) -> Result<f64, ScenarioError> {
 /// True once the speed has reached 90 % of `target` (m/s) and changed by less than 0.1 km/h
 /// over the last second: the cruise control has settled (the car's steady speed may differ
 /// from the target by the tyres' slip).
-fn steady(rig: &CarRig, target: f64) -> bool {
+pub(super) fn steady(rig: &CarRig, target: f64) -> bool {
     let samples = rig.samples();
     let (Some(now), Some(dt)) = (samples.last(), Some(rig.time_step())) else {
         return false;
@@ -235,7 +255,7 @@ fn steady(rig: &CarRig, target: f64) -> bool {
 }
 
 /// Cruises at `target` (m/s) until the speed is steady, for at most `max_time` (s).
-fn cruise_until_steady(
+pub(super) fn cruise_until_steady(
     rig: &mut CarRig,
     target: f64,
     max_time: f64,

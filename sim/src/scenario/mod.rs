@@ -14,6 +14,11 @@
 //! | `brake` | car | brake intensity 1 from 100 km/h | `stop_distance_m`, `stop_time_s` |
 //! | `circle` | car | steering 0.2 rad at 10 km/h | `turn_radius_m` vs `turn_radius_expected_m` |
 //! | `lane-change` | car | ISO 3888-1-like double lane change at 60 km/h | `max_lateral_accel_mps2`, `left_track` |
+//! | `step-steer` | car | ISO 7401 step steer at 80 km/h to 4 m/s² | `response_time_s`, `peak_response_time_s`, `overshoot_percent`, `steady_yaw_gain_per_s` |
+//! | `constant-radius` | car | ISO 4138 steady-state driving on a 40 m radius, 0.5–4 m/s² | `understeer_gradient_rad_per_mps2` |
+//! | `sine-with-dwell` | car | FMVSS 126 sine with dwell at 80 km/h | `yaw_ratio_1_0`, `yaw_ratio_1_75`, `lateral_displacement_m`, `passes_fmvss126` |
+//! | `iso-3888` | car | ISO 3888-2 obstacle-avoidance lane change entered at 60 km/h, throttle released | `passed`, `entry_speed_kmh`, `cones_hit` |
+//! | `split-mu` | car | braking from 80 km/h, right wheels on friction 0.3 | `stop_distance_m`, `heading_change_rad` |
 //! | `test-track` | car | all five above, each on a fresh world | all of the above |
 //! | `square` | robot | a square of side 10 × `axleLength`, open loop | final pose, `closure_error_m` |
 //! | `spin` | robot | turns on the spot for 10 s | final pose, `turns` |
@@ -25,11 +30,15 @@
 mod car;
 mod car_programmes;
 mod fit;
+mod iso_3888;
 mod lane;
 mod lane_departure;
+pub mod manoeuvre_metrics;
+mod manoeuvres;
 mod metrics;
 mod plausibility;
 mod programme;
+mod split_mu;
 
 pub use plausibility::{
     MIN_STEPS_PER_BOUNCE, MIN_TYRE_FRICTION, bounce_period, notes as plausibility_notes,
@@ -64,6 +73,16 @@ pub enum Scenario {
     Circle,
     /// A double lane change at 60 km/h.
     LaneChange,
+    /// ISO 7401 step steer.
+    StepSteer,
+    /// ISO 4138 steady-state circular driving on a constant radius.
+    ConstantRadius,
+    /// FMVSS 126 sine with dwell.
+    SineWithDwell,
+    /// Straight-line braking on split friction.
+    SplitMu,
+    /// ISO 3888-2 obstacle-avoidance double lane change.
+    Iso3888,
     /// Every car scenario in turn.
     TestTrack,
     /// A DifferentialWheels robot drives a square.
@@ -76,12 +95,17 @@ pub enum Scenario {
 
 impl Scenario {
     /// Every scenario.
-    pub const ALL: [Scenario; 9] = [
+    pub const ALL: [Scenario; 14] = [
         Scenario::AccelSpeed,
         Scenario::AccelTorque,
         Scenario::Brake,
         Scenario::Circle,
         Scenario::LaneChange,
+        Scenario::StepSteer,
+        Scenario::ConstantRadius,
+        Scenario::SineWithDwell,
+        Scenario::SplitMu,
+        Scenario::Iso3888,
         Scenario::TestTrack,
         Scenario::Square,
         Scenario::Spin,
@@ -105,6 +129,11 @@ impl Scenario {
             Scenario::Brake => "brake",
             Scenario::Circle => "circle",
             Scenario::LaneChange => "lane-change",
+            Scenario::StepSteer => "step-steer",
+            Scenario::ConstantRadius => "constant-radius",
+            Scenario::SineWithDwell => "sine-with-dwell",
+            Scenario::SplitMu => "split-mu",
+            Scenario::Iso3888 => "iso-3888",
             Scenario::TestTrack => "test-track",
             Scenario::Square => "square",
             Scenario::Spin => "spin",
@@ -125,6 +154,21 @@ impl Scenario {
             Scenario::Brake => "brake intensity 1 from 100 km/h to a stop",
             Scenario::Circle => "steering 0.2 rad at 10 km/h: turn radius vs L/tan(delta)",
             Scenario::LaneChange => "ISO 3888-1-like double lane change (3.5 m) at 60 km/h",
+            Scenario::StepSteer => {
+                "ISO 7401 step steer at 80 km/h to 4 m/s²: yaw response times, overshoot, gain"
+            }
+            Scenario::ConstantRadius => {
+                "ISO 4138 constant radius (40 m), 0.5-4 m/s²: understeer gradient"
+            }
+            Scenario::SineWithDwell => {
+                "FMVSS 126 sine with dwell at 80 km/h: yaw-rate ratios, displacement, pass/fail"
+            }
+            Scenario::Iso3888 => {
+                "ISO 3888-2 obstacle avoidance at 60 km/h, cones for the car's width: pass/fail"
+            }
+            Scenario::SplitMu => {
+                "split-mu braking from 80 km/h, right wheels on friction 0.3: stop, heading"
+            }
             Scenario::TestTrack => "all five car scenarios in turn",
             Scenario::Square => "DifferentialWheels: drive a square, open loop",
             Scenario::Spin => "DifferentialWheels: turn on the spot for 10 s",
@@ -189,6 +233,10 @@ impl Scenario {
             Scenario::Brake => 90.0,
             Scenario::Circle => 90.0,
             Scenario::LaneChange => 60.0,
+            Scenario::StepSteer | Scenario::SineWithDwell => 90.0,
+            Scenario::ConstantRadius => 120.0,
+            Scenario::SplitMu => 90.0,
+            Scenario::Iso3888 => 60.0,
             Scenario::TestTrack => 360.0,
             Scenario::Square => 600.0,
             Scenario::Spin => 10.0,

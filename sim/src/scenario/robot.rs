@@ -172,6 +172,11 @@ pub(crate) fn run(
         | Scenario::Brake
         | Scenario::Circle
         | Scenario::LaneChange
+        | Scenario::StepSteer
+        | Scenario::ConstantRadius
+        | Scenario::SineWithDwell
+        | Scenario::SplitMu
+        | Scenario::Iso3888
         | Scenario::TestTrack
         | Scenario::Programme => Err(ScenarioError::WrongVehicle {
             scenario,

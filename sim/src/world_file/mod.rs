@@ -48,6 +48,7 @@ mod robot;
 pub mod shipped;
 mod statics;
 mod tyre;
+mod tyre_file;
 mod vehicle;
 
 use std::io::Read;

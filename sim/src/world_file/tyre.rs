@@ -8,8 +8,9 @@ use vehicle_model::{Direction, Model, TyreClass, TyreField, TyreParams, WebotsCo
 
 use crate::vehicle::TyreChoice;
 
-use super::error::{NameSet, WorldFileError, WorldFileErrorKind, closest};
+use super::error::{NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, closest};
 use super::read::{Section, as_f64, describe};
+use super::tyre_file;
 
 /// The key in `[vehicle]`.
 const KEY: &str = "tyre";
@@ -20,8 +21,9 @@ const WEBOTS: &str = "webots";
 /// Every tyre model name.
 const MODEL_NAMES: [&str; 2] = [MAGIC_FORMULA, WEBOTS];
 /// The keys of `[vehicle.tyre]` other than the tyre-wide coefficients.
-const TABLE_KEYS: [&str; 5] = [
+const TABLE_KEYS: [&str; 6] = [
     "model",
+    tyre_file::FILE,
     "class",
     "force_dependent_slip",
     "longitudinal",
@@ -35,10 +37,12 @@ const PROBE_RADIUS: f64 = 1.0;
 /// Load of the tyre the coefficients are checked on (N), a passenger car's wheel.
 const PROBE_LOAD: f64 = 4000.0;
 
-/// Reads `tyre` of `[vehicle]` (a string or a table) for a car of `model`.
+/// Reads `tyre` of `[vehicle]` (a string or a table) for a car of `model`, appending the
+/// warnings of a tyre property file to `warnings`.
 pub(crate) fn read_tyre(
     vehicle: &Section<'_, '_>,
     model: Model,
+    warnings: &mut Vec<WorldWarning>,
 ) -> Result<TyreChoice, WorldFileError> {
     match vehicle.value(KEY) {
         Some(DeValue::String(name)) => {
@@ -72,7 +76,7 @@ pub(crate) fn read_tyre(
     if webots {
         read_webots(&t)
     } else {
-        read_magic_formula(&t, model)
+        read_magic_formula(&t, model, warnings)
     }
 }
 
@@ -163,9 +167,14 @@ fn read_webots(t: &Section<'_, '_>) -> Result<TyreChoice, WorldFileError> {
     })
 }
 
-/// Reads `[vehicle.tyre]` for the slip-based tyre: the class and the coefficients, each
-/// checked against its range where it is written, in file order.
-fn read_magic_formula(t: &Section<'_, '_>, model: Model) -> Result<TyreChoice, WorldFileError> {
+/// Reads `[vehicle.tyre]` for the slip-based tyre: the class, the tyre property file's
+/// coefficients (`file`), then the coefficients written in the table, which replace the
+/// file's; each checked against its range where it is written, in file order.
+fn read_magic_formula(
+    t: &Section<'_, '_>,
+    model: Model,
+    warnings: &mut Vec<WorldWarning>,
+) -> Result<TyreChoice, WorldFileError> {
     if t.key_span(FORCE_DEPENDENT_SLIP).is_some() {
         return Err(t.error(
             FORCE_DEPENDENT_SLIP,
@@ -186,10 +195,9 @@ fn read_magic_formula(t: &Section<'_, '_>, model: Model) -> Result<TyreChoice, W
                 t.unknown_name("class", NameSet::TyreClass, name, &names)
             })?,
     };
-    let mut overrides = Overrides {
-        probe: class.params(PROBE_RADIUS, PROBE_LOAD),
-        set: Vec::new(),
-    };
+    let mut probe = class.params(PROBE_RADIUS, PROBE_LOAD);
+    let set = tyre_file::read_tyre_file(t, &mut probe, warnings)?;
+    let mut overrides = Overrides { probe, set };
     for (key, _, _, _) in t.entries() {
         if let Some(field) = TyreField::from_name(key, None) {
             overrides.read(t, key, field)?;

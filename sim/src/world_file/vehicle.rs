@@ -180,7 +180,7 @@ pub(crate) fn read_vehicle(
             )
         })?,
     };
-    let tyre = tyre::read_tyre(s, model)?;
+    let tyre = tyre::read_tyre(s, model, warnings)?;
     let road_load = losses::read_losses(s)?;
     // The road-load set is the realistic car, air included, unless `aero` says otherwise.
     let aero = match aero::read_aero(s, model)? {

@@ -50,12 +50,14 @@
 mod curve;
 mod params;
 mod spin;
+pub mod tir;
 
 use ackermann::Real;
 
 use curve::Shape;
 pub use params::{Direction, SlipCurve, TyreClass, TyreError, TyreField, TyreParams};
 pub use spin::{FreeSpin, SpinPrediction, SpinStep};
+pub use tir::{TirError, TirErrorKind, TirFile};
 
 /// Speed below which the tyre is at "walking pace" (m/s): its carcass damping
 /// ([`TyreParams::low_speed_damping`]) fades in, and slip ratios are measured against this
