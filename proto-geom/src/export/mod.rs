@@ -21,10 +21,12 @@
 //! ```
 
 mod animation;
+mod camera;
 mod glb;
 mod obj;
 
 pub use animation::{Animation, AnimationError, Channel, Interpolation, Keyframes, Property};
+pub use camera::{Camera, CameraError, look_at};
 pub use glb::vehicle_to_gltf;
 
 use std::string::{String, ToString};
@@ -104,6 +106,9 @@ pub struct Node {
     /// Whether the node and its children show at rest. glTF gets a hidden node with scale 0,
     /// so that an animation's [`Keyframes::Scale`] can show it; OBJ leaves it out.
     pub visible: bool,
+    /// Index into [`Scene::cameras`] of the camera the node holds (glTF only; OBJ has no
+    /// cameras).
+    pub camera: Option<usize>,
 }
 
 /// What a [`SceneMesh`] draws, in its node's frame (m).
@@ -188,6 +193,8 @@ pub struct Scene {
     pub materials: Vec<Material>,
     /// Animations, checked by [`Scene::add_animation`].
     pub animations: Vec<Animation>,
+    /// Cameras, each held by a node ([`Scene::add_camera`]).
+    pub cameras: Vec<Camera>,
 }
 
 impl Scene {
@@ -245,6 +252,7 @@ impl Scene {
             mesh,
             children: Vec::new(),
             visible: true,
+            camera: None,
         });
         match parent.and_then(|p| self.nodes.get_mut(p)) {
             Some(p) => p.children.push(index),

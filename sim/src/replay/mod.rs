@@ -16,6 +16,11 @@
 //!   time from the part's start. Lights and the part groups show and hide through step-
 //!   interpolated scale keyframes: while a part plays, only its own trajectories and cones
 //!   show.
+//! * Cameras ([`cameras`]): per car a `chase_camera` node under the car's node, behind the
+//!   body by [`CHASE_BEHIND`] body lengths and above its roof by [`CHASE_ABOVE`] body heights,
+//!   looking at the body's centre; and an `overview_camera` under `world` looking down at
+//!   [`OVERVIEW_PITCH`] rad on the centre of the ground rectangle the run covers, far enough
+//!   for the whole rectangle to fit its vertical field of view ([`FIELD_OF_VIEW`]).
 //! * [`to_glb`] writes the parts' scene as binary glTF; [`crate::report::write_data`] puts
 //!   a run's in `replay.glb` beside the CSV and the metrics.
 //!
@@ -23,6 +28,7 @@
 //! turns it into glTF's y-up frame once, at its root node (`webots_to_gltf`).
 
 mod animate;
+mod cameras;
 mod cone;
 pub mod lidar_overlay;
 pub mod overlay;
@@ -34,6 +40,7 @@ use std::io;
 
 use proto_geom::export::{AnimationError, Scene};
 
+pub use cameras::{CHASE_ABOVE, CHASE_BEHIND, FIELD_OF_VIEW, OVERVIEW_PITCH};
 pub use scene::car_colour;
 
 pub use recorder::{

@@ -165,6 +165,9 @@ pub(crate) fn build(parts: &[Part<'_>]) -> (Scene, Nodes) {
     let world = scene.add_node(None, "world", Isometry3::identity(), None);
 
     let rect = extent(parts, first);
+    super::cameras::add_overview(&mut scene, world, rect);
+    // A chase camera sees across the whole run from anywhere in it.
+    let far = 2.0 * (rect[2] - rect[0]).hypot(rect[3] - rect[1]);
     let span = (rect[2] - rect[0]).max(rect[3] - rect[1]);
     let step = shapes::grid_step(span, MAX_GRID_LINES);
     let rect = [
@@ -191,7 +194,7 @@ pub(crate) fn build(parts: &[Part<'_>]) -> (Scene, Nodes) {
         .cars
         .iter()
         .enumerate()
-        .map(|(i, car)| add_car(&mut scene, world, i, car, first))
+        .map(|(i, car)| add_car(&mut scene, world, i, car, first, far))
         .collect();
     let robots = first
         .robots
@@ -355,6 +358,7 @@ fn add_car(
     i: usize,
     car: &CarModel,
     first: &Recording,
+    far: f64,
 ) -> CarNodes {
     let colour = PALETTE[i % PALETTE.len()];
     let body = Material::new(&format!("car_{i}_body"), colour, 0.4, 0.3);
@@ -370,6 +374,7 @@ fn add_car(
     {
         n.transform = world_pose(&f.position, &f.roll_pitch_yaw);
     }
+    super::cameras::add_chase(scene, vehicle.root, &car.body, far);
     // Lamps on the body's faces, sized by it.
     let b = &car.body;
     let (l, w, h) = (b.size.x, b.size.y, b.size.z);

@@ -1,0 +1,158 @@
+//! What `replay.glb` shows besides the motion: its cameras (a chase camera per car, an overview
+//! of the whole run).
+
+// Helpers outside #[test] functions unwrap too: a failure is a test failure.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use proto_geom::export::Scene;
+use proto_geom::nalgebra::{Isometry3, Point3, Vector3};
+use sim::replay::{self, FIELD_OF_VIEW, Part, Recorder, Recording};
+use sim::{Simulation, VehiclePlacement, World, WorldConfig};
+use vehicle_model::Model;
+
+/// A BmwX5 at 20 m/s and a ToyotaPrius 5 m to its left at 10 m/s, for `steps` 10 ms steps.
+fn two_cars(steps: usize) -> Recording {
+    let mut sim = Simulation::new(World::new(WorldConfig::default()).unwrap());
+    let (a, _) = sim
+        .add_car(sim::CarBuilder::new(Model::BmwX5.params()).placement(VehiclePlacement::default()))
+        .unwrap();
+    let beside = VehiclePlacement {
+        y: 5.0,
+        ..VehiclePlacement::default()
+    };
+    let (b, _) = sim
+        .add_car(sim::CarBuilder::new(Model::ToyotaPrius.params()).placement(beside))
+        .unwrap();
+    sim.driver_mut(a).unwrap().set_cruising_speed(20.0);
+    sim.driver_mut(b).unwrap().set_cruising_speed(10.0);
+    let mut recorder = Recorder::for_simulation(&sim);
+    for _ in 0..steps {
+        sim.step().unwrap();
+        recorder.sample(sim.world());
+    }
+    recorder.finish(sim.world())
+}
+
+fn scene_of(recording: &Recording) -> Scene {
+    let part = Part {
+        name: "drive",
+        recording,
+        guides: &[],
+    };
+    replay::scene(&[part]).unwrap()
+}
+
+fn node(scene: &Scene, name: &str) -> usize {
+    scene
+        .nodes
+        .iter()
+        .position(|n| n.name == name)
+        .unwrap_or_else(|| panic!("no node {name}"))
+}
+
+/// Whether `p` (m, in the camera node's parent frame) is inside the view of the camera at
+/// `pose` (glTF: looking along −z, +y up) with vertical field of view `yfov` (rad), for a
+/// square viewport (a wider one sees more sideways), between `near` and `far` (m).
+fn in_view(pose: &Isometry3<f64>, p: &Point3<f64>, yfov: f64, near: f64, far: f64) -> bool {
+    let c = pose.inverse_transform_point(p);
+    let depth = -c.z;
+    let half = (yfov / 2.0).tan();
+    depth > near && depth < far && c.x.abs() <= half * depth && c.y.abs() <= half * depth
+}
+
+/// The eight corners of a car's body box (m, car frame).
+fn corners(recording: &Recording, car: usize) -> Vec<Point3<f64>> {
+    let b = recording.cars[car].body;
+    let mut out = Vec::new();
+    for sx in [-0.5, 0.5] {
+        for sy in [-0.5, 0.5] {
+            for sz in [-0.5, 0.5] {
+                out.push(b.centre + b.size.component_mul(&Vector3::new(sx, sy, sz)));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn each_car_has_a_chase_camera_behind_and_above_that_sees_its_whole_body() {
+    let recording = two_cars(100);
+    let scene = scene_of(&recording);
+    for (car, root) in ["car_0", "car_1"].into_iter().enumerate() {
+        let root = node(&scene, root);
+        let chase = scene.nodes[root]
+            .children
+            .iter()
+            .copied()
+            .find(|&c| scene.nodes[c].name == "chase_camera")
+            .expect("a chase camera under the car's node");
+        let camera = &scene.cameras[scene.nodes[chase].camera.unwrap()];
+        assert_eq!(camera.yfov, FIELD_OF_VIEW);
+        let pose = scene.nodes[chase].transform;
+        let body = recording.cars[car].body;
+        // Behind the rear and above the roof (car frame: x forward, z up).
+        let eye = pose.translation.vector;
+        assert!(eye.x < body.centre.x - body.size.x / 2.0, "{eye}");
+        assert!(eye.z > body.centre.z + body.size.z / 2.0, "{eye}");
+        assert_eq!(eye.y, 0.0);
+        // It looks at the body's centre: the centre is on the view axis.
+        let c = pose.inverse_transform_point(&body.centre);
+        assert!(c.x.abs() < 1e-9 && c.y.abs() < 1e-9 && c.z < 0.0, "{c}");
+        // Every corner of the body is in view, and the body fills more than a quarter of the
+        // frame's height (the 5 % area the report's browser check asks for, with room).
+        let ys: Vec<f64> = corners(&recording, car)
+            .iter()
+            .map(|p| {
+                assert!(in_view(&pose, p, camera.yfov, camera.znear, camera.zfar));
+                let c = pose.inverse_transform_point(p);
+                c.y / -c.z
+            })
+            .collect();
+        let span =
+            ys.iter().fold(f64::MIN, |a, &b| a.max(b)) - ys.iter().fold(f64::MAX, |a, &b| a.min(b));
+        assert!(span > 0.25 * 2.0 * (camera.yfov / 2.0).tan(), "{span}");
+    }
+}
+
+#[test]
+fn the_overview_camera_sees_every_car_at_every_frame() {
+    let recording = two_cars(300);
+    let scene = scene_of(&recording);
+    let overview = node(&scene, "overview_camera");
+    // Under the `world` root, whose frame is the world's.
+    let world = node(&scene, "world");
+    assert!(scene.nodes[world].children.contains(&overview));
+    assert_eq!(scene.nodes[world].transform, Isometry3::identity());
+    let camera = &scene.cameras[scene.nodes[overview].camera.unwrap()];
+    let pose = scene.nodes[overview].transform;
+    let mut seen = 0;
+    for frame in &recording.frames {
+        for (car, f) in frame.cars.iter().enumerate() {
+            let at = Isometry3::from_parts(f.position.coords.into(), f.roll_pitch_yaw.rotation());
+            for p in corners(&recording, car) {
+                assert!(
+                    in_view(&pose, &(at * p), camera.yfov, camera.znear, camera.zfar),
+                    "car {car} at {} s",
+                    frame.time
+                );
+                seen += 1;
+            }
+        }
+    }
+    assert_eq!(seen, recording.frames.len() * 2 * 8);
+    // The file carries the three cameras, each on its node.
+    let glb = replay::to_glb(&[Part {
+        name: "drive",
+        recording: &recording,
+        guides: &[],
+    }])
+    .unwrap();
+    let doc = gltf::Gltf::from_slice(&glb).unwrap();
+    let mut names: Vec<_> = doc
+        .nodes()
+        .filter(|n| n.camera().is_some())
+        .map(|n| n.name().unwrap().to_string())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["chase_camera", "chase_camera", "overview_camera"]);
+}
