@@ -1,5 +1,5 @@
 //! What `replay.glb` shows besides the motion: its cameras (a chase camera per car, an overview
-//! of the whole run).
+//! of the whole run), the cars' names.
 
 // Helpers outside #[test] functions unwrap too: a failure is a test failure.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -14,14 +14,22 @@ use vehicle_model::Model;
 fn two_cars(steps: usize) -> Recording {
     let mut sim = Simulation::new(World::new(WorldConfig::default()).unwrap());
     let (a, _) = sim
-        .add_car(sim::CarBuilder::new(Model::BmwX5.params()).placement(VehiclePlacement::default()))
+        .add_car(
+            sim::CarBuilder::new(Model::BmwX5.params())
+                .placement(VehiclePlacement::default())
+                .name("bmw"),
+        )
         .unwrap();
     let beside = VehiclePlacement {
         y: 5.0,
         ..VehiclePlacement::default()
     };
     let (b, _) = sim
-        .add_car(sim::CarBuilder::new(Model::ToyotaPrius.params()).placement(beside))
+        .add_car(
+            sim::CarBuilder::new(Model::ToyotaPrius.params())
+                .placement(beside)
+                .name("prius"),
+        )
         .unwrap();
     sim.driver_mut(a).unwrap().set_cruising_speed(20.0);
     sim.driver_mut(b).unwrap().set_cruising_speed(10.0);
@@ -78,7 +86,7 @@ fn corners(recording: &Recording, car: usize) -> Vec<Point3<f64>> {
 fn each_car_has_a_chase_camera_behind_and_above_that_sees_its_whole_body() {
     let recording = two_cars(100);
     let scene = scene_of(&recording);
-    for (car, root) in ["car_0", "car_1"].into_iter().enumerate() {
+    for (car, root) in ["bmw", "prius"].into_iter().enumerate() {
         let root = node(&scene, root);
         let chase = scene.nodes[root]
             .children
@@ -155,4 +163,30 @@ fn the_overview_camera_sees_every_car_at_every_frame() {
         .collect();
     names.sort();
     assert_eq!(names, ["chase_camera", "chase_camera", "overview_camera"]);
+}
+
+#[test]
+fn cars_and_robots_are_named_after_the_world_file() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("worlds/two-cars.toml");
+    let world = sim::world_file::load_file(&path).unwrap();
+    let report =
+        sim::scenario::run(&world, sim::scenario::Scenario::Programme, &mut |_| {}).unwrap();
+    let recording = &report.results[0].replay;
+    let cars: Vec<&str> = recording.cars.iter().map(|c| c.name.as_str()).collect();
+    let robots: Vec<&str> = recording.robots.iter().map(|r| r.name.as_str()).collect();
+    // The file's `name`s: two cars and a robot.
+    assert_eq!(cars, ["prius", "bmw"]);
+    assert_eq!(robots.len(), 1);
+    assert_eq!(world.vehicle_names(), ["prius", "bmw", robots[0]]);
+    let scene = scene_of(recording);
+    for name in [
+        "prius",
+        "bmw",
+        robots[0],
+        "trajectory_prius",
+        "trajectory_bmw",
+    ] {
+        node(&scene, name);
+    }
+    assert!(!scene.nodes.iter().any(|n| n.name.starts_with("car_")));
 }

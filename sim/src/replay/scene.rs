@@ -361,14 +361,8 @@ fn add_car(
     far: f64,
 ) -> CarNodes {
     let colour = PALETTE[i % PALETTE.len()];
-    let body = Material::new(&format!("car_{i}_body"), colour, 0.4, 0.3);
-    let vehicle = scene.add_vehicle(
-        Some(world),
-        &format!("car_{i}"),
-        &car.layout,
-        &car.body,
-        body,
-    );
+    let body = Material::new(&format!("{}_body", car.name), colour, 0.4, 0.3);
+    let vehicle = scene.add_vehicle(Some(world), &car.name, &car.layout, &car.body, body);
     if let Some(f) = first.frames.first().and_then(|f| f.cars.get(i))
         && let Some(n) = scene.nodes.get_mut(vehicle.root)
     {
@@ -453,15 +447,15 @@ fn add_robot(
     let (r, half_axle) = (p.wheel_radius, p.axle_length / 2.0);
     let start = first.frames.first().and_then(|f| f.robots.get(i));
     let at = start.map_or(Isometry3::identity(), |f| pose(f.position, f.heading));
-    let root = scene.add_node(Some(world), &format!("robot_{i}"), at, None);
+    let root = scene.add_node(Some(world), &robot.name, at, None);
     let colour = PALETTE[i % PALETTE.len()];
-    let shell = Material::new(&format!("robot_{i}_body"), colour, 0.4, 0.1);
+    let shell = Material::new(&format!("{}_body", robot.name), colour, 0.4, 0.1);
     let shell = scene.add_material(shell);
     // The physics mode's cylinder: radius axleLength/2, height wheelRadius, at axle height
     // (CylinderMesh's axis is x: stood up about y).
     let cylinder = CylinderMesh::new(half_axle, r, 32);
     let mesh = RenderMesh::from_mesh(&cylinder, &Isometry3::identity());
-    let mesh = scene.add_mesh(&format!("robot_{i}_body"), mesh, shell);
+    let mesh = scene.add_mesh(&format!("{}_body", robot.name), mesh, shell);
     let upright = Isometry3::from_parts(
         Translation3::new(0.0, 0.0, r),
         UnitQuaternion::from_euler_angles(0.0, core::f64::consts::FRAC_PI_2, 0.0),
@@ -527,7 +521,7 @@ fn add_part(scene: &mut Scene, world: usize, part: &Part<'_>, lift: f64) -> usiz
             .filter_map(|f| f.cars.get(i).map(|c| [c.position.x, c.position.y]))
             .collect();
         line(
-            format!("trajectory_car_{i}"),
+            format!("trajectory_{}", rec.cars[i].name),
             PALETTE[i % PALETTE.len()],
             points,
         );
@@ -539,7 +533,7 @@ fn add_part(scene: &mut Scene, world: usize, part: &Part<'_>, lift: f64) -> usiz
             .filter_map(|f| f.robots.get(i).map(|r| [r.position.x, r.position.y]))
             .collect();
         line(
-            format!("trajectory_robot_{i}"),
+            format!("trajectory_{}", rec.robots[i].name),
             PALETTE[i % PALETTE.len()],
             points,
         );
