@@ -1,5 +1,5 @@
 //! What `replay.glb` shows besides the motion: its cameras (a chase camera per car, an overview
-//! of the whole run), the cars' names.
+//! of the whole run), the cars' names and bodies.
 
 // Helpers outside #[test] functions unwrap too: a failure is a test failure.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -189,4 +189,80 @@ fn cars_and_robots_are_named_after_the_world_file() {
         node(&scene, name);
     }
     assert!(!scene.nodes.iter().any(|n| n.name.starts_with("car_")));
+}
+
+#[test]
+fn the_car_body_spans_the_models_length_width_and_height() {
+    let recording = two_cars(10);
+    let glb = replay::to_glb(&[Part {
+        name: "drive",
+        recording: &recording,
+        guides: &[],
+    }])
+    .unwrap();
+    let doc = gltf::Gltf::from_slice(&glb).unwrap();
+    let blob = doc.blob.clone().unwrap();
+    // The BmwX5's length and height from its PROTO's sensor slots (rear and front bumpers,
+    // roof), its width over the tyres (track plus a quarter tyre width outside each wheel).
+    let slots = proto_geom::ShippedVehicle::BmwX5
+        .sensor_slots::<f64>()
+        .unwrap();
+    let layout = proto_geom::ShippedVehicle::BmwX5.layout::<f64>();
+    let d = layout.dimensions();
+    let tyre = layout
+        .wheel(ackermann::Wheel::FrontRight)
+        .params()
+        .thickness;
+    let expected_lo = [
+        slots.rear.translation.x,
+        -(d.track_front.max(d.track_rear) + 0.5 * tyre) / 2.0,
+    ];
+    let expected_length = slots.front.translation.x - slots.rear.translation.x;
+    for (car, name) in ["bmw", "prius"].iter().enumerate() {
+        let root = doc.nodes().find(|n| n.name() == Some(*name)).unwrap();
+        let chassis = root
+            .children()
+            .find(|n| n.name() == Some("chassis"))
+            .unwrap();
+        let mesh = chassis.mesh().unwrap();
+        let bb = mesh.primitives().next().unwrap().bounding_box();
+        let b = recording.cars[car].body;
+        let (lo, hi) = (b.centre - b.size / 2.0, b.centre + b.size / 2.0);
+        // 1 mm: the bound; the file's f32 positions are within 1 µm of these.
+        for k in 0..3 {
+            assert!(
+                (f64::from(bb.min[k]) - lo[k]).abs() < 1e-3,
+                "{name} min {k}"
+            );
+            assert!(
+                (f64::from(bb.max[k]) - hi[k]).abs() < 1e-3,
+                "{name} max {k}"
+            );
+        }
+        if car == 0 {
+            assert!((b.size.x - expected_length).abs() < 1e-3, "{}", b.size.x);
+            assert!((lo.x - expected_lo[0]).abs() < 1e-3 && (lo.y - expected_lo[1]).abs() < 1e-3);
+            assert!((hi.z - slots.top.translation.z).abs() < 1e-3);
+        }
+        // A car, not a box: two solids (lower body and greenhouse), the roof narrower than the
+        // body (no vertex at the top reaches the side).
+        let primitive = mesh.primitives().next().unwrap();
+        let reader = primitive.reader(|_| Some(&blob));
+        let positions: Vec<[f32; 3]> = reader.read_positions().unwrap().collect();
+        assert_eq!(
+            positions.len(),
+            48,
+            "two six-faced solids, four vertices a face"
+        );
+        let roof_half_width = positions
+            .iter()
+            .filter(|p| (f64::from(p[2]) - hi.z).abs() < 1e-4)
+            .map(|p| f64::from(p[1]).abs())
+            .fold(0.0, f64::max);
+        assert!(
+            roof_half_width < 0.8 * hi.y,
+            "{roof_half_width} vs {}",
+            hi.y
+        );
+    }
 }

@@ -9,8 +9,9 @@
 //!   box), each robot's fields, the obstacles and boxes.
 //! * [`scene`] builds one `proto-geom` [`Scene`] of a run's [`Part`]s: a ground patch over
 //!   the driven area with grid lines (1, 2 or 5 × 10ⁿ m apart, at most 150 across), every box,
-//!   ramp and `[[body]]`, every car (body box, Webots wheel meshes, brake lights and
-//!   indicators) and robot (its physics-mode cylinder on two scaled `VehicleWheel`s), and per
+//!   ramp and `[[body]]`, every car (a low-poly car body filling its body box, in its own
+//!   colour; Webots wheel meshes; brake lights and indicators, emissive, shown while the
+//!   recorded light commands have them on) and robot (its physics-mode cylinder on two scaled `VehicleWheel`s), and per
 //!   part a group with one trajectory line per car and robot and the cones of its course; then
 //!   one animation per part, named after it (`test-track` gives five), in seconds of simulated
 //!   time from the part's start. Lights and the part groups show and hide through step-

@@ -2,7 +2,7 @@
 //! robot, and per part of the run its trajectories and cones.
 
 use ackermann::{PerWheel, Wheel};
-use proto_geom::export::{Geometry, Material, Scene, VehicleNodes};
+use proto_geom::export::{BELTLINE, Geometry, Material, NOSE_RAKE, Scene, TAIL_RAKE, VehicleNodes};
 use proto_geom::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use proto_geom::{BoxMesh, CylinderMesh, RenderMesh, WheelParams, WheelSide};
 
@@ -362,7 +362,7 @@ fn add_car(
 ) -> CarNodes {
     let colour = PALETTE[i % PALETTE.len()];
     let body = Material::new(&format!("{}_body", car.name), colour, 0.4, 0.3);
-    let vehicle = scene.add_vehicle(Some(world), &car.name, &car.layout, &car.body, body);
+    let vehicle = scene.add_car(Some(world), &car.name, &car.layout, &car.body, body);
     if let Some(f) = first.frames.first().and_then(|f| f.cars.get(i))
         && let Some(n) = scene.nodes.get_mut(vehicle.root)
     {
@@ -379,16 +379,23 @@ fn add_car(
     );
     let lamp = Vector3::new(0.03 * l, 0.15 * w, 0.08 * h);
     let lamp_at = |x: f64, y: f64, z: f64| box_mesh(Point3::new(x, y, bottom + z * h), lamp);
+    // The tail and the nose slope in towards the beltline: a lamp at height share `z` sits on
+    // the sloped face.
+    let (rear, front) = (
+        |z: f64| rear + TAIL_RAKE * l * z / BELTLINE,
+        |z: f64| front - NOSE_RAKE * l * z / BELTLINE,
+    );
     let red =
         Material::new("brake_light", [0.6, 0.0, 0.0], 0.3, 0.0).with_emissive([1.0, 0.0, 0.0]);
     let amber =
         Material::new("indicator", [1.0, 0.45, 0.0], 0.3, 0.0).with_emissive([1.0, 0.45, 0.0]);
     let (red, amber) = (scene.add_material(red), scene.add_material(amber));
+    // Below the beltline (`proto_geom::export::BELTLINE`), on the tail's and the nose's faces.
     let brake = merge(
-        lamp_at(rear, -0.35 * w, 0.65),
-        lamp_at(rear, 0.35 * w, 0.65),
+        lamp_at(rear(0.4), -0.35 * w, 0.4),
+        lamp_at(rear(0.4), 0.35 * w, 0.4),
     );
-    let side = |y: f64| merge(lamp_at(front, y, 0.45), lamp_at(rear, y, 0.45));
+    let side = |y: f64| merge(lamp_at(front(0.3), y, 0.3), lamp_at(rear(0.3), y, 0.3));
     let mut lamps = |name: &str, mesh: RenderMesh, material: usize| {
         let mesh = scene.add_mesh(name, mesh, material);
         let node = scene.add_node(Some(vehicle.root), name, Isometry3::identity(), Some(mesh));
