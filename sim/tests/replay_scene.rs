@@ -266,3 +266,55 @@ fn the_car_body_spans_the_models_length_width_and_height() {
         );
     }
 }
+
+/// The ground mesh's rectangle `[x_min, y_min, x_max, y_max]` (m, world frame) and the
+/// rectangle of the cars' origins over the run.
+fn ground_and_trajectory(recording: &Recording) -> ([f64; 4], [f64; 4]) {
+    let scene = scene_of(recording);
+    let ground = &scene.nodes[node(&scene, "ground")];
+    let proto_geom::export::Geometry::Triangles(mesh) =
+        &scene.meshes[ground.mesh.unwrap()].geometry
+    else {
+        panic!("a triangle mesh");
+    };
+    let (lo, hi) = mesh.bounds();
+    let mut run = [f64::MAX, f64::MAX, f64::MIN, f64::MIN];
+    for f in recording.frames.iter().flat_map(|f| &f.cars) {
+        run = [
+            run[0].min(f.position.x),
+            run[1].min(f.position.y),
+            run[2].max(f.position.x),
+            run[3].max(f.position.y),
+        ];
+    }
+    let g = [lo[0], lo[1], hi[0], hi[1]].map(f64::from);
+    (g, run)
+}
+
+#[test]
+fn the_ground_is_sized_to_the_run() {
+    // A BmwX5 reaches at most 4 m from its origin (3.85 m ahead of the rear axle, 1 m behind).
+    let reach = 4.0;
+    // 0.1 s: the cars hardly move; 30 s: the BmwX5 drives some 550 m.
+    for (steps, longest) in [(10, 25.0), (3000, 800.0)] {
+        let (g, run) = ground_and_trajectory(&two_cars(steps));
+        // Every car origin with its body around it lies on the ground.
+        assert!(
+            g[0] <= run[0] - reach && g[1] <= run[1] - reach,
+            "{g:?} {run:?}"
+        );
+        assert!(
+            g[2] >= run[2] + reach && g[3] >= run[3] + reach,
+            "{g:?} {run:?}"
+        );
+        // And the ground is not much larger: the run's span plus its 10 % margin and grid
+        // rounding (at most one grid step, itself at most a fiftieth of the span, a side).
+        let span = (run[2] - run[0]).max(run[3] - run[1]) + 2.0 * reach;
+        let side = (g[2] - g[0]).max(g[3] - g[1]);
+        assert!(
+            side <= 1.2 * span + 2.0 * span / 50.0 + 2.0,
+            "{side} for {span}"
+        );
+        assert!(side < longest, "{side} m");
+    }
+}
