@@ -83,11 +83,19 @@ impl Robot {
     /// `VEHICLE_OUT` set, the run is recorded for its outputs.
     ///
     /// # Errors
-    /// What is wrong with the world, in one line naming the file, line, key and value.
+    /// What is wrong with the world: every error of a world file, one line each in file order,
+    /// each naming the file, line, key and value.
     pub(crate) fn from_environment() -> Result<Robot, String> {
         let description = match env::var(WORLD_VARIABLE) {
-            Ok(spec) if !spec.is_empty() => world_file::load(&spec)
-                .map_err(|e| format!("cannot load the world {WORLD_VARIABLE}={spec}: {e}"))?,
+            Ok(spec) if !spec.is_empty() => world_file::load_all(&spec).map_err(|all| {
+                // Every error of the file in file order, one line each, so that one run
+                // shows them all.
+                all.errors
+                    .iter()
+                    .map(|e| format!("cannot load the world {WORLD_VARIABLE}={spec}: {e}"))
+                    .collect::<Vec<_>>()
+                    .join("\n")
+            })?,
             Err(VarError::NotUnicode(raw)) => {
                 return Err(format!(
                     "cannot load the world {WORLD_VARIABLE}={}: not valid UTF-8",

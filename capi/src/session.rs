@@ -38,7 +38,10 @@ pub(crate) fn with_robot<R>(f: impl FnOnce(&mut Robot) -> R) -> R {
         None => match Robot::from_environment() {
             Ok(robot) => slot.insert(robot),
             Err(problem) => {
-                message::error(problem);
+                // One `Error: ` line per error of the world file.
+                for line in problem.lines() {
+                    message::error(line);
+                }
                 std::process::exit(1)
             }
         },
@@ -52,8 +55,8 @@ pub(crate) fn with_robot<R>(f: impl FnOnce(&mut Robot) -> R) -> R {
 /// printed on stderr as `wb_robot_init` prints them. Does nothing if a robot is loaded.
 ///
 /// # Errors
-/// What is wrong with the world, in one line naming the file, line, key and value (the text
-/// `wb_robot_init` prints after `Error: `).
+/// What is wrong with the world: one line per error of the world file, in file order, each
+/// naming the file, line, key and value (the lines `wb_robot_init` prints after `Error: `).
 pub fn load_world() -> Result<(), String> {
     let mut slot = lock();
     if slot.is_none() {

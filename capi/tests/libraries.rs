@@ -362,6 +362,30 @@ fn invalid_worlds_exit_with_status_1() {
         r.stderr
     );
 
+    // Three typos: all three in one run, in file order, one `Error: ` line each.
+    let typos = write_source(
+        "typos.toml",
+        "[vehicle]\nmodel = \"BmwX5\"\ntrackFrnt = 1.6\ntimeTo100 = 7\nwheelbse = 3\n",
+    );
+    let r = run(&exe, Some(&typos.display().to_string()));
+    assert_eq!(r.status.code(), Some(1), "{}", r.stderr);
+    let errors: Vec<&str> = r
+        .stderr
+        .lines()
+        .filter(|l| l.starts_with("Error: cannot load the world"))
+        .collect();
+    assert_eq!(errors.len(), 3, "{}", r.stderr);
+    for (line, (at, key)) in errors.iter().zip([
+        ("typos.toml:3:1", "trackFrnt"),
+        ("typos.toml:4:1", "timeTo100"),
+        ("typos.toml:5:1", "wheelbse"),
+    ]) {
+        assert!(
+            line.contains(at) && line.contains(&format!("unknown key 'vehicle.{key}'")),
+            "{line}"
+        );
+    }
+
     let r = run(&exe, Some(&differential_wheels_world()));
     assert_eq!(r.status.code(), Some(1), "{}", r.stderr);
     assert_eq!(

@@ -399,3 +399,70 @@ fn two_vehicles_share_wheel_meshes_and_name_their_nodes() {
     assert_eq!(scene.nodes[a.chassis].name, "chassis");
     assert_ne!(a.wheels[Wheel::FrontRight], b.wheels[Wheel::FrontRight]);
 }
+
+#[test]
+fn a_camera_looks_from_its_eye_at_its_target_in_the_gltf_frame() {
+    use proto_geom::export::{Camera, CameraError};
+    use proto_geom::nalgebra::{Point3, Quaternion, UnitQuaternion};
+
+    let mut scene = Scene::new();
+    let car = scene.add_node(None, "car", Isometry3::translation(10.0, 0.0, 0.0), None);
+    let (eye, target) = (Point3::new(-6.0, 1.0, 2.5), Point3::new(1.4, 0.0, 0.5));
+    let camera = Camera::perspective("chase", 0.7, 0.1, 500.0).unwrap();
+    let node = scene
+        .add_camera(Some(car), "chase_camera", eye, target, camera)
+        .unwrap();
+    assert_eq!(scene.nodes[node].camera, Some(0));
+    assert_eq!(scene.nodes[car].children, [node]);
+
+    let glb = scene.to_glb().unwrap();
+    let doc = gltf::Gltf::from_slice(&glb).unwrap();
+    let cam = doc.cameras().next().unwrap();
+    assert_eq!(cam.name(), Some("chase"));
+    let gltf::camera::Projection::Perspective(p) = cam.projection() else {
+        panic!("a perspective camera");
+    };
+    // f32 in the file: equal to f32 rounding.
+    assert_eq!((p.yfov(), p.znear(), p.zfar()), (0.7, 0.1, Some(500.0)));
+    // The camera node's world rotation: the root's (z-up to y-up), the car's (none), its own.
+    let gltf_node = doc
+        .nodes()
+        .find(|n| n.name() == Some("chase_camera"))
+        .unwrap();
+    assert_eq!(gltf_node.camera().map(|c| c.index()), Some(0));
+    let [x, y, z, w] = gltf_node.transform().decomposed().1;
+    let own = UnitQuaternion::from_quaternion(Quaternion::new(
+        f64::from(w),
+        f64::from(x),
+        f64::from(y),
+        f64::from(z),
+    ));
+    let world = vehicle_to_gltf() * own;
+    // glTF cameras look along −z with +y up.
+    let look = world * -Vector3::z();
+    let expected = vehicle_to_gltf() * (target - eye).normalize();
+    assert!((look - expected).norm() < 1e-6, "{look} vs {expected}");
+    let up = world * Vector3::y();
+    // Up is glTF's +y side (the vehicle frame's +z), and square to the view.
+    assert!(up.y > 0.9 && up.dot(&look).abs() < 1e-6, "{up}");
+
+    // Implausible values are refused, naming the value.
+    assert_eq!(
+        Camera::perspective("c", 3.2, 0.1, 1.0),
+        Err(CameraError::FieldOfView(3.2))
+    );
+    assert_eq!(
+        Camera::perspective("c", 0.7, 0.0, 1.0),
+        Err(CameraError::Near(0.0))
+    );
+    assert_eq!(
+        Camera::perspective("c", 0.7, 2.0, 1.0),
+        Err(CameraError::Far(1.0))
+    );
+    let c = Camera::perspective("c", 0.7, 0.1, 1.0).unwrap();
+    assert_eq!(
+        scene.add_camera(None, "c", eye, eye, c),
+        Err(CameraError::NoDirection(0.0))
+    );
+    assert_eq!(scene.cameras.len(), 1);
+}

@@ -117,7 +117,9 @@ fn check_run(report: &RunReport, vehicle_node: &str, step_s: f64) {
 fn test_track_replay_has_one_animation_per_scenario_ending_at_the_telemetry() {
     let w = world("obstacles.toml");
     let report = run(&w, Scenario::TestTrack);
-    check_run(&report, "car_0", w.config.dt());
+    // The car's node is named after the world file's car (its model, unnamed).
+    assert_eq!(w.vehicle_names(), ["TeslaModel3"]);
+    check_run(&report, "TeslaModel3", w.config.dt());
 
     let glb = replay::to_glb(&report.replay_parts()).unwrap();
     let anims = animations(&glb);
@@ -143,7 +145,7 @@ fn test_track_replay_has_one_animation_per_scenario_ending_at_the_telemetry() {
         "grid",
         "box_0",
         "ramp_1",
-        "car_0",
+        "TeslaModel3",
         "front_left_wheel",
         "cone_0",
     ] {
@@ -157,7 +159,7 @@ fn test_track_replay_has_one_animation_per_scenario_ending_at_the_telemetry() {
 fn steering_turns_the_front_wheels_in_the_replay() {
     let w = world("bmw-x5.toml");
     let report = run(&w, Scenario::Circle);
-    check_run(&report, "car_0", w.config.dt());
+    check_run(&report, w.vehicle_names()[0], w.config.dt());
     let glb = replay::to_glb(&report.replay_parts()).unwrap();
     let anims = animations(&glb);
     let (_, circle) = &anims[0];
@@ -201,7 +203,7 @@ fn steering_turns_the_front_wheels_in_the_replay() {
 fn robot_replay_moves_the_robot_and_turns_its_wheels() {
     let w = world("e-puck.toml");
     let report = run(&w, Scenario::Square);
-    check_run(&report, "robot_0", w.config.dt());
+    check_run(&report, w.vehicle_names()[0], w.config.dt());
     let glb = replay::to_glb(&report.replay_parts()).unwrap();
     let anims = animations(&glb);
     assert_eq!(anims.len(), 1);
@@ -247,7 +249,8 @@ fn two_cars_and_their_indicators_in_one_replay() {
     let glb = replay::scene(&[part]).unwrap().to_glb().unwrap();
     let anims = animations(&glb);
     let tracks = &anims[0].1;
-    let ends: Vec<f32> = ["car_0", "car_1"]
+    // Unnamed cars of a simulation: `Car`, then `Car-2`.
+    let ends: Vec<f32> = ["Car", "Car-2"]
         .iter()
         .map(|car| track(tracks, car, "translation").values.last().unwrap()[0])
         .collect();

@@ -343,14 +343,34 @@ impl Scene {
             });
         }
 
+        for c in &self.cameras {
+            root.push(json::Camera {
+                name: Some(c.name.clone()),
+                orthographic: None,
+                perspective: Some(json::camera::Perspective {
+                    // Without an aspect ratio the viewer uses its viewport's.
+                    aspect_ratio: None,
+                    yfov: c.yfov as f32,
+                    zfar: Some(c.zfar as f32),
+                    znear: c.znear as f32,
+                    extensions: None,
+                    extras: Default::default(),
+                }),
+                type_: Checked::Valid(json::camera::Type::Perspective),
+                extensions: None,
+                extras: Default::default(),
+            });
+        }
+
         let f = |v: Vector3<f64>| [v.x as f32, v.y as f32, v.z as f32];
         let node = |name: String,
                     translation: Vector3<f64>,
                     rotation: UnitQuaternion<f64>,
                     mesh: Option<usize>,
                     children: &[usize],
-                    visible: bool| json::Node {
-            camera: None,
+                    visible: bool,
+                    camera: Option<usize>| json::Node {
+            camera: camera.map(index_u32),
             children: (!children.is_empty())
                 .then(|| children.iter().map(|&c| index_u32(c)).collect()),
             extensions: None,
@@ -375,6 +395,7 @@ impl Scene {
                 n.mesh,
                 &n.children,
                 n.visible,
+                n.camera.filter(|&c| c < self.cameras.len()),
             ));
         }
         // A last node turns the z-up vehicle frame into glTF's y-up frame.
@@ -385,6 +406,7 @@ impl Scene {
             None,
             &self.roots,
             true,
+            None,
         ));
         for animation in &self.animations {
             push_animation(&mut root, &mut bin, animation);
@@ -414,8 +436,9 @@ impl Scene {
     /// The scene as a binary glTF 2.0 file (.glb): one buffer, one mesh per [`super::SceneMesh`]
     /// (triangles with positions, normals, texture coordinates for the tyre and `u32` indices;
     /// or lines, `LINES` or `LINE_STRIP`, with positions only), metallic-roughness materials
-    /// with their emission, the node tree under a root node that turns the z-up vehicle frame
-    /// into glTF's y-up frame, and the animations (time in s, one input accessor per timeline).
+    /// with their emission, the perspective cameras, the node tree under a root node that turns
+    /// the z-up vehicle frame into glTF's y-up frame, and the animations (time in s, one input
+    /// accessor per timeline).
     ///
     /// # Errors
     /// An animation that fails [`Animation::validate`] (pushed to [`Scene::animations`]

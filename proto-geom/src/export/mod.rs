@@ -21,10 +21,14 @@
 //! ```
 
 mod animation;
+mod camera;
+mod car_body;
 mod glb;
 mod obj;
 
 pub use animation::{Animation, AnimationError, Channel, Interpolation, Keyframes, Property};
+pub use camera::{Camera, CameraError, look_at};
+pub use car_body::{BELTLINE, NOSE_RAKE, TAIL_RAKE, car_body};
 pub use glb::vehicle_to_gltf;
 
 use std::string::{String, ToString};
@@ -104,6 +108,9 @@ pub struct Node {
     /// Whether the node and its children show at rest. glTF gets a hidden node with scale 0,
     /// so that an animation's [`Keyframes::Scale`] can show it; OBJ leaves it out.
     pub visible: bool,
+    /// Index into [`Scene::cameras`] of the camera the node holds (glTF only; OBJ has no
+    /// cameras).
+    pub camera: Option<usize>,
 }
 
 /// What a [`SceneMesh`] draws, in its node's frame (m).
@@ -188,6 +195,8 @@ pub struct Scene {
     pub materials: Vec<Material>,
     /// Animations, checked by [`Scene::add_animation`].
     pub animations: Vec<Animation>,
+    /// Cameras, each held by a node ([`Scene::add_camera`]).
+    pub cameras: Vec<Camera>,
 }
 
 impl Scene {
@@ -245,6 +254,7 @@ impl Scene {
             mesh,
             children: Vec::new(),
             visible: true,
+            camera: None,
         });
         match parent.and_then(|p| self.nodes.get_mut(p)) {
             Some(p) => p.children.push(index),
@@ -320,10 +330,35 @@ impl Scene {
         chassis: &ChassisBox<T>,
         body: Material,
     ) -> VehicleNodes {
-        let root = self.add_node(parent, name, Isometry3::identity(), None);
-        let body = self.add_material(body);
         let chassis_mesh = BoxMesh::new(chassis.centre, chassis.size);
         let chassis_mesh = RenderMesh::from_mesh(&chassis_mesh, &identity::<T>());
+        self.add_vehicle_with(parent, name, layout, chassis_mesh, body)
+    }
+
+    /// Adds a vehicle as [`Scene::add_vehicle`] does, with a car-shaped body ([`car_body`]:
+    /// lower body and tapered greenhouse) filling `chassis` instead of the box.
+    pub fn add_car<T: Real>(
+        &mut self,
+        parent: Option<usize>,
+        name: &str,
+        layout: &VehicleLayout<T>,
+        chassis: &ChassisBox<T>,
+        body: Material,
+    ) -> VehicleNodes {
+        let mesh = car_body(chassis, layout.dimensions().wheelbase);
+        self.add_vehicle_with(parent, name, layout, mesh, body)
+    }
+
+    fn add_vehicle_with<T: Real>(
+        &mut self,
+        parent: Option<usize>,
+        name: &str,
+        layout: &VehicleLayout<T>,
+        chassis_mesh: RenderMesh,
+        body: Material,
+    ) -> VehicleNodes {
+        let root = self.add_node(parent, name, Isometry3::identity(), None);
+        let body = self.add_material(body);
         let chassis_mesh = self.add_mesh("chassis", chassis_mesh, body);
         let chassis = self.add_node(
             Some(root),

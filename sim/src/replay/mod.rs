@@ -9,13 +9,19 @@
 //!   box), each robot's fields, the obstacles and boxes.
 //! * [`scene`] builds one `proto-geom` [`Scene`] of a run's [`Part`]s: a ground patch over
 //!   the driven area with grid lines (1, 2 or 5 × 10ⁿ m apart, at most 150 across), every box,
-//!   ramp and `[[body]]`, every car (body box, Webots wheel meshes, brake lights and
-//!   indicators) and robot (its physics-mode cylinder on two scaled `VehicleWheel`s), and per
+//!   ramp and `[[body]]`, every car (a low-poly car body filling its body box, in its own
+//!   colour; Webots wheel meshes; brake lights and indicators, emissive, shown while the
+//!   recorded light commands have them on) and robot (its physics-mode cylinder on two scaled `VehicleWheel`s), and per
 //!   part a group with one trajectory line per car and robot and the cones of its course; then
 //!   one animation per part, named after it (`test-track` gives five), in seconds of simulated
 //!   time from the part's start. Lights and the part groups show and hide through step-
 //!   interpolated scale keyframes: while a part plays, only its own trajectories and cones
 //!   show.
+//! * Cameras ([`cameras`]): per car a `chase_camera` node under the car's node, behind the
+//!   body by [`CHASE_BEHIND`] body lengths and above its roof by [`CHASE_ABOVE`] body heights,
+//!   looking at the body's centre; and an `overview_camera` under `world` looking down at
+//!   [`OVERVIEW_PITCH`] rad on the centre of the ground rectangle the run covers, far enough
+//!   for the whole rectangle to fit its vertical field of view ([`FIELD_OF_VIEW`]).
 //! * [`to_glb`] writes the parts' scene as binary glTF; [`crate::report::write_data`] puts
 //!   a run's in `replay.glb` beside the CSV and the metrics.
 //!
@@ -23,6 +29,7 @@
 //! turns it into glTF's y-up frame once, at its root node (`webots_to_gltf`).
 
 mod animate;
+mod cameras;
 mod cone;
 pub mod lidar_overlay;
 pub mod overlay;
@@ -34,6 +41,7 @@ use std::io;
 
 use proto_geom::export::{AnimationError, Scene};
 
+pub use cameras::{CHASE_ABOVE, CHASE_BEHIND, FIELD_OF_VIEW, OVERVIEW_PITCH};
 pub use scene::car_colour;
 
 pub use recorder::{

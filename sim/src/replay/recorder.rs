@@ -10,7 +10,7 @@ use vehicle_model::{CarParams, Lights};
 use crate::attitude::RollPitchYaw;
 use crate::body::{BodyPose, BodySpec};
 use crate::config::Obstacle;
-use crate::diff_wheels::DifferentialWheelsParams;
+use crate::diff_wheels::{DifferentialWheels, DifferentialWheelsParams};
 use crate::road::RoadNetwork;
 use crate::simulation::Simulation;
 use crate::vehicle::{Vehicle, VehicleSpec};
@@ -32,6 +32,9 @@ pub const MAX_FRAMES: usize = 36_000;
 /// own wheels at its own wheelbase and tracks) and its body box.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CarModel {
+    /// The car's name: its world-file `name` for a simulation's car, else `car_<index>`; the
+    /// replay's node of the car bears it.
+    pub name: String,
     /// Wheels and their frames (m, car frame).
     pub layout: VehicleLayout<f64>,
     /// The body (m, car frame).
@@ -43,7 +46,7 @@ impl CarModel {
     /// a body from its rear, front and roof sensor slots when the model has them), else from its
     /// spec (default `VehicleWheel`s of its tyre radius and width). A body without sensor slots
     /// spans the chassis collision box lengthwise and up to its top.
-    pub fn new(spec: &VehicleSpec, params: Option<&CarParams<f64>>) -> Self {
+    pub fn new(name: &str, spec: &VehicleSpec, params: Option<&CarParams<f64>>) -> Self {
         let fr = spec.wheels[Wheel::FrontRight].position;
         let rr = spec.wheels[Wheel::RearRight].position;
         let fl = spec.wheels[Wheel::FrontLeft].position;
@@ -94,14 +97,21 @@ impl CarModel {
         };
         // A ground clearance of 60 % of the tyre radius.
         let body = ChassisBox::from_extents(rear, front, width, -0.4 * radius, top);
-        CarModel { layout, body }
+        CarModel {
+            name: name.to_string(),
+            layout,
+            body,
+        }
     }
 }
 
 /// How a DifferentialWheels robot is drawn: the cylinder of its physics mode (radius
 /// `axleLength/2`, height `wheelRadius`, centred at axle height) on two wheels.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct RobotModel {
+    /// The robot's name: its world-file `name` for a simulation's or a named robot
+    /// ([`Recorder::with_robot_names`]), else `robot_<index>`; the replay's node bears it.
+    pub name: String,
     /// The robot's fields (m, rad/s).
     pub params: DifferentialWheelsParams,
 }
@@ -263,18 +273,33 @@ pub struct Recorder {
 
 impl Recorder {
     /// Starts recording `world`, its cars drawn with default wheels of their tyre sizes
-    /// ([`CarModel::new`] without parameters); the first frame is its present state.
+    /// ([`CarModel::new`] without parameters) and named `car_<index>`, its robots named
+    /// `robot_<index>`; the first frame is its present state.
     pub fn for_world(world: &World) -> Self {
-        Self::with_params(world, |_| None)
+        Self::with_params(world, |_| None, |_| None, |_| None)
     }
 
-    /// Starts recording the world of `sim`, each car with a driver drawn from its parameters,
-    /// and with [`Simulation::replay_overlay`] its radars' targets ([`super::overlay`]) and
+    /// The recorder with its robots named `names` in [`World::robots`] order (those past the
+    /// last name keep theirs), e.g. after the world file's robot.
+    pub fn with_robot_names<S: Into<String>>(mut self, names: impl IntoIterator<Item = S>) -> Self {
+        for (robot, name) in self.recording.robots.iter_mut().zip(names) {
+            robot.name = name.into();
+        }
+        self
+    }
+
+    /// Starts recording the world of `sim`, each car and robot named as the simulation names
+    /// it ([`Simulation::car_name`], the world file's `name`), each car with a driver drawn
+    /// from its parameters, and with [`Simulation::replay_overlay`] its radars' targets ([`super::overlay`]) and
     /// its lidars' returns ([`super::lidar_overlay`]) when sampled with
     /// [`Recorder::sample_simulation`].
     pub fn for_simulation(sim: &Simulation) -> Self {
-        let mut recorder =
-            Self::with_params(sim.world(), |v| sim.driver(v.id()).ok().map(|d| d.params()));
+        let mut recorder = Self::with_params(
+            sim.world(),
+            |v| sim.driver(v.id()).ok().map(|d| d.params()),
+            |v| sim.car_name(v.id()).ok().map(str::to_string),
+            |r| sim.robot_name(r.id()).ok().map(str::to_string),
+        );
         if sim.replay_overlay() {
             let radars = overlay::radars(sim);
             let first = overlay::targets(sim, &radars);
@@ -296,6 +321,8 @@ impl Recorder {
     fn with_params<'a>(
         world: &World,
         params: impl Fn(&Vehicle) -> Option<&'a CarParams<f64>>,
+        car_name: impl Fn(&Vehicle) -> Option<String>,
+        robot_name: impl Fn(&DifferentialWheels) -> Option<String>,
     ) -> Self {
         let step_ms = u64::from(world.config().basic_time_step_ms.max(1));
         let steps = (1000.0 / MAX_KEYFRAME_RATE / step_ms as f64)
@@ -311,12 +338,18 @@ impl Recorder {
                 cars: world
                     .vehicles()
                     .iter()
-                    .map(|v| CarModel::new(v.spec(), params(v)))
+                    .enumerate()
+                    .map(|(i, v)| {
+                        let name = car_name(v).unwrap_or_else(|| format!("car_{i}"));
+                        CarModel::new(&name, v.spec(), params(v))
+                    })
                     .collect(),
                 robots: world
                     .robots()
                     .iter()
-                    .map(|r| RobotModel {
+                    .enumerate()
+                    .map(|(i, r)| RobotModel {
+                        name: robot_name(r).unwrap_or_else(|| format!("robot_{i}")),
                         params: *r.params(),
                     })
                     .collect(),

@@ -2,7 +2,7 @@
 //! robot, and per part of the run its trajectories and cones.
 
 use ackermann::{PerWheel, Wheel};
-use proto_geom::export::{Geometry, Material, Scene, VehicleNodes};
+use proto_geom::export::{BELTLINE, Geometry, Material, NOSE_RAKE, Scene, TAIL_RAKE, VehicleNodes};
 use proto_geom::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use proto_geom::{BoxMesh, CylinderMesh, RenderMesh, WheelParams, WheelSide};
 
@@ -165,6 +165,9 @@ pub(crate) fn build(parts: &[Part<'_>]) -> (Scene, Nodes) {
     let world = scene.add_node(None, "world", Isometry3::identity(), None);
 
     let rect = extent(parts, first);
+    super::cameras::add_overview(&mut scene, world, rect);
+    // A chase camera sees across the whole run from anywhere in it.
+    let far = 2.0 * (rect[2] - rect[0]).hypot(rect[3] - rect[1]);
     let span = (rect[2] - rect[0]).max(rect[3] - rect[1]);
     let step = shapes::grid_step(span, MAX_GRID_LINES);
     let rect = [
@@ -191,7 +194,7 @@ pub(crate) fn build(parts: &[Part<'_>]) -> (Scene, Nodes) {
         .cars
         .iter()
         .enumerate()
-        .map(|(i, car)| add_car(&mut scene, world, i, car, first))
+        .map(|(i, car)| add_car(&mut scene, world, i, car, first, far))
         .collect();
     let robots = first
         .robots
@@ -355,21 +358,17 @@ fn add_car(
     i: usize,
     car: &CarModel,
     first: &Recording,
+    far: f64,
 ) -> CarNodes {
     let colour = PALETTE[i % PALETTE.len()];
-    let body = Material::new(&format!("car_{i}_body"), colour, 0.4, 0.3);
-    let vehicle = scene.add_vehicle(
-        Some(world),
-        &format!("car_{i}"),
-        &car.layout,
-        &car.body,
-        body,
-    );
+    let body = Material::new(&format!("{}_body", car.name), colour, 0.4, 0.3);
+    let vehicle = scene.add_car(Some(world), &car.name, &car.layout, &car.body, body);
     if let Some(f) = first.frames.first().and_then(|f| f.cars.get(i))
         && let Some(n) = scene.nodes.get_mut(vehicle.root)
     {
         n.transform = world_pose(&f.position, &f.roll_pitch_yaw);
     }
+    super::cameras::add_chase(scene, vehicle.root, &car.body, far);
     // Lamps on the body's faces, sized by it.
     let b = &car.body;
     let (l, w, h) = (b.size.x, b.size.y, b.size.z);
@@ -380,16 +379,23 @@ fn add_car(
     );
     let lamp = Vector3::new(0.03 * l, 0.15 * w, 0.08 * h);
     let lamp_at = |x: f64, y: f64, z: f64| box_mesh(Point3::new(x, y, bottom + z * h), lamp);
+    // The tail and the nose slope in towards the beltline: a lamp at height share `z` sits on
+    // the sloped face.
+    let (rear, front) = (
+        |z: f64| rear + TAIL_RAKE * l * z / BELTLINE,
+        |z: f64| front - NOSE_RAKE * l * z / BELTLINE,
+    );
     let red =
         Material::new("brake_light", [0.6, 0.0, 0.0], 0.3, 0.0).with_emissive([1.0, 0.0, 0.0]);
     let amber =
         Material::new("indicator", [1.0, 0.45, 0.0], 0.3, 0.0).with_emissive([1.0, 0.45, 0.0]);
     let (red, amber) = (scene.add_material(red), scene.add_material(amber));
+    // Below the beltline (`proto_geom::export::BELTLINE`), on the tail's and the nose's faces.
     let brake = merge(
-        lamp_at(rear, -0.35 * w, 0.65),
-        lamp_at(rear, 0.35 * w, 0.65),
+        lamp_at(rear(0.4), -0.35 * w, 0.4),
+        lamp_at(rear(0.4), 0.35 * w, 0.4),
     );
-    let side = |y: f64| merge(lamp_at(front, y, 0.45), lamp_at(rear, y, 0.45));
+    let side = |y: f64| merge(lamp_at(front(0.3), y, 0.3), lamp_at(rear(0.3), y, 0.3));
     let mut lamps = |name: &str, mesh: RenderMesh, material: usize| {
         let mesh = scene.add_mesh(name, mesh, material);
         let node = scene.add_node(Some(vehicle.root), name, Isometry3::identity(), Some(mesh));
@@ -448,15 +454,15 @@ fn add_robot(
     let (r, half_axle) = (p.wheel_radius, p.axle_length / 2.0);
     let start = first.frames.first().and_then(|f| f.robots.get(i));
     let at = start.map_or(Isometry3::identity(), |f| pose(f.position, f.heading));
-    let root = scene.add_node(Some(world), &format!("robot_{i}"), at, None);
+    let root = scene.add_node(Some(world), &robot.name, at, None);
     let colour = PALETTE[i % PALETTE.len()];
-    let shell = Material::new(&format!("robot_{i}_body"), colour, 0.4, 0.1);
+    let shell = Material::new(&format!("{}_body", robot.name), colour, 0.4, 0.1);
     let shell = scene.add_material(shell);
     // The physics mode's cylinder: radius axleLength/2, height wheelRadius, at axle height
     // (CylinderMesh's axis is x: stood up about y).
     let cylinder = CylinderMesh::new(half_axle, r, 32);
     let mesh = RenderMesh::from_mesh(&cylinder, &Isometry3::identity());
-    let mesh = scene.add_mesh(&format!("robot_{i}_body"), mesh, shell);
+    let mesh = scene.add_mesh(&format!("{}_body", robot.name), mesh, shell);
     let upright = Isometry3::from_parts(
         Translation3::new(0.0, 0.0, r),
         UnitQuaternion::from_euler_angles(0.0, core::f64::consts::FRAC_PI_2, 0.0),
@@ -522,7 +528,7 @@ fn add_part(scene: &mut Scene, world: usize, part: &Part<'_>, lift: f64) -> usiz
             .filter_map(|f| f.cars.get(i).map(|c| [c.position.x, c.position.y]))
             .collect();
         line(
-            format!("trajectory_car_{i}"),
+            format!("trajectory_{}", rec.cars[i].name),
             PALETTE[i % PALETTE.len()],
             points,
         );
@@ -534,7 +540,7 @@ fn add_part(scene: &mut Scene, world: usize, part: &Part<'_>, lift: f64) -> usiz
             .filter_map(|f| f.robots.get(i).map(|r| [r.position.x, r.position.y]))
             .collect();
         line(
-            format!("trajectory_robot_{i}"),
+            format!("trajectory_{}", rec.robots[i].name),
             PALETTE[i % PALETTE.len()],
             points,
         );

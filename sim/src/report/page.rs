@@ -91,15 +91,20 @@ pub(crate) fn write_page(
     glb: &[u8],
 ) -> Result<PathBuf, OutputError> {
     let series = thinned_telemetry(&dir.join(TELEMETRY_CSV))?;
-    let cars = report.results.first().map_or(0, |r| r.replay.cars.len());
+    let cars = report
+        .results
+        .first()
+        .map_or(&[][..], |r| &r.replay.cars[..]);
     let data = PageData {
         world: &report.world,
         vehicle: &report.vehicle,
         scenario: &report.scenario,
         parts: report.results.iter().map(|r| r.name.as_str()).collect(),
-        cars: (0..cars)
-            .map(|i| PageCar {
-                node: format!("car_{i}"),
+        cars: cars
+            .iter()
+            .enumerate()
+            .map(|(i, car)| PageCar {
+                node: car.name.clone(),
                 colour: replay::car_colour(i),
             })
             .collect(),

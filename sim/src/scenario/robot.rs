@@ -36,7 +36,7 @@ impl RobotRig {
         let id = world.add_differential_wheels(robot.params, robot.mode, robot.placement)?;
         let samples = vec![Sample::of_robot(&world, id)?];
         Ok(RobotRig {
-            recorder: Recorder::for_world(&world),
+            recorder: Recorder::for_world(&world).with_robot_names([robot.name.clone()]),
             world,
             id,
             name: robot.name.clone(),

@@ -208,7 +208,8 @@
       mixer = new THREE.AnimationMixer(gltf.scene);
       clips = gltf.animations;
       cars = data.cars.map((c) => {
-        const node = gltf.scene.getObjectByName(c.node);
+        // The loader names objects after the glTF nodes, sanitised as animation paths need.
+        const node = gltf.scene.getObjectByName(THREE.PropertyBinding.sanitizeNodeName(c.node));
         const box = localBox(node);
         const size = box.getSize(new THREE.Vector3());
         return { node, centre: box.getCenter(new THREE.Vector3()), length: Math.max(size.x, 0.1) };
