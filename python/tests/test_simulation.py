@@ -169,7 +169,7 @@ def test_unknown_scenarios_and_wrong_vehicles_are_errors():
         robot.car
     spin = robot.run("spin")
     assert spin.metrics["spin"]["turns"] > 0
-    assert set(wv.SCENARIOS) >= {"lane-change", "test-track", "square", "spin"}
+    assert set(wv.SCENARIOS) >= {"lane-change", "test-track", "square", "spin", "sine-with-dwell"}
 
 
 def test_save_writes_the_run_as_vehicle_sim_writes_one(tmp_path):

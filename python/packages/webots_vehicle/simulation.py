@@ -93,13 +93,19 @@ class SimBody(_Placed):
         return f"<SimBody {self._index}>"
 
 #: The scenarios of :meth:`Simulation.run` (``vehicle-sim --scenario``); ``square`` and
-#: ``spin`` are for a DifferentialWheels world, the others for a car.
+#: ``spin`` are for a DifferentialWheels world, the others for a car (the five handling
+#: manoeuvres, ISO 7401, ISO 4138, FMVSS 126, split-μ braking and ISO 3888-2, among them).
 SCENARIOS: Tuple[str, ...] = (
     "accel-speed",
     "accel-torque",
     "brake",
     "circle",
     "lane-change",
+    "step-steer",
+    "constant-radius",
+    "sine-with-dwell",
+    "split-mu",
+    "iso-3888",
     "test-track",
     "square",
     "spin",

@@ -153,8 +153,22 @@ pub fn render(error: &WorldFileError, text: &str) -> String {
         return format!("error: {error}");
     };
     let label = error.key.as_deref().unwrap_or("");
+    // Tabs and other control characters shown as spaces: annotate-snippets 0.11 widens a tab
+    // when it draws a line but not when it computes the margin of a long one, and its
+    // subtraction then overflows (found by the `world_file` fuzz target: a line of tabs and
+    // NULs). One byte for one byte, so the span still points at the same token.
+    let shown: String = text
+        .chars()
+        .map(|c| {
+            if c.is_ascii_control() && c != '\n' {
+                ' '
+            } else {
+                c
+            }
+        })
+        .collect();
     let message = Level::Error.title(&title).snippet(
-        Snippet::source(text)
+        Snippet::source(&shown)
             .line_start(1)
             .origin(&error.file)
             .fold(true)
@@ -188,6 +202,27 @@ impl std::error::Error for WorldFileErrors {}
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_long_line_of_tabs_and_nuls_renders_without_panicking() {
+        // The `world_file` fuzz target's crash of 2026-11-28 (a syntax error at 2:135 on a line
+        // of tabs and NULs): annotate-snippets' margin overflowed when it was rendered.
+        let text = format!(
+            "[vehichicle]\n{}{}\t\t\tnan{}){}model = \"BmwX2\"\ntransrtlinoaamme]]\nat = 1e9\n\
+             throttle = \x0c\0\0\0\0\0]\01\n",
+            "\t".repeat(8),
+            "\0".repeat(123),
+            "\t".repeat(9),
+            "\t".repeat(3)
+        );
+        let errors = parse_all("w.toml", &text).unwrap_err();
+        assert_eq!(
+            errors.errors[0].location.map(|l| (l.line, l.column)),
+            Some((2, 135))
+        );
+        let shown = errors.to_string();
+        assert!(shown.contains("w.toml:"), "{shown}");
+    }
 
     #[test]
     fn blanking_keeps_line_numbers() {
