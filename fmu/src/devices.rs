@@ -4,7 +4,7 @@
 //! derive the list from the same world with the same code, so the description and the served
 //! values agree.
 //!
-//! The quantities are those `devices.csv` records ([`sim::Device::for_each_recorded`]), with
+//! The quantities are those `devices.csv` records ([`sim::devices::Device::for_each_recorded`]), with
 //! a fixed shape, as FMI variables cannot come and go: a radar gives its target count and the
 //! first [`RADAR_TARGETS`] targets, a lidar the number of returns and the closest. A quantity
 //! the last sample does not have (a target beyond the count, a lidar with no return, the lane

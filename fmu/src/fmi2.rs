@@ -1,9 +1,9 @@
 //! The FMI 2.0 co-simulation entry points (`fmi2Functions.h` of the FMI 2.0.3 standard),
 //! `extern "C"` over [`Instance`].
 //!
-//! Every entry point runs behind [`guard`]: a Rust panic never unwinds into the tool (it
-//! becomes `fmi2Fatal` with a logged message), and a NULL component is refused without
-//! touching memory. The instance's messages go to the tool's logger with the status of the
+//! Every entry point runs behind the guard of [`crate::component`]: a Rust panic never
+//! unwinds into the tool (it becomes `fmi2Fatal` with a logged message), and a NULL component
+//! is refused without touching memory. The instance's messages go to the tool's logger with the status of the
 //! call ([`crate::component::Logger`] says how).
 
 // The C ABI of the standard: raw pointers from the tool, variadic logger calls.

@@ -6,7 +6,8 @@
 //! The FMU is co-simulation without event mode, intermediate updates, clocks or array
 //! variables (its description declares none), so the calls for those answer `fmi3Error` with
 //! the reason logged, as do Get/Set calls for types it has no variable of. Every entry point
-//! runs behind [`guard`] (a panic is `fmi3Fatal`, a NULL instance an error).
+//! runs behind the guard of [`crate::component`] (a panic is `fmi3Fatal`, a NULL instance
+//! an error).
 
 // The C ABI of the standard: raw pointers from the tool.
 #![allow(unsafe_code)]

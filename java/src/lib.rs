@@ -12,8 +12,8 @@
 //! arrays the C API returns are copied into new Java arrays (`null` where C returns NULL).
 //!
 //! The native methods are static methods of two package-private classes, `WebotsNative`
-//! (robot and devices, [`robot`], [`sensors`]) and `VehicleNative` (driver and car,
-//! [`vehicle`]); the public Java classes wrap them with Webots' names and signatures.
+//! (robot and devices, `robot.rs`, `sensors.rs`) and `VehicleNative` (driver and car,
+//! `vehicle.rs`); the public Java classes wrap them with Webots' names and signatures.
 //! Like Webots' controller library, the API is for one controller thread.
 
 // JNI needs `unsafe`: the exported symbols carry `#[unsafe(export_name)]`, and the C API's

@@ -17,7 +17,7 @@
 //!   time from the part's start. Lights and the part groups show and hide through step-
 //!   interpolated scale keyframes: while a part plays, only its own trajectories and cones
 //!   show.
-//! * Cameras ([`cameras`]): per car a `chase_camera` node under the car's node, behind the
+//! * Cameras (`cameras.rs`): per car a `chase_camera` node under the car's node, behind the
 //!   body by [`CHASE_BEHIND`] body lengths and above its roof by [`CHASE_ABOVE`] body heights,
 //!   looking at the body's centre; and an `overview_camera` under `world` looking down at
 //!   [`OVERVIEW_PITCH`] rad on the centre of the ground rectangle the run covers, far enough
