@@ -97,33 +97,38 @@ pub fn build(description: WorldDescription) -> Result<Built, Refused> {
     })
 }
 
-/// The `[vehicle]` / `[[vehicle]]` tables of the world's text (0 if it cannot be read: the
-/// reader's error comes later, with its location).
-fn car_tables(text: &str) -> usize {
+/// The world text's car tables (`[vehicle]`, or each `[[vehicle]]`), read with `f`; `f`
+/// gets nothing when the text cannot be read (the reader's error comes later, with its
+/// location).
+fn with_cars<R>(text: &str, f: impl FnOnce(&[&DeTable<'_>]) -> R) -> R {
     let Ok(doc) = DeTable::parse(text) else {
-        return 0;
+        return f(&[]);
     };
-    match doc.get_ref().get("vehicle").map(|v| v.get_ref()) {
-        Some(DeValue::Table(_)) => 1,
-        Some(DeValue::Array(cars)) => cars.len(),
-        _ => 0,
-    }
+    let cars: Vec<&DeTable<'_>> = match doc.get_ref().get("vehicle").map(|v| v.get_ref()) {
+        Some(DeValue::Table(t)) => vec![t],
+        Some(DeValue::Array(cars)) => cars
+            .iter()
+            .filter_map(|c| match c.get_ref() {
+                DeValue::Table(t) => Some(t),
+                _ => None,
+            })
+            .collect(),
+        _ => Vec::new(),
+    };
+    f(&cars)
+}
+
+/// The `[vehicle]` / `[[vehicle]]` tables of the world's text.
+fn car_tables(text: &str) -> usize {
+    with_cars(text, |cars| cars.len())
 }
 
 /// True if car `driven` names its tyre model by a string (`tyre = "webots"`) rather than a
 /// `[vehicle.tyre]` table.
 fn tyre_is_a_name(text: &str, driven: usize) -> bool {
-    let Ok(doc) = DeTable::parse(text) else {
-        return false;
-    };
-    let car = match doc.get_ref().get("vehicle").map(|v| v.get_ref()) {
-        Some(DeValue::Table(t)) if driven == 0 => Some(t),
-        Some(DeValue::Array(cars)) => cars.get(driven).and_then(|c| match c.get_ref() {
-            DeValue::Table(t) => Some(t),
-            _ => None,
-        }),
-        _ => None,
-    };
-    car.and_then(|t| t.get("tyre"))
-        .is_some_and(|tyre| matches!(tyre.get_ref(), DeValue::String(_)))
+    with_cars(text, |cars| {
+        cars.get(driven)
+            .and_then(|t| t.get("tyre"))
+            .is_some_and(|tyre| matches!(tyre.get_ref(), DeValue::String(_)))
+    })
 }
