@@ -10,7 +10,7 @@
 
 use core::fmt;
 
-use annotate_snippets::{Level, Renderer, Snippet};
+use annotate_snippets::{AnnotationKind, Level, Renderer, Snippet};
 
 use super::{WorldDescription, WorldFileError, WorldFileErrorKind, parse_str};
 
@@ -153,10 +153,10 @@ pub fn render(error: &WorldFileError, text: &str) -> String {
         return format!("error: {error}");
     };
     let label = error.key.as_deref().unwrap_or("");
-    // Tabs and other control characters shown as spaces: annotate-snippets 0.11 widens a tab
-    // when it draws a line but not when it computes the margin of a long one, and its
-    // subtraction then overflows (found by the `world_file` fuzz target: a line of tabs and
-    // NULs). One byte for one byte, so the span still points at the same token.
+    // Control characters shown as spaces: a damaged file's ESC or NUL would otherwise reach
+    // the terminal as it is (an escape sequence from a file is not ours to run), and a tab's
+    // width is the terminal's, so the caret could miss its token. One byte for one byte, so
+    // the span still points at the same token.
     let shown: String = text
         .chars()
         .map(|c| {
@@ -167,14 +167,14 @@ pub fn render(error: &WorldFileError, text: &str) -> String {
             }
         })
         .collect();
-    let message = Level::Error.title(&title).snippet(
+    let report = &[Level::ERROR.primary_title(&title).element(
         Snippet::source(&shown)
             .line_start(1)
-            .origin(&error.file)
+            .path(&error.file)
             .fold(true)
-            .annotation(Level::Error.span(span).label(label)),
-    );
-    Renderer::plain().render(message).to_string()
+            .annotation(AnnotationKind::Primary.span(span).label(label)),
+    )];
+    Renderer::plain().render(report)
 }
 
 impl fmt::Display for WorldFileErrors {
@@ -222,6 +222,18 @@ mod tests {
         );
         let shown = errors.to_string();
         assert!(shown.contains("w.toml:"), "{shown}");
+    }
+
+    #[test]
+    fn leading_tabs_a_carriage_return_and_nuls_render_without_panicking() {
+        // The `world_file` fuzz target's second crash of 2026-11-28, its input byte for byte:
+        // 64 tabs, a lone carriage return, NULs around a `2`, long runs of tabs. The margin
+        // arithmetic of annotate-snippets 0.11 overflowed on it.
+        let bytes = include_bytes!("../../tests/fuzz/crashes/world_file-4478f3bb");
+        let text = String::from_utf8_lossy(bytes);
+        let errors = parse_all("w.toml", &text).unwrap_err();
+        let shown = errors.to_string();
+        assert!(shown.contains("w.toml:1:"), "{shown}");
     }
 
     #[test]
