@@ -215,17 +215,27 @@ pub extern "C" fn fmi3Reset(c: *mut c_void) -> Status {
     })
 }
 
-/// Refuses `nvr` references with `n_values` values: every variable is a scalar, so the two
-/// counts are equal.
-fn counts_differ(c: *mut c_void, function: &str, nvr: usize, n_values: usize) -> Option<Status> {
-    (nvr != n_values).then(|| {
-        guard(c, |c| {
-            c.refuse(&format!(
-                "{function}: {nvr} value references but {n_values} values (every variable is a \
-                 scalar)"
-            ))
-        })
-    })
+/// The checks every typed Get/Set makes before it touches the arrays: as many values as
+/// references (every variable is a scalar), and an array where there are values. `Some` is the
+/// refusal, logged through the FMI logger.
+fn refuse_arrays(
+    c: *mut c_void,
+    function: &str,
+    nvr: usize,
+    n_values: usize,
+    values_null: bool,
+) -> Option<Status> {
+    let problem = if nvr != n_values {
+        format!(
+            "{function}: {nvr} value references but {n_values} values (every variable is a \
+             scalar)"
+        )
+    } else if nvr > 0 && values_null {
+        format!("{function}: values is NULL for {nvr} value references")
+    } else {
+        return None;
+    };
+    Some(guard(c, |c| c.refuse(&problem)))
 }
 
 /// `fmi3GetFloat64`.
@@ -240,11 +250,8 @@ pub unsafe extern "C" fn fmi3GetFloat64(
     values: *mut f64,
     n_values: usize,
 ) -> Status {
-    if let Some(refused) = counts_differ(c, "fmi3GetFloat64", nvr, n_values) {
+    if let Some(refused) = refuse_arrays(c, "fmi3GetFloat64", nvr, n_values, values.is_null()) {
         return refused;
-    }
-    if nvr > 0 && values.is_null() {
-        return ERROR;
     }
     // SAFETY: `values` holds `nvr` elements, by the contract.
     get_values(c, vr, nvr, Kind::Real, |i, v| unsafe { *values.add(i) = v })
@@ -262,11 +269,8 @@ pub unsafe extern "C" fn fmi3GetInt32(
     values: *mut i32,
     n_values: usize,
 ) -> Status {
-    if let Some(refused) = counts_differ(c, "fmi3GetInt32", nvr, n_values) {
+    if let Some(refused) = refuse_arrays(c, "fmi3GetInt32", nvr, n_values, values.is_null()) {
         return refused;
-    }
-    if nvr > 0 && values.is_null() {
-        return ERROR;
     }
     // SAFETY: as in `fmi3GetFloat64`; integer variables hold whole numbers within i32.
     get_values(c, vr, nvr, Kind::Integer, |i, v| unsafe {
@@ -286,11 +290,8 @@ pub unsafe extern "C" fn fmi3SetFloat64(
     values: *const f64,
     n_values: usize,
 ) -> Status {
-    if let Some(refused) = counts_differ(c, "fmi3SetFloat64", nvr, n_values) {
+    if let Some(refused) = refuse_arrays(c, "fmi3SetFloat64", nvr, n_values, values.is_null()) {
         return refused;
-    }
-    if nvr > 0 && values.is_null() {
-        return ERROR;
     }
     // SAFETY: as in `fmi3GetFloat64`.
     set_values(c, vr, nvr, Kind::Real, |i| unsafe { *values.add(i) })
@@ -308,11 +309,8 @@ pub unsafe extern "C" fn fmi3SetInt32(
     values: *const i32,
     n_values: usize,
 ) -> Status {
-    if let Some(refused) = counts_differ(c, "fmi3SetInt32", nvr, n_values) {
+    if let Some(refused) = refuse_arrays(c, "fmi3SetInt32", nvr, n_values, values.is_null()) {
         return refused;
-    }
-    if nvr > 0 && values.is_null() {
-        return ERROR;
     }
     // SAFETY: as in `fmi3GetFloat64`.
     set_values(c, vr, nvr, Kind::Integer, |i| {

@@ -239,6 +239,11 @@ fn wrong_order_and_bad_values_are_logged_errors() {
     assert_eq!(unsafe { fmi3GetFloat64(c, &GEAR, 1, &mut v, 1) }, ERROR);
     // SAFETY: one reference; the count mismatch is refused before any value is read.
     assert_eq!(unsafe { fmi3GetFloat64(c, &THROTTLE, 1, &mut v, 2) }, ERROR);
+    // SAFETY: one reference; the NULL array is refused before anything is written.
+    assert_eq!(
+        unsafe { fmi3GetFloat64(c, &THROTTLE, 1, std::ptr::null_mut(), 1) },
+        ERROR
+    );
     // Types and capabilities the FMU does not have.
     let mut b = 0u8;
     assert_eq!(fmi3GetBoolean(c, &GEAR, 1, &mut b, 1), ERROR);
@@ -251,6 +256,7 @@ fn wrong_order_and_bad_values_are_logged_errors() {
         "x is an output",
         "throttle = inf",
         "1 value references but 2 values",
+        "fmi3GetFloat64: values is NULL for 1 value references",
         "no Boolean variables",
         "fmi3EnterEventMode is not supported",
     ] {
