@@ -26,7 +26,10 @@ pub use crate::config::{Outline, OutlineKind};
 pub use figures::figures;
 pub use page::{MAX_PAGE_ROWS, PAGE_COLUMNS, REPORT_HTML};
 #[cfg(feature = "app")]
-pub use plot::{Figure, Panel, PlotError, Series, SeriesKind};
+pub(crate) use plot::COLOURS;
+#[cfg(test)]
+pub(crate) use plot::svg_text;
+pub use plot::{Figure, Panel, PlotError, Series, SeriesKind, XAxis};
 
 use crate::scenario::{Metric, RunReport, ScenarioResult, Value};
 use crate::telemetry::write_csv;

@@ -107,6 +107,7 @@ pub fn write_sweep(
         rows: kept.map_or(0, |k| k.rows),
         errors: kept.map_or(0, |k| k.errors),
         complete: false,
+        color_by: sweep.color_by().key().map(str::to_string),
     };
     let manifest_path = dir.join(super::MANIFEST_JSON);
     manifest.write(dir).map_err(io_at(&manifest_path))?;
@@ -173,6 +174,7 @@ pub fn write_sweep(
             &results_path,
             &sweep.columns().axes,
             sweep.scenario().name(),
+            sweep.color_by(),
             &dir.join(PLOTS_DIR),
         )?);
     }

@@ -1,26 +1,47 @@
-//! The summary plots of a sweep: for each numeric axis, one SVG figure with a panel per
-//! numeric metric, every case a dot and, for an axis with few distinct values, the mean over
-//! the cases at each value as a line.
+//! The summary plots of a sweep: for each axis, one SVG figure with a panel per numeric
+//! metric and one legend for the figure. The form follows the axis's kind:
 //!
-//! They are drawn from `results.csv`, read as a stream, so `vehicle-sim sweep` and
-//! `sweep-merge` draw the same plots of the same rows; a sample of at most
-//! [`MAX_POINTS`] cases per panel (every `2^k`-th row) keeps the memory flat for any
-//! number of cases, while the means take every case.
+//! * a **numeric** axis is the x axis of a scatter, every case a dot and, for an axis with
+//!   few distinct values, the mean over the cases at each value as a line (integer ticks when
+//!   every value is whole);
+//! * a **categorical** axis (model names, tyre kinds, booleans, lists) has one column per
+//!   value, in the order of first appearance: a strip of the cases' dots over a box of their
+//!   quartiles and median.
+//!
+//! The cases are coloured by a second axis ([`ColorBy`]): one colour per value, the legend
+//! headed by that axis and naming its values, the dots and means of each value in its
+//! colour (side by side in a categorical column). By default ([`ColorBy::Auto`]) the second
+//! axis is the first other axis, in file order, of 2 to [`MAX_COLOURS`] distinct values.
+//!
+//! They are drawn from `results.csv`, read twice as a stream (once for the axes' kinds and
+//! values, once for the points), so `vehicle-sim sweep` and `sweep-merge` draw the same plots
+//! of the same rows; a sample of at most [`MAX_POINTS`] cases per panel and colour (every
+//! `2^k`-th row) keeps the memory flat for any number of cases, while the means take every
+//! case.
 
 use std::path::{Path, PathBuf};
 
-use crate::report::{Figure, Panel, Series, SeriesKind};
+use crate::report::{COLOURS, Figure, Panel, Series, SeriesKind, XAxis};
 
+use super::color::{ColorBy, MAX_COLOURS};
 use super::error::{OutputError, csv_at, io_at};
 use super::row::NOTES_COLUMN;
 
-/// Most dots kept per panel: the plots draw 1000 at most anyway.
+/// Most dots kept per panel and colour: the plots draw 1000 at most anyway.
 pub const MAX_POINTS: usize = 1000;
 /// Most distinct values of an axis for which the mean line is drawn (beyond, e.g. random
 /// draws, each value has one case and the dots say it all).
 pub const MAX_LEVELS: usize = 50;
+/// Most values of a categorical axis that get a plot: a column each, which a wider figure
+/// would not fit.
+pub const MAX_CATEGORIES: usize = 50;
+// One colour each for the values of the axis the cases are coloured by, all distinct.
+const _: () = assert!(MAX_COLOURS <= COLOURS);
+/// Width of a categorical column's strip of dots, in columns (the next column's starts
+/// 1 − this away).
+const STRIP_WIDTH: f64 = 0.8;
 
-/// One metric against one axis, accumulated row by row.
+/// One metric against one axis, for one colour, accumulated row by row.
 #[derive(Debug, Clone, Default)]
 struct Pair {
     /// A sample of the points: every `stride`-th one seen.
@@ -108,22 +129,144 @@ fn number(cell: &str) -> Result<Option<f64>, ()> {
         .map_err(|_| ())
 }
 
+/// What the first pass over the rows learns of an axis column.
+#[derive(Debug, Clone)]
+struct AxisScan {
+    /// Every cell a finite number.
+    numeric: bool,
+    /// Every cell a whole number.
+    integer: bool,
+    /// The distinct cells in order of first appearance, while at most [`MAX_CATEGORIES`].
+    values: Option<Vec<String>>,
+}
+
+impl AxisScan {
+    fn new() -> AxisScan {
+        AxisScan {
+            numeric: true,
+            integer: true,
+            values: Some(Vec::new()),
+        }
+    }
+
+    fn add(&mut self, cell: &str) {
+        if cell.is_empty() {
+            return;
+        }
+        match number(cell) {
+            Ok(Some(x)) => self.integer &= x.fract() == 0.0,
+            _ => {
+                self.numeric = false;
+                self.integer = false;
+            }
+        }
+        if let Some(values) = &mut self.values
+            && !values.iter().any(|v| v == cell)
+        {
+            if values.len() < MAX_CATEGORIES {
+                values.push(cell.to_string());
+            } else {
+                self.values = None;
+            }
+        }
+    }
+
+    /// The distinct values, numbers in increasing order (a colour scale reads in order),
+    /// text in order of first appearance; `None` past [`MAX_CATEGORIES`].
+    fn levels(&self) -> Option<Vec<String>> {
+        let mut v = self.values.clone()?;
+        if self.numeric {
+            v.sort_by(|a, b| {
+                let x = |s: &str| s.parse::<f64>().unwrap_or(f64::NAN);
+                x(a).total_cmp(&x(b))
+            });
+        }
+        Some(v)
+    }
+}
+
+/// The plot of one axis: its x axis, the axis it is coloured by (index and values) and the
+/// accumulated points, `[metric][colour]`.
+struct AxisPlot {
+    axis: usize,
+    categories: Option<Vec<String>>,
+    integer: bool,
+    color: Option<(usize, Vec<String>)>,
+    pairs: Vec<Vec<Pair>>,
+}
+
+/// The colour axis of the plot against axis `i` under `color_by`.
+fn color_axis(
+    i: usize,
+    axes: &[String],
+    scans: &[AxisScan],
+    color_by: &ColorBy,
+) -> Result<Option<(usize, Vec<String>)>, OutputError> {
+    let fits = |j: usize| {
+        scans
+            .get(j)
+            .and_then(AxisScan::levels)
+            .filter(|v| v.len() <= MAX_COLOURS)
+    };
+    match color_by {
+        ColorBy::Off => Ok(None),
+        ColorBy::Auto => Ok((0..axes.len())
+            .filter(|&j| j != i)
+            .find_map(|j| fits(j).filter(|v| v.len() >= 2).map(|v| (j, v)))),
+        ColorBy::Axis(name) => {
+            let Some(j) = axes.iter().position(|a| a == name) else {
+                return Err(OutputError::ColorBy {
+                    axis: name.clone(),
+                    reason: format!("the sweep's axes are {}", axes.join(", ")),
+                });
+            };
+            if j == i {
+                return Ok(None);
+            }
+            match fits(j) {
+                Some(v) => Ok(Some((j, v))),
+                None => Err(OutputError::ColorBy {
+                    axis: name.clone(),
+                    reason: format!("it has more than {MAX_COLOURS} values, one colour each"),
+                }),
+            }
+        }
+    }
+}
+
+/// The x of the `k`-th sampled point of colour `c` (of `colours`) in category `x`: its
+/// colour's share of the column's strip, spread over it by the golden ratio's fractional
+/// parts (evenly, and the same on every run).
+fn strip_x(x: f64, c: usize, colours: usize, k: usize) -> f64 {
+    let share = STRIP_WIDTH / colours.max(1) as f64;
+    let centre = x - 0.5 * STRIP_WIDTH + (c as f64 + 0.5) * share;
+    let spread = (k as f64 * 0.618_033_988_749_895).fract() - 0.5;
+    centre + 0.6 * share * spread
+}
+
 /// Draws the plots of `results` (a `results.csv` whose axis columns are `axes`) into `dir`,
-/// titled after `scenario`, after removing the SVG files an earlier run left there. Axes and
-/// metrics with any non-numeric value (a model name, a list, `true`/`false`) have no plot.
-/// Returns the files written.
+/// titled after `scenario`, the cases coloured as `color_by` says, after removing the SVG
+/// files an earlier run left there. A numeric axis gets a scatter, a categorical one (any
+/// non-numeric value, at most [`MAX_CATEGORIES`] distinct) a box and strip per value; a
+/// categorical axis of more values has no plot, nor does a metric with a non-numeric value
+/// (`true`/`false`). Returns the files written.
 ///
 /// # Errors
-/// The file that could not be read or written, or a plot that could not be drawn.
+/// The file that could not be read or written, a plot that could not be drawn, or a
+/// [`ColorBy::Axis`] that is not one of `axes` or has more than [`MAX_COLOURS`] values.
 pub fn write_plots(
     results: &Path,
     axes: &[String],
     scenario: &str,
+    color_by: &ColorBy,
     dir: &Path,
 ) -> Result<Vec<PathBuf>, OutputError> {
-    let mut reader = csv::ReaderBuilder::new()
-        .from_path(results)
-        .map_err(csv_at(results))?;
+    let open = || {
+        csv::ReaderBuilder::new()
+            .from_path(results)
+            .map_err(csv_at(results))
+    };
+    let mut reader = open()?;
     let header = reader.headers().map_err(csv_at(results))?.clone();
     // case, the axes, the metrics, then notes, error and checksum.
     let metrics: Vec<String> = header
@@ -132,36 +275,68 @@ pub fn write_plots(
         .take_while(|&name| name != NOTES_COLUMN)
         .map(str::to_string)
         .collect();
-    let mut pairs = vec![vec![Pair::new(); metrics.len()]; axes.len()];
-    let mut numeric_axis = vec![true; axes.len()];
+    let mut scans = vec![AxisScan::new(); axes.len()];
     let mut numeric_metric = vec![true; metrics.len()];
     let mut rows = 0usize;
-    let mut xs: Vec<Option<f64>> = Vec::with_capacity(axes.len());
     for record in reader.records() {
         let record = record.map_err(csv_at(results))?;
         rows += 1;
-        xs.clear();
-        for (i, ok) in numeric_axis.iter_mut().enumerate() {
-            let x = number(record.get(1 + i).unwrap_or("")).unwrap_or_else(|()| {
-                *ok = false;
-                None
-            });
-            xs.push(x.filter(|_| *ok));
+        for (i, scan) in scans.iter_mut().enumerate() {
+            scan.add(record.get(1 + i).unwrap_or(""));
         }
         for (j, ok) in numeric_metric.iter_mut().enumerate() {
-            let cell = record.get(1 + axes.len() + j).unwrap_or("");
-            let Some(y) = number(cell).unwrap_or_else(|()| {
-                *ok = false;
-                None
-            }) else {
-                continue;
-            };
-            if !*ok {
-                continue;
+            *ok &= number(record.get(1 + axes.len() + j).unwrap_or("")).is_ok();
+        }
+    }
+    let mut plots: Vec<AxisPlot> = Vec::new();
+    for (i, scan) in scans.iter().enumerate() {
+        let categories = if scan.numeric {
+            None
+        } else {
+            match scan.levels() {
+                Some(v) => Some(v),
+                None => continue,
             }
-            for (i, x) in xs.iter().enumerate() {
-                if let (Some(x), Some(pair)) = (x, pairs.get_mut(i).and_then(|p| p.get_mut(j))) {
-                    pair.add(*x, y);
+        };
+        let color = color_axis(i, axes, &scans, color_by)?;
+        let colours = color.as_ref().map_or(1, |(_, v)| v.len());
+        plots.push(AxisPlot {
+            axis: i,
+            categories,
+            integer: scan.integer,
+            color,
+            pairs: vec![vec![Pair::new(); colours]; metrics.len()],
+        });
+    }
+    let mut reader = open()?;
+    for record in reader.records() {
+        let record = record.map_err(csv_at(results))?;
+        let cell = |i: usize| record.get(1 + i).unwrap_or("");
+        for plot in &mut plots {
+            let x = match &plot.categories {
+                Some(names) => names
+                    .iter()
+                    .position(|n| n == cell(plot.axis))
+                    .map(|k| k as f64),
+                None => number(cell(plot.axis)).ok().flatten(),
+            };
+            let Some(x) = x else { continue };
+            let c = match &plot.color {
+                Some((j, values)) => match values.iter().position(|v| v == cell(*j)) {
+                    Some(c) => c,
+                    None => continue,
+                },
+                None => 0,
+            };
+            for (j, pairs) in plot.pairs.iter_mut().enumerate() {
+                if !numeric_metric.get(j).copied().unwrap_or(false) {
+                    continue;
+                }
+                let y = number(record.get(1 + axes.len() + j).unwrap_or(""))
+                    .ok()
+                    .flatten();
+                if let (Some(y), Some(pair)) = (y, pairs.get_mut(c)) {
+                    pair.add(x, y);
                 }
             }
         }
@@ -175,41 +350,12 @@ pub fn write_plots(
         }
     }
     let mut written = Vec::new();
-    for (i, axis) in axes.iter().enumerate() {
-        if !numeric_axis.get(i).copied().unwrap_or(false) {
+    for plot in &plots {
+        let Some(axis) = axes.get(plot.axis) else {
             continue;
-        }
-        let panels: Vec<Panel> = metrics
-            .iter()
-            .enumerate()
-            .filter(|&(j, _)| numeric_metric.get(j).copied().unwrap_or(false))
-            .filter_map(|(j, name)| {
-                let pair = pairs.get(i)?.get(j)?;
-                if pair.points.is_empty() {
-                    return None;
-                }
-                let mut series = vec![Series {
-                    name: "cases".to_string(),
-                    points: pair.points.clone(),
-                    kind: SeriesKind::Points,
-                }];
-                if let Some(means) = pair.means() {
-                    series.push(Series::line("mean at each value", means));
-                }
-                Some(Panel {
-                    y_label: name.clone(),
-                    series,
-                })
-            })
-            .collect();
-        if panels.is_empty() {
+        };
+        let Some(figure) = figure(plot, axis, axes, &metrics, scenario, rows) else {
             continue;
-        }
-        let figure = Figure {
-            title: format!("{scenario}: each metric against {axis} ({rows} cases)"),
-            x_label: axis.clone(),
-            panels,
-            equal_aspect: false,
         };
         let svg = figure.to_svg()?;
         std::fs::create_dir_all(dir).map_err(io_at(dir))?;
@@ -218,6 +364,92 @@ pub fn write_plots(
         written.push(path);
     }
     Ok(written)
+}
+
+/// The figure of `plot` (against `axis`), a panel per metric with points; `None` when no
+/// metric has any.
+fn figure(
+    plot: &AxisPlot,
+    axis: &str,
+    axes: &[String],
+    metrics: &[String],
+    scenario: &str,
+    rows: usize,
+) -> Option<Figure> {
+    let colour_names: Vec<String> = match &plot.color {
+        Some((_, values)) => values.clone(),
+        None => vec!["cases".to_string()],
+    };
+    let colours = colour_names.len();
+    let panels: Vec<Panel> = metrics
+        .iter()
+        .zip(&plot.pairs)
+        .filter_map(|(name, pairs)| {
+            let mut series = Vec::new();
+            for (c, (pair, label)) in pairs.iter().zip(&colour_names).enumerate() {
+                if pair.points.is_empty() {
+                    continue;
+                }
+                let points = match plot.categories {
+                    Some(_) => (0..)
+                        .zip(&pair.points)
+                        .map(|(k, p)| [strip_x(p[0], c, colours, k), p[1]])
+                        .collect(),
+                    None => pair.points.clone(),
+                };
+                series.push(Series {
+                    name: label.clone(),
+                    points,
+                    kind: SeriesKind::Points,
+                });
+                if plot.categories.is_none()
+                    && let Some(means) = pair.means()
+                {
+                    // The mean in the dots' colour (same name) when coloured; its own entry
+                    // otherwise.
+                    let mean_name = match plot.color {
+                        Some(_) => label.clone(),
+                        None => "mean at each value".to_string(),
+                    };
+                    series.push(Series::line(mean_name, means));
+                }
+            }
+            (!series.is_empty()).then(|| Panel {
+                y_label: name.clone(),
+                series,
+            })
+        })
+        .collect();
+    if panels.is_empty() {
+        return None;
+    }
+    let has_means = panels
+        .iter()
+        .any(|p| p.series.iter().any(|s| s.kind == SeriesKind::Line));
+    let how = match (&plot.categories, has_means) {
+        (Some(_), _) => "boxes: quartiles, median",
+        (None, true) => "lines: the mean at each value",
+        (None, false) => "",
+    };
+    let legend_title = match (&plot.color, how) {
+        (Some((j, _)), "") => axes.get(*j).cloned(),
+        (Some((j, _)), how) => axes.get(*j).map(|c| format!("{c} ({how})")),
+        (None, "") => None,
+        (None, how) => Some(how.to_string()),
+    };
+    let (x_axis, verb) = match &plot.categories {
+        Some(names) => (XAxis::Categories(names.clone()), "for each"),
+        None if plot.integer => (XAxis::Integer, "against"),
+        None => (XAxis::Continuous, "against"),
+    };
+    Some(Figure {
+        title: format!("{scenario}: each metric {verb} {axis} ({rows} cases)"),
+        x_label: axis.to_string(),
+        x_axis,
+        panels,
+        equal_aspect: false,
+        legend_title,
+    })
 }
 
 #[cfg(test)]
@@ -249,5 +481,157 @@ mod tests {
         assert_eq!(number("1.5"), Ok(Some(1.5)));
         assert_eq!(number(""), Ok(None));
         assert_eq!(number("true"), Err(()));
+    }
+
+    #[test]
+    fn strips_stay_in_their_column_and_colour_share() {
+        // Two colours: colour 0 in [x − 0.4, x), colour 1 in [x, x + 0.4).
+        for k in 0..100 {
+            let a = strip_x(3.0, 0, 2, k);
+            let b = strip_x(3.0, 1, 2, k);
+            assert!(
+                (2.6..3.0).contains(&a) && (3.0..3.4).contains(&b),
+                "{a} {b}"
+            );
+        }
+    }
+
+    use crate::report::svg_text;
+
+    /// The left edge of the legend column (px): the plot column's width.
+    const LEGEND_X: f64 = 760.0;
+
+    /// Writes `results.csv` of `header` and `rows` (cells without commas) into a fresh
+    /// directory named after `name`, draws its plots, and returns each plot's file name and
+    /// SVG text.
+    fn plots(
+        name: &str,
+        axes: &[&str],
+        header: &str,
+        rows: &[String],
+        color_by: &ColorBy,
+    ) -> Result<Vec<(String, String)>, OutputError> {
+        let dir =
+            std::env::temp_dir().join(format!("sim-sweep-plots-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        let results = dir.join("results.csv");
+        std::fs::write(&results, format!("{header}\n{}\n", rows.join("\n"))).unwrap();
+        let axes: Vec<String> = axes.iter().map(|a| a.to_string()).collect();
+        let written = write_plots(&results, &axes, "brake", color_by, &dir.join("plots"));
+        let out = written.map(|files| {
+            files
+                .iter()
+                .map(|f| {
+                    let name = f.file_name().unwrap().to_string_lossy().to_string();
+                    (name, std::fs::read_to_string(f).unwrap())
+                })
+                .collect()
+        });
+        std::fs::remove_dir_all(&dir).unwrap();
+        out
+    }
+
+    /// The texts of the legend column, top to bottom.
+    fn legend_of(svg: &str) -> Vec<String> {
+        svg_text::boxes(svg)
+            .into_iter()
+            .filter(|(t, b)| b[0] > LEGEND_X && !t.is_empty())
+            .map(|(t, _)| t)
+            .collect()
+    }
+
+    /// The centres (px) of the scatter dots of `svg` (filled, translucent circles) by fill
+    /// colour, in order of first appearance.
+    fn dots(svg: &str) -> Vec<(String, Vec<[f64; 2]>)> {
+        let mut out: Vec<(String, Vec<[f64; 2]>)> = Vec::new();
+        for tag in svg
+            .split("<circle")
+            .skip(1)
+            .map(|t| t.split('>').next().unwrap())
+        {
+            let attr = |n: &str| {
+                tag.split(&format!(" {n}=\""))
+                    .nth(1)
+                    .map(|v| v.split('"').next().unwrap())
+            };
+            if attr("opacity") != Some("0.6") || attr("fill") == Some("none") {
+                continue;
+            }
+            let (fill, cx, cy) = (
+                attr("fill").unwrap(),
+                attr("cx").unwrap(),
+                attr("cy").unwrap(),
+            );
+            let p = [cx.parse().unwrap(), cy.parse().unwrap()];
+            match out.iter_mut().find(|(f, _)| f == fill) {
+                Some((_, v)) => v.push(p),
+                None => out.push((fill.to_string(), vec![p])),
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn a_second_axis_colours_the_cases_with_one_legend() {
+        // Gears 1 to 4 (whole numbers) × three frictions, each case twice: 24 rows, two
+        // metrics. Against the gear, the cases are coloured by the friction (the other axis,
+        // 3 values), and the reverse.
+        let mut rows = Vec::new();
+        for rep in 0..2 {
+            for gear in 1..=4 {
+                for mu in ["0.5", "1", "2"] {
+                    let k = rows.len();
+                    let m: f64 = mu.parse().unwrap();
+                    let y = f64::from(gear) * m + f64::from(rep);
+                    rows.push(format!("{k},{gear},{mu},{y},{},,,0", y + 1.0));
+                }
+            }
+        }
+        let header = "case,gear,mu,dist_m,time_s,notes,error,checksum";
+        let out = plots("colour", &["gear", "mu"], header, &rows, &ColorBy::Auto).unwrap();
+        let names: Vec<&str> = out.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(names, ["gear.svg", "mu.svg"]);
+        let svg = &out[0].1;
+        svg_text::assert_inside(svg);
+        // One legend: its heading names the colour axis, then each value once, though two
+        // panels show each of them (as dots and a mean line).
+        let legend = legend_of(svg);
+        assert_eq!(
+            legend.first().map(String::as_str),
+            Some("mu (lines: the mean at")
+        );
+        assert_eq!(legend[legend.len() - 3..], ["0.5", "1", "2"], "{legend:?}");
+        assert_eq!(legend.iter().filter(|t| *t == "1").count(), 1);
+        // A colour per friction, each with its 8 cases in each of the 2 panels.
+        let by_colour = dots(svg);
+        let plot_dots: Vec<(String, usize)> = by_colour
+            .iter()
+            .map(|(c, v)| (c.clone(), v.iter().filter(|p| p[0] < LEGEND_X).count()))
+            .collect();
+        assert_eq!(plot_dots.len(), 3, "{plot_dots:?}");
+        assert!(plot_dots.iter().all(|(_, n)| *n == 16), "{plot_dots:?}");
+        // The gear axis ticks in whole gears only: 1 to 4 under the lower panel.
+        let [_, h] = svg_text::canvas(svg);
+        let x_ticks: Vec<f64> = svg_text::boxes(svg)
+            .iter()
+            .filter(|(_, b)| b[1] > h - 60.0 && b[0] < LEGEND_X && b[0] > 64.0)
+            .filter_map(|(t, _)| t.parse().ok())
+            .collect();
+        assert_eq!(x_ticks, [1.0, 2.0, 3.0, 4.0]);
+        // Against the friction, coloured by gear: four colours, 6 cases each per panel.
+        let svg = &out[1].1;
+        svg_text::assert_inside(svg);
+        let legend = legend_of(svg);
+        assert_eq!(
+            legend[legend.len() - 4..],
+            ["1", "2", "3", "4"],
+            "{legend:?}"
+        );
+        let counts: Vec<usize> = dots(svg)
+            .iter()
+            .map(|(_, v)| v.iter().filter(|p| p[0] < LEGEND_X).count())
+            .collect();
+        assert_eq!(counts, [12; 4], "{counts:?}");
     }
 }
