@@ -634,4 +634,98 @@ mod tests {
             .collect();
         assert_eq!(counts, [12; 4], "{counts:?}");
     }
+
+    #[test]
+    fn a_categorical_axis_has_a_box_and_strip_per_value() {
+        // Three models × wet or not, 3 cases each: 18 rows. A boolean metric gets no panel.
+        let mut rows = Vec::new();
+        for rep in 0..3 {
+            for (m, model) in ["BmwX5", "ToyotaPrius", "Bus"].into_iter().enumerate() {
+                for wet in ["true", "false"] {
+                    let k = rows.len();
+                    let y = 40.0 + 10.0 * m as f64 + f64::from(rep);
+                    rows.push(format!("{k},{model},{wet},{y},{},,,0", wet == "true"));
+                }
+            }
+        }
+        let header = "case,vehicle.model,ground.wet,stop_distance_m,skidded,notes,error,checksum";
+        let axes = ["vehicle.model", "ground.wet"];
+        let out = plots("strips", &axes, header, &rows, &ColorBy::Auto).unwrap();
+        let svg = &out[0].1;
+        assert_eq!(out[0].0, "vehicle.model.svg");
+        svg_text::assert_inside(svg);
+        // One panel: the boolean metric has none.
+        let texts: Vec<String> = svg_text::boxes(svg).into_iter().map(|t| t.0).collect();
+        assert!(texts.contains(&"stop_distance_m".to_string()));
+        assert!(!texts.contains(&"skidded".to_string()), "{texts:?}");
+        // Each model named once under its column; its column holds its 6 cases, 3 of each
+        // colour, and a box per colour.
+        let columns: Vec<(String, f64)> = svg_text::boxes(svg)
+            .into_iter()
+            .filter(|(t, _)| ["BmwX5", "ToyotaPrius", "Bus"].contains(&t.as_str()))
+            .map(|(t, b)| (t, 0.5 * (b[0] + b[2])))
+            .collect();
+        let names: Vec<&str> = columns.iter().map(|c| c.0.as_str()).collect();
+        assert_eq!(names, ["BmwX5", "ToyotaPrius", "Bus"]);
+        let width = columns[1].1 - columns[0].1;
+        let by_colour = dots(svg);
+        assert_eq!(by_colour.len(), 2, "one colour per value of ground.wet");
+        for (_, x) in &columns {
+            for (colour, points) in &by_colour {
+                let n = points
+                    .iter()
+                    .filter(|p| (p[0] - x).abs() < 0.5 * width)
+                    .count();
+                assert_eq!(n, 3, "{colour} at {x}");
+            }
+        }
+        let boxes = svg.matches("<rect").count();
+        // The background, then a filled and an outlined rectangle per box: 3 × 2 boxes.
+        assert_eq!(boxes, 1 + 2 * 6, "{svg}");
+        let legend = legend_of(svg);
+        assert_eq!(
+            legend,
+            ["ground.wet (boxes:", "quartiles, median)", "true", "false"]
+        );
+        // Against ground.wet (two categories), coloured by the model.
+        let svg = &out[1].1;
+        svg_text::assert_inside(svg);
+        assert_eq!(dots(svg).len(), 3);
+    }
+
+    #[test]
+    fn the_colour_axis_is_chosen_or_refused() {
+        let rows: Vec<String> = (0..16)
+            .map(|k| format!("{k},{},{},{}.5,,,0", k % 2, k, k))
+            .collect();
+        let header = "case,a,b,m,notes,error,checksum";
+        // b has 16 values: too many to colour by; a is chosen automatically for b's plot.
+        let out = plots("auto", &["a", "b"], header, &rows, &ColorBy::Auto).unwrap();
+        assert_eq!(dots(&out[0].1).len(), 1, "a's plot: b has too many values");
+        assert_eq!(
+            dots(&out[1].1).len(),
+            2,
+            "b's plot: one colour per value of a"
+        );
+        let off = plots("off", &["a", "b"], header, &rows, &ColorBy::Off).unwrap();
+        assert!(off.iter().all(|(_, svg)| dots(svg).len() == 1));
+        for (axis, reason) in [
+            ("c", "the sweep's axes are a, b"),
+            ("b", "it has more than 7 values, one colour each"),
+        ] {
+            let e = plots(
+                "refused",
+                &["a", "b"],
+                header,
+                &rows,
+                &ColorBy::Axis(axis.into()),
+            );
+            match e {
+                Err(OutputError::ColorBy { axis: a, reason: r }) => {
+                    assert_eq!((a.as_str(), r.as_str()), (axis, reason));
+                }
+                other => panic!("{other:?}"),
+            }
+        }
+    }
 }
