@@ -493,10 +493,10 @@ pub(crate) fn write_files(
     for (name, svg) in plots {
         written.push(write_file(dir, name, svg.as_bytes())?);
     }
-    let glb =
-        crate::replay::to_glb(&report.replay_parts()).map_err(io_error(&dir.join(REPLAY_GLB)))?;
+    let (glb, car_nodes) = crate::replay::to_glb_and_cars(&report.replay_parts())
+        .map_err(io_error(&dir.join(REPLAY_GLB)))?;
     written.push(write_file(dir, REPLAY_GLB, &glb)?);
-    written.push(page::write_page(report, dir, plots, &glb)?);
+    written.push(page::write_page(report, dir, plots, &glb, &car_nodes)?);
     Ok(written)
 }
 
