@@ -27,8 +27,9 @@ pub use figures::figures;
 pub use page::{MAX_PAGE_ROWS, PAGE_COLUMNS, REPORT_HTML};
 #[cfg(feature = "app")]
 pub(crate) use plot::COLOURS;
-#[cfg(test)]
+#[cfg(all(test, feature = "app"))]
 pub(crate) use plot::svg_text;
+#[cfg(feature = "app")]
 pub use plot::{Figure, Panel, PlotError, Series, SeriesKind, XAxis};
 
 use crate::scenario::{Metric, RunReport, ScenarioResult, Value};
