@@ -5,11 +5,14 @@ use plotters::prelude::*;
 
 use super::legend::{draw_legend, is_data};
 use super::style::{
-    CONE, FONT, GREY, LEGEND_ROW, LEGEND_WIDTH, MAP_HEIGHT, MARGIN, MARKERS, MAX_INTEGER_TICKS,
-    MAX_POINTS, PANEL_HEIGHT, PLOT_WIDTH, SCATTER_ALPHA, TEXT, TITLE, TITLE_HEIGHT, X_LABEL_AREA,
-    Y_LABEL_AREA, color_of, marker_at, style_of, tidy,
+    CHAR_WIDTH, CONE, FONT, GREY, LEGEND_ROW, LEGEND_WIDTH, MAP_HEIGHT, MARGIN, MARKERS,
+    MAX_INTEGER_TICKS, MAX_POINTS, PANEL_HEIGHT, PLOT_WIDTH, SCATTER_ALPHA, SVG_FONT_SCALE, TEXT,
+    TITLE, TITLE_HEIGHT, X_LABEL_AREA, Y_LABEL_AREA, color_of, marker_at, style_of, tidy,
 };
 use super::{Figure, Panel, SeriesKind, XAxis};
+
+/// Least space between two category labels (px).
+const LABEL_GAP: f64 = 8.0;
 
 /// Half the width of a box on a categorical axis when its points share one x (category
 /// widths: a category spans 1).
@@ -179,9 +182,13 @@ impl Figure {
                     .x_labels(span.clamp(2, MAX_INTEGER_TICKS));
             }
             XAxis::Categories(names) => {
-                // As many labels as categories: plotters steps by 1 from category 0.
+                // A label per category when the names fit side by side (plotters then steps
+                // by 1 from category 0), else every 2nd, 5th, … rather than overlapping.
+                let widest = names.iter().map(|n| n.chars().count()).max().unwrap_or(1);
+                let label = widest as f64 * CHAR_WIDTH * TEXT * SVG_FONT_SCALE + LABEL_GAP;
+                let fit = (f64::from(PLOT_WIDTH - Y_LABEL_AREA) / label).floor() as usize;
                 mesh.x_label_formatter(&category)
-                    .x_labels(names.len().max(1));
+                    .x_labels(names.len().min(fit).max(1));
             }
         }
         if is_discrete(panel) {

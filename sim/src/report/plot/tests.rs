@@ -173,3 +173,43 @@ fn thinning_and_steps() {
         [vec![(0.0, 0.0)], vec![(2.0, 5.0)]]
     );
 }
+
+#[test]
+fn category_labels_never_overlap() {
+    // 30 categories of 14 characters: 110 px a label with its gap, 23 px a column, so no more
+    // than 6 labels (plotters names every 5th).
+    // Few short ones: each named under its column.
+    for (n, width) in [(30, 14), (3, 5)] {
+        let names: Vec<String> = (0..n).map(|i| format!("{i:0width$}")).collect();
+        let points = (0..n).map(|i| [i as f64, (i % 7) as f64]).collect();
+        let figure = Figure {
+            title: "t".into(),
+            x_label: "model".into(),
+            x_axis: XAxis::Categories(names.clone()),
+            panels: vec![Panel {
+                y_label: "m".into(),
+                series: vec![Series {
+                    name: "cases".into(),
+                    points,
+                    kind: SeriesKind::Points,
+                }],
+            }],
+            equal_aspect: false,
+            legend_title: None,
+        };
+        let svg = figure.to_svg().unwrap();
+        svg_text::assert_inside(&svg);
+        let mut labels: Vec<[f64; 4]> = svg_text::boxes(&svg)
+            .into_iter()
+            .filter(|(t, _)| names.contains(t))
+            .map(|(_, b)| b)
+            .collect();
+        labels.sort_by(|a, b| a[0].total_cmp(&b[0]));
+        assert!(labels.windows(2).all(|w| w[0][2] < w[1][0]), "{labels:?}");
+        if n == 3 {
+            assert_eq!(labels.len(), 3);
+        } else {
+            assert!((2..n).contains(&labels.len()), "{}", labels.len());
+        }
+    }
+}
