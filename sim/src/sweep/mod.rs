@@ -39,8 +39,9 @@
 //!
 //! With the `app` feature (default), `run` runs a shard's cases on a rayon pool and hands
 //! their rows over in case order; `write_sweep` writes them into `results.csv` (with
-//! `timings.csv`, the manifest `sweep.json` and the plots); `merge` puts shards' outputs back
-//! together. Without it, the cases run one at a time by index ([`Sweep::run_case`]).
+//! `timings.csv`, the manifest `sweep.json` and the plots: a scatter per numeric axis, a box
+//! and strip per value of a categorical one, the cases coloured by the axis `color_by` names,
+//! see the `plots` module); `merge` puts shards' outputs back together. Without it, the cases run one at a time by index ([`Sweep::run_case`]).
 
 mod axis;
 mod cases;

@@ -23,7 +23,7 @@ use super::shard::Shard;
 pub const RESULTS_CSV: &str = "results.csv";
 /// The wall time of each case (s), in case order.
 pub const TIMINGS_CSV: &str = "timings.csv";
-/// The directory of the summary plots (each metric against each numeric axis).
+/// The directory of the summary plots (each metric against or for each value of each axis).
 pub const PLOTS_DIR: &str = "plots";
 /// The column of `timings.csv` after `case`.
 pub(crate) const WALL_COLUMN: &str = "wall_seconds";
