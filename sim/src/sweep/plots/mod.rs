@@ -431,10 +431,11 @@ fn figure(
         (None, true) => "lines: the mean at each value",
         (None, false) => "",
     };
+    // Uncoloured, the means have an entry of their own: only the boxes need a word.
     let legend_title = match (&plot.color, how) {
         (Some((j, _)), "") => axes.get(*j).cloned(),
         (Some((j, _)), how) => axes.get(*j).map(|c| format!("{c} ({how})")),
-        (None, "") => None,
+        (None, _) if plot.categories.is_none() => None,
         (None, how) => Some(how.to_string()),
     };
     let (x_axis, verb) = match &plot.categories {

@@ -255,6 +255,8 @@ fn the_colour_axis_is_chosen_or_refused() {
     );
     let off = plots("off", &["a", "b"], header, &rows, &ColorBy::Off).unwrap();
     assert!(off.iter().all(|(_, svg)| dots(svg).len() == 1));
+    // Uncoloured: the cases and their means, no heading.
+    assert_eq!(legend_of(&off[1].1), ["cases", "mean at each value"]);
     for (axis, reason) in [
         ("c", "the sweep's axes are a, b"),
         ("b", "it has more than 7 values, one colour each"),
