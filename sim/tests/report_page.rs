@@ -123,6 +123,40 @@ fn write_outputs_writes_the_page_with_the_replay_the_plots_and_the_cars() {
 }
 
 #[test]
+fn cars_named_like_the_scene_nodes_are_found_by_index() {
+    // Cars named `world` and `ground`, as the scene's root and ground nodes are: a glTF
+    // loader renames one of each pair (three.js appends `_1`), so the page gives the viewer
+    // node indices.
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("worlds/two-cars.toml");
+    let text = std::fs::read_to_string(&path)
+        .unwrap()
+        .replace("name = \"prius\"", "name = \"world\"")
+        .replace("name = \"bmw\"", "name = \"ground\"");
+    let world = world_file::parse_str("clash.toml", &text).unwrap();
+    let report = scenario::run(&world, Scenario::Programme, &mut |_| {}).unwrap();
+    let dir = temp_dir("clash");
+    sim::report::write_outputs(&report, &[], &dir).unwrap();
+    let (_, data) = check_page(&dir);
+    let glb = std::fs::read(dir.join("replay.glb")).unwrap();
+    let doc = gltf::Gltf::from_slice(&glb).unwrap();
+    let nodes: Vec<gltf::Node<'_>> = doc.nodes().collect();
+    let cars = data["cars"].as_array().unwrap();
+    for (car, name) in cars.iter().zip(["world", "ground"]) {
+        assert_eq!(car["node"], name);
+        let index = |key: &str| usize::try_from(car[key].as_u64().unwrap()).unwrap();
+        let (root, body) = (&nodes[index("root")], index("body"));
+        // Two nodes have the name: the car's root is the one holding the car's body (its
+        // chassis mesh) and chase camera, not the scene's.
+        assert_eq!(nodes.iter().filter(|n| n.name() == Some(name)).count(), 2);
+        assert_eq!(root.name(), Some(name));
+        assert!(root.children().any(|c| c.index() == body), "{name}");
+        assert!(nodes[body].mesh().is_some());
+        assert!(root.children().any(|c| c.camera().is_some()), "{name}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
 fn a_saved_simulation_writes_the_page_too() {
     // What a controller run writes under VEHICLE_OUT.
     let (mut sim, _) = Simulation::from_description(&world("two-cars.toml")).unwrap();

@@ -543,6 +543,88 @@ fn the_example_sweeps_load() {
     let bench = Sweep::load(dir.join("brake-10000.toml")).unwrap();
     assert_eq!(bench.len(), 10_000);
     assert_eq!(Shard::new(0, 10).unwrap().len(bench.len()), 1000);
+    let models = Sweep::load(dir.join("models.toml")).unwrap();
+    assert_eq!(models.len(), 4 * 2 * 3);
+    assert_eq!(
+        models.color_by(),
+        &sweep::ColorBy::Axis("vehicle.tyre".into())
+    );
+}
+
+#[test]
+fn color_by_names_an_axis_of_few_values() {
+    let err = |text: &str| parse(text).err().map(|e| e.to_string());
+    let axes = "[axes]\n\"ground.friction\" = [0.6, 0.8]\n\
+                \"vehicle.brakeCoefficient\" = { from = 500, to = 2000, steps = 8 }\n";
+    assert_eq!(
+        err(&format!("color_by = \"ground.frction\"\n{axes}")).as_deref(),
+        Some(
+            "s.toml:1:1: invalid 'color_by': 'ground.frction' is not an axis of this sweep (its \
+             axes: ground.friction, vehicle.brakeCoefficient; or \"none\")"
+        )
+    );
+    assert_eq!(
+        err(&format!("color_by = \"vehicle.brakeCoefficient\"\n{axes}")).as_deref(),
+        Some(
+            "s.toml:1:1: invalid 'color_by': 'vehicle.brakeCoefficient' has more than 7 \
+             distinct values, one colour each"
+        )
+    );
+    assert_eq!(
+        err(&format!("color_by = 3\n{axes}")).as_deref(),
+        Some("s.toml:1:1: 'color_by' takes a string, found an integer")
+    );
+    let off = parse(&format!("color_by = \"none\"\n{axes}")).unwrap();
+    assert_eq!(off.color_by(), &sweep::ColorBy::Off);
+    assert_eq!(parse(axes).unwrap().color_by(), &sweep::ColorBy::Auto);
+}
+
+#[test]
+fn shards_record_the_colour_axis_and_the_merge_draws_with_it() {
+    // Two models × two frictions, 1 s each: the model axis is categorical (a box and strip
+    // per model), and every plot but its own is coloured by it.
+    let sweep = parse(
+        "world = \"ToyotaPrius\"\nscenario = \"accel-speed\"\ncolor_by = \"vehicle.model\"\n\
+         [set]\nduration = 1\n[axes]\n\"ground.friction\" = [0.8, 1.0]\n\
+         \"vehicle.model\" = [\"ToyotaPrius\", \"BmwX5\"]\n",
+    )
+    .unwrap();
+    let dir = scratch("colour");
+    let shards: Vec<PathBuf> = (0..2)
+        .map(|i| {
+            let d = dir.join(format!("shard-{i}"));
+            write(&sweep, Shard::new(i, 2).unwrap(), 1, &d);
+            d
+        })
+        .collect();
+    let merged = dir.join("merged");
+    sweep::merge(&shards, &merged).unwrap();
+    let manifest = sweep::Manifest::read(&merged).unwrap();
+    assert_eq!(manifest.color_by.as_deref(), Some("vehicle.model"));
+    let friction = read(&merged.join("plots/ground.friction.svg"));
+    // The legend: headed by the colour axis, each model once.
+    assert!(
+        friction.contains(">\nvehicle.model (lines:\n<"),
+        "{friction}"
+    );
+    for model in ["ToyotaPrius", "BmwX5"] {
+        assert_eq!(
+            friction.matches(&format!(">\n{model}\n<")).count(),
+            1,
+            "{model}"
+        );
+    }
+    // The model's own plot: a column per model, named once, uncoloured (the legend names
+    // the cases and explains the boxes).
+    let models = read(&merged.join("plots/vehicle.model.svg"));
+    for text in ["ToyotaPrius", "BmwX5", "cases", "boxes: quartiles, median"] {
+        assert_eq!(
+            models.matches(&format!(">\n{text}\n<")).count(),
+            1,
+            "{text}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

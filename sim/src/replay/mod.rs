@@ -69,13 +69,38 @@ pub struct Part<'a> {
 /// An [`AnimationError`] if a recording's frames are not in strictly increasing time (a
 /// recording from [`Recorder`] always is).
 pub fn scene(parts: &[Part<'_>]) -> Result<Scene, AnimationError> {
+    scene_and_cars(parts).map(|(scene, _)| scene)
+}
+
+/// Where a viewer finds a car of the replay: glTF node indices, which stay unambiguous
+/// whatever the names (three.js renames a node whose name another node has, e.g. a car
+/// named `world` or `ground`, and lamps of the same name on every car).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct CarNode {
+    /// The car's root node (it moves the car).
+    pub(crate) root: usize,
+    /// Its body's node: the visible body mesh, without the wheels and lamps.
+    pub(crate) body: usize,
+}
+
+/// [`scene`], and the nodes of the first part's cars in order. [`Scene::to_glb`] writes the
+/// scene's nodes in order, so their indices are the glTF file's.
+fn scene_and_cars(parts: &[Part<'_>]) -> Result<(Scene, Vec<CarNode>), AnimationError> {
     let (mut scene, nodes) = scene::build(parts);
     for index in 0..parts.len() {
         if let Some(a) = animate::animation(parts, index, &nodes) {
             scene.add_animation(a)?;
         }
     }
-    Ok(scene)
+    let cars = nodes
+        .cars
+        .iter()
+        .map(|c| CarNode {
+            root: c.vehicle.root,
+            body: c.vehicle.chassis,
+        })
+        .collect();
+    Ok((scene, cars))
 }
 
 /// The replay of `parts` (a run's, [`RunReport::replay_parts`](crate::scenario::RunReport::replay_parts))
@@ -85,7 +110,15 @@ pub fn scene(parts: &[Part<'_>]) -> Result<Scene, AnimationError> {
 /// [`io::ErrorKind::InvalidData`] for the [`AnimationError`] of [`scene`], or an [`io::Error`]
 /// if the file cannot be serialised (a buffer beyond 4 GiB).
 pub fn to_glb(parts: &[Part<'_>]) -> io::Result<Vec<u8>> {
-    scene(parts)
-        .map_err(|e| io::Error::new(io::ErrorKind::InvalidData, e))?
-        .to_glb()
+    to_glb_and_cars(parts).map(|(glb, _)| glb)
+}
+
+/// [`to_glb`], and the glTF nodes of the first part's cars in order.
+///
+/// # Errors
+/// As [`to_glb`].
+pub(crate) fn to_glb_and_cars(parts: &[Part<'_>]) -> io::Result<(Vec<u8>, Vec<CarNode>)> {
+    let (scene, cars) =
+        scene_and_cars(parts).map_err(|e| io::Error::new(io::ErrorKind::InvalidData, e))?;
+    Ok((scene.to_glb()?, cars))
 }

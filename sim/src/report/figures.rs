@@ -6,7 +6,7 @@ use crate::config::OutlineKind;
 use crate::scenario::{RunReport, Scenario, ScenarioResult};
 use crate::telemetry::{Sample, Telemetry, VehicleKind};
 
-use super::plot::{Figure, Panel, Series, SeriesKind};
+use super::plot::{Figure, Panel, Series, SeriesKind, XAxis};
 
 /// Lines joined into one series, separated by a NaN point (a lift of the pen).
 fn joined<'a>(lines: impl IntoIterator<Item = &'a Vec<[f64; 2]>>) -> Vec<[f64; 2]> {
@@ -89,6 +89,8 @@ pub fn figures(report: &RunReport) -> Vec<(&'static str, Figure)> {
             x_label: time.clone(),
             panels: speed_panels,
             equal_aspect: false,
+            x_axis: XAxis::Continuous,
+            legend_title: None,
         },
     ));
     // Runs whose engine never turned (braking in neutral) would only add a flat line.
@@ -122,6 +124,8 @@ pub fn figures(report: &RunReport) -> Vec<(&'static str, Figure)> {
                     },
                 ],
                 equal_aspect: false,
+                x_axis: XAxis::Continuous,
+                legend_title: None,
             },
         ));
     }
@@ -155,6 +159,8 @@ pub fn figures(report: &RunReport) -> Vec<(&'static str, Figure)> {
                     series: lines,
                 }],
                 equal_aspect: false,
+                x_axis: XAxis::Continuous,
+                legend_title: None,
             },
         ));
     }
@@ -177,6 +183,8 @@ pub fn figures(report: &RunReport) -> Vec<(&'static str, Figure)> {
                     series,
                 }],
                 equal_aspect: false,
+                x_axis: XAxis::Continuous,
+                legend_title: None,
             },
         ));
     }
@@ -243,6 +251,8 @@ fn lateral(report: &RunReport, title: String) -> Option<Figure> {
             series,
         }],
         equal_aspect: false,
+        x_axis: XAxis::Continuous,
+        legend_title: None,
     })
 }
 
@@ -310,6 +320,8 @@ fn trajectory(report: &RunReport, title: String) -> Figure {
             series,
         }],
         equal_aspect: true,
+        x_axis: XAxis::Continuous,
+        legend_title: None,
     }
 }
 
@@ -347,6 +359,8 @@ fn friction_use(samples: &[Sample], title: String) -> Option<Figure> {
             series,
         }],
         equal_aspect: false,
+        x_axis: XAxis::Continuous,
+        legend_title: None,
     })
 }
 

@@ -26,7 +26,11 @@ pub use crate::config::{Outline, OutlineKind};
 pub use figures::figures;
 pub use page::{MAX_PAGE_ROWS, PAGE_COLUMNS, REPORT_HTML};
 #[cfg(feature = "app")]
-pub use plot::{Figure, Panel, PlotError, Series, SeriesKind};
+pub(crate) use plot::COLOURS;
+#[cfg(all(test, feature = "app"))]
+pub(crate) use plot::svg_text;
+#[cfg(feature = "app")]
+pub use plot::{Figure, Panel, PlotError, Series, SeriesKind, XAxis};
 
 use crate::scenario::{Metric, RunReport, ScenarioResult, Value};
 use crate::telemetry::write_csv;
@@ -490,10 +494,10 @@ pub(crate) fn write_files(
     for (name, svg) in plots {
         written.push(write_file(dir, name, svg.as_bytes())?);
     }
-    let glb =
-        crate::replay::to_glb(&report.replay_parts()).map_err(io_error(&dir.join(REPLAY_GLB)))?;
+    let (glb, car_nodes) = crate::replay::to_glb_and_cars(&report.replay_parts())
+        .map_err(io_error(&dir.join(REPLAY_GLB)))?;
     written.push(write_file(dir, REPLAY_GLB, &glb)?);
-    written.push(page::write_page(report, dir, plots, &glb)?);
+    written.push(page::write_page(report, dir, plots, &glb, &car_nodes)?);
     Ok(written)
 }
 

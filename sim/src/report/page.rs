@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 use base64::Engine as _;
 
 use super::{OutputError, TELEMETRY_CSV, format_value, io_error};
-use crate::replay;
+use crate::replay::{self, CarNode};
 use crate::scenario::{RunReport, Value};
 
 /// The file name of the page.
@@ -60,8 +60,12 @@ struct Series {
 /// A car of the replay as the viewer finds it.
 #[derive(serde::Serialize)]
 struct PageCar {
-    /// The glTF node of the car.
+    /// The car's name (its glTF root node's name, which a loader may change: messages only).
     node: String,
+    /// The glTF node index of its root, which the viewer follows.
+    root: usize,
+    /// The glTF node index of its body, whose visible mesh the camera aims at.
+    body: usize,
     /// Its body colour (linear RGB, 0–1), the material's base colour.
     colour: [f32; 3],
 }
@@ -80,7 +84,8 @@ struct PageData<'a> {
 }
 
 /// Writes `report.html` into `dir` for `report`, whose `telemetry.csv` is already in `dir`,
-/// with the `plots` (file name and SVG) and the replay `glb`; returns its path.
+/// with the `plots` (file name and SVG), the replay `glb` and its cars' nodes (`car_nodes`,
+/// in the order of the first part's cars); returns its path.
 ///
 /// # Errors
 /// The first I/O or CSV error, with the path it concerns.
@@ -89,6 +94,7 @@ pub(crate) fn write_page(
     dir: &Path,
     plots: &[(&str, String)],
     glb: &[u8],
+    car_nodes: &[CarNode],
 ) -> Result<PathBuf, OutputError> {
     let series = thinned_telemetry(&dir.join(TELEMETRY_CSV))?;
     let cars = report
@@ -102,9 +108,12 @@ pub(crate) fn write_page(
         parts: report.results.iter().map(|r| r.name.as_str()).collect(),
         cars: cars
             .iter()
+            .zip(car_nodes)
             .enumerate()
-            .map(|(i, car)| PageCar {
+            .map(|(i, (car, nodes))| PageCar {
                 node: car.name.clone(),
+                root: nodes.root,
+                body: nodes.body,
                 colour: replay::car_colour(i),
             })
             .collect(),

@@ -96,6 +96,15 @@ pub enum OutputError {
     /// A plot could not be drawn.
     #[error(transparent)]
     Plot(#[from] PlotError),
+    /// The axis the plots are to be coloured by is not one of the sweep's, or has more values
+    /// than there are colours.
+    #[error("cannot colour the plots by '{axis}': {reason}")]
+    ColorBy {
+        /// The axis asked for.
+        axis: String,
+        /// Why not.
+        reason: String,
+    },
 }
 
 /// A closure turning an I/O error into an [`OutputError`] about `path`.

@@ -5,6 +5,7 @@
 //! world = "BmwX5"                 # a world file (relative to this file) or a model name
 //! scenario = "brake"
 //! combine = "product"             # or "zip"
+//! color_by = "ground.friction"     # the plots' colours; or "none"
 //! [set]                           # every case
 //! duration = 30
 //! [axes]
@@ -26,7 +27,7 @@ use super::cases::Combine;
 use super::value::AxisValue;
 
 /// The keys of a sweep file.
-const ROOT_KEYS: [&str; 5] = ["world", "scenario", "combine", "set", "axes"];
+const ROOT_KEYS: [&str; 6] = ["world", "scenario", "combine", "color_by", "set", "axes"];
 
 /// A value of `[set]`: the same in every case.
 pub(crate) struct Setting {
@@ -44,6 +45,8 @@ pub(crate) struct ReadSweep {
     pub(crate) scenario: Option<(Scenario, Range<usize>)>,
     /// `combine` and where it is.
     pub(crate) combine: (Combine, Option<Range<usize>>),
+    /// `color_by` and where it is; `None`: absent (the plots choose).
+    pub(crate) color_by: Option<(String, Range<usize>)>,
     /// `[set]`, in file order.
     pub(crate) set: Vec<Setting>,
     /// `[axes]`, in file order.
@@ -96,6 +99,9 @@ pub(crate) fn read(src: Source<'_>) -> Result<ReadSweep, WorldFileError> {
             (c, Some(span("combine")))
         }
     };
+    let color_by = root
+        .string("color_by")?
+        .map(|c| (c.to_string(), span("color_by")));
     let mut set = Vec::new();
     if let Some(s) = root.table("set")? {
         read_set(&s, "", &mut set)?;
@@ -128,6 +134,7 @@ pub(crate) fn read(src: Source<'_>) -> Result<ReadSweep, WorldFileError> {
         world,
         scenario,
         combine,
+        color_by,
         set,
         axes,
     })

@@ -66,6 +66,10 @@ pub struct Manifest {
     /// True once every case of the shard has its row: a shard whose run was stopped stays
     /// `false`.
     pub complete: bool,
+    /// The sweep file's `color_by` ([`ColorBy::key`](super::ColorBy::key)): the axis the
+    /// plots colour the cases by, `"none"`, or absent for the automatic choice.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub color_by: Option<String>,
 }
 
 impl Manifest {

@@ -16,6 +16,7 @@ use std::fs::File;
 use std::io::BufWriter;
 use std::path::{Path, PathBuf};
 
+use super::color::ColorBy;
 use super::error::{OutputError, csv_at, io_at};
 use super::manifest::{MANIFEST_JSON, Manifest};
 use super::output::{PLOTS_DIR, RESULTS_CSV, TIMINGS_CSV, finish};
@@ -402,6 +403,7 @@ fn write_merged(
         &results,
         &manifest.axes,
         &manifest.scenario,
+        &ColorBy::from_key(manifest.color_by.as_deref()),
         &staging.join(PLOTS_DIR),
     )?);
     let names = files

@@ -39,11 +39,13 @@
 //!
 //! With the `app` feature (default), `run` runs a shard's cases on a rayon pool and hands
 //! their rows over in case order; `write_sweep` writes them into `results.csv` (with
-//! `timings.csv`, the manifest `sweep.json` and the plots); `merge` puts shards' outputs back
-//! together. Without it, the cases run one at a time by index ([`Sweep::run_case`]).
+//! `timings.csv`, the manifest `sweep.json` and the plots: a scatter per numeric axis, a box
+//! and strip per value of a categorical one, the cases coloured by the axis `color_by` names,
+//! see the `plots` module); `merge` puts shards' outputs back together. Without it, the cases run one at a time by index ([`Sweep::run_case`]).
 
 mod axis;
 mod cases;
+mod color;
 mod draw;
 mod error;
 mod file;
@@ -78,6 +80,7 @@ use crate::world_file::{
 
 pub use axis::{Axis, AxisValues};
 pub use cases::Combine;
+pub use color::{ColorBy, MAX_COLOURS, NO_COLOR};
 #[cfg(feature = "app")]
 pub use error::OutputError;
 pub use error::SweepError;
@@ -87,7 +90,7 @@ pub use merge::{LISTED_MISSING, MergeError, MergeSummary, STAGING_PREFIX, merge}
 #[cfg(feature = "app")]
 pub use output::{PLOTS_DIR, RESULTS_CSV, RunSummary, TIMINGS_CSV, WriteOptions, write_sweep};
 #[cfg(feature = "app")]
-pub use plots::write_plots;
+pub use plots::{MAX_CATEGORIES, write_plots};
 pub use row::{
     CASE_COLUMN, CHECKSUM_COLUMN, CaseError, Cell, Columns, ERROR_COLUMN, NOTES_COLUMN, Row,
     checksum, checksum_matches,
@@ -125,6 +128,47 @@ pub struct Sweep {
     columns: Columns,
     cases: usize,
     fingerprint: Fingerprint,
+    color_by: ColorBy,
+}
+
+/// The sweep file's `color_by = key` (at `span`): [`NO_COLOR`], or one of `axes` of at most
+/// [`MAX_COLOURS`] distinct values.
+fn color_by(
+    src: Source<'_>,
+    key: &str,
+    span: &core::ops::Range<usize>,
+    axes: &[Axis],
+) -> Result<ColorBy, SweepError> {
+    let refuse = |message: String| {
+        SweepError::file(src.error(
+            Some(span.clone()),
+            Some("color_by".to_string()),
+            WorldFileErrorKind::InvalidValue(message),
+        ))
+    };
+    if key == NO_COLOR {
+        return Ok(ColorBy::Off);
+    }
+    let Some(axis) = axes.iter().find(|a| a.key().as_str() == key) else {
+        let names: Vec<&str> = axes.iter().map(|a| a.key().as_str()).collect();
+        return Err(refuse(format!(
+            "'{key}' is not an axis of this sweep (its axes: {}; or \"{NO_COLOR}\")",
+            names.join(", ")
+        )));
+    };
+    // Distinct values, counted until one too many (a range of 10⁹ steps stops at 8).
+    let mut distinct: Vec<AxisValue> = Vec::new();
+    for v in (0..axis.len()).map_while(|k| axis.value(k)) {
+        if !distinct.contains(&v) {
+            distinct.push(v);
+            if distinct.len() > MAX_COLOURS {
+                return Err(refuse(format!(
+                    "'{key}' has more than {MAX_COLOURS} distinct values, one colour each"
+                )));
+            }
+        }
+    }
+    Ok(ColorBy::Axis(key.to_string()))
 }
 
 /// Where the base world comes from: its name in messages and its text.
@@ -371,6 +415,10 @@ impl Sweep {
             axes: axes.iter().map(|a| a.key().to_string()).collect(),
             metrics,
         };
+        let color_by = match &spec.color_by {
+            None => ColorBy::Auto,
+            Some((key, span)) => color_by(src, key, span, &axes)?,
+        };
         let fingerprint = Fingerprint::of(text, &world_text);
         Ok(Sweep {
             file: file.to_string(),
@@ -385,6 +433,7 @@ impl Sweep {
             columns,
             cases,
             fingerprint,
+            color_by,
         })
     }
 
@@ -421,6 +470,11 @@ impl Sweep {
     /// How the axes combine into cases.
     pub fn combine(&self) -> Combine {
         self.combine
+    }
+
+    /// The axis the plots colour the cases by (`color_by`).
+    pub fn color_by(&self) -> &ColorBy {
+        &self.color_by
     }
 
     /// The axes, in the sweep file's order.

@@ -23,7 +23,7 @@ use super::shard::Shard;
 pub const RESULTS_CSV: &str = "results.csv";
 /// The wall time of each case (s), in case order.
 pub const TIMINGS_CSV: &str = "timings.csv";
-/// The directory of the summary plots (each metric against each numeric axis).
+/// The directory of the summary plots (each metric against or for each value of each axis).
 pub const PLOTS_DIR: &str = "plots";
 /// The column of `timings.csv` after `case`.
 pub(crate) const WALL_COLUMN: &str = "wall_seconds";
@@ -107,6 +107,7 @@ pub fn write_sweep(
         rows: kept.map_or(0, |k| k.rows),
         errors: kept.map_or(0, |k| k.errors),
         complete: false,
+        color_by: sweep.color_by().key().map(str::to_string),
     };
     let manifest_path = dir.join(super::MANIFEST_JSON);
     manifest.write(dir).map_err(io_at(&manifest_path))?;
@@ -173,6 +174,7 @@ pub fn write_sweep(
             &results_path,
             &sweep.columns().axes,
             sweep.scenario().name(),
+            sweep.color_by(),
             &dir.join(PLOTS_DIR),
         )?);
     }

@@ -8,7 +8,8 @@
 # with <model-viewer> in headless Chromium at two animation times each (the screenshots must
 # differ and the console stay free of errors). Then opens report.html of the test track and
 # of the two-cars world from disk with the network blocked (report.mjs): following each car at
-# three times, the car is centred and covers more than 5 % of the viewer; the screenshot of
+# three times, the car is centred and covers more than 5 % of the viewer (and once for the
+# two cars renamed `world` and `ground`, the names of scene nodes); the screenshot of
 # the two-cars page is $REPORT_SCREENSHOT (default OUT_DIR/report.png; the README's is
 # sim/docs/report.png, made with REPORT_SCREENSHOT=sim/docs/report.png).
 #
@@ -45,6 +46,10 @@ sim="$root/target/debug/vehicle-sim"
 { echo "replayOverlay = true"; cat sim/worlds/acc.toml; } >"$out/acc-overlay.toml"
 "$sim" --world "$out/acc-overlay.toml" --out "$out/acc-overlay" >/dev/null
 "$sim" --world sim/worlds/two-cars.toml --out "$out/two-cars" >/dev/null
+# The two cars named as the scene's root and ground nodes: the viewer finds cars by node index.
+sed 's/^name = "prius"/name = "world"/; s/^name = "bmw"/name = "ground"/' \
+  sim/worlds/two-cars.toml >"$out/clashing-names.toml"
+"$sim" --world "$out/clashing-names.toml" --out "$out/clashing-names" >/dev/null
 { echo "replayOverlay = true"; cat sim/worlds/double-lane-change.toml; } >"$out/cones-overlay.toml"
 "$sim" --world "$out/cones-overlay.toml" --out "$out/cones-overlay" >/dev/null
 
@@ -82,4 +87,6 @@ node "$here/report.mjs" --html "$out/test-track/report.html" --part lane-change 
   --out "$out" --name report_test-track
 node "$here/report.mjs" --html "$out/two-cars/report.html" --part programme --times 2,10,20 \
   --out "$out" --name report_two-cars --shot "${REPORT_SCREENSHOT:-$out/report.png}"
+node "$here/report.mjs" --html "$out/clashing-names/report.html" --part programme --times 10 \
+  --out "$out" --name report_clashing-names
 echo "replay check passed: outputs and screenshots in $out"

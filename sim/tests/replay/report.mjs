@@ -35,9 +35,10 @@ const times = args.times.split(",").map(Number);
 // viewer...
 const MIN_COVER = 0.05;
 // ...and its pixels' centroid is within this share of the viewer's width and height from
-// the centre (the follow camera looks at the car's centre; a wheel or the lamps seen on one
-// side move the centroid of the body's colour a little).
-const MAX_OFF_CENTRE = 0.1;
+// the centre (the follow camera aims at the middle of the body's image, the centre of the
+// rectangle around it: the centroid of the body's colour sits 1 to 2.5 % from it, as the
+// tail's face is larger than the roof's and the wheels hide some of the sides).
+const MAX_OFF_CENTRE = 0.05;
 // A pixel is the car's if its saturation is above this and its hue within HUE_TOLERANCE of
 // the car's (degrees): shading and sRGB encoding move a hue by a few degrees.
 const MIN_SATURATION = 0.25;

@@ -43,7 +43,8 @@
 
   let mixer = null;
   let clips = [];
-  // Per car: its node, its centre and length in its own frame (m).
+  // Per car: its node, and its body's centre, length and vertices in the car's frame (m):
+  // the camera aims at the visible body, not at the box around the wheels and lamps.
   let cars = [];
 
   function resize() {
@@ -61,19 +62,71 @@
     return bytes.buffer;
   }
 
-  // The bounding box of a car's meshes in the car's own frame.
-  function localBox(node) {
-    node.updateWorldMatrix(true, true);
-    const toCar = node.matrixWorld.clone().invert();
+  // The bounding box, in the frame of `frame`, of the visible meshes under `node` (m).
+  function boxIn(frame, node) {
+    frame.updateWorldMatrix(true, true);
+    const toFrame = frame.matrixWorld.clone().invert();
     const box = new THREE.Box3();
     node.traverse((o) => {
       if (!o.isMesh) return;
       o.geometry.computeBoundingBox();
-      const m = new THREE.Matrix4().multiplyMatrices(toCar, o.matrixWorld);
+      const m = new THREE.Matrix4().multiplyMatrices(toFrame, o.matrixWorld);
       if (Math.abs(m.determinant()) < 1e-12) return; // a hidden lamp (scale 0)
       box.union(o.geometry.boundingBox.clone().applyMatrix4(m));
     });
     return box;
+  }
+
+  // The vertices of the visible meshes under `node` in the frame of `frame` (m), at most
+  // about `most` of them (evenly picked).
+  function pointsIn(frame, node, most) {
+    frame.updateWorldMatrix(true, true);
+    const toFrame = frame.matrixWorld.clone().invert();
+    const points = [];
+    node.traverse((o) => {
+      if (!o.isMesh) return;
+      const m = new THREE.Matrix4().multiplyMatrices(toFrame, o.matrixWorld);
+      if (Math.abs(m.determinant()) < 1e-12) return;
+      const at = o.geometry.getAttribute("position");
+      const step = Math.max(1, Math.floor(at.count / most));
+      for (let i = 0; i < at.count; i += step) {
+        points.push(new THREE.Vector3().fromBufferAttribute(at, i).applyMatrix4(m));
+      }
+    });
+    return points;
+  }
+
+  // Turns the follow camera to the middle of the body as seen: the centre of the rectangle
+  // around its projected vertices. Seen from behind and above, perspective draws the near end
+  // larger and lower than the far one, so the body's 3D centre projects above the middle of
+  // its image; two turns bring the middle within a pixel.
+  function aimAtBody(car, centre) {
+    const p = new THREE.Vector3();
+    for (let turn = 0; turn < 2; turn++) {
+      camera.updateMatrixWorld();
+      let [x0, y0, x1, y1] = [Infinity, Infinity, -Infinity, -Infinity];
+      for (const v of car.points) {
+        p.copy(v).applyMatrix4(car.node.matrixWorld).project(camera);
+        [x0, y0, x1, y1] = [Math.min(x0, p.x), Math.min(y0, p.y), Math.max(x1, p.x), Math.max(y1, p.y)];
+      }
+      if (!(x0 <= x1 && y0 <= y1)) return centre;
+      const depth = centre.clone().project(camera).z;
+      const aim = new THREE.Vector3((x0 + x1) / 2, (y0 + y1) / 2, depth).unproject(camera);
+      camera.lookAt(aim);
+      centre = aim;
+    }
+    return centre;
+  }
+
+  // The loaded objects by glTF node index. Names are no key: the loader renames a node whose
+  // name another has (a car named "world" or "ground"), so the page gives node indices.
+  function nodesByIndex(gltf) {
+    const found = new Map();
+    gltf.scene.traverse((o) => {
+      const a = gltf.parser.associations.get(o);
+      if (a && a.nodes !== undefined && !found.has(a.nodes)) found.set(a.nodes, o);
+    });
+    return found;
   }
 
   // The telemetry series of car `i` in the current part: the part's car series in order.
@@ -131,7 +184,7 @@
       camera.position.copy(car.node.localToWorld(eye));
       camera.up.set(0, 1, 0);
       camera.lookAt(centre);
-      controls.target.copy(centre);
+      controls.target.copy(aimAtBody(car, centre));
     } else {
       const moved = centre.clone().sub(controls.target);
       camera.position.add(moved);
@@ -207,12 +260,18 @@
       scene.add(gltf.scene);
       mixer = new THREE.AnimationMixer(gltf.scene);
       clips = gltf.animations;
+      const nodes = nodesByIndex(gltf);
       cars = data.cars.map((c) => {
-        // The loader names objects after the glTF nodes, sanitised as animation paths need.
-        const node = gltf.scene.getObjectByName(THREE.PropertyBinding.sanitizeNodeName(c.node));
-        const box = localBox(node);
+        const node = nodes.get(c.root);
+        const body = nodes.get(c.body) ?? node;
+        const box = boxIn(node, body);
         const size = box.getSize(new THREE.Vector3());
-        return { node, centre: box.getCenter(new THREE.Vector3()), length: Math.max(size.x, 0.1) };
+        return {
+          node,
+          centre: box.getCenter(new THREE.Vector3()),
+          length: Math.max(size.x, 0.1),
+          points: pointsIn(node, body, 400),
+        };
       });
       for (const c of clips) ui.part.add(new Option(c.name, c.name));
       cars.forEach((_, i) => ui.car.add(new Option(carName(i), String(i))));
