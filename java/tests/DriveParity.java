@@ -1,5 +1,7 @@
 import com.cyberbotics.webots.controller.Camera;
 import com.cyberbotics.webots.controller.Device;
+import com.cyberbotics.webots.controller.Display;
+import com.cyberbotics.webots.controller.ImageRef;
 import com.cyberbotics.webots.controller.DistanceSensor;
 import com.cyberbotics.webots.controller.GPS;
 import com.cyberbotics.webots.controller.Keyboard;
@@ -32,6 +34,86 @@ public class DriveParity {
 
   static void b(String name, boolean x) {
     i(name, x ? 1 : 0);
+  }
+
+  static void n(String name, Object x) {
+    line.append(" ").append(name).append("=").append(x == null ? "null" : "image");
+  }
+
+  /** The bytes of the file {@code name} in the directory PARITY_DIR names, in hex, as a line. */
+  static void printFile(String label, String name) throws java.io.IOException {
+    line.append(label);
+    java.io.File file = new java.io.File(System.getenv("PARITY_DIR"), name);
+    if (!file.exists()) {
+      line.append(" missing");
+    } else {
+      for (byte b : java.nio.file.Files.readAllBytes(file.toPath()))
+        line.append(String.format("%02x", b & 0xff));
+    }
+    flush();
+  }
+
+  /** drive_parity.c's draw(): every Display method, bad input included, read back as PNG files. */
+  static void draw(Display screen) throws java.io.IOException {
+    i("display_width", screen.getWidth());
+    i("display_height", screen.getHeight());
+    screen.setColor(0x3366cc);
+    screen.fillRectangle(0, 0, 16, 8);
+    screen.setColor(0xff0000);
+    screen.drawPixel(15, 0);
+    screen.drawLine(0, 7, 15, 0);
+    screen.setOpacity(0.5);
+    screen.drawRectangle(2, 2, 5, 4);
+    screen.setOpacity(1.0);
+    screen.setAlpha(0.25);
+    screen.drawOval(8, 4, 3, 2);
+    screen.setAlpha(1.0);
+    screen.setColor(0x00ff00);
+    screen.fillOval(12, 3, 2, 2);
+    // The three-argument form with longer arrays and the two-argument form: the same corners.
+    screen.drawPolygon(new int[] {1, 6, 3, 99}, new int[] {1, 2, 6, 99}, 3);
+    screen.fillPolygon(new int[] {9, 14, 12, 10}, new int[] {5, 5, 7, 7});
+    screen.setFont("Arial", 8, true);
+    screen.drawText("Hi", 0, 0);
+    screen.setColor(0x1000000);
+    screen.setAlpha(2.0);
+    screen.setOpacity(-1.0);
+    screen.setFont("NoSuchFont", 8, false);
+    screen.setFont("Arial", 0, false);
+    int[] argb = {0x80ff0000, 0xff00ff00, 0x000000ff, 0xffffffff};
+    n("bad_format", screen.imageNew(2, 2, argb, 9));
+    n("off_copy", screen.imageCopy(100, 100, 2, 2));
+    ImageRef made = screen.imageNew(2, 2, argb, Display.ARGB);
+    ImageRef flat = screen.imageNew(2, 1, new int[] {0x102030, 0x405060}, Display.RGB);
+    screen.imagePaste(made, 3, 5, true);
+    screen.imagePaste(flat, 13, 6);
+    ImageRef copy = screen.imageCopy(0, 0, 8, 4);
+    screen.imagePaste(copy, 8, 4, false);
+    String dir = System.getenv("PARITY_DIR");
+    screen.imageSave(copy, dir + "/copy.png");
+    ImageRef loaded = screen.imageLoad(dir + "/copy.png");
+    screen.imagePaste(loaded, 9, 5, true);
+    screen.imageSave(null, dir + "/screen.png");
+    screen.imageDelete(made);
+    screen.imageDelete(flat);
+    screen.imageDelete(copy);
+    screen.imageDelete(loaded);
+    flush();
+    printFile("copy.png ", "copy.png");
+    printFile("screen.png ", "screen.png");
+    // The files are PNG images of the sizes saved; the red pixel drawn at (15, 0), which later
+    // drawing does not touch, reads back opaque red (ImageIO's ARGB).
+    java.awt.image.BufferedImage saved = javax.imageio.ImageIO.read(new java.io.File(dir, "screen.png"));
+    java.awt.image.BufferedImage copied = javax.imageio.ImageIO.read(new java.io.File(dir, "copy.png"));
+    assert saved.getWidth() == 16 && saved.getHeight() == 8 && copied.getWidth() == 8 && copied.getHeight() == 4;
+    assert saved.getRGB(15, 0) == 0xffff0000 : Integer.toHexString(saved.getRGB(15, 0));
+    boolean thrown = false;
+    try {
+      screen.drawPolygon(new int[] {1, 2}, new int[] {1, 2, 3}, 3);
+    } catch (ArrayIndexOutOfBoundsException e) {
+      thrown = true;
+    }
+    assert thrown : "a polygon longer than its arrays is refused before the C call";
   }
 
   static void flush() {
@@ -118,7 +200,7 @@ public class DriveParity {
     flush();
   }
 
-  public static void main(String[] args) {
+  public static void main(String[] args) throws java.io.IOException {
     Car car = new Car();
     assert Driver.getDriverInstance() == car;
     GPS gps = car.getGPS("gps");
@@ -155,6 +237,9 @@ public class DriveParity {
     Camera camera = car.getCamera("camera");
     assert camera != null && camera.getWidth() == 16 && camera.getHeight() == 8;
     camera.enable(100);
+    Display screen = car.getDisplay("screen");
+    assert screen != null && car.getDisplay("camera") == null && car.getDevice("screen") == screen;
+    draw(screen);
     assert car.getKeyboard().getSamplingPeriod() == 10;
     assert gps.getSamplingPeriod() == 10 && lidar.getSamplingPeriod() == 10;
 

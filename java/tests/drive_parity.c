@@ -3,15 +3,18 @@
  * same calls in the same order (bad input included) and print every driver and car getter, the
  * GPS, the distance sensor and the lidar range image after each step as raw bits; run.sh requires their stdout and
  * stderr to be identical, so every Java getter returns the C ABI's value for the same state
- * and every warning reaches stderr exactly as from C.
+ * and every warning reaches stderr exactly as from C. Before the first step both draw on the
+ * display and print the bytes of the PNG files they save of it (PARITY_DIR: a directory each).
  * It calls the deprecated functions too (Java has them), hence -Wno-deprecated-declarations.
  */
 #include <math.h>
+#include <stdlib.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
 #include <webots/camera.h>
+#include <webots/display.h>
 #include <webots/distance_sensor.h>
 #include <webots/gps.h>
 #include <webots/keyboard.h>
@@ -30,6 +33,10 @@ static void d(const char *name, double x) {
 
 static void i(const char *name, int x) {
   printf(" %s=%d", name, x);
+}
+
+static void check_null(const char *name, const void *p) {
+  printf(" %s=%s", name, p == NULL ? "null" : "image");
 }
 
 static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, WbDeviceTag radar, WbDeviceTag lanes, WbDeviceTag camera) {
@@ -123,8 +130,85 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, W
   fflush(stdout);
 }
 
+/* Prints the bytes of the file `name` in the directory PARITY_DIR names, in hex. */
+static void print_file(const char *label, const char *name) {
+  char path[4096];
+  FILE *f;
+  int c;
+  snprintf(path, sizeof path, "%s/%s", getenv("PARITY_DIR"), name);
+  f = fopen(path, "rb");
+  printf("%s", label);
+  if (f == NULL) {
+    printf(" missing\n");
+    return;
+  }
+  while ((c = fgetc(f)) != EOF) printf("%02x", c);
+  fclose(f);
+  printf("\n");
+}
+
+/* Draws on the display with every function of webots/display.h (bad input included), then
+ * saves the display and a copy as PNG files and prints their bytes: the only way a
+ * controller reads a display back. */
+static void draw(WbDeviceTag screen) {
+  static const int xs[] = {1, 6, 3}, ys[] = {1, 2, 6};
+  static const int fx[] = {9, 14, 12, 10}, fy[] = {5, 5, 7, 7};
+  /* 2 x 2 pixels: ARGB 0x80ff0000, 0xff00ff00, 0x000000ff, 0xffffffff, as Java's ints. */
+  static const unsigned char argb[] = {0x80, 0xff, 0x00, 0x00, 0xff, 0x00, 0xff, 0x00,
+                                       0x00, 0x00, 0x00, 0xff, 0xff, 0xff, 0xff, 0xff};
+  static const unsigned char rgb[] = {0x10, 0x20, 0x30, 0x40, 0x50, 0x60};
+  char path[4096];
+  WbImageRef copy, made, flat, loaded;
+  i("display_width", wb_display_get_width(screen));
+  i("display_height", wb_display_get_height(screen));
+  wb_display_set_color(screen, 0x3366cc);
+  wb_display_fill_rectangle(screen, 0, 0, 16, 8);
+  wb_display_set_color(screen, 0xff0000);
+  wb_display_draw_pixel(screen, 15, 0);
+  wb_display_draw_line(screen, 0, 7, 15, 0);
+  wb_display_set_opacity(screen, 0.5);
+  wb_display_draw_rectangle(screen, 2, 2, 5, 4);
+  wb_display_set_opacity(screen, 1.0);
+  wb_display_set_alpha(screen, 0.25);
+  wb_display_draw_oval(screen, 8, 4, 3, 2);
+  wb_display_set_alpha(screen, 1.0);
+  wb_display_set_color(screen, 0x00ff00);
+  wb_display_fill_oval(screen, 12, 3, 2, 2);
+  wb_display_draw_polygon(screen, xs, ys, 3);
+  wb_display_fill_polygon(screen, fx, fy, 4);
+  wb_display_set_font(screen, "Arial", 8, true);
+  wb_display_draw_text(screen, "Hi", 0, 0);
+  /* Bad input: refused by the C API with its errors. */
+  wb_display_set_color(screen, 0x1000000);
+  wb_display_set_alpha(screen, 2.0);
+  wb_display_set_opacity(screen, -1.0);
+  wb_display_set_font(screen, "NoSuchFont", 8, false);
+  wb_display_set_font(screen, "Arial", 0, false);
+  check_null("bad_format", wb_display_image_new(screen, 2, 2, argb, 9));
+  check_null("off_copy", wb_display_image_copy(screen, 100, 100, 2, 2));
+  made = wb_display_image_new(screen, 2, 2, argb, WB_IMAGE_ARGB);
+  flat = wb_display_image_new(screen, 2, 1, rgb, WB_IMAGE_RGB);
+  wb_display_image_paste(screen, made, 3, 5, true);
+  wb_display_image_paste(screen, flat, 13, 6, false);
+  copy = wb_display_image_copy(screen, 0, 0, 8, 4);
+  wb_display_image_paste(screen, copy, 8, 4, false);
+  snprintf(path, sizeof path, "%s/copy.png", getenv("PARITY_DIR"));
+  wb_display_image_save(screen, copy, path);
+  loaded = wb_display_image_load(screen, path);
+  wb_display_image_paste(screen, loaded, 9, 5, true);
+  snprintf(path, sizeof path, "%s/screen.png", getenv("PARITY_DIR"));
+  wb_display_image_save(screen, NULL, path);
+  wb_display_image_delete(screen, made);
+  wb_display_image_delete(screen, flat);
+  wb_display_image_delete(screen, copy);
+  wb_display_image_delete(screen, loaded);
+  printf("\n");
+  print_file("copy.png ", "copy.png");
+  print_file("screen.png ", "screen.png");
+}
+
 int main(void) {
-  WbDeviceTag gps, lidar, front, radar, lanes, camera;
+  WbDeviceTag gps, lidar, front, radar, lanes, camera, screen;
   int steps = 0;
   wbu_driver_init();
   gps = wb_robot_get_device("gps");
@@ -140,6 +224,8 @@ int main(void) {
   vehicle_road_sensor_enable(lanes, 10);
   camera = wb_robot_get_device("camera");
   wb_camera_enable(camera, 100);
+  screen = wb_robot_get_device("screen");
+  draw(screen);
 
   wbu_driver_set_cruising_speed(30.0);
   wbu_driver_set_steering_angle(0.1);

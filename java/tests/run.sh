@@ -8,7 +8,8 @@
 #   * DriveParity's own assertions (java -ea): device lookup, bad input without exceptions,
 #     the range image as float[], the loop ending at the world's duration;
 #   * identical stdout: every driver/car getter, GPS and lidar value after every step, as raw
-#     bits, equal to the C ABI's for the same calls;
+#     bits, equal to the C ABI's for the same calls, and the bytes of the PNG files each saves
+#     of its display after drawing on it;
 #   * identical, non-empty stderr: the bad input's warnings are the C API's own;
 #   * VehicleDriver.java, Webots' reference controller, compiles and runs to the world's end
 #     with nothing on stderr.
@@ -30,8 +31,10 @@ javac -Xlint:-options --release 8 -cp "$jar" -d "$work" "$here/DriveParity.java"
 
 export VEHICLE_WORLD="$here/worlds/drive.toml"
 unset VEHICLE_OUT
-"$work/drive_parity" >"$work/c.out" 2>"$work/c.err"
-java -ea -cp "$jar:$work" -Djava.library.path="$prefix/lib" DriveParity >"$work/java.out" 2>"$work/java.err" || {
+# Each run saves the display's PNG files in its own directory and prints their bytes.
+mkdir "$work/c" "$work/java"
+PARITY_DIR="$work/c" "$work/drive_parity" >"$work/c.out" 2>"$work/c.err"
+PARITY_DIR="$work/java" java -ea -cp "$jar:$work" -Djava.library.path="$prefix/lib" DriveParity >"$work/java.out" 2>"$work/java.err" || {
   echo "$0: DriveParity failed:" >&2
   cat "$work/java.err" >&2
   exit 1
