@@ -12,7 +12,7 @@
 //! arrays the C API returns are copied into new Java arrays (`null` where C returns NULL).
 //!
 //! The native methods are static methods of two package-private classes, `WebotsNative`
-//! (robot and devices, `robot.rs`, `sensors.rs`, `display.rs`) and `VehicleNative` (driver and car,
+//! (robot and devices, `robot.rs`, `sensors.rs`, `display.rs`, `recognition.rs`) and `VehicleNative` (driver and car,
 //! `vehicle.rs`); the public Java classes wrap them with Webots' names and signatures.
 //! Like Webots' controller library, the API is for one controller thread.
 
@@ -45,6 +45,7 @@ macro_rules! natives {
 }
 
 pub(crate) mod display;
+pub(crate) mod recognition;
 pub(crate) mod robot;
 pub(crate) mod sensors;
 pub(crate) mod vehicle;
@@ -53,6 +54,13 @@ pub(crate) mod vehicle;
 /// does not fit.
 fn tag(tag: jint) -> car::WbDeviceTag {
     car::WbDeviceTag::try_from(tag).unwrap_or(0)
+}
+
+/// A Java array length for `len` items (an error past `jsize`'s range, which no device
+/// reaches).
+fn java_len(len: usize) -> jni::errors::Result<jsize> {
+    jsize::try_from(len)
+        .map_err(|_| jni::errors::Error::JniCall(jni::errors::JniError::InvalidArguments))
 }
 
 /// A new Java `double[]` holding `values`; `null` for `None` or when the JVM cannot allocate

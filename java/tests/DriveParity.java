@@ -1,4 +1,5 @@
 import com.cyberbotics.webots.controller.Camera;
+import com.cyberbotics.webots.controller.CameraRecognitionObject;
 import com.cyberbotics.webots.controller.Device;
 import com.cyberbotics.webots.controller.Display;
 import com.cyberbotics.webots.controller.ImageRef;
@@ -22,6 +23,7 @@ public class DriveParity {
   static final StringBuilder line = new StringBuilder();
   static int seenTargets = 0;
   static int images = 0;
+  static int recognised = 0;
   static final java.util.List<Integer> keys = new java.util.ArrayList<Integer>();
 
   static void d(String name, double x) {
@@ -194,6 +196,23 @@ public class DriveParity {
       i("key", key);
       keys.add(key);
     }
+    int count = camera.getRecognitionNumberOfObjects();
+    CameraRecognitionObject[] objects = camera.getRecognitionObjects();
+    assert objects.length == count : objects.length + " " + count;
+    i("objects", count);
+    for (CameraRecognitionObject o : objects) {
+      i("id", o.getId());
+      for (double x : o.getPosition()) d("opos", x);
+      for (double x : o.getOrientation()) d("orot", x);
+      for (double x : o.getSize()) d("osize", x);
+      for (int x : o.getPositionOnImage()) i("oimg", x);
+      for (int x : o.getSizeOnImage()) i("oimgsize", x);
+      i("ncolors", o.getNumberOfColors());
+      for (double x : o.getColors()) d("ocolor", x);
+      line.append(" model=").append(o.getModel());
+      assert o.getColors().length == 3 * o.getNumberOfColors();
+      recognised++;
+    }
     float[] image = lidar.getRangeImage();
     assert image.length == lidar.getHorizontalResolution() * lidar.getNumberOfLayers() : image.length;
     for (float r : image) line.append(String.format(" r=%08x", Float.floatToRawIntBits(r)));
@@ -240,6 +259,18 @@ public class DriveParity {
     Display screen = car.getDisplay("screen");
     assert screen != null && car.getDisplay("camera") == null && car.getDevice("screen") == screen;
     draw(screen);
+    b("has_recognition", camera.hasRecognition());
+    b("segmentation", camera.hasRecognitionSegmentation());
+    i("recognition_period", camera.getRecognitionSamplingPeriod());
+    i("objects", camera.getRecognitionNumberOfObjects());
+    CameraRecognitionObject[] none = camera.getRecognitionObjects();
+    // Java's empty array where C returns NULL (recognition disabled).
+    n("objects", none.length == 0 ? null : none);
+    camera.recognitionEnable(50);
+    i("recognition_period", camera.getRecognitionSamplingPeriod());
+    flush();
+    assert camera.hasRecognition() && !camera.hasRecognitionSegmentation();
+    assert camera.getRecognitionSamplingPeriod() == 50;
     assert car.getKeyboard().getSamplingPeriod() == 10;
     assert gps.getSamplingPeriod() == 10 && lidar.getSamplingPeriod() == 10;
 
@@ -295,6 +326,7 @@ public class DriveParity {
     // reads less than that but more than 0 (it never reached the box).
     assert lanes.getRoad() == 0 && lanes.getLaneWidth() == 3.5 : lanes.getRoad() + " " + lanes.getLaneWidth();
     assert images > 0 : "the camera gave images";
+    assert recognised > 0 : "the camera recognised the box";
     assert Camera.pixelGetRed(0x00ab1234) == 0xab && Camera.pixelGetGreen(0x00ab1234) == 0x12
         && Camera.pixelGetBlue(0x00ab1234) == 0x34;
     assert seenTargets > 0 : "the radar sees the parked car";

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include <webots/camera.h>
+#include <webots/camera_recognition_object.h>
 #include <webots/display.h>
 #include <webots/distance_sensor.h>
 #include <webots/gps.h>
@@ -116,6 +117,24 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, W
   {
     int key;
     while ((key = wb_keyboard_get_key()) != -1) i("key", key);
+  }
+  {
+    const int n = wb_camera_recognition_get_number_of_objects(camera);
+    const WbCameraRecognitionObject *objects = wb_camera_recognition_get_objects(camera);
+    int c;
+    i("objects", n);
+    for (k = 0; objects != NULL && k < n; ++k) {
+      const WbCameraRecognitionObject *o = &objects[k];
+      i("id", o->id);
+      for (c = 0; c < 3; ++c) d("opos", o->position[c]);
+      for (c = 0; c < 4; ++c) d("orot", o->orientation[c]);
+      for (c = 0; c < 2; ++c) d("osize", o->size[c]);
+      for (c = 0; c < 2; ++c) i("oimg", o->position_on_image[c]);
+      for (c = 0; c < 2; ++c) i("oimgsize", o->size_on_image[c]);
+      i("ncolors", o->number_of_colors);
+      for (c = 0; c < 3 * o->number_of_colors; ++c) d("ocolor", o->colors[c]);
+      printf(" model=%s", o->model);
+    }
   }
   {
     const float *image = wb_lidar_get_range_image(lidar);
@@ -226,6 +245,15 @@ int main(void) {
   wb_camera_enable(camera, 100);
   screen = wb_robot_get_device("screen");
   draw(screen);
+  /* Recognition before it is enabled (errors), then enabled. */
+  i("has_recognition", wb_camera_has_recognition(camera));
+  i("segmentation", wb_camera_recognition_has_segmentation(camera));
+  i("recognition_period", wb_camera_recognition_get_sampling_period(camera));
+  i("objects", wb_camera_recognition_get_number_of_objects(camera));
+  check_null("objects", wb_camera_recognition_get_objects(camera));
+  wb_camera_recognition_enable(camera, 50);
+  i("recognition_period", wb_camera_recognition_get_sampling_period(camera));
+  printf("\n");
 
   wbu_driver_set_cruising_speed(30.0);
   wbu_driver_set_steering_angle(0.1);

@@ -2,7 +2,7 @@ package com.cyberbotics.webots.controller;
 
 /**
  * The native methods of the controller package: each is one function of the C API
- * (libvehicle_java, java/src/robot.rs, sensors.rs and display.rs). Units are the C API's: ms,
+ * (libvehicle_java, java/src/robot.rs, sensors.rs, display.rs and recognition.rs). Units are the C API's: ms,
  * s, m, m/s, rad, rad/s, m/s^2, px.
  */
 final class WebotsNative {
@@ -142,4 +142,13 @@ final class WebotsNative {
   static native void displayImageDelete(int tag, long image);
   static native void displayImageSave(int tag, long image, String filename);
   static native long displayImageLoad(int tag, String filename);
+
+  static native boolean cameraHasRecognition(int tag);
+  static native void cameraRecognitionEnable(int tag, int samplingPeriod);
+  static native void cameraRecognitionDisable(int tag);
+  static native int cameraRecognitionGetSamplingPeriod(int tag);
+  static native int cameraRecognitionGetNumberOfObjects(int tag);
+  static native boolean cameraRecognitionHasSegmentation(int tag);
+  static native CameraRecognitionObject[] cameraRecognitionGetObjects(int tag);
+
 }
