@@ -12,7 +12,7 @@
 //! arrays the C API returns are copied into new Java arrays (`null` where C returns NULL).
 //!
 //! The native methods are static methods of two package-private classes, `WebotsNative`
-//! (robot and devices, `robot.rs`, `sensors.rs`, `display.rs`, `recognition.rs`) and `VehicleNative` (driver and car,
+//! (robot and devices, `robot.rs`, `sensors.rs`, `display.rs`, `recognition.rs`, `point_cloud.rs`) and `VehicleNative` (driver and car,
 //! `vehicle.rs`); the public Java classes wrap them with Webots' names and signatures.
 //! Like Webots' controller library, the API is for one controller thread.
 
@@ -45,6 +45,7 @@ macro_rules! natives {
 }
 
 pub(crate) mod display;
+pub(crate) mod point_cloud;
 pub(crate) mod recognition;
 pub(crate) mod robot;
 pub(crate) mod sensors;

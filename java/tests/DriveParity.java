@@ -7,6 +7,7 @@ import com.cyberbotics.webots.controller.DistanceSensor;
 import com.cyberbotics.webots.controller.GPS;
 import com.cyberbotics.webots.controller.Keyboard;
 import com.cyberbotics.webots.controller.Lidar;
+import com.cyberbotics.webots.controller.LidarPoint;
 import com.cyberbotics.webots.controller.Radar;
 import com.cyberbotics.webots.controller.RadarTarget;
 import com.cyberbotics.webots.controller.RoadSensor;
@@ -24,6 +25,7 @@ public class DriveParity {
   static int seenTargets = 0;
   static int images = 0;
   static int recognised = 0;
+  static int clouds = 0;
   static final java.util.List<Integer> keys = new java.util.ArrayList<Integer>();
 
   static void d(String name, double x) {
@@ -116,6 +118,27 @@ public class DriveParity {
       thrown = true;
     }
     assert thrown : "a polygon longer than its arrays is refused before the C call";
+  }
+
+  static void f(String name, float x) {
+    line.append(String.format(" %s=%08x", name, Float.floatToRawIntBits(x)));
+  }
+
+  /** drive_parity.c's print_cloud: the points, "null" for a null array. */
+  static void printCloud(String name, LidarPoint[] points) {
+    line.append(" ").append(name).append("=");
+    if (points == null) {
+      line.append("null");
+      return;
+    }
+    line.append(points.length);
+    for (LidarPoint p : points) {
+      f("px", p.getX());
+      f("py", p.getY());
+      f("pz", p.getZ());
+      i("pl", p.getLayerId());
+      f("pt", p.getTime());
+    }
   }
 
   static void flush() {
@@ -213,6 +236,14 @@ public class DriveParity {
       assert o.getColors().length == 3 * o.getNumberOfColors();
       recognised++;
     }
+    LidarPoint[] cloud = lidar.getPointCloud();
+    assert cloud.length == lidar.getNumberOfPoints();
+    printCloud("cloud", cloud);
+    printCloud("layer1", lidar.getLayerPointCloud(1));
+    for (int k = 0; k < cloud.length; ++k) {
+      assert cloud[k].getLayerId() == k / lidar.getHorizontalResolution();
+      clouds++;
+    }
     float[] image = lidar.getRangeImage();
     assert image.length == lidar.getHorizontalResolution() * lidar.getNumberOfLayers() : image.length;
     for (float r : image) line.append(String.format(" r=%08x", Float.floatToRawIntBits(r)));
@@ -268,9 +299,15 @@ public class DriveParity {
     n("objects", none.length == 0 ? null : none);
     camera.recognitionEnable(50);
     i("recognition_period", camera.getRecognitionSamplingPeriod());
+    b("cloud_enabled", lidar.isPointCloudEnabled());
+    i("points", lidar.getNumberOfPoints());
+    printCloud("cloud", lidar.getPointCloud());
+    lidar.enablePointCloud();
+    b("cloud_enabled", lidar.isPointCloudEnabled());
+    printCloud("layer5", lidar.getLayerPointCloud(5));
     flush();
     assert camera.hasRecognition() && !camera.hasRecognitionSegmentation();
-    assert camera.getRecognitionSamplingPeriod() == 50;
+    assert camera.getRecognitionSamplingPeriod() == 50 && lidar.isPointCloudEnabled();
     assert car.getKeyboard().getSamplingPeriod() == 10;
     assert gps.getSamplingPeriod() == 10 && lidar.getSamplingPeriod() == 10;
 
@@ -327,6 +364,7 @@ public class DriveParity {
     assert lanes.getRoad() == 0 && lanes.getLaneWidth() == 3.5 : lanes.getRoad() + " " + lanes.getLaneWidth();
     assert images > 0 : "the camera gave images";
     assert recognised > 0 : "the camera recognised the box";
+    assert clouds > 0 : "the lidar gave point clouds";
     assert Camera.pixelGetRed(0x00ab1234) == 0xab && Camera.pixelGetGreen(0x00ab1234) == 0x12
         && Camera.pixelGetBlue(0x00ab1234) == 0x34;
     assert seenTargets > 0 : "the radar sees the parked car";

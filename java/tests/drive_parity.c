@@ -20,6 +20,7 @@
 #include <webots/gps.h>
 #include <webots/keyboard.h>
 #include <webots/lidar.h>
+#include <webots/lidar_point.h>
 #include <webots/radar.h>
 #include <webots/robot.h>
 #include <webots/vehicle/car.h>
@@ -38,6 +39,30 @@ static void i(const char *name, int x) {
 
 static void check_null(const char *name, const void *p) {
   printf(" %s=%s", name, p == NULL ? "null" : "image");
+}
+
+static void f(const char *name, float x) {
+  uint32_t bits;
+  memcpy(&bits, &x, sizeof bits);
+  printf(" %s=%08x", name, (unsigned)bits);
+}
+
+/* The n points of a point cloud (Java's LidarPoint[]), "null" for NULL. */
+static void print_cloud(const char *name, const WbLidarPoint *points, int n) {
+  int k;
+  printf(" %s=", name);
+  if (points == NULL) {
+    printf("null");
+    return;
+  }
+  printf("%d", n);
+  for (k = 0; k < n; ++k) {
+    f("px", points[k].x);
+    f("py", points[k].y);
+    f("pz", points[k].z);
+    i("pl", points[k].layer_id);
+    f("pt", points[k].time);
+  }
 }
 
 static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, WbDeviceTag radar, WbDeviceTag lanes, WbDeviceTag camera) {
@@ -136,6 +161,8 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, W
       printf(" model=%s", o->model);
     }
   }
+  print_cloud("cloud", wb_lidar_get_point_cloud(lidar), wb_lidar_get_number_of_points(lidar));
+  print_cloud("layer1", wb_lidar_get_layer_point_cloud(lidar, 1), wb_lidar_get_horizontal_resolution(lidar));
   {
     const float *image = wb_lidar_get_range_image(lidar);
     const int n = wb_lidar_get_horizontal_resolution(lidar) * wb_lidar_get_number_of_layers(lidar);
@@ -245,7 +272,7 @@ int main(void) {
   wb_camera_enable(camera, 100);
   screen = wb_robot_get_device("screen");
   draw(screen);
-  /* Recognition before it is enabled (errors), then enabled. */
+  /* Recognition and the point cloud before they are enabled (errors), then enabled. */
   i("has_recognition", wb_camera_has_recognition(camera));
   i("segmentation", wb_camera_recognition_has_segmentation(camera));
   i("recognition_period", wb_camera_recognition_get_sampling_period(camera));
@@ -253,6 +280,12 @@ int main(void) {
   check_null("objects", wb_camera_recognition_get_objects(camera));
   wb_camera_recognition_enable(camera, 50);
   i("recognition_period", wb_camera_recognition_get_sampling_period(camera));
+  i("cloud_enabled", wb_lidar_is_point_cloud_enabled(lidar));
+  i("points", wb_lidar_get_number_of_points(lidar));
+  print_cloud("cloud", wb_lidar_get_point_cloud(lidar), 0);
+  wb_lidar_enable_point_cloud(lidar);
+  i("cloud_enabled", wb_lidar_is_point_cloud_enabled(lidar));
+  print_cloud("layer5", wb_lidar_get_layer_point_cloud(lidar, 5), 0);
   printf("\n");
 
   wbu_driver_set_cruising_speed(30.0);

@@ -1,6 +1,6 @@
 package com.cyberbotics.webots.controller;
 
-/** Webots' {@code Lidar}: range images (m); the point cloud is not wrapped (COMPATIBILITY.md). */
+/** Webots' {@code Lidar}: range images and point clouds ({@link LidarPoint}), in m. */
 public class Lidar extends Device {
   Lidar(int tag) {
     super(tag);
@@ -29,6 +29,36 @@ public class Lidar extends Device {
   /** The range image of {@code layer} (m). */
   public float[] getLayerRangeImage(int layer) {
     return WebotsNative.lidarGetLayerRangeImage(getTag(), layer);
+  }
+
+  /** Computes the point cloud while the lidar is enabled. */
+  public void enablePointCloud() {
+    WebotsNative.lidarEnablePointCloud(getTag());
+  }
+
+  /** Stops computing the point cloud. */
+  public void disablePointCloud() {
+    WebotsNative.lidarDisablePointCloud(getTag());
+  }
+
+  /** True if the point cloud is enabled. */
+  public boolean isPointCloudEnabled() {
+    return WebotsNative.lidarIsPointCloudEnabled(getTag());
+  }
+
+  /** The points of the cloud: resolution × layers, 0 when it or the lidar is disabled. */
+  public int getNumberOfPoints() {
+    return WebotsNative.lidarGetNumberOfPoints(getTag());
+  }
+
+  /** The point cloud, layer after layer; {@code null} when it or the lidar is disabled. */
+  public LidarPoint[] getPointCloud() {
+    return WebotsNative.lidarGetPointCloud(getTag());
+  }
+
+  /** The points of {@code layer}; {@code null} when disabled or for a layer out of range. */
+  public LidarPoint[] getLayerPointCloud(int layer) {
+    return WebotsNative.lidarGetLayerPointCloud(getTag(), layer);
   }
 
   /** Points per layer. */

@@ -2,8 +2,8 @@ package com.cyberbotics.webots.controller;
 
 /**
  * The native methods of the controller package: each is one function of the C API
- * (libvehicle_java, java/src/robot.rs, sensors.rs, display.rs and recognition.rs). Units are the C API's: ms,
- * s, m, m/s, rad, rad/s, m/s^2, px.
+ * (libvehicle_java, java/src/robot.rs, sensors.rs, display.rs, recognition.rs and
+ * point_cloud.rs). Units are the C API's: ms, s, m, m/s, rad, rad/s, m/s^2, px.
  */
 final class WebotsNative {
   static {
@@ -151,4 +151,10 @@ final class WebotsNative {
   static native boolean cameraRecognitionHasSegmentation(int tag);
   static native CameraRecognitionObject[] cameraRecognitionGetObjects(int tag);
 
+  static native void lidarEnablePointCloud(int tag);
+  static native void lidarDisablePointCloud(int tag);
+  static native boolean lidarIsPointCloudEnabled(int tag);
+  static native int lidarGetNumberOfPoints(int tag);
+  static native LidarPoint[] lidarGetPointCloud(int tag);
+  static native LidarPoint[] lidarGetLayerPointCloud(int tag, int layer);
 }
