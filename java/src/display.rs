@@ -5,13 +5,13 @@
 //! hands out table keys, never memory, so a Java `ImageRef` holds nothing to free or misuse.
 //! Java arrays and strings are copied into Rust buffers that live for the one C call.
 
-use std::ffi::{CString, c_void};
+use std::ffi::c_void;
 
 use jni::JNIEnv;
 use jni::objects::{JIntArray, JString};
 use jni::sys::{jboolean, jdouble, jint, jlong};
 
-use crate::tag;
+use crate::{c_ptr, c_string, tag};
 
 natives! { "com_cyberbotics_webots_controller_WebotsNative";
     /// `wb_display_get_width` (px; -1 for a wrong tag).
@@ -107,21 +107,6 @@ natives! { "com_cyberbotics_webots_controller_WebotsNative";
 /// A Java `long` back as the C API's image reference (a table key, never dereferenced).
 fn image_ref(image: jlong) -> car::WbImageRef {
     image as car::WbImageRef
-}
-
-/// A Java string as a C string; `None` (the C API's NULL, which it refuses with its own
-/// error or ignores as Webots does) for `null` or a string holding a NUL character.
-fn c_string(env: &mut JNIEnv<'_>, text: &JString<'_>) -> Option<CString> {
-    if text.is_null() {
-        return None;
-    }
-    let text = env.get_string(text).ok()?;
-    CString::new(String::from(text)).ok()
-}
-
-/// The pointer of `text`, NULL for `None`.
-fn c_ptr(text: Option<&CString>) -> *const std::ffi::c_char {
-    text.map_or(std::ptr::null(), |t| t.as_ptr())
 }
 
 /// A copy of a Java `int[]` (empty for `null`).

@@ -21,7 +21,10 @@
 // its pointer getters (`car::values`, `car::lidar_values`), so no C array is read here.
 #![allow(unsafe_code)]
 
+use std::ffi::{CString, c_char};
+
 use jni::JNIEnv;
+use jni::objects::JString;
 use jni::sys::{jdoubleArray, jfloatArray, jint, jintArray, jsize};
 
 /// Defines JNI entry points of one Java class: each `fn name(args) -> ret => body;` becomes
@@ -106,4 +109,19 @@ fn int_array(env: &mut JNIEnv<'_>, values: Option<&[i32]>) -> jintArray {
         Ok(array) if env.set_int_array_region(&array, 0, values).is_ok() => array.into_raw(),
         _ => std::ptr::null_mut(),
     }
+}
+
+/// A Java string as a C string; `None` (the C API's NULL, which it refuses with its own
+/// error or ignores as Webots does) for `null` or a string holding a NUL character.
+fn c_string(env: &mut JNIEnv<'_>, text: &JString<'_>) -> Option<CString> {
+    if text.is_null() {
+        return None;
+    }
+    let text = env.get_string(text).ok()?;
+    CString::new(String::from(text)).ok()
+}
+
+/// The pointer of `text`, NULL for `None`.
+fn c_ptr(text: Option<&CString>) -> *const c_char {
+    text.map_or(std::ptr::null(), |t| t.as_ptr())
 }

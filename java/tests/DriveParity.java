@@ -44,10 +44,10 @@ public class DriveParity {
     line.append(" ").append(name).append("=").append(x == null ? "null" : "image");
   }
 
-  /** The bytes of the file {@code name} in the directory PARITY_DIR names, in hex, as a line. */
+  /** The bytes of the file {@code name} (in the working directory) in hex, as a line. */
   static void printFile(String label, String name) throws java.io.IOException {
     line.append(label);
-    java.io.File file = new java.io.File(System.getenv("PARITY_DIR"), name);
+    java.io.File file = new java.io.File(name);
     if (!file.exists()) {
       line.append(" missing");
     } else {
@@ -93,11 +93,10 @@ public class DriveParity {
     screen.imagePaste(flat, 13, 6);
     ImageRef copy = screen.imageCopy(0, 0, 8, 4);
     screen.imagePaste(copy, 8, 4, false);
-    String dir = System.getenv("PARITY_DIR");
-    screen.imageSave(copy, dir + "/copy.png");
-    ImageRef loaded = screen.imageLoad(dir + "/copy.png");
+    screen.imageSave(copy, "copy.png");
+    ImageRef loaded = screen.imageLoad("copy.png");
     screen.imagePaste(loaded, 9, 5, true);
-    screen.imageSave(null, dir + "/screen.png");
+    screen.imageSave(null, "screen.png");
     screen.imageDelete(made);
     screen.imageDelete(flat);
     screen.imageDelete(copy);
@@ -107,8 +106,8 @@ public class DriveParity {
     printFile("screen.png ", "screen.png");
     // The files are PNG images of the sizes saved; the red pixel drawn at (15, 0), which later
     // drawing does not touch, reads back opaque red (ImageIO's ARGB).
-    java.awt.image.BufferedImage saved = javax.imageio.ImageIO.read(new java.io.File(dir, "screen.png"));
-    java.awt.image.BufferedImage copied = javax.imageio.ImageIO.read(new java.io.File(dir, "copy.png"));
+    java.awt.image.BufferedImage saved = javax.imageio.ImageIO.read(new java.io.File("screen.png"));
+    java.awt.image.BufferedImage copied = javax.imageio.ImageIO.read(new java.io.File("copy.png"));
     assert saved.getWidth() == 16 && saved.getHeight() == 8 && copied.getWidth() == 8 && copied.getHeight() == 4;
     assert saved.getRGB(15, 0) == 0xffff0000 : Integer.toHexString(saved.getRGB(15, 0));
     boolean thrown = false;
@@ -324,13 +323,31 @@ public class DriveParity {
     car.setWiperMode(9);
     car.setBrakeIntensity(-1.0);
     d("badwheel", car.getWheelSpeed(4));
+    d("min_fov", camera.getMinFov());
+    d("max_fov", camera.getMaxFov());
+    d("frequency", lidar.getFrequency());
+    d("min_frequency", lidar.getMinFrequency());
+    d("max_frequency", lidar.getMaxFrequency());
+    lidar.setFrequency(lidar.getMaxFrequency() + 1.0);
+    lidar.setFrequency(lidar.getMinFrequency());
+    d("frequency", lidar.getFrequency());
     flush();
+    assert lidar.getFrequency() == lidar.getMinFrequency() : "max + 1 Hz refused, min accepted";
     assert car.getIndicator() == Driver.INDICATOR_LEFT && car.getWiperMode() == Driver.SLOW;
     assert car.getBrakeIntensity() == 0.0 : car.getBrakeIntensity();
 
     int steps = 0;
     while (car.step() != -1) {
       ++steps;
+      if (steps == 50) {
+        // The camera's image as a PNG file (read back as bytes), and a refused extension.
+        i("save", camera.saveImage("camera.png", 100));
+        i("save_bmp", camera.saveImage("camera.bmp", 100));
+        flush();
+        printFile("camera.png ", "camera.png");
+        java.awt.image.BufferedImage saved = javax.imageio.ImageIO.read(new java.io.File("camera.png"));
+        assert saved.getWidth() == 16 && saved.getHeight() == 8;
+      }
       if (steps == 100) {
         car.setThrottle(0.5);
         car.setGear(1);

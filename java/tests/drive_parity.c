@@ -4,11 +4,11 @@
  * GPS, the distance sensor and the lidar range image after each step as raw bits; run.sh requires their stdout and
  * stderr to be identical, so every Java getter returns the C ABI's value for the same state
  * and every warning reaches stderr exactly as from C. Before the first step both draw on the
- * display and print the bytes of the PNG files they save of it (PARITY_DIR: a directory each).
+ * display and print the bytes of the PNG files they save of it (each runs in a directory of its
+ * own), and at step 50 those of the camera's image.
  * It calls the deprecated functions too (Java has them), hence -Wno-deprecated-declarations.
  */
 #include <math.h>
-#include <stdlib.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
@@ -176,13 +176,11 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, W
   fflush(stdout);
 }
 
-/* Prints the bytes of the file `name` in the directory PARITY_DIR names, in hex. */
+/* Prints the bytes of the file `name` (in the working directory) in hex. */
 static void print_file(const char *label, const char *name) {
-  char path[4096];
   FILE *f;
   int c;
-  snprintf(path, sizeof path, "%s/%s", getenv("PARITY_DIR"), name);
-  f = fopen(path, "rb");
+  f = fopen(name, "rb");
   printf("%s", label);
   if (f == NULL) {
     printf(" missing\n");
@@ -203,7 +201,6 @@ static void draw(WbDeviceTag screen) {
   static const unsigned char argb[] = {0x80, 0xff, 0x00, 0x00, 0xff, 0x00, 0xff, 0x00,
                                        0x00, 0x00, 0x00, 0xff, 0xff, 0xff, 0xff, 0xff};
   static const unsigned char rgb[] = {0x10, 0x20, 0x30, 0x40, 0x50, 0x60};
-  char path[4096];
   WbImageRef copy, made, flat, loaded;
   i("display_width", wb_display_get_width(screen));
   i("display_height", wb_display_get_height(screen));
@@ -238,12 +235,10 @@ static void draw(WbDeviceTag screen) {
   wb_display_image_paste(screen, flat, 13, 6, false);
   copy = wb_display_image_copy(screen, 0, 0, 8, 4);
   wb_display_image_paste(screen, copy, 8, 4, false);
-  snprintf(path, sizeof path, "%s/copy.png", getenv("PARITY_DIR"));
-  wb_display_image_save(screen, copy, path);
-  loaded = wb_display_image_load(screen, path);
+  wb_display_image_save(screen, copy, "copy.png");
+  loaded = wb_display_image_load(screen, "copy.png");
   wb_display_image_paste(screen, loaded, 9, 5, true);
-  snprintf(path, sizeof path, "%s/screen.png", getenv("PARITY_DIR"));
-  wb_display_image_save(screen, NULL, path);
+  wb_display_image_save(screen, NULL, "screen.png");
   wb_display_image_delete(screen, made);
   wb_display_image_delete(screen, flat);
   wb_display_image_delete(screen, copy);
@@ -301,10 +296,25 @@ int main(void) {
   wbu_driver_set_wiper_mode((WbuDriverWiperMode)9);
   wbu_driver_set_brake_intensity(-1.0);
   d("badwheel", wbu_car_get_wheel_speed((WbuCarWheelIndex)4));
+  d("min_fov", wb_camera_get_min_fov(camera));
+  d("max_fov", wb_camera_get_max_fov(camera));
+  d("frequency", wb_lidar_get_frequency(lidar));
+  d("min_frequency", wb_lidar_get_min_frequency(lidar));
+  d("max_frequency", wb_lidar_get_max_frequency(lidar));
+  wb_lidar_set_frequency(lidar, wb_lidar_get_max_frequency(lidar) + 1.0);
+  wb_lidar_set_frequency(lidar, wb_lidar_get_min_frequency(lidar));
+  d("frequency", wb_lidar_get_frequency(lidar));
   printf("\n");
 
   while (wbu_driver_step() != -1) {
     ++steps;
+    if (steps == 50) {
+      /* The camera's image as a PNG file (read back as bytes), and a refused extension. */
+      i("save", wb_camera_save_image(camera, "camera.png", 100));
+      i("save_bmp", wb_camera_save_image(camera, "camera.bmp", 100));
+      printf("\n");
+      print_file("camera.png ", "camera.png");
+    }
     if (steps == 100) {
       wbu_driver_set_throttle(0.5);
       wbu_driver_set_gear(1);

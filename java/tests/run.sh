@@ -31,10 +31,11 @@ javac -Xlint:-options --release 8 -cp "$jar" -d "$work" "$here/DriveParity.java"
 
 export VEHICLE_WORLD="$here/worlds/drive.toml"
 unset VEHICLE_OUT
-# Each run saves the display's PNG files in its own directory and prints their bytes.
+# Each runs in a directory of its own, where it saves PNG files (the display's, the camera's) and
+# prints their bytes; relative file names keep the C API's messages about them equal.
 mkdir "$work/c" "$work/java"
-PARITY_DIR="$work/c" "$work/drive_parity" >"$work/c.out" 2>"$work/c.err"
-PARITY_DIR="$work/java" java -ea -cp "$jar:$work" -Djava.library.path="$prefix/lib" DriveParity >"$work/java.out" 2>"$work/java.err" || {
+(cd "$work/c" && "$work/drive_parity") >"$work/c.out" 2>"$work/c.err"
+(cd "$work/java" && exec java -ea -cp "$jar:$work" -Djava.library.path="$prefix/lib" DriveParity) >"$work/java.out" 2>"$work/java.err" || {
   echo "$0: DriveParity failed:" >&2
   cat "$work/java.err" >&2
   exit 1

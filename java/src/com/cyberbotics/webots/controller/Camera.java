@@ -39,6 +39,24 @@ public class Camera extends Device {
     return WebotsNative.cameraGetFov(getTag());
   }
 
+  /** The minimum horizontal field of view (rad): the field of view (no zoom here). */
+  public double getMinFov() {
+    return WebotsNative.cameraGetMinFov(getTag());
+  }
+
+  /** The maximum horizontal field of view (rad): the field of view (no zoom here). */
+  public double getMaxFov() {
+    return WebotsNative.cameraGetMaxFov(getTag());
+  }
+
+  /**
+   * Saves the last image as the PNG file {@code filename} ({@code quality} is for JPEG, which
+   * is not written); 0, or -1 with the C API's error.
+   */
+  public int saveImage(String filename, int quality) {
+    return WebotsNative.cameraSaveImage(getTag(), filename, quality);
+  }
+
   /** The near clipping distance (m). */
   public double getNear() {
     return WebotsNative.cameraGetNear(getTag());

@@ -71,6 +71,26 @@ public class Lidar extends Device {
     return WebotsNative.lidarGetNumberOfLayers(getTag());
   }
 
+  /** The rotation frequency (Hz). */
+  public double getFrequency() {
+    return WebotsNative.lidarGetFrequency(getTag());
+  }
+
+  /** Sets the rotation frequency (Hz), within [getMinFrequency(), getMaxFrequency()]. */
+  public void setFrequency(double frequency) {
+    WebotsNative.lidarSetFrequency(getTag(), frequency);
+  }
+
+  /** The minimum rotation frequency (Hz). */
+  public double getMinFrequency() {
+    return WebotsNative.lidarGetMinFrequency(getTag());
+  }
+
+  /** The maximum rotation frequency (Hz). */
+  public double getMaxFrequency() {
+    return WebotsNative.lidarGetMaxFrequency(getTag());
+  }
+
   /** The horizontal field of view (rad). */
   public double getFov() {
     return WebotsNative.lidarGetFov(getTag());

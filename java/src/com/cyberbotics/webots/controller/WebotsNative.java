@@ -106,6 +106,9 @@ final class WebotsNative {
   static native int cameraGetWidth(int tag);
   static native int cameraGetHeight(int tag);
   static native double cameraGetFov(int tag);
+  static native double cameraGetMinFov(int tag);
+  static native double cameraGetMaxFov(int tag);
+  static native int cameraSaveImage(int tag, String filename, int quality);
   static native double cameraGetNear(int tag);
   static native int[] cameraGetImage(int tag);
 
@@ -116,6 +119,10 @@ final class WebotsNative {
   static native float[] lidarGetLayerRangeImage(int tag, int layer);
   static native int lidarGetHorizontalResolution(int tag);
   static native int lidarGetNumberOfLayers(int tag);
+  static native double lidarGetFrequency(int tag);
+  static native void lidarSetFrequency(int tag, double frequency);
+  static native double lidarGetMinFrequency(int tag);
+  static native double lidarGetMaxFrequency(int tag);
   static native double lidarGetFov(int tag);
   static native double lidarGetVerticalFov(int tag);
   static native double lidarGetMinRange(int tag);
