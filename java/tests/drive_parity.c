@@ -1,7 +1,8 @@
 /*
  * drive_parity: the C twin of DriveParity.java. Both drive java/tests/worlds/drive.toml with the
  * same calls in the same order (bad input included) and print every driver and car getter, the
- * GPS, the distance sensor and the lidar range image after each step as raw bits; run.sh requires their stdout and
+ * GPS, the distance sensor, the camera and its recognised objects, and the lidar range image
+ * and point cloud after each step as raw bits; run.sh requires their stdout and
  * stderr to be identical, so every Java getter returns the C ABI's value for the same state
  * and every warning reaches stderr exactly as from C. Before the first step both draw on the
  * display and print the bytes of the PNG files they save of it (each runs in a directory of its

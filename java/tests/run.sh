@@ -6,10 +6,11 @@
 # the JDK's javac and drive_parity.c against the staged C libraries, runs both on
 # worlds/drive.toml, and requires:
 #   * DriveParity's own assertions (java -ea): device lookup, bad input without exceptions,
-#     the range image as float[], the loop ending at the world's duration;
-#   * identical stdout: every driver/car getter, GPS and lidar value after every step, as raw
-#     bits, equal to the C ABI's for the same calls, and the bytes of the PNG files each saves
-#     of its display after drawing on it;
+#     the range image as float[], the point cloud and recognised objects, the saved PNG files
+#     read back, the loop ending at the world's duration;
+#   * identical stdout: every driver/car getter, GPS, camera (recognition included) and lidar
+#     (point cloud included) value after every step, as raw bits, equal to the C ABI's for the
+#     same calls, and the bytes of the PNG files each saves of its display and camera;
 #   * identical, non-empty stderr: the bad input's warnings are the C API's own;
 #   * VehicleDriver.java, Webots' reference controller, compiles and runs to the world's end
 #     with nothing on stderr.
