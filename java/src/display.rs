@@ -72,13 +72,20 @@ natives! { "com_cyberbotics_webots_controller_WebotsNative";
     /// 0 (Java `null`) where C returns NULL. An unknown format reaches the C API, which refuses
     /// it with its error.
     fn displayImageNew(env, device: jint, width: jint, height: jint, data: JIntArray<'_>, format: jint) -> jlong => {
-        let bytes = pixel_bytes(&ints(&mut env, &data), format);
-        // SAFETY: `Display.imageNew` passes at least width · height pixels, so `bytes` holds
-        // width · height pixels of `format` (the C API reads nothing for an unknown format);
-        // it lives until the call returns.
-        let image = unsafe {
-            car::wb_display_image_new(tag(device), width, height, bytes.as_ptr().cast::<c_void>(), format)
+        let pixels = ints(&mut env, &data);
+        let bytes = pixel_bytes(&pixels, format);
+        // `Display.imageNew` throws before passing fewer than width · height pixels; should
+        // any caller still do so, the C API gets NULL data (and returns NULL) rather than a
+        // short buffer.
+        let wanted = usize::try_from(width).unwrap_or(0).checked_mul(usize::try_from(height).unwrap_or(0));
+        let data = if wanted.is_some_and(|n| pixels.len() >= n) {
+            bytes.as_ptr().cast::<c_void>()
+        } else {
+            std::ptr::null()
         };
+        // SAFETY: NULL, or `bytes`, which holds at least width · height pixels of `format`
+        // (the C API reads nothing for an unknown format) and lives until the call returns.
+        let image = unsafe { car::wb_display_image_new(tag(device), width, height, data, format) };
         image as jlong
     };
     /// `wb_display_image_copy` of a rectangle (px); 0 where C returns NULL.
