@@ -53,10 +53,12 @@ public class Display extends Device {
     WebotsNative.displayDrawText(getTag(), text, x, y);
   }
 
+  /** Draws pixel (x, y). */
   public void drawPixel(int x, int y) {
     WebotsNative.displayDrawPixel(getTag(), x, y);
   }
 
+  /** Draws the line from (x1, y1) to (x2, y2) (Bresenham). */
   public void drawLine(int x1, int y1, int x2, int y2) {
     WebotsNative.displayDrawLine(getTag(), x1, y1, x2, y2);
   }
