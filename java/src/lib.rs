@@ -12,7 +12,7 @@
 //! arrays the C API returns are copied into new Java arrays (`null` where C returns NULL).
 //!
 //! The native methods are static methods of two package-private classes, `WebotsNative`
-//! (robot and devices, `robot.rs`, `sensors.rs`) and `VehicleNative` (driver and car,
+//! (robot and devices, `robot.rs`, `sensors.rs`, `display.rs`, `recognition.rs`, `point_cloud.rs`) and `VehicleNative` (driver and car,
 //! `vehicle.rs`); the public Java classes wrap them with Webots' names and signatures.
 //! Like Webots' controller library, the API is for one controller thread.
 
@@ -21,7 +21,10 @@
 // its pointer getters (`car::values`, `car::lidar_values`), so no C array is read here.
 #![allow(unsafe_code)]
 
+use std::ffi::{CString, c_char};
+
 use jni::JNIEnv;
+use jni::objects::JString;
 use jni::sys::{jdoubleArray, jfloatArray, jint, jintArray, jsize};
 
 /// Defines JNI entry points of one Java class: each `fn name(args) -> ret => body;` becomes
@@ -44,6 +47,9 @@ macro_rules! natives {
     };
 }
 
+pub(crate) mod display;
+pub(crate) mod point_cloud;
+pub(crate) mod recognition;
 pub(crate) mod robot;
 pub(crate) mod sensors;
 pub(crate) mod vehicle;
@@ -52,6 +58,13 @@ pub(crate) mod vehicle;
 /// does not fit.
 fn tag(tag: jint) -> car::WbDeviceTag {
     car::WbDeviceTag::try_from(tag).unwrap_or(0)
+}
+
+/// A Java array length for `len` items (an error past `jsize`'s range, which no device
+/// reaches).
+fn java_len(len: usize) -> jni::errors::Result<jsize> {
+    jsize::try_from(len)
+        .map_err(|_| jni::errors::Error::JniCall(jni::errors::JniError::InvalidArguments))
 }
 
 /// A new Java `double[]` holding `values`; `null` for `None` or when the JVM cannot allocate
@@ -96,4 +109,19 @@ fn int_array(env: &mut JNIEnv<'_>, values: Option<&[i32]>) -> jintArray {
         Ok(array) if env.set_int_array_region(&array, 0, values).is_ok() => array.into_raw(),
         _ => std::ptr::null_mut(),
     }
+}
+
+/// A Java string as a C string; `None` (the C API's NULL, which it refuses with its own
+/// error or ignores as Webots does) for `null` or a string holding a NUL character.
+fn c_string(env: &mut JNIEnv<'_>, text: &JString<'_>) -> Option<CString> {
+    if text.is_null() {
+        return None;
+    }
+    let text = env.get_string(text).ok()?;
+    CString::new(String::from(text)).ok()
+}
+
+/// The pointer of `text`, NULL for `None`.
+fn c_ptr(text: Option<&CString>) -> *const c_char {
+    text.map_or(std::ptr::null(), |t| t.as_ptr())
 }

@@ -4,10 +4,11 @@
 //! (`car::values`, `car::lidar_values`: the same checks and messages as the C functions).
 //! Units: m, m/s, rad, rad/s, m/s², periods in ms.
 
+use jni::objects::JString;
 use jni::sys::{jdouble, jdoubleArray, jfloatArray, jint, jintArray};
 use sim::devices::DeviceKind;
 
-use crate::{double_array, float_array, int_array, tag};
+use crate::{c_ptr, c_string, double_array, float_array, int_array, tag};
 
 natives! { "com_cyberbotics_webots_controller_WebotsNative";
     /// `wb_gps_enable` (ms).
@@ -157,6 +158,16 @@ natives! { "com_cyberbotics_webots_controller_WebotsNative";
     fn cameraGetHeight(env, device: jint) -> jint => car::wb_camera_get_height(tag(device));
     /// `wb_camera_get_fov` (rad).
     fn cameraGetFov(env, device: jint) -> jdouble => car::wb_camera_get_fov(tag(device));
+    /// `wb_camera_get_min_fov` (rad).
+    fn cameraGetMinFov(env, device: jint) -> jdouble => car::wb_camera_get_min_fov(tag(device));
+    /// `wb_camera_get_max_fov` (rad).
+    fn cameraGetMaxFov(env, device: jint) -> jdouble => car::wb_camera_get_max_fov(tag(device));
+    /// `wb_camera_save_image` (PNG; `quality` is JPEG's): 0, or -1 with the C API's error.
+    fn cameraSaveImage(env, device: jint, filename: JString<'_>, quality: jint) -> jint => {
+        let filename = c_string(&mut env, &filename);
+        // SAFETY: NULL or a NUL-terminated string that lives until the call returns.
+        unsafe { car::wb_camera_save_image(tag(device), c_ptr(filename.as_ref()), quality) }
+    };
     /// `wb_camera_get_near` (m).
     fn cameraGetNear(env, device: jint) -> jdouble => car::wb_camera_get_near(tag(device));
     /// `wb_camera_get_image` as Webots' Java gives it: one `int` per pixel, `0xAARRGGBB`
@@ -186,6 +197,14 @@ natives! { "com_cyberbotics_webots_controller_WebotsNative";
     fn lidarGetHorizontalResolution(env, device: jint) -> jint => car::wb_lidar_get_horizontal_resolution(tag(device));
     /// `wb_lidar_get_number_of_layers`.
     fn lidarGetNumberOfLayers(env, device: jint) -> jint => car::wb_lidar_get_number_of_layers(tag(device));
+    /// `wb_lidar_get_frequency` (Hz).
+    fn lidarGetFrequency(env, device: jint) -> jdouble => car::wb_lidar_get_frequency(tag(device));
+    /// `wb_lidar_set_frequency` (Hz, refused with the C API's error outside the lidar's range).
+    fn lidarSetFrequency(env, device: jint, frequency: jdouble) => car::wb_lidar_set_frequency(tag(device), frequency);
+    /// `wb_lidar_get_min_frequency` (Hz).
+    fn lidarGetMinFrequency(env, device: jint) -> jdouble => car::wb_lidar_get_min_frequency(tag(device));
+    /// `wb_lidar_get_max_frequency` (Hz).
+    fn lidarGetMaxFrequency(env, device: jint) -> jdouble => car::wb_lidar_get_max_frequency(tag(device));
     /// `wb_lidar_get_fov` (rad).
     fn lidarGetFov(env, device: jint) -> jdouble => car::wb_lidar_get_fov(tag(device));
     /// `wb_lidar_get_vertical_fov` (rad).

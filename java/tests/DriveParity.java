@@ -1,9 +1,13 @@
 import com.cyberbotics.webots.controller.Camera;
+import com.cyberbotics.webots.controller.CameraRecognitionObject;
 import com.cyberbotics.webots.controller.Device;
+import com.cyberbotics.webots.controller.Display;
+import com.cyberbotics.webots.controller.ImageRef;
 import com.cyberbotics.webots.controller.DistanceSensor;
 import com.cyberbotics.webots.controller.GPS;
 import com.cyberbotics.webots.controller.Keyboard;
 import com.cyberbotics.webots.controller.Lidar;
+import com.cyberbotics.webots.controller.LidarPoint;
 import com.cyberbotics.webots.controller.Radar;
 import com.cyberbotics.webots.controller.RadarTarget;
 import com.cyberbotics.webots.controller.RoadSensor;
@@ -20,6 +24,8 @@ public class DriveParity {
   static final StringBuilder line = new StringBuilder();
   static int seenTargets = 0;
   static int images = 0;
+  static int recognised = 0;
+  static int clouds = 0;
   static final java.util.List<Integer> keys = new java.util.ArrayList<Integer>();
 
   static void d(String name, double x) {
@@ -32,6 +38,106 @@ public class DriveParity {
 
   static void b(String name, boolean x) {
     i(name, x ? 1 : 0);
+  }
+
+  static void n(String name, Object x) {
+    line.append(" ").append(name).append("=").append(x == null ? "null" : "image");
+  }
+
+  /** The bytes of the file {@code name} (in the working directory) in hex, as a line. */
+  static void printFile(String label, String name) throws java.io.IOException {
+    line.append(label);
+    java.io.File file = new java.io.File(name);
+    if (!file.exists()) {
+      line.append(" missing");
+    } else {
+      for (byte b : java.nio.file.Files.readAllBytes(file.toPath()))
+        line.append(String.format("%02x", b & 0xff));
+    }
+    flush();
+  }
+
+  /** drive_parity.c's draw(): every Display method, bad input included, read back as PNG files. */
+  static void draw(Display screen) throws java.io.IOException {
+    i("display_width", screen.getWidth());
+    i("display_height", screen.getHeight());
+    screen.setColor(0x3366cc);
+    screen.fillRectangle(0, 0, 16, 8);
+    screen.setColor(0xff0000);
+    screen.drawPixel(15, 0);
+    screen.drawLine(0, 7, 15, 0);
+    screen.setOpacity(0.5);
+    screen.drawRectangle(2, 2, 5, 4);
+    screen.setOpacity(1.0);
+    screen.setAlpha(0.25);
+    screen.drawOval(8, 4, 3, 2);
+    screen.setAlpha(1.0);
+    screen.setColor(0x00ff00);
+    screen.fillOval(12, 3, 2, 2);
+    // The three-argument form with longer arrays and the two-argument form: the same corners.
+    screen.drawPolygon(new int[] {1, 6, 3, 99}, new int[] {1, 2, 6, 99}, 3);
+    screen.fillPolygon(new int[] {9, 14, 12, 10}, new int[] {5, 5, 7, 7});
+    screen.setFont("Arial", 8, true);
+    screen.drawText("Hi", 0, 0);
+    screen.setColor(0x1000000);
+    screen.setAlpha(2.0);
+    screen.setOpacity(-1.0);
+    screen.setFont("NoSuchFont", 8, false);
+    screen.setFont("Arial", 0, false);
+    int[] argb = {0x80ff0000, 0xff00ff00, 0x000000ff, 0xffffffff};
+    n("bad_format", screen.imageNew(2, 2, argb, 9));
+    n("off_copy", screen.imageCopy(100, 100, 2, 2));
+    ImageRef made = screen.imageNew(2, 2, argb, Display.ARGB);
+    ImageRef flat = screen.imageNew(2, 1, new int[] {0x102030, 0x405060}, Display.RGB);
+    screen.imagePaste(made, 3, 5, true);
+    screen.imagePaste(flat, 13, 6);
+    ImageRef copy = screen.imageCopy(0, 0, 8, 4);
+    screen.imagePaste(copy, 8, 4, false);
+    screen.imageSave(copy, "copy.png");
+    ImageRef loaded = screen.imageLoad("copy.png");
+    screen.imagePaste(loaded, 9, 5, true);
+    screen.imageSave(null, "screen.png");
+    screen.imageDelete(made);
+    screen.imageDelete(flat);
+    screen.imageDelete(copy);
+    screen.imageDelete(loaded);
+    flush();
+    printFile("copy.png ", "copy.png");
+    printFile("screen.png ", "screen.png");
+    // The files are PNG images of the sizes saved; the red pixel drawn at (15, 0), which later
+    // drawing does not touch, reads back opaque red (ImageIO's ARGB).
+    java.awt.image.BufferedImage saved = javax.imageio.ImageIO.read(new java.io.File("screen.png"));
+    java.awt.image.BufferedImage copied = javax.imageio.ImageIO.read(new java.io.File("copy.png"));
+    assert saved.getWidth() == 16 && saved.getHeight() == 8 && copied.getWidth() == 8 && copied.getHeight() == 4;
+    assert saved.getRGB(15, 0) == 0xffff0000 : Integer.toHexString(saved.getRGB(15, 0));
+    boolean thrown = false;
+    try {
+      screen.drawPolygon(new int[] {1, 2}, new int[] {1, 2, 3}, 3);
+    } catch (ArrayIndexOutOfBoundsException e) {
+      thrown = true;
+    }
+    assert thrown : "a polygon longer than its arrays is refused before the C call";
+  }
+
+  static void f(String name, float x) {
+    line.append(String.format(" %s=%08x", name, Float.floatToRawIntBits(x)));
+  }
+
+  /** drive_parity.c's print_cloud: the points, "null" for a null array. */
+  static void printCloud(String name, LidarPoint[] points) {
+    line.append(" ").append(name).append("=");
+    if (points == null) {
+      line.append("null");
+      return;
+    }
+    line.append(points.length);
+    for (LidarPoint p : points) {
+      f("px", p.getX());
+      f("py", p.getY());
+      f("pz", p.getZ());
+      i("pl", p.getLayerId());
+      f("pt", p.getTime());
+    }
   }
 
   static void flush() {
@@ -112,13 +218,38 @@ public class DriveParity {
       i("key", key);
       keys.add(key);
     }
+    int count = camera.getRecognitionNumberOfObjects();
+    CameraRecognitionObject[] objects = camera.getRecognitionObjects();
+    assert objects.length == count : objects.length + " " + count;
+    i("objects", count);
+    for (CameraRecognitionObject o : objects) {
+      i("id", o.getId());
+      for (double x : o.getPosition()) d("opos", x);
+      for (double x : o.getOrientation()) d("orot", x);
+      for (double x : o.getSize()) d("osize", x);
+      for (int x : o.getPositionOnImage()) i("oimg", x);
+      for (int x : o.getSizeOnImage()) i("oimgsize", x);
+      i("ncolors", o.getNumberOfColors());
+      for (double x : o.getColors()) d("ocolor", x);
+      line.append(" model=").append(o.getModel());
+      assert o.getColors().length == 3 * o.getNumberOfColors();
+      recognised++;
+    }
+    LidarPoint[] cloud = lidar.getPointCloud();
+    assert cloud.length == lidar.getNumberOfPoints();
+    printCloud("cloud", cloud);
+    printCloud("layer1", lidar.getLayerPointCloud(1));
+    for (int k = 0; k < cloud.length; ++k) {
+      assert cloud[k].getLayerId() == k / lidar.getHorizontalResolution();
+      clouds++;
+    }
     float[] image = lidar.getRangeImage();
     assert image.length == lidar.getHorizontalResolution() * lidar.getNumberOfLayers() : image.length;
     for (float r : image) line.append(String.format(" r=%08x", Float.floatToRawIntBits(r)));
     flush();
   }
 
-  public static void main(String[] args) {
+  public static void main(String[] args) throws java.io.IOException {
     Car car = new Car();
     assert Driver.getDriverInstance() == car;
     GPS gps = car.getGPS("gps");
@@ -155,6 +286,27 @@ public class DriveParity {
     Camera camera = car.getCamera("camera");
     assert camera != null && camera.getWidth() == 16 && camera.getHeight() == 8;
     camera.enable(100);
+    Display screen = car.getDisplay("screen");
+    assert screen != null && car.getDisplay("camera") == null && car.getDevice("screen") == screen;
+    draw(screen);
+    b("has_recognition", camera.hasRecognition());
+    b("segmentation", camera.hasRecognitionSegmentation());
+    i("recognition_period", camera.getRecognitionSamplingPeriod());
+    i("objects", camera.getRecognitionNumberOfObjects());
+    CameraRecognitionObject[] none = camera.getRecognitionObjects();
+    // Java's empty array where C returns NULL (recognition disabled).
+    n("objects", none.length == 0 ? null : none);
+    camera.recognitionEnable(50);
+    i("recognition_period", camera.getRecognitionSamplingPeriod());
+    b("cloud_enabled", lidar.isPointCloudEnabled());
+    i("points", lidar.getNumberOfPoints());
+    printCloud("cloud", lidar.getPointCloud());
+    lidar.enablePointCloud();
+    b("cloud_enabled", lidar.isPointCloudEnabled());
+    printCloud("layer5", lidar.getLayerPointCloud(5));
+    flush();
+    assert camera.hasRecognition() && !camera.hasRecognitionSegmentation();
+    assert camera.getRecognitionSamplingPeriod() == 50 && lidar.isPointCloudEnabled();
     assert car.getKeyboard().getSamplingPeriod() == 10;
     assert gps.getSamplingPeriod() == 10 && lidar.getSamplingPeriod() == 10;
 
@@ -171,13 +323,31 @@ public class DriveParity {
     car.setWiperMode(9);
     car.setBrakeIntensity(-1.0);
     d("badwheel", car.getWheelSpeed(4));
+    d("min_fov", camera.getMinFov());
+    d("max_fov", camera.getMaxFov());
+    d("frequency", lidar.getFrequency());
+    d("min_frequency", lidar.getMinFrequency());
+    d("max_frequency", lidar.getMaxFrequency());
+    lidar.setFrequency(lidar.getMaxFrequency() + 1.0);
+    lidar.setFrequency(lidar.getMinFrequency());
+    d("frequency", lidar.getFrequency());
     flush();
+    assert lidar.getFrequency() == lidar.getMinFrequency() : "max + 1 Hz refused, min accepted";
     assert car.getIndicator() == Driver.INDICATOR_LEFT && car.getWiperMode() == Driver.SLOW;
     assert car.getBrakeIntensity() == 0.0 : car.getBrakeIntensity();
 
     int steps = 0;
     while (car.step() != -1) {
       ++steps;
+      if (steps == 50) {
+        // The camera's image as a PNG file (read back as bytes), and a refused extension.
+        i("save", camera.saveImage("camera.png", 100));
+        i("save_bmp", camera.saveImage("camera.bmp", 100));
+        flush();
+        printFile("camera.png ", "camera.png");
+        java.awt.image.BufferedImage saved = javax.imageio.ImageIO.read(new java.io.File("camera.png"));
+        assert saved.getWidth() == 16 && saved.getHeight() == 8;
+      }
       if (steps == 100) {
         car.setThrottle(0.5);
         car.setGear(1);
@@ -210,6 +380,8 @@ public class DriveParity {
     // reads less than that but more than 0 (it never reached the box).
     assert lanes.getRoad() == 0 && lanes.getLaneWidth() == 3.5 : lanes.getRoad() + " " + lanes.getLaneWidth();
     assert images > 0 : "the camera gave images";
+    assert recognised > 0 : "the camera recognised the box";
+    assert clouds > 0 : "the lidar gave point clouds";
     assert Camera.pixelGetRed(0x00ab1234) == 0xab && Camera.pixelGetGreen(0x00ab1234) == 0x12
         && Camera.pixelGetBlue(0x00ab1234) == 0x34;
     assert seenTargets > 0 : "the radar sees the parked car";

@@ -1,9 +1,12 @@
 /*
  * drive_parity: the C twin of DriveParity.java. Both drive java/tests/worlds/drive.toml with the
  * same calls in the same order (bad input included) and print every driver and car getter, the
- * GPS, the distance sensor and the lidar range image after each step as raw bits; run.sh requires their stdout and
+ * GPS, the distance sensor, the camera and its recognised objects, and the lidar range image
+ * and point cloud after each step as raw bits; run.sh requires their stdout and
  * stderr to be identical, so every Java getter returns the C ABI's value for the same state
- * and every warning reaches stderr exactly as from C.
+ * and every warning reaches stderr exactly as from C. Before the first step both draw on the
+ * display and print the bytes of the PNG files they save of it (each runs in a directory of its
+ * own), and at step 50 those of the camera's image.
  * It calls the deprecated functions too (Java has them), hence -Wno-deprecated-declarations.
  */
 #include <math.h>
@@ -12,10 +15,13 @@
 #include <string.h>
 
 #include <webots/camera.h>
+#include <webots/camera_recognition_object.h>
+#include <webots/display.h>
 #include <webots/distance_sensor.h>
 #include <webots/gps.h>
 #include <webots/keyboard.h>
 #include <webots/lidar.h>
+#include <webots/lidar_point.h>
 #include <webots/radar.h>
 #include <webots/robot.h>
 #include <webots/vehicle/car.h>
@@ -30,6 +36,34 @@ static void d(const char *name, double x) {
 
 static void i(const char *name, int x) {
   printf(" %s=%d", name, x);
+}
+
+static void check_null(const char *name, const void *p) {
+  printf(" %s=%s", name, p == NULL ? "null" : "image");
+}
+
+static void f(const char *name, float x) {
+  uint32_t bits;
+  memcpy(&bits, &x, sizeof bits);
+  printf(" %s=%08x", name, (unsigned)bits);
+}
+
+/* The n points of a point cloud (Java's LidarPoint[]), "null" for NULL. */
+static void print_cloud(const char *name, const WbLidarPoint *points, int n) {
+  int k;
+  printf(" %s=", name);
+  if (points == NULL) {
+    printf("null");
+    return;
+  }
+  printf("%d", n);
+  for (k = 0; k < n; ++k) {
+    f("px", points[k].x);
+    f("py", points[k].y);
+    f("pz", points[k].z);
+    i("pl", points[k].layer_id);
+    f("pt", points[k].time);
+  }
 }
 
 static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, WbDeviceTag radar, WbDeviceTag lanes, WbDeviceTag camera) {
@@ -111,6 +145,26 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, W
     while ((key = wb_keyboard_get_key()) != -1) i("key", key);
   }
   {
+    const int n = wb_camera_recognition_get_number_of_objects(camera);
+    const WbCameraRecognitionObject *objects = wb_camera_recognition_get_objects(camera);
+    int c;
+    i("objects", n);
+    for (k = 0; objects != NULL && k < n; ++k) {
+      const WbCameraRecognitionObject *o = &objects[k];
+      i("id", o->id);
+      for (c = 0; c < 3; ++c) d("opos", o->position[c]);
+      for (c = 0; c < 4; ++c) d("orot", o->orientation[c]);
+      for (c = 0; c < 2; ++c) d("osize", o->size[c]);
+      for (c = 0; c < 2; ++c) i("oimg", o->position_on_image[c]);
+      for (c = 0; c < 2; ++c) i("oimgsize", o->size_on_image[c]);
+      i("ncolors", o->number_of_colors);
+      for (c = 0; c < 3 * o->number_of_colors; ++c) d("ocolor", o->colors[c]);
+      printf(" model=%s", o->model);
+    }
+  }
+  print_cloud("cloud", wb_lidar_get_point_cloud(lidar), wb_lidar_get_number_of_points(lidar));
+  print_cloud("layer1", wb_lidar_get_layer_point_cloud(lidar, 1), wb_lidar_get_horizontal_resolution(lidar));
+  {
     const float *image = wb_lidar_get_range_image(lidar);
     const int n = wb_lidar_get_horizontal_resolution(lidar) * wb_lidar_get_number_of_layers(lidar);
     for (k = 0; k < n; ++k) {
@@ -123,8 +177,80 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, W
   fflush(stdout);
 }
 
+/* Prints the bytes of the file `name` (in the working directory) in hex. */
+static void print_file(const char *label, const char *name) {
+  FILE *f;
+  int c;
+  f = fopen(name, "rb");
+  printf("%s", label);
+  if (f == NULL) {
+    printf(" missing\n");
+    return;
+  }
+  while ((c = fgetc(f)) != EOF) printf("%02x", c);
+  fclose(f);
+  printf("\n");
+}
+
+/* Draws on the display with every function of webots/display.h (bad input included), then
+ * saves the display and a copy as PNG files and prints their bytes: the only way a
+ * controller reads a display back. */
+static void draw(WbDeviceTag screen) {
+  static const int xs[] = {1, 6, 3}, ys[] = {1, 2, 6};
+  static const int fx[] = {9, 14, 12, 10}, fy[] = {5, 5, 7, 7};
+  /* 2 x 2 pixels: ARGB 0x80ff0000, 0xff00ff00, 0x000000ff, 0xffffffff, as Java's ints. */
+  static const unsigned char argb[] = {0x80, 0xff, 0x00, 0x00, 0xff, 0x00, 0xff, 0x00,
+                                       0x00, 0x00, 0x00, 0xff, 0xff, 0xff, 0xff, 0xff};
+  static const unsigned char rgb[] = {0x10, 0x20, 0x30, 0x40, 0x50, 0x60};
+  WbImageRef copy, made, flat, loaded;
+  i("display_width", wb_display_get_width(screen));
+  i("display_height", wb_display_get_height(screen));
+  wb_display_set_color(screen, 0x3366cc);
+  wb_display_fill_rectangle(screen, 0, 0, 16, 8);
+  wb_display_set_color(screen, 0xff0000);
+  wb_display_draw_pixel(screen, 15, 0);
+  wb_display_draw_line(screen, 0, 7, 15, 0);
+  wb_display_set_opacity(screen, 0.5);
+  wb_display_draw_rectangle(screen, 2, 2, 5, 4);
+  wb_display_set_opacity(screen, 1.0);
+  wb_display_set_alpha(screen, 0.25);
+  wb_display_draw_oval(screen, 8, 4, 3, 2);
+  wb_display_set_alpha(screen, 1.0);
+  wb_display_set_color(screen, 0x00ff00);
+  wb_display_fill_oval(screen, 12, 3, 2, 2);
+  wb_display_draw_polygon(screen, xs, ys, 3);
+  wb_display_fill_polygon(screen, fx, fy, 4);
+  wb_display_set_font(screen, "Arial", 8, true);
+  wb_display_draw_text(screen, "Hi", 0, 0);
+  /* Bad input: refused by the C API with its errors. */
+  wb_display_set_color(screen, 0x1000000);
+  wb_display_set_alpha(screen, 2.0);
+  wb_display_set_opacity(screen, -1.0);
+  wb_display_set_font(screen, "NoSuchFont", 8, false);
+  wb_display_set_font(screen, "Arial", 0, false);
+  check_null("bad_format", wb_display_image_new(screen, 2, 2, argb, 9));
+  check_null("off_copy", wb_display_image_copy(screen, 100, 100, 2, 2));
+  made = wb_display_image_new(screen, 2, 2, argb, WB_IMAGE_ARGB);
+  flat = wb_display_image_new(screen, 2, 1, rgb, WB_IMAGE_RGB);
+  wb_display_image_paste(screen, made, 3, 5, true);
+  wb_display_image_paste(screen, flat, 13, 6, false);
+  copy = wb_display_image_copy(screen, 0, 0, 8, 4);
+  wb_display_image_paste(screen, copy, 8, 4, false);
+  wb_display_image_save(screen, copy, "copy.png");
+  loaded = wb_display_image_load(screen, "copy.png");
+  wb_display_image_paste(screen, loaded, 9, 5, true);
+  wb_display_image_save(screen, NULL, "screen.png");
+  wb_display_image_delete(screen, made);
+  wb_display_image_delete(screen, flat);
+  wb_display_image_delete(screen, copy);
+  wb_display_image_delete(screen, loaded);
+  printf("\n");
+  print_file("copy.png ", "copy.png");
+  print_file("screen.png ", "screen.png");
+}
+
 int main(void) {
-  WbDeviceTag gps, lidar, front, radar, lanes, camera;
+  WbDeviceTag gps, lidar, front, radar, lanes, camera, screen;
   int steps = 0;
   wbu_driver_init();
   gps = wb_robot_get_device("gps");
@@ -140,6 +266,23 @@ int main(void) {
   vehicle_road_sensor_enable(lanes, 10);
   camera = wb_robot_get_device("camera");
   wb_camera_enable(camera, 100);
+  screen = wb_robot_get_device("screen");
+  draw(screen);
+  /* Recognition and the point cloud before they are enabled (errors), then enabled. */
+  i("has_recognition", wb_camera_has_recognition(camera));
+  i("segmentation", wb_camera_recognition_has_segmentation(camera));
+  i("recognition_period", wb_camera_recognition_get_sampling_period(camera));
+  i("objects", wb_camera_recognition_get_number_of_objects(camera));
+  check_null("objects", wb_camera_recognition_get_objects(camera));
+  wb_camera_recognition_enable(camera, 50);
+  i("recognition_period", wb_camera_recognition_get_sampling_period(camera));
+  i("cloud_enabled", wb_lidar_is_point_cloud_enabled(lidar));
+  i("points", wb_lidar_get_number_of_points(lidar));
+  print_cloud("cloud", wb_lidar_get_point_cloud(lidar), 0);
+  wb_lidar_enable_point_cloud(lidar);
+  i("cloud_enabled", wb_lidar_is_point_cloud_enabled(lidar));
+  print_cloud("layer5", wb_lidar_get_layer_point_cloud(lidar, 5), 0);
+  printf("\n");
 
   wbu_driver_set_cruising_speed(30.0);
   wbu_driver_set_steering_angle(0.1);
@@ -154,10 +297,25 @@ int main(void) {
   wbu_driver_set_wiper_mode((WbuDriverWiperMode)9);
   wbu_driver_set_brake_intensity(-1.0);
   d("badwheel", wbu_car_get_wheel_speed((WbuCarWheelIndex)4));
+  d("min_fov", wb_camera_get_min_fov(camera));
+  d("max_fov", wb_camera_get_max_fov(camera));
+  d("frequency", wb_lidar_get_frequency(lidar));
+  d("min_frequency", wb_lidar_get_min_frequency(lidar));
+  d("max_frequency", wb_lidar_get_max_frequency(lidar));
+  wb_lidar_set_frequency(lidar, wb_lidar_get_max_frequency(lidar) + 1.0);
+  wb_lidar_set_frequency(lidar, wb_lidar_get_min_frequency(lidar));
+  d("frequency", wb_lidar_get_frequency(lidar));
   printf("\n");
 
   while (wbu_driver_step() != -1) {
     ++steps;
+    if (steps == 50) {
+      /* The camera's image as a PNG file (read back as bytes), and a refused extension. */
+      i("save", wb_camera_save_image(camera, "camera.png", 100));
+      i("save_bmp", wb_camera_save_image(camera, "camera.bmp", 100));
+      printf("\n");
+      print_file("camera.png ", "camera.png");
+    }
     if (steps == 100) {
       wbu_driver_set_throttle(0.5);
       wbu_driver_set_gear(1);

@@ -6,9 +6,11 @@
 # the JDK's javac and drive_parity.c against the staged C libraries, runs both on
 # worlds/drive.toml, and requires:
 #   * DriveParity's own assertions (java -ea): device lookup, bad input without exceptions,
-#     the range image as float[], the loop ending at the world's duration;
-#   * identical stdout: every driver/car getter, GPS and lidar value after every step, as raw
-#     bits, equal to the C ABI's for the same calls;
+#     the range image as float[], the point cloud and recognised objects, the saved PNG files
+#     read back, the loop ending at the world's duration;
+#   * identical stdout: every driver/car getter, GPS, camera (recognition included) and lidar
+#     (point cloud included) value after every step, as raw bits, equal to the C ABI's for the
+#     same calls, and the bytes of the PNG files each saves of its display and camera;
 #   * identical, non-empty stderr: the bad input's warnings are the C API's own;
 #   * VehicleDriver.java, Webots' reference controller, compiles and runs to the world's end
 #     with nothing on stderr.
@@ -30,8 +32,11 @@ javac -Xlint:-options --release 8 -cp "$jar" -d "$work" "$here/DriveParity.java"
 
 export VEHICLE_WORLD="$here/worlds/drive.toml"
 unset VEHICLE_OUT
-"$work/drive_parity" >"$work/c.out" 2>"$work/c.err"
-java -ea -cp "$jar:$work" -Djava.library.path="$prefix/lib" DriveParity >"$work/java.out" 2>"$work/java.err" || {
+# Each runs in a directory of its own, where it saves PNG files (the display's, the camera's) and
+# prints their bytes; relative file names keep the C API's messages about them equal.
+mkdir "$work/c" "$work/java"
+(cd "$work/c" && "$work/drive_parity") >"$work/c.out" 2>"$work/c.err"
+(cd "$work/java" && exec java -ea -cp "$jar:$work" -Djava.library.path="$prefix/lib" DriveParity) >"$work/java.out" 2>"$work/java.err" || {
   echo "$0: DriveParity failed:" >&2
   cat "$work/java.err" >&2
   exit 1

@@ -1,6 +1,6 @@
 package com.cyberbotics.webots.controller;
 
-/** Webots' {@code Lidar}: range images (m); the point cloud is not wrapped (COMPATIBILITY.md). */
+/** Webots' {@code Lidar}: range images and point clouds ({@link LidarPoint}), in m. */
 public class Lidar extends Device {
   Lidar(int tag) {
     super(tag);
@@ -31,6 +31,36 @@ public class Lidar extends Device {
     return WebotsNative.lidarGetLayerRangeImage(getTag(), layer);
   }
 
+  /** Computes the point cloud while the lidar is enabled. */
+  public void enablePointCloud() {
+    WebotsNative.lidarEnablePointCloud(getTag());
+  }
+
+  /** Stops computing the point cloud. */
+  public void disablePointCloud() {
+    WebotsNative.lidarDisablePointCloud(getTag());
+  }
+
+  /** True if the point cloud is enabled. */
+  public boolean isPointCloudEnabled() {
+    return WebotsNative.lidarIsPointCloudEnabled(getTag());
+  }
+
+  /** The points of the cloud: resolution × layers, 0 when it or the lidar is disabled. */
+  public int getNumberOfPoints() {
+    return WebotsNative.lidarGetNumberOfPoints(getTag());
+  }
+
+  /** The point cloud, layer after layer; {@code null} when it or the lidar is disabled. */
+  public LidarPoint[] getPointCloud() {
+    return WebotsNative.lidarGetPointCloud(getTag());
+  }
+
+  /** The points of {@code layer}; {@code null} when disabled or for a layer out of range. */
+  public LidarPoint[] getLayerPointCloud(int layer) {
+    return WebotsNative.lidarGetLayerPointCloud(getTag(), layer);
+  }
+
   /** Points per layer. */
   public int getHorizontalResolution() {
     return WebotsNative.lidarGetHorizontalResolution(getTag());
@@ -39,6 +69,26 @@ public class Lidar extends Device {
   /** Layers. */
   public int getNumberOfLayers() {
     return WebotsNative.lidarGetNumberOfLayers(getTag());
+  }
+
+  /** The rotation frequency (Hz). */
+  public double getFrequency() {
+    return WebotsNative.lidarGetFrequency(getTag());
+  }
+
+  /** Sets the rotation frequency (Hz), within [getMinFrequency(), getMaxFrequency()]. */
+  public void setFrequency(double frequency) {
+    WebotsNative.lidarSetFrequency(getTag(), frequency);
+  }
+
+  /** The minimum rotation frequency (Hz). */
+  public double getMinFrequency() {
+    return WebotsNative.lidarGetMinFrequency(getTag());
+  }
+
+  /** The maximum rotation frequency (Hz). */
+  public double getMaxFrequency() {
+    return WebotsNative.lidarGetMaxFrequency(getTag());
   }
 
   /** The horizontal field of view (rad). */

@@ -12,6 +12,7 @@ public class Robot {
   private static final int NODE_ACCELEROMETER = 35;
   private static final int NODE_CAMERA = 38;
   private static final int NODE_COMPASS = 39;
+  private static final int NODE_DISPLAY = 41;
   private static final int NODE_DISTANCE_SENSOR = 42;
   private static final int NODE_GPS = 44;
   private static final int NODE_GYRO = 45;
@@ -116,6 +117,11 @@ public class Robot {
     return (Camera) device(WebotsNative.robotGetDevice(name), NODE_CAMERA);
   }
 
+  /** The display {@code name}; {@code null} if missing or not a display. */
+  public Display getDisplay(String name) {
+    return (Display) device(WebotsNative.robotGetDevice(name), NODE_DISPLAY);
+  }
+
   /** The lidar {@code name}; {@code null} if missing or not a lidar. */
   public Lidar getLidar(String name) {
     return (Lidar) device(WebotsNative.robotGetDevice(name), NODE_LIDAR);
@@ -140,6 +146,7 @@ public class Robot {
         case NODE_DISTANCE_SENSOR: device = new DistanceSensor(tag); break;
         case NODE_LIDAR: device = new Lidar(tag); break;
         case NODE_CAMERA: device = new Camera(tag); break;
+        case NODE_DISPLAY: device = new Display(tag); break;
         case NODE_RADAR: device = new Radar(tag); break;
         case NODE_ROAD_SENSOR: device = new RoadSensor(tag); break;
         default: device = new Device(tag); break;

@@ -2,8 +2,8 @@ package com.cyberbotics.webots.controller;
 
 /**
  * The native methods of the controller package: each is one function of the C API
- * (libvehicle_java, java/src/robot.rs and sensors.rs). Units are the C API's: ms, s, m, m/s,
- * rad, rad/s, m/s^2.
+ * (libvehicle_java, java/src/robot.rs, sensors.rs, display.rs, recognition.rs and
+ * point_cloud.rs). Units are the C API's: ms, s, m, m/s, rad, rad/s, m/s^2, px.
  */
 final class WebotsNative {
   static {
@@ -106,6 +106,9 @@ final class WebotsNative {
   static native int cameraGetWidth(int tag);
   static native int cameraGetHeight(int tag);
   static native double cameraGetFov(int tag);
+  static native double cameraGetMinFov(int tag);
+  static native double cameraGetMaxFov(int tag);
+  static native int cameraSaveImage(int tag, String filename, int quality);
   static native double cameraGetNear(int tag);
   static native int[] cameraGetImage(int tag);
 
@@ -116,8 +119,49 @@ final class WebotsNative {
   static native float[] lidarGetLayerRangeImage(int tag, int layer);
   static native int lidarGetHorizontalResolution(int tag);
   static native int lidarGetNumberOfLayers(int tag);
+  static native double lidarGetFrequency(int tag);
+  static native void lidarSetFrequency(int tag, double frequency);
+  static native double lidarGetMinFrequency(int tag);
+  static native double lidarGetMaxFrequency(int tag);
   static native double lidarGetFov(int tag);
   static native double lidarGetVerticalFov(int tag);
   static native double lidarGetMinRange(int tag);
   static native double lidarGetMaxRange(int tag);
+
+  static native int displayGetWidth(int tag);
+  static native int displayGetHeight(int tag);
+  static native void displaySetColor(int tag, int color);
+  static native void displaySetAlpha(int tag, double alpha);
+  static native void displaySetOpacity(int tag, double opacity);
+  static native void displaySetFont(int tag, String font, int size, boolean antiAliasing);
+  static native void displayDrawText(int tag, String text, int x, int y);
+  static native void displayDrawPixel(int tag, int x, int y);
+  static native void displayDrawLine(int tag, int x1, int y1, int x2, int y2);
+  static native void displayDrawRectangle(int tag, int x, int y, int width, int height);
+  static native void displayFillRectangle(int tag, int x, int y, int width, int height);
+  static native void displayDrawOval(int tag, int cx, int cy, int a, int b);
+  static native void displayFillOval(int tag, int cx, int cy, int a, int b);
+  static native void displayDrawPolygon(int tag, int[] x, int[] y, int size);
+  static native void displayFillPolygon(int tag, int[] x, int[] y, int size);
+  static native long displayImageNew(int tag, int width, int height, int[] data, int format);
+  static native long displayImageCopy(int tag, int x, int y, int width, int height);
+  static native void displayImagePaste(int tag, long image, int x, int y, boolean blend);
+  static native void displayImageDelete(int tag, long image);
+  static native void displayImageSave(int tag, long image, String filename);
+  static native long displayImageLoad(int tag, String filename);
+
+  static native boolean cameraHasRecognition(int tag);
+  static native void cameraRecognitionEnable(int tag, int samplingPeriod);
+  static native void cameraRecognitionDisable(int tag);
+  static native int cameraRecognitionGetSamplingPeriod(int tag);
+  static native int cameraRecognitionGetNumberOfObjects(int tag);
+  static native boolean cameraRecognitionHasSegmentation(int tag);
+  static native CameraRecognitionObject[] cameraRecognitionGetObjects(int tag);
+
+  static native void lidarEnablePointCloud(int tag);
+  static native void lidarDisablePointCloud(int tag);
+  static native boolean lidarIsPointCloudEnabled(int tag);
+  static native int lidarGetNumberOfPoints(int tag);
+  static native LidarPoint[] lidarGetPointCloud(int tag);
+  static native LidarPoint[] lidarGetLayerPointCloud(int tag, int layer);
 }
