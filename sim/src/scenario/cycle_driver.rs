@@ -100,7 +100,8 @@ impl CycleDriver {
         let asked = unbounded.clamp(-self.authority.full_brake, self.authority.full_throttle);
         // Anti-windup: the integral moves only while the pedals are not saturated against it.
         if unbounded == asked || (unbounded > asked) != (error > 0.0) {
-            self.integral = (self.integral + KI * error * dt).clamp(-INTEGRAL_LIMIT, INTEGRAL_LIMIT);
+            self.integral =
+                (self.integral + KI * error * dt).clamp(-INTEGRAL_LIMIT, INTEGRAL_LIMIT);
         }
         if asked >= 0.0 {
             Pedals {
@@ -144,7 +145,10 @@ impl BandMeter {
     ) {
         let (lo, hi) = trace.band(t, window, tolerance);
         self.max_error = self.max_error.max((speed - trace.speed(t)).abs());
-        if speed < lo || speed > hi {
+        // Where the band reaches 0 the car is at rest: a creep of mm/s backwards on the
+        // holding brake is no miss.
+        let below = lo > 0.0 && speed < lo;
+        if below || speed > hi {
             self.outside += dt;
             self.current += dt;
             self.longest = self.longest.max(self.current);

@@ -164,13 +164,35 @@ fn metrics(
             per_km(battery),
         ));
         m.push(Metric::number(
+            "battery_wh",
+            "energy the battery gave at its terminals (net)",
+            "Wh",
+            battery,
+        ));
+        m.push(Metric::number(
+            "motor_loss_wh",
+            "electric machine losses",
+            "Wh",
+            (end.motor_loss - start.motor_loss) / J_PER_WH,
+        ));
+        m.push(Metric::number(
             "regenerated_wh",
             "energy regenerative braking took back at the wheels",
             "Wh",
             (end.regenerated - start.regenerated) / J_PER_WH,
         ));
-        m.push(Metric::number("soc_start", "state of charge at the start", "", start.soc));
-        m.push(Metric::number("soc_end", "state of charge at the end", "", end.soc));
+        m.push(Metric::number(
+            "soc_start",
+            "state of charge at the start",
+            "",
+            start.soc,
+        ));
+        m.push(Metric::number(
+            "soc_end",
+            "state of charge at the end",
+            "",
+            end.soc,
+        ));
     }
     if engine != EngineType::Electric {
         let litres = (end.fuel - start.fuel) / FUEL_DENSITY;
@@ -181,11 +203,18 @@ fn metrics(
             per_km(100.0 * litres),
         ));
     }
+    let wheel = (end.wheel_energy - start.wheel_energy) / J_PER_WH;
+    m.push(Metric::number(
+        "wheel_wh",
+        "energy at the driven wheels",
+        "Wh",
+        wheel,
+    ));
     m.push(Metric::number(
         "wheel_wh_per_km",
         "energy at the driven wheels per km",
         "Wh/km",
-        per_km((end.wheel_energy - start.wheel_energy) / J_PER_WH).unwrap_or(0.0),
+        per_km(wheel).unwrap_or(0.0),
     ));
     m
 }
