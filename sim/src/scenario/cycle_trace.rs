@@ -179,7 +179,8 @@ impl Trace {
     /// outside.
     pub fn speed(&self, t: f64) -> f64 {
         let last = self.speeds.len().saturating_sub(1);
-        if !(t > 0.0) {
+        // NaN lands here too: the first speed.
+        if t.is_nan() || t <= 0.0 {
             return self.speeds.first().copied().unwrap_or(0.0);
         }
         let i = t.floor() as usize;
@@ -193,7 +194,7 @@ impl Trace {
     /// The trace's acceleration at `t` s (m/s²): the slope of the second it lies in.
     pub fn acceleration(&self, t: f64) -> f64 {
         let last = self.speeds.len().saturating_sub(1);
-        if !(t >= 0.0) || t >= last as f64 {
+        if t.is_nan() || t < 0.0 || t >= last as f64 {
             return 0.0;
         }
         let i = t.floor() as usize;
