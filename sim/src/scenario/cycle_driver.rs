@@ -15,8 +15,11 @@ const KI: f64 = 0.3;
 const INTEGRAL_LIMIT: f64 = 1.5;
 /// Brake intensity that holds the car while the trace stands still (dimensionless).
 const HOLD_BRAKE: f64 = 0.3;
-/// Below this trace speed and car speed (m/s) the trace is at rest and the car held.
+/// Below this trace speed (m/s) the trace is at rest.
 const AT_REST: f64 = 0.05;
+/// Below this car speed (m/s), with the trace at rest, the car is held by the brake: the
+/// end of a stop, where the trace's last second reaches 0 and the car is a step behind.
+const HOLD_BELOW: f64 = 0.55;
 
 /// What the driver pushes (dimensionless, each in [0, 1]).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -87,7 +90,7 @@ impl CycleDriver {
     pub fn pedals(&mut self, t: f64, speed: f64, dt: f64) -> Pedals {
         let next = t + dt;
         let target = self.trace.speed(next);
-        if target < AT_REST && self.trace.acceleration(next) <= 0.0 && speed < AT_REST + 0.5 {
+        if target < AT_REST && self.trace.acceleration(next) <= 0.0 && speed < HOLD_BELOW {
             // At rest: held by the brake; the integral keeps what it learnt of the road.
             return Pedals {
                 throttle: 0.0,
