@@ -107,6 +107,8 @@ SCENARIOS: Tuple[str, ...] = (
     "split-mu",
     "iso-3888",
     "test-track",
+    "ftp75",
+    "hwfet",
     "square",
     "spin",
 )

@@ -6,7 +6,7 @@ use vehicle_model::Driver;
 
 use crate::error::SimError;
 use crate::replay::Recorder;
-use crate::simulation::Simulation;
+use crate::simulation::{EnergyReport, Simulation};
 use crate::telemetry::{DeviceLog, Sample, Telemetry, VehicleKind};
 use crate::vehicle::{VehicleId, VehicleSpec, VehicleState};
 use crate::world_file::{CarDescription, WorldDescription};
@@ -100,6 +100,11 @@ impl CarRig {
     /// What the car was built from.
     pub(crate) fn spec(&self) -> &VehicleSpec {
         &self.spec
+    }
+
+    /// What the car's powertrain did so far, `None` without energy accounting.
+    pub(crate) fn energy(&self) -> Result<Option<EnergyReport>, ScenarioError> {
+        Ok(self.sim.energy(self.id)?)
     }
 
     /// The step length (s).

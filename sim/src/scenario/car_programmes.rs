@@ -8,7 +8,7 @@ use crate::world_file::{CarDescription, WorldDescription};
 use super::car::{CarRig, KMH};
 use super::lane::{LaneSection, TRACK_LENGTH, double_lane_change, reference_y};
 use super::{Metric, Scenario, ScenarioError, ScenarioResult, fit_circle, limit};
-use super::{iso_3888, manoeuvres, split_mu};
+use super::{drive_cycles, iso_3888, manoeuvres, split_mu};
 
 /// 100 km/h in m/s.
 const V100: f64 = 100.0 / KMH;
@@ -104,6 +104,10 @@ pub(crate) fn run(
         // Its own world: the ground with a low-friction strip.
         return split_mu::run(world, car, progress);
     }
+    if let Some(cycle) = drive_cycles::cycle_of(scenario) {
+        // Its own world: the car's energy accounted.
+        return drive_cycles::run(world, car, cycle, progress);
+    }
     let t0100 = car.params.time_0_to_100;
     // Each programme and the simulated time it expects (s), for the progress bar;
     // `test-track` is run as its parts, and the robot programmes are not for a car.
@@ -119,6 +123,8 @@ pub(crate) fn run(
         Scenario::SineWithDwell => (manoeuvres::sine_with_dwell, 2.0 * t0100 + 12.0),
         Scenario::Iso3888 => (iso_3888::run, 0.6 * t0100 + 10.0),
         Scenario::SplitMu
+        | Scenario::Ftp75
+        | Scenario::Hwfet
         | Scenario::TestTrack
         | Scenario::Square
         | Scenario::Spin
@@ -218,7 +224,7 @@ fn accel_torque(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResul
 /// (`brakeCoefficient`, times its axle's factor under a brake balance other than Webots'), `m`
 /// the whole car's mass and μ the ground's friction times the slip-based tyre's longitudinal
 /// peak friction (1 for Webots' contact).
-fn expected_deceleration(rig: &CarRig) -> Result<f64, ScenarioError> {
+pub(super) fn expected_deceleration(rig: &CarRig) -> Result<f64, ScenarioError> {
     let spec = rig.spec();
     let mass = spec.chassis.mass + Wheel::ALL.iter().map(|&w| spec.wheels[w].mass).sum::<f64>();
     let driver = rig.driver()?;

@@ -20,6 +20,8 @@
 //! | `iso-3888` | car | ISO 3888-2 obstacle-avoidance lane change entered at 60 km/h, throttle released | `passed`, `entry_speed_kmh`, `cones_hit` |
 //! | `split-mu` | car | braking from 80 km/h, right wheels on friction 0.3 | `stop_distance_m`, `heading_change_rad` |
 //! | `test-track` | car | all five above, each on a fresh world | all of the above |
+//! | `ftp75` | car | EPA FTP-75 drive cycle (1874 s) with the built-in [`CycleDriver`] | `distance_km`, `time_outside_band_s`, `battery_wh_per_km`, `fuel_l_per_100km`, … |
+//! | `hwfet` | car | EPA Highway Fuel Economy Test (765 s), likewise | as `ftp75` |
 //! | `square` | robot | a square of side 10 × `axleLength`, open loop | final pose, `closure_error_m` |
 //! | `spin` | robot | turns on the spot for 10 s | final pose, `turns` |
 //! | `programme` | any | every car's and the robot's programme from the world file | per vehicle: [`motion_metrics`]; for several cars `min_gap_m`, `touched` |
@@ -29,6 +31,9 @@
 
 mod car;
 mod car_programmes;
+mod cycle_driver;
+mod cycle_trace;
+mod drive_cycles;
 mod fit;
 mod iso_3888;
 mod lane;
@@ -48,6 +53,9 @@ mod robot;
 use core::fmt;
 use std::time::Instant;
 
+pub use cycle_driver::{AuthorityError, BandMeter, CycleDriver, PedalAuthority, Pedals};
+pub use cycle_trace::{Cycle, MS_PER_MPH, Trace, TraceError};
+pub use drive_cycles::FUEL_DENSITY;
 pub use fit::{Circle, fit_circle};
 pub use lane::{LaneSection, double_lane_change};
 pub use lane_departure::{DepartureMeter, LaneDeparture, Side};
@@ -85,6 +93,10 @@ pub enum Scenario {
     Iso3888,
     /// Every car scenario in turn.
     TestTrack,
+    /// The EPA FTP-75 drive cycle.
+    Ftp75,
+    /// The EPA Highway Fuel Economy Test drive cycle.
+    Hwfet,
     /// A DifferentialWheels robot drives a square.
     Square,
     /// A DifferentialWheels robot turns on the spot.
@@ -95,7 +107,7 @@ pub enum Scenario {
 
 impl Scenario {
     /// Every scenario.
-    pub const ALL: [Scenario; 14] = [
+    pub const ALL: [Scenario; 16] = [
         Scenario::AccelSpeed,
         Scenario::AccelTorque,
         Scenario::Brake,
@@ -107,6 +119,8 @@ impl Scenario {
         Scenario::SplitMu,
         Scenario::Iso3888,
         Scenario::TestTrack,
+        Scenario::Ftp75,
+        Scenario::Hwfet,
         Scenario::Square,
         Scenario::Spin,
         Scenario::Programme,
@@ -135,6 +149,8 @@ impl Scenario {
             Scenario::SplitMu => "split-mu",
             Scenario::Iso3888 => "iso-3888",
             Scenario::TestTrack => "test-track",
+            Scenario::Ftp75 => "ftp75",
+            Scenario::Hwfet => "hwfet",
             Scenario::Square => "square",
             Scenario::Spin => "spin",
             Scenario::Programme => "programme",
@@ -170,6 +186,8 @@ impl Scenario {
                 "split-mu braking from 80 km/h, right wheels on friction 0.3: stop, heading"
             }
             Scenario::TestTrack => "all five car scenarios in turn",
+            Scenario::Ftp75 => "EPA FTP-75 drive cycle (1874 s): band tracking, Wh/km, l/100 km",
+            Scenario::Hwfet => "EPA highway cycle HWFET (765 s): band tracking, Wh/km, l/100 km",
             Scenario::Square => "DifferentialWheels: drive a square, open loop",
             Scenario::Spin => "DifferentialWheels: turn on the spot for 10 s",
             Scenario::Programme => "the world file's driving programmes, every car and robot",
@@ -238,6 +256,9 @@ impl Scenario {
             Scenario::SplitMu => 90.0,
             Scenario::Iso3888 => 60.0,
             Scenario::TestTrack => 360.0,
+            // The trace and a few seconds to stop after it.
+            Scenario::Ftp75 => 1880.0,
+            Scenario::Hwfet => 770.0,
             Scenario::Square => 600.0,
             Scenario::Spin => 10.0,
             Scenario::Programme => f64::INFINITY,
@@ -493,6 +514,9 @@ pub enum ScenarioError {
     /// The simulator refused the world or diverged.
     #[error("simulation failed: {0}")]
     Sim(#[from] SimError),
+    /// The drive-cycle driver refused the car's pedal authority.
+    #[error("drive-cycle driver: {0}")]
+    CycleDriver(#[from] AuthorityError),
     /// The run's recording could not be read back (its temporary file failed).
     #[error("the run's recording could not be read back: {0}")]
     Record(String),

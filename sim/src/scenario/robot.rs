@@ -178,6 +178,8 @@ pub(crate) fn run(
         | Scenario::SplitMu
         | Scenario::Iso3888
         | Scenario::TestTrack
+        | Scenario::Ftp75
+        | Scenario::Hwfet
         | Scenario::Programme => Err(ScenarioError::WrongVehicle {
             scenario,
             vehicle: world.vehicles_label(),
