@@ -6,7 +6,7 @@
 //!   ctypes, so every warning, clamp and returned value is the C API's (module `webots`).
 //! * `Simulation`, the core of the Pythonic `webots_vehicle.Simulation`: a world of
 //!   `sim::Simulation`, cars added at will, per-step telemetry, the `vehicle-sim` scenarios
-//!   (module `simulation`).
+//!   (module `simulation`), its telemetry shown to numpy without a copy (module `telemetry`).
 //! * Webots' Supervisor subset (`supervisor_*`), the `capi` crate's `supervisor` functions on
 //!   the controller's world, for `controller.Supervisor` (module `supervisor`).
 //! * `Sweep`, the core of `webots_vehicle.Sweep`: a sweep file's cases by index, each run into
@@ -23,6 +23,7 @@ mod sensors;
 mod simulation;
 mod supervisor;
 mod sweep;
+mod telemetry;
 mod webots;
 
 use pyo3::prelude::*;
@@ -62,5 +63,6 @@ fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     simulation::register(m)?;
     supervisor::register(m)?;
     sweep::register(m)?;
+    telemetry::register(m)?;
     Ok(())
 }
