@@ -27,6 +27,8 @@ fn peak_rss() -> Option<u64> {
 /// Runs a BmwX5 at 30 km/h for `steps` 10 ms steps recorded with [`Retention::Off`], after
 /// 100 steps that let the physics make its caches; returns the peak resident set before the
 /// recorded steps and after them (bytes), None where /proc is missing.
+// The tests' own code (clippy allows unwrap in #[test] functions, not in their helpers).
+#[allow(clippy::unwrap_used)]
 fn unrecorded_run(steps: usize) -> Option<(u64, u64)> {
     let _one = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
     peak_rss()?;
