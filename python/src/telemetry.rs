@@ -76,17 +76,14 @@ impl TelemetryRows {
         let data = this.rows.as_ptr().cast_mut().cast();
         let (shape, strides) = (this.shape.as_ptr(), this.strides.as_ptr());
         let py = slf.py();
-        let owner = slf.into_any().into_ptr();
         // SAFETY: `view` is the Py_buffer CPython passes to bf_getbuffer. PyBuffer_FillInfo
-        // fills it for `len` read-only bytes at `data` (valid and unchanged while `owner`, a
-        // new reference it stores in view->obj, holds the SharedRows) as the flags ask, and
-        // takes over that reference (left to us if it fails); it fails only for a writable request, refused above. The
-        // format, shape and strides written after it are a static C string and this frozen
-        // object's fields, which live as long as view->obj.
+        // fills it for `len` read-only bytes at `data` as the flags ask and stores a new
+        // reference to this object in view->obj (released with the buffer), which holds the
+        // SharedRows and so keeps `data` valid and unchanged; it fails only for a writable
+        // request, refused above. The format, shape and strides written after it are a
+        // static C string and this frozen object's fields, which live as long as view->obj.
         unsafe {
-            if pyo3::ffi::PyBuffer_FillInfo(view, owner, data, len, 1, flags) != 0 {
-                // On failure the reference stays ours.
-                pyo3::ffi::Py_DECREF(owner);
+            if pyo3::ffi::PyBuffer_FillInfo(view, slf.as_ptr(), data, len, 1, flags) != 0 {
                 return Err(PyErr::fetch(py));
             }
             if flags & pyo3::ffi::PyBUF_FORMAT == pyo3::ffi::PyBUF_FORMAT {

@@ -79,6 +79,21 @@ def test_arrays_share_the_recorded_memory_and_are_read_only():
     assert len(sim.car.telemetry) == 1201
 
 
+def test_a_released_buffer_releases_the_recorded_memory():
+    sim = cruising(True, 10)
+    rows = sim._core.telemetry(0)
+    held = sys.getrefcount(rows)
+    view = memoryview(rows)
+    # The buffer holds the rows (and so the engine's block) while it exists, and lets go.
+    assert sys.getrefcount(rows) == held + 1
+    assert view.readonly and view.format == "d" and view.shape == (11, len(COLUMNS))
+    view.release()
+    assert sys.getrefcount(rows) == held
+    # numpy cannot make a view of it writable: the buffer is read-only.
+    with pytest.raises(ValueError):
+        np.frombuffer(rows, dtype=np.float64).setflags(write=True)
+
+
 def test_shared_values_equal_the_copying_path_bit_for_bit():
     steps = MEMORY_ROWS + 1000
     # Kept whole past MEMORY_ROWS samples, the rows move to the temporary file and each read
