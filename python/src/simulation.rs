@@ -17,6 +17,7 @@ use sim::world_file::{self, WorldDescription, WorldFileError};
 use sim::{CarBuilder, SimError, VehicleId};
 use vehicle_model::Warning;
 
+use crate::snapshot::Snapshot;
 use crate::telemetry;
 use crate::{SimulationError, WorldError};
 
@@ -24,28 +25,6 @@ use crate::{SimulationError, WorldError};
 struct Car {
     id: VehicleId,
     model: &'static str,
-}
-
-/// `Simulation.snapshot()`'s opaque state: the engine's [`sim::Snapshot`] and how many cars and
-/// warnings the simulation had then.
-#[pyclass(module = "webots_vehicle._native", unsendable)]
-pub(crate) struct Snapshot {
-    state: sim::Snapshot,
-    cars: usize,
-    warnings: usize,
-}
-
-#[pymethods]
-impl Snapshot {
-    /// Simulated time when the snapshot was taken (s).
-    #[getter]
-    fn time(&self) -> f64 {
-        self.state.time_ms() as f64 / 1000.0
-    }
-
-    fn __repr__(&self) -> String {
-        format!("<Snapshot at t = {} s>", self.time())
-    }
 }
 
 /// The name of a `webots_vehicle.Simulation` run in its outputs (the `scenario` column).
@@ -602,7 +581,6 @@ impl Simulation {
 /// Adds the class to the module.
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Simulation>()?;
-    m.add_class::<Snapshot>()?;
     m.add("TELEMETRY_COLUMNS", SAMPLE_COLUMNS)?;
     Ok(())
 }
