@@ -6,7 +6,8 @@
 //!   ctypes, so every warning, clamp and returned value is the C API's (module `webots`).
 //! * `Simulation`, the core of the Pythonic `webots_vehicle.Simulation`: a world of
 //!   `sim::Simulation`, cars added at will, per-step telemetry, the `vehicle-sim` scenarios
-//!   (module `simulation`).
+//!   (module `simulation`), its telemetry shown to numpy without a copy (module `telemetry`), its snapshots (module
+//!   `snapshot`).
 //! * Webots' Supervisor subset (`supervisor_*`), the `capi` crate's `supervisor` functions on
 //!   the controller's world, for `controller.Supervisor` (module `supervisor`).
 //! * `Sweep`, the core of `webots_vehicle.Sweep`: a sweep file's cases by index, each run into
@@ -21,8 +22,10 @@ mod ray_sensors;
 mod road_sensor;
 mod sensors;
 mod simulation;
+mod snapshot;
 mod supervisor;
 mod sweep;
+mod telemetry;
 mod webots;
 
 use pyo3::prelude::*;
@@ -60,7 +63,9 @@ fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     ray_sensors::register(m)?;
     road_sensor::register(m)?;
     simulation::register(m)?;
+    snapshot::register(m)?;
     supervisor::register(m)?;
     sweep::register(m)?;
+    telemetry::register(m)?;
     Ok(())
 }

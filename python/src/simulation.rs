@@ -8,43 +8,23 @@
 
 use pyo3::exceptions::{PyIndexError, PyOSError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyByteArray, PyBytes};
+use pyo3::types::PyBytes;
 
 use sim::devices::Reading;
 use sim::scenario::{self, Scenario};
-use sim::telemetry::{CSV_HEADER, SAMPLE_COLUMNS, Sample, TelemetryLog};
+use sim::telemetry::{CSV_HEADER, Retention, SAMPLE_COLUMNS, TelemetryLog};
 use sim::world_file::{self, WorldDescription, WorldFileError};
 use sim::{CarBuilder, SimError, VehicleId};
 use vehicle_model::Warning;
 
+use crate::snapshot::Snapshot;
+use crate::telemetry;
 use crate::{SimulationError, WorldError};
 
 /// One driven car.
 struct Car {
     id: VehicleId,
     model: &'static str,
-}
-
-/// `Simulation.snapshot()`'s opaque state: the engine's [`sim::Snapshot`] and how many cars and
-/// warnings the simulation had then.
-#[pyclass(module = "webots_vehicle._native", unsendable)]
-pub(crate) struct Snapshot {
-    state: sim::Snapshot,
-    cars: usize,
-    warnings: usize,
-}
-
-#[pymethods]
-impl Snapshot {
-    /// Simulated time when the snapshot was taken (s).
-    #[getter]
-    fn time(&self) -> f64 {
-        self.state.time_ms() as f64 / 1000.0
-    }
-
-    fn __repr__(&self) -> String {
-        format!("<Snapshot at t = {} s>", self.time())
-    }
 }
 
 /// The name of a `webots_vehicle.Simulation` run in its outputs (the `scenario` column).
@@ -59,6 +39,8 @@ pub(crate) struct Simulation {
     simulation: sim::Simulation,
     cars: Vec<Car>,
     warnings: Vec<String>,
+    /// How much of each car's run the recording keeps (`Simulation(record=...)`).
+    retention: Retention,
 }
 
 /// `WorldError` with the error's message and its `file`, `line`, `column` and `key`
@@ -120,6 +102,7 @@ impl Simulation {
             simulation,
             cars,
             warnings,
+            retention: Retention::All,
         })
     }
 
@@ -219,6 +202,18 @@ impl Simulation {
         self.description.duration
     }
 
+    /// How much of the run the recording keeps: True (every step), False (none but the
+    /// last sample) or N (the last N samples). Set before the first step.
+    fn set_record(&mut self, record: &Bound<'_, PyAny>) -> PyResult<()> {
+        if self.simulation.is_recording() {
+            return Err(SimulationError::new_err(
+                "record= is set before the first step (recording has started)",
+            ));
+        }
+        self.retention = telemetry::retention(record)?;
+        Ok(())
+    }
+
     /// The number of cars.
     #[getter]
     fn car_count(&self) -> usize {
@@ -291,7 +286,7 @@ impl Simulation {
     #[pyo3(signature = (steps, drivers = true))]
     fn step(&mut self, steps: u64, drivers: bool) -> PyResult<bool> {
         if steps > 0 && !self.simulation.is_recording() {
-            self.simulation.record(RUN);
+            self.simulation.record_with(RUN, self.retention);
         }
         for _ in 0..steps {
             if self.simulation.is_over() {
@@ -513,9 +508,15 @@ impl Simulation {
         Ok(warning_text(self.driver_mut(car)?.set_gear(gear)))
     }
 
-    /// The number of samples car `car` has recorded.
+    /// The number of samples car `car` holds (all it recorded, or the last N of them).
     fn sample_count(&self, car: usize) -> PyResult<usize> {
         Ok(self.log(car)?.map_or(0, TelemetryLog::len))
+    }
+
+    /// The number of samples car `car` has recorded (the t = 0 sample and one per step),
+    /// whether held or not.
+    fn recorded_count(&self, car: usize) -> PyResult<usize> {
+        Ok(self.log(car)?.map_or(0, TelemetryLog::recorded))
     }
 
     /// The last sample of car `car` (NaN where a quantity does not exist), None before the
@@ -527,24 +528,14 @@ impl Simulation {
             .map(|r| r.to_vec()))
     }
 
-    /// Every sample of car `car` as native-endian f64 bytes, row-major (rows × columns), in a
-    /// `bytearray` written in place: numpy takes it as a writable array without a copy, so
-    /// reading a long run needs its table's memory once.
-    fn telemetry<'py>(&self, py: Python<'py>, car: usize) -> PyResult<Bound<'py, PyByteArray>> {
-        let Some(log) = self.log(car)? else {
-            return Ok(PyByteArray::new(py, &[]));
-        };
-        PyByteArray::new_with(py, log.len() * SAMPLE_COLUMNS * 8, |bytes: &mut [u8]| {
-            let mut cells = bytes.chunks_exact_mut(8);
-            log.for_each(|row| {
-                // The row first: zip asks its first iterator first, and a cell taken after the
-                // row's end would be lost.
-                for (v, cell) in row.iter().zip(cells.by_ref()) {
-                    cell.copy_from_slice(&v.to_ne_bytes());
-                }
-            })
-            .map_err(|e| PyOSError::new_err(e.to_string()))
-        })
+    /// The samples car `car` holds, row-major (rows × columns, f64): the recorded memory
+    /// itself, read-only, while it is all in memory (a `TelemetryRows` buffer), else a
+    /// `bytearray` read back from the log's temporary file (see the `telemetry` module);
+    /// None before the first step.
+    fn telemetry<'py>(&self, py: Python<'py>, car: usize) -> PyResult<Option<Bound<'py, PyAny>>> {
+        self.log(car)?
+            .map(|log| telemetry::rows(py, log))
+            .transpose()
     }
 
     /// Runs the `vehicle-sim` scenario `name` on a fresh copy of this simulation's world file
@@ -580,28 +571,16 @@ impl Simulation {
             .flat_map(|r| {
                 r.telemetry
                     .iter()
-                    .map(|t| (r.name.clone(), table(py, &t.samples)))
+                    .map(|t| (r.name.clone(), telemetry::table(py, &t.samples)))
             })
             .collect();
         Ok((json, tables))
     }
 }
 
-/// `samples` as native-endian f64 bytes, row-major.
-fn table<'py>(py: Python<'py>, samples: &[Sample]) -> Bound<'py, PyBytes> {
-    let mut bytes = Vec::with_capacity(samples.len() * SAMPLE_COLUMNS * 8);
-    for s in samples {
-        for v in s.values() {
-            bytes.extend_from_slice(&v.unwrap_or(f64::NAN).to_ne_bytes());
-        }
-    }
-    PyBytes::new(py, &bytes)
-}
-
 /// Adds the class to the module.
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Simulation>()?;
-    m.add_class::<Snapshot>()?;
     m.add("TELEMETRY_COLUMNS", SAMPLE_COLUMNS)?;
     Ok(())
 }

@@ -5,7 +5,7 @@ stderr, same values), and the core of :class:`webots_vehicle.Simulation`. C ``bo
 ``int`` 0/1 here. Units: rad (positive steers right), km/h, rpm, m, rad/s, s; ms for steps.
 """
 
-from typing import Any, List, Optional, Tuple
+from typing import Any, List, Optional, Tuple, Union
 
 TELEMETRY_COLUMNS: int
 
@@ -242,10 +242,15 @@ class Simulation:
     def set_gear(self, car: int, gear: int) -> Optional[str]: ...
     def save(self, directory: str) -> List[str]:
         """telemetry.csv, metrics.json and replay.glb of the run so far."""
+    def set_record(self, record: Union[bool, int]) -> None:
+        """True: every sample; False: none but the last; N: the last N. Before the first step."""
     def sample_count(self, car: int) -> int: ...
+    def recorded_count(self, car: int) -> int: ...
     def last_sample(self, car: int) -> Optional[List[float]]: ...
-    def telemetry(self, car: int) -> bytearray:
-        """Native-endian float64, row-major (samples x columns)."""
+    def telemetry(self, car: int) -> Union["TelemetryRows", bytearray, None]:
+        """Float64, row-major (samples x columns): the recorded memory (read-only) while it
+        is all in memory, else a copy read back from the log's temporary file."""
+
     def run(self, name: str) -> Tuple[str, List[Tuple[str, bytes]]]:
         """The ``vehicle-sim --json`` object and each single scenario's telemetry table."""
 
@@ -292,3 +297,9 @@ def supervisor_set_velocity(
 ) -> None: ...
 def supervisor_simulation_reset() -> None:
     """The controller's world back as loaded."""
+
+class TelemetryRows:
+    """A car's recorded rows, exported read-only through the buffer protocol (float64,
+    samples x columns, C order); it keeps that memory alive."""
+
+    def __len__(self) -> int: ...

@@ -195,16 +195,26 @@ class SimCar(_Placed):
     @property
     def state(self) -> Optional[Dict[str, float]]:
         """The last sample (column name to value, NaN where a quantity does not exist), or
-        None before the first step."""
+        None before the first step. Kept apart from the recording: O(1) whatever the run's
+        length, and there with ``record=False`` too."""
         row = self._core.last_sample(self._index)
         return None if row is None else dict(zip(COLUMNS, row))
 
     @property
     def telemetry(self) -> Telemetry:
-        """Every sample of the run: the car's state at the first step's start, then one per
-        step (the rows of ``telemetry.csv``, as ``vehicle-sim`` records them). Long runs stay
-        bounded in memory: older samples wait in a temporary file until asked for."""
+        """The samples the run keeps (``Simulation(record=...)``): the car's state at the
+        first step's start, then one per step (the rows of ``telemetry.csv``, as
+        ``vehicle-sim`` records them); the last N of them with ``record=N``, none with
+        ``record=False``. Read-only arrays over the recorded memory, no copy, while the
+        samples are all in memory (always with ``record=N``; up to 16,384 samples with
+        ``record=True``, whose older samples then wait in a temporary file and are read back
+        into a new table at each access)."""
         return Telemetry(self._core.telemetry(self._index), f"car {self._index} ({self.model})")
+
+    @property
+    def samples_recorded(self) -> int:
+        """The samples recorded so far, kept or not (``len(telemetry)`` is those kept)."""
+        return self._core.recorded_count(self._index)
 
     def __repr__(self) -> str:
         return f"<SimCar {self._index}: {self.model}>"
@@ -275,10 +285,21 @@ class Simulation:
     runs every car's driver library and one ``basicTimeStep`` of physics and records one
     telemetry sample per car. :meth:`run` runs a ``vehicle-sim`` scenario on a fresh copy of
     the world.
+
+    ``record`` says how much of the run each car's :attr:`SimCar.telemetry` keeps: ``True``
+    every sample (memory beyond 16,384 samples moves to a temporary file), ``False`` none
+    (:attr:`SimCar.state`, the last sample, is still there: a long run in flat memory), or a
+    whole number ``N`` the last ``N`` samples (a ring in memory, 2 x 304 bytes per sample).
+    Anything else raises ValueError naming ``record``. A bounded recording (``False`` or
+    ``N``) also keeps no device rows and only the first replay frame in :meth:`save`.
     """
 
     def __init__(
-        self, world: Union[str, "os.PathLike[str]", None] = None, **fields: Any
+        self,
+        world: Union[str, "os.PathLike[str]", None] = None,
+        *,
+        record: Union[bool, int] = True,
+        **fields: Any,
     ) -> None:
         if world is not None and fields:
             raise TypeError("Simulation() takes a world or keyword arguments, not both")
@@ -290,6 +311,7 @@ class Simulation:
             self._core = _native.Simulation.parse("<Simulation keyword arguments>", document(fields))
         else:
             self._core = _native.Simulation.load("" if world is None else os.fspath(world))
+        self._core.set_record(record)
         for w in self._core.warnings:
             _warn(w)
         self._cars = [SimCar(self, i) for i in range(self._core.car_count)]
