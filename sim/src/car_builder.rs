@@ -311,7 +311,7 @@ impl From<&CarDescription> for CarBuilder {
             keys: car.keys.clone(),
             aero: car.aero,
             road_load: car.road_load,
-            energy: car.energy.map(|e| (e, 1.0)),
+            energy: car.energy.map(|e| (e, car.state_of_charge)),
         }
     }
 }
