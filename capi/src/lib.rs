@@ -66,6 +66,7 @@
 mod guard;
 
 mod abi;
+mod battery_api;
 mod camera_api;
 mod car_api;
 mod device_api;

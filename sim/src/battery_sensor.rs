@@ -42,7 +42,7 @@ impl BatterySensor {
     /// Enables it with a period of `period_ms` (0 disables) at `now_ms`. A new period
     /// restarts the wait for a full period; the period in force changes nothing, so a
     /// controller that enables in its loop still gets samples (as every device).
-    pub(crate) fn enable(&mut self, period_ms: u32, now_ms: u64) {
+    pub fn enable(&mut self, period_ms: u32, now_ms: u64) {
         if period_ms != self.period_ms {
             self.period_ms = period_ms;
             self.last_ms = now_ms;
