@@ -88,6 +88,7 @@ mod session;
 pub mod supervisor;
 
 pub use abi::WbDeviceTag;
+pub use battery_api::*;
 pub use camera_api::*;
 pub use car_api::*;
 pub use device_api::*;
