@@ -161,13 +161,14 @@ fn read_webots_battery(s: &Section<'_, '_>) -> Result<WebotsBattery, WorldFileEr
             WorldFileErrorKind::Structure("'battery' must be given".to_string()),
         ));
     };
-    // A pack of more than 1 TJ (about 280 MWh) is no car's: a unit mistake.
-    if !(max_energy.is_finite() && max_energy > 0.0 && max_energy <= 1e12) {
+    // A pack of more than 1 TJ (about 280 MWh) is no car's, nor one of less than 1 J (a
+    // capacity that small would underflow): unit mistakes.
+    if !(1.0..=1e12).contains(&max_energy) {
         return Err(invalid(
             s,
             BATTERY,
             max_energy,
-            "a maxEnergy in (0, 1e12] J",
+            "a maxEnergy in [1, 1e12] J",
         ));
     }
     if !(energy.is_finite() && (0.0..=max_energy).contains(&energy)) {
