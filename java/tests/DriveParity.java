@@ -112,6 +112,8 @@ public class DriveParity {
       i("key", key);
       keys.add(key);
     }
+    // The BmwX5 has no traction battery: NaN, the same bits as C's.
+    d("battery", car.getBatteryValue());
     float[] image = lidar.getRangeImage();
     assert image.length == lidar.getHorizontalResolution() * lidar.getNumberOfLayers() : image.length;
     for (float r : image) line.append(String.format(" r=%08x", Float.floatToRawIntBits(r)));
@@ -146,6 +148,8 @@ public class DriveParity {
     lidar.enable(10);
     front.enable(10);
     car.getKeyboard().enable(10);
+    car.batterySensorEnable(10);
+    assert car.getBatterySensorSamplingPeriod() == 10;
     Radar radar = car.getRadar("radar");
     assert radar != null;
     radar.enable(10);

@@ -110,6 +110,7 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, W
     int key;
     while ((key = wb_keyboard_get_key()) != -1) i("key", key);
   }
+  d("battery", wb_robot_battery_sensor_get_value());
   {
     const float *image = wb_lidar_get_range_image(lidar);
     const int n = wb_lidar_get_horizontal_resolution(lidar) * wb_lidar_get_number_of_layers(lidar);
@@ -134,6 +135,7 @@ int main(void) {
   front = wb_robot_get_device("front");
   wb_distance_sensor_enable(front, 10);
   wb_keyboard_enable(10);
+  wb_robot_battery_sensor_enable(10);
   radar = wb_robot_get_device("radar");
   wb_radar_enable(radar, 10);
   lanes = wb_robot_get_device("lanes");
