@@ -66,6 +66,7 @@
 mod guard;
 
 mod abi;
+mod battery_api;
 mod camera_api;
 mod car_api;
 mod device_api;
@@ -87,6 +88,7 @@ mod session;
 pub mod supervisor;
 
 pub use abi::WbDeviceTag;
+pub use battery_api::*;
 pub use camera_api::*;
 pub use car_api::*;
 pub use device_api::*;

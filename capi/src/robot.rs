@@ -5,6 +5,7 @@ use std::env::{self, VarError};
 use std::ffi::c_int;
 use std::path::PathBuf;
 
+use sim::battery_sensor::BatterySensor;
 use sim::keyboard::Keyboard;
 use sim::traffic::{Traffic, TrafficNote, driven_car};
 use sim::world_file::{self, WorldDescription};
@@ -71,6 +72,9 @@ pub(crate) struct Robot {
     /// The keyboard of a DifferentialWheels robot's controller: no programme presses its keys
     /// (a car's keyboard is the simulation's).
     pub(crate) robot_keyboard: Keyboard,
+    /// The battery sensor of a DifferentialWheels robot's controller: its period only (the
+    /// robot has no battery here; a car's sensor is the simulation's).
+    pub(crate) robot_battery: BatterySensor,
     /// The images of `wb_display_image_*`, by handle.
     pub(crate) images: Images,
     /// The world's other cars, each running its programme.
@@ -188,6 +192,7 @@ impl Robot {
             devices,
             buffers,
             robot_keyboard: Keyboard::default(),
+            robot_battery: BatterySensor::default(),
             images: Images::default(),
             others,
         })
@@ -227,8 +232,19 @@ impl Robot {
         if self.simulation.is_over() {
             self.write_outputs();
             -1
+        } else if self.controller_stopped() {
+            -1
         } else {
             0
+        }
+    }
+
+    /// True once the car's Webots battery is empty (`sim::Simulation::controller_stopped`):
+    /// Webots then ends the controller, so every step returns -1 and advances nothing.
+    pub(crate) fn controller_stopped(&self) -> bool {
+        match self.body {
+            Body::Car { id, .. } => self.simulation.controller_stopped(id).unwrap_or(false),
+            Body::DifferentialWheels(_) => false,
         }
     }
 
@@ -241,7 +257,7 @@ impl Robot {
     /// stopping early at the end of the simulation. Returns 0, or -1 once it is over.
     pub(crate) fn advance(&mut self, steps: u64) -> c_int {
         for _ in 0..steps {
-            if self.simulation.is_over() {
+            if self.simulation.is_over() || self.controller_stopped() {
                 break;
             }
             self.run_programmes();
@@ -261,7 +277,7 @@ impl Robot {
     /// readings into commands, then the world advances one basic time step. Returns 0, or -1
     /// once the simulation is over (the driver does not run then).
     pub(crate) fn driver_step(&mut self) -> c_int {
-        if !self.simulation.is_over() {
+        if !self.simulation.is_over() && !self.controller_stopped() {
             self.run_programmes();
             if let Err(e) = self.simulation.step() {
                 Robot::fail(&e);

@@ -116,6 +116,14 @@ fn keyboard() {
     run_announcing("keyboard", Some(&world_path("keyboard.toml")), 2);
 }
 
+/// The battery sensor of a car with Webots' battery field, and the controller stopped when
+/// it empties.
+#[test]
+fn battery() {
+    // 1 disabled read, 1 negative period.
+    run_announcing("battery", Some(&world_path("battery.toml")), 2);
+}
+
 /// Drawing into a car's Display through webots/display.h, and the display misuse messages.
 #[test]
 fn display() {

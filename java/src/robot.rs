@@ -1,4 +1,4 @@
-//! `WebotsNative`, robot part: `wb_robot_*`, `wb_keyboard_*` and `wb_device_*` for
+//! `WebotsNative`, robot part: `wb_robot_*` (the battery sensor's included), `wb_keyboard_*` and `wb_device_*` for
 //! `com.cyberbotics.webots.controller.Robot`, `Keyboard` and `Device`. Times in s, steps in ms.
 
 use std::ffi::{CStr, CString, c_char};
@@ -26,6 +26,14 @@ natives! { "com_cyberbotics_webots_controller_WebotsNative";
     fn robotGetDeviceByIndex(env, index: jint) -> jint => jint::from(car::wb_robot_get_device_by_index(index));
     /// `wb_robot_get_device`: the tag of the device `name`, 0 if the robot has none.
     fn robotGetDevice(env, name: JString<'_>) -> jint => device_by_name(&mut env, &name);
+    /// `wb_robot_battery_sensor_enable` (ms).
+    fn robotBatterySensorEnable(env, period: jint) => car::wb_robot_battery_sensor_enable(period);
+    /// `wb_robot_battery_sensor_disable`.
+    fn robotBatterySensorDisable(env) => car::wb_robot_battery_sensor_disable();
+    /// `wb_robot_battery_sensor_get_sampling_period` (ms).
+    fn robotBatterySensorGetSamplingPeriod(env) -> jint => car::wb_robot_battery_sensor_get_sampling_period();
+    /// `wb_robot_battery_sensor_get_value` (J; NaN before the first sample and without a battery).
+    fn robotBatterySensorGetValue(env) -> jdouble => car::wb_robot_battery_sensor_get_value();
     /// `wb_keyboard_enable` (ms).
     fn keyboardEnable(env, period: jint) => car::wb_keyboard_enable(period);
     /// `wb_keyboard_disable`.

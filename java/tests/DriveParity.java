@@ -218,6 +218,8 @@ public class DriveParity {
       i("key", key);
       keys.add(key);
     }
+    // The BmwX5 has no traction battery: NaN, the same bits as C's.
+    d("battery", car.getBatteryValue());
     int count = camera.getRecognitionNumberOfObjects();
     CameraRecognitionObject[] objects = camera.getRecognitionObjects();
     assert objects.length == count : objects.length + " " + count;
@@ -277,6 +279,8 @@ public class DriveParity {
     lidar.enable(10);
     front.enable(10);
     car.getKeyboard().enable(10);
+    car.batterySensorEnable(10);
+    assert car.getBatterySensorSamplingPeriod() == 10;
     Radar radar = car.getRadar("radar");
     assert radar != null;
     radar.enable(10);

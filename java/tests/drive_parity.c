@@ -144,6 +144,7 @@ static void print_state(WbDeviceTag gps, WbDeviceTag lidar, WbDeviceTag front, W
     int key;
     while ((key = wb_keyboard_get_key()) != -1) i("key", key);
   }
+  d("battery", wb_robot_battery_sensor_get_value());
   {
     const int n = wb_camera_recognition_get_number_of_objects(camera);
     const WbCameraRecognitionObject *objects = wb_camera_recognition_get_objects(camera);
@@ -260,6 +261,7 @@ int main(void) {
   front = wb_robot_get_device("front");
   wb_distance_sensor_enable(front, 10);
   wb_keyboard_enable(10);
+  wb_robot_battery_sensor_enable(10);
   radar = wb_robot_get_device("radar");
   wb_radar_enable(radar, 10);
   lanes = wb_robot_get_device("lanes");

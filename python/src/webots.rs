@@ -41,6 +41,15 @@ forward! {
     fn wb_robot_get_basic_time_step() -> f64 = car::wb_robot_get_basic_time_step;
     /// Frees the robot; the next call that needs it reloads the world at t = 0.
     fn wb_robot_cleanup() = car::wb_robot_cleanup;
+    /// Samples the battery's energy every `period` ms (0 disables; negative: Webots' error).
+    fn wb_robot_battery_sensor_enable(period: i32) = car::wb_robot_battery_sensor_enable;
+    /// Stops sampling the battery.
+    fn wb_robot_battery_sensor_disable() = car::wb_robot_battery_sensor_disable;
+    /// The battery sensor's period (ms), 0 when disabled.
+    fn wb_robot_battery_sensor_get_sampling_period() -> i32 =
+        car::wb_robot_battery_sensor_get_sampling_period;
+    /// The battery's energy at the last sample (J); NaN before it and without a battery.
+    fn wb_robot_battery_sensor_get_value() -> f64 = car::wb_robot_battery_sensor_get_value;
 
     /// 1 if the world's robot is a car.
     fn wbu_driver_initialization_is_possible() -> u8 =

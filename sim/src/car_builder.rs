@@ -63,6 +63,8 @@ pub struct CarBuilder {
     road_load: Option<RoadLoad<f64>>,
     /// Its energy accounting and its battery's starting charge, `None` for none.
     energy: Option<(EnergyParams<f64>, f64)>,
+    /// True if its battery is Webots' Robot battery: the controller stops when it is empty.
+    powers_controller: bool,
 }
 
 /// A car built from a [`CarBuilder`]: its driver, its body and where it starts.
@@ -77,6 +79,7 @@ pub(crate) struct BuiltCar {
     pub keyboard: Keyboard,
     pub radar_cross_section: f64,
     pub energy: Option<(EnergyParams<f64>, f64)>,
+    pub powers_controller: bool,
 }
 
 impl CarBuilder {
@@ -101,6 +104,7 @@ impl CarBuilder {
             aero: None,
             road_load: None,
             energy: None,
+            powers_controller: false,
         }
     }
 
@@ -209,6 +213,17 @@ impl CarBuilder {
         self
     }
 
+    /// Whether its traction battery ([`CarBuilder::energy`]) is Webots' Robot battery (the
+    /// world file's `battery = [energy, maxEnergy, chargingRate]`): when its energy reaches
+    /// 0 the controller is stopped ([`Simulation::controller_stopped`](
+    /// crate::Simulation::controller_stopped)) and the drive gives no more torque. Default
+    /// `false`. Checked when the car is added: it needs a battery.
+    #[must_use]
+    pub fn battery_powers_controller(mut self, on: bool) -> Self {
+        self.powers_controller = on;
+        self
+    }
+
     /// The sensor-slot frames its devices may sit in (those of a shipped model by default;
     /// none for [`CarBuilder::new`]).
     #[must_use]
@@ -264,6 +279,19 @@ impl CarBuilder {
     pub(crate) fn build(self, step_ms: u32) -> Result<BuiltCar, SimError> {
         let placement = self.start();
         ParamError::non_negative("radarCrossSection", self.radar_cross_section)?;
+        if self.powers_controller
+            && self
+                .energy
+                .as_ref()
+                .is_none_or(|(e, _)| e.battery.is_none())
+        {
+            return Err(ParamError {
+                field: "battery",
+                value: 0.0,
+                rule: Rule::Text("a traction battery to power the controller"),
+            }
+            .into());
+        }
         if let Some((energy, soc)) = &self.energy {
             check_energy(energy, *soc)?;
         }
@@ -288,6 +316,7 @@ impl CarBuilder {
             keyboard: Keyboard::new(self.keys),
             radar_cross_section: self.radar_cross_section,
             energy: self.energy,
+            powers_controller: self.powers_controller,
         })
     }
 }
@@ -311,7 +340,8 @@ impl From<&CarDescription> for CarBuilder {
             keys: car.keys.clone(),
             aero: car.aero,
             road_load: car.road_load,
-            energy: car.energy.map(|e| (e, 1.0)),
+            energy: car.energy.map(|e| (e, car.state_of_charge)),
+            powers_controller: car.webots_battery.is_some(),
         }
     }
 }

@@ -83,6 +83,7 @@ struct ReadmeDoctests;
 
 pub mod appearance;
 mod attitude;
+pub mod battery_sensor;
 mod body;
 mod car_builder;
 #[cfg(feature = "app")]

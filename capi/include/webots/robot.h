@@ -59,6 +59,21 @@ int wb_robot_get_number_of_devices();
  */
 WbDeviceTag wb_robot_get_device_by_index(int index);
 
+/*
+ * The battery sensor: the energy left in the robot's battery, in joules (J). A car's battery is
+ * its traction battery when its world file accounts its energy (Webots' Robot field
+ * `battery = [energy, maxEnergy, chargingRate]`, `[vehicle.battery]` or `energy = true`).
+ * Sampled as every device: the first value one full period after enabling, then every period;
+ * NaN before the first sample and without a battery. A negative period is refused with an
+ * error; reading while disabled prints an error and returns the last value. When the energy of
+ * Webots' `battery` field reaches 0 the controller is stopped: wb_robot_step() and
+ * wbu_driver_step() return -1 from then on.
+ */
+void wb_robot_battery_sensor_enable(int sampling_period);
+void wb_robot_battery_sensor_disable();
+int wb_robot_battery_sensor_get_sampling_period();
+double wb_robot_battery_sensor_get_value();
+
 #ifdef __cplusplus
 }
 #endif

@@ -1038,6 +1038,27 @@ class Robot:
         """The world's ``basicTimeStep`` (ms)."""
         return _native.wb_robot_get_basic_time_step()
 
+    def batterySensorEnable(self, samplingPeriod: int) -> None:
+        """Samples the battery's energy every ``samplingPeriod`` ms: the first value a full
+        period later. A car's battery is its traction battery when the world file accounts
+        its energy (Webots' ``battery = [energy, maxEnergy, chargingRate]``,
+        ``[vehicle.battery]`` or ``energy = true``)."""
+        _native.wb_robot_battery_sensor_enable(_c_int(samplingPeriod))
+
+    def batterySensorDisable(self) -> None:
+        """Stops sampling the battery."""
+        _native.wb_robot_battery_sensor_disable()
+
+    def batterySensorGetSamplingPeriod(self) -> int:
+        """The battery sensor's period (ms), 0 when disabled."""
+        return _native.wb_robot_battery_sensor_get_sampling_period()
+
+    def batterySensorGetValue(self) -> float:
+        """The battery's energy at the last sample (J); NaN before the first sample and
+        without a battery. When the energy of Webots' ``battery`` field reaches 0 the
+        controller is stopped: ``step`` returns -1 from then on."""
+        return _native.wb_robot_battery_sensor_get_value()
+
     def getDevice(self, name: str) -> Optional[Device]:
         """The device ``name`` (e.g. ``"right_steer"``, ``"engine_speaker"``), or None if
         the robot has no such device."""

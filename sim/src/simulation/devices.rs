@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 
 use proto_geom::nalgebra::{Isometry3, Translation3};
 
+use super::EnergyMeter;
 use super::{Controlled, Simulation};
 use crate::appearance::{Appearance, Appearances, SceneObject, lane_color};
 use crate::config::Obstacle;
@@ -91,7 +92,9 @@ impl Simulation {
             None
         };
         for car in &mut self.cars {
-            if !car.devices.any_enabled() {
+            if !car.devices.any_enabled()
+                || car.energy.as_ref().is_some_and(EnergyMeter::powered_off)
+            {
                 continue;
             }
             let s = self.world.vehicle(car.id)?.state();

@@ -45,11 +45,20 @@ pub(crate) struct EnergyMeter {
     params: EnergyParams<f64>,
     engine: EngineParams<f64>,
     report: EnergyReport,
+    /// True if the battery is Webots' Robot battery: empty, it powers the controller off.
+    powers_controller: bool,
 }
 
 impl EnergyMeter {
     /// A meter for a car of `engine` with `params`, its battery at `soc` (clamped to [0, 1]).
-    pub(crate) fn new(params: EnergyParams<f64>, engine: EngineParams<f64>, soc: f64) -> Self {
+    /// With `powers_controller`, the battery is Webots' Robot battery
+    /// ([`EnergyMeter::powered_off`]).
+    pub(crate) fn new(
+        params: EnergyParams<f64>,
+        engine: EngineParams<f64>,
+        soc: f64,
+        powers_controller: bool,
+    ) -> Self {
         let soc = if params.battery.is_some() {
             soc.clamp(0.0, 1.0)
         } else {
@@ -62,7 +71,19 @@ impl EnergyMeter {
                 soc,
                 ..EnergyReport::default()
             },
+            powers_controller,
         }
+    }
+
+    /// The energy stored in the battery (J) at its state of charge; `None` without one.
+    pub(crate) fn stored_energy(&self) -> Option<f64> {
+        self.params.battery.map(|b| b.energy(self.report.soc))
+    }
+
+    /// True once the battery powering the controller is empty (Webots: the robot's
+    /// `battery` energy reached 0).
+    pub(crate) fn powered_off(&self) -> bool {
+        self.powers_controller && self.params.battery.is_some() && self.report.soc <= 0.0
     }
 
     /// What the car's powertrain did so far.
@@ -77,9 +98,15 @@ impl EnergyMeter {
             && self.report.soc <= 0.0
     }
 
-    /// Cuts the forward drive torque of `commands` if [`EnergyMeter::drained`].
+    /// Cuts the forward drive torque of `commands` if [`EnergyMeter::drained`], and all of
+    /// it (either way, speed control included) if [`EnergyMeter::powered_off`]: Webots sets
+    /// a powered-off robot's motors' available torque to 0.
     pub(crate) fn limit(&self, commands: &mut Commands<f64>) {
-        if self.drained() {
+        if self.powered_off() {
+            for w in Wheel::ALL {
+                commands.drive[w] = WheelDrive::Torque(0.0);
+            }
+        } else if self.drained() {
             for w in Wheel::ALL {
                 if let WheelDrive::Torque(t) = commands.drive[w]
                     && t > 0.0

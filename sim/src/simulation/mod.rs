@@ -8,6 +8,7 @@
 //! wheels), physics-only steps (`wb_robot_step` without the driver), and, when asked, the
 //! recording of every vehicle that gives a run's telemetry, metrics and replay.
 
+mod battery;
 mod devices;
 mod energy;
 mod lanes;
@@ -21,6 +22,7 @@ use vehicle_model::{ControlMode, Driver, Gear, ParamReport, Sensors};
 use std::sync::Arc;
 
 use crate::appearance::Appearances;
+use crate::battery_sensor::BatterySensor;
 use crate::car_builder::CarBuilder;
 use crate::devices::CarDevices;
 use crate::devices::GpsFrame;
@@ -70,6 +72,8 @@ struct Controlled {
     follower: Option<LaneFollower>,
     /// Its energy accounting, if asked for ([`CarBuilder::energy`]).
     energy: Option<EnergyMeter>,
+    /// Its controller's battery sensor.
+    battery_sensor: BatterySensor,
 }
 
 /// A robot's handle and name.
@@ -232,9 +236,10 @@ impl Simulation {
             .set_radar_cross_section(built.radar_cross_section)?;
         let mut devices = built.devices;
         devices.start_at(self.world.time_ms());
-        let energy = built
-            .energy
-            .map(|(params, soc)| EnergyMeter::new(params, built.driver.params().engine, soc));
+        let energy = built.energy.map(|(params, soc)| {
+            let engine = built.driver.params().engine;
+            EnergyMeter::new(params, engine, soc, built.powers_controller)
+        });
         self.cars.push(Controlled {
             id,
             driver: built.driver,
@@ -244,6 +249,7 @@ impl Simulation {
             keyboard: built.keyboard,
             follower: None,
             energy,
+            battery_sensor: BatterySensor::default(),
         });
         Ok((id, built.report))
     }
@@ -444,6 +450,10 @@ impl Simulation {
     fn run_drivers(&mut self, which: impl Fn(VehicleId) -> bool) -> Result<(), SimError> {
         let t = self.world.time();
         for car in self.cars.iter_mut().filter(|c| which(c.id)) {
+            // A stopped controller runs no more: the commands in force hold, without drive.
+            if car.energy.as_ref().is_some_and(EnergyMeter::powered_off) {
+                continue;
+            }
             let sensors = if car.sampled {
                 self.world.vehicle(car.id)?.sensors(t)
             } else {
@@ -494,6 +504,14 @@ impl Simulation {
             }
             self.refresh_devices()?;
             self.meter_energy()?;
+            for car in &mut self.cars {
+                // Webots refreshes no sensor of a robot whose battery is empty.
+                let meter = car.energy.as_ref();
+                if !meter.is_some_and(EnergyMeter::powered_off) {
+                    let stored = meter.and_then(EnergyMeter::stored_energy);
+                    car.battery_sensor.refresh(now_ms, stored);
+                }
+            }
             if let Some(mut recording) = self.recording.take() {
                 recording.sample(self);
                 self.recording = Some(recording);
@@ -518,6 +536,11 @@ impl Simulation {
                 .flatten()
                 .map(|g| car.driver.powertrain().gearbox().ratio(g));
             meter.step(commands, vehicle.state(), ratio, dt);
+            if meter.powered_off() {
+                let mut commands = *commands;
+                meter.limit(&mut commands);
+                self.world.vehicle_mut(car.id)?.set_commands(&commands);
+            }
         }
         Ok(())
     }

@@ -34,6 +34,7 @@ mod bodies;
 mod cone;
 mod devices;
 pub mod diagnostics;
+mod energy;
 mod error;
 mod lane_programme;
 mod looks;
@@ -65,6 +66,7 @@ use crate::simulation::{DURATION_RULE, is_duration};
 use crate::world::CONE_COLOR;
 
 pub use diagnostics::{WorldFileErrors, parse_all};
+pub use energy::WebotsBattery;
 pub use error::{Location, NameSet, WorldFileError, WorldFileErrorKind, WorldWarning};
 pub use numbers::{Setting, parse_with_numbers, parse_with_settings};
 pub use overrides::KeyPath;

@@ -13,13 +13,14 @@ use vehicle_model::{
 };
 
 use super::devices::{DEVICE, read_devices};
+use super::energy::WebotsBattery;
 use super::error::{
     NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, closest, model_names,
 };
 use super::lane_programme::read_lane_programme;
 use super::programme::{PROGRAMME, read_car_keys, read_car_programme};
 use super::read::{Section, as_f64, describe};
-use super::{aero, losses, tyre};
+use super::{aero, energy, losses, tyre};
 use crate::devices::DeviceSpec;
 use crate::error::ParamError;
 use crate::keyboard::KeyPress;
@@ -43,11 +44,13 @@ const BRAKE_BALANCES: [(&str, BrakeBalance<f64>); 2] = [
 ];
 
 /// The keys of `[vehicle]` that are neither Webots fields nor wheel slots.
-const OWN_KEYS: [&str; 14] = [
+const OWN_KEYS: [&str; 16] = [
     "model",
     aero::KEY,
     losses::KEY,
-    ENERGY,
+    energy::ENERGY,
+    energy::BATTERY,
+    energy::MOTOR,
     "color",
     "recognitionColors",
     "tyre",
@@ -59,9 +62,6 @@ const OWN_KEYS: [&str; 14] = [
     SEED,
     RADAR_CROSS_SECTION,
 ];
-
-/// The key of a car's energy accounting in `[vehicle]` (a boolean).
-const ENERGY: &str = "energy";
 
 /// The key of the car solid's `radarCrossSection` (m²) in `[vehicle]`.
 const RADAR_CROSS_SECTION: &str = "radarCrossSection";
@@ -113,8 +113,16 @@ pub struct CarDescription {
     /// (the default, `losses = "webots"`): Webots' `wheelsDampingConstant` alone.
     pub road_load: Option<RoadLoad<f64>>,
     /// Its energy accounting (`energy = true`: the defaults of its `engineType`,
-    /// `EnergyParams::of_engine`, its battery full); `None` (the default): none.
+    /// `EnergyParams::of_engine`, its battery full; `[vehicle.battery]`, `[vehicle.motor]`
+    /// and Webots' `battery` field override them); `None` (the default): none.
     pub energy: Option<EnergyParams<f64>>,
+    /// Its battery's starting state of charge (dimensionless, in [0, 1]; 1 unless
+    /// `[vehicle.battery] state_of_charge` or Webots' `battery` field says otherwise).
+    pub state_of_charge: f64,
+    /// Webots' Robot `battery` field (`battery = [energy, maxEnergy, chargingRate]`), if
+    /// given: the traction battery then powers the controller, which Webots stops when
+    /// the energy reaches 0.
+    pub webots_battery: Option<WebotsBattery>,
 }
 
 impl CarDescription {
@@ -145,6 +153,8 @@ impl CarDescription {
                 aero: None,
                 road_load: None,
                 energy: None,
+                state_of_charge: 1.0,
+                webots_battery: None,
             },
             messages,
         ))
@@ -300,10 +310,7 @@ pub(crate) fn read_vehicle(
     let keys = read_car_keys(s)?;
     let devices = read_devices(s, model)?;
     let seed = s.unsigned(SEED)?.unwrap_or(0);
-    let energy = s
-        .boolean(ENERGY)?
-        .unwrap_or(false)
-        .then(|| EnergyParams::of_engine(&params.engine));
+    let energy = energy::read_energy(s, &params.engine)?;
     let radar_cross_section = s.number(RADAR_CROSS_SECTION)?.unwrap_or(0.0);
     ParamError::non_negative(RADAR_CROSS_SECTION, radar_cross_section).map_err(|e| {
         s.error(
@@ -326,7 +333,9 @@ pub(crate) fn read_vehicle(
         radar_cross_section,
         aero,
         road_load,
-        energy,
+        energy: energy.map(|e| e.params),
+        state_of_charge: energy.map_or(1.0, |e| e.soc),
+        webots_battery: energy.and_then(|e| e.webots),
     })
 }
 

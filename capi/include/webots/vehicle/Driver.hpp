@@ -8,7 +8,9 @@
 // Differences from Webots:
 // * Webots' Driver derives from webots::Supervisor (itself a webots::Robot). This simulator has
 //   no Supervisor or Robot C++ classes, so Driver derives from nothing; of the Robot methods it
-//   offers getTime(), getBasicTimeStep(), getNumberOfDevices() and the typed device getters of
+//   offers getTime(), getBasicTimeStep(), getNumberOfDevices(), the battery sensor
+//   (batterySensorEnable, batterySensorDisable, getBatterySensorSamplingPeriod,
+//   getBatteryValue) and the typed device getters of
 //   the sensors this simulator has (getGPS, getInertialUnit, getGyro, getAccelerometer,
 //   getCompass, getDistanceSensor, getRadar, getLidar, getCamera, getDisplay, getKeyboard, and
 //   the project extension's getRoadSensor; nullptr for a name the car lacks or a device of
@@ -113,6 +115,12 @@ namespace webots {
 
     // The number of devices (wb_robot_get_number_of_devices()).
     int getNumberOfDevices() { return wb_robot_get_number_of_devices(); }
+
+    // Webots' Robot battery sensor (wb_robot_battery_sensor_*): the battery's energy in J.
+    void batterySensorEnable(int samplingPeriod) { wb_robot_battery_sensor_enable(samplingPeriod); }
+    void batterySensorDisable() { wb_robot_battery_sensor_disable(); }
+    int getBatterySensorSamplingPeriod() const { return wb_robot_battery_sensor_get_sampling_period(); }
+    double getBatteryValue() const { return wb_robot_battery_sensor_get_value(); }
     // The sensors of the car by name, owned by the Driver; nullptr if it has none of that type.
     GPS *getGPS(const std::string &name) { return device<GPS>(name, WB_NODE_GPS); }
     InertialUnit *getInertialUnit(const std::string &name) { return device<InertialUnit>(name, WB_NODE_INERTIAL_UNIT); }

@@ -52,6 +52,32 @@ public class Robot {
     return WebotsNative.robotGetBasicTimeStep();
   }
 
+  /**
+   * Samples the battery's energy every {@code samplingPeriod} ms ({@code wb_robot_battery_sensor_enable}): a car's
+   * traction battery when the world file accounts its energy.
+   */
+  public void batterySensorEnable(int samplingPeriod) {
+    WebotsNative.robotBatterySensorEnable(samplingPeriod);
+  }
+
+  /** Stops sampling the battery ({@code wb_robot_battery_sensor_disable}). */
+  public void batterySensorDisable() {
+    WebotsNative.robotBatterySensorDisable();
+  }
+
+  /** The battery sensor's period (ms), 0 when disabled. */
+  public int getBatterySensorSamplingPeriod() {
+    return WebotsNative.robotBatterySensorGetSamplingPeriod();
+  }
+
+  /**
+   * The battery's energy at the last sample (J); NaN before the first sample and without a battery. When the energy of
+   * Webots' {@code battery} field reaches 0 the controller is stopped: {@code step} returns -1 from then on.
+   */
+  public double getBatteryValue() {
+    return WebotsNative.robotBatterySensorGetValue();
+  }
+
   /** The keyboard (the keys the world's programme presses). */
   public Keyboard getKeyboard() {
     return keyboard;

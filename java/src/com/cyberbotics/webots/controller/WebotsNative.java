@@ -23,6 +23,10 @@ final class WebotsNative {
   static native int robotStep(int duration);
   static native double robotGetTime();
   static native double robotGetBasicTimeStep();
+  static native void robotBatterySensorEnable(int period);
+  static native void robotBatterySensorDisable();
+  static native int robotBatterySensorGetSamplingPeriod();
+  static native double robotBatterySensorGetValue();
   static native int robotGetNumberOfDevices();
   static native int robotGetDeviceByIndex(int index);
   static native int robotGetDevice(String name);
