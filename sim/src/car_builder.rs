@@ -5,7 +5,9 @@
 
 use proto_geom::SensorSlots;
 use vehicle_model::energy::EnergyParams;
-use vehicle_model::{Aero, BrakeBalance, CarParams, Driver, Model, ParamReport, RoadLoad};
+use vehicle_model::{
+    Aero, BrakeBalance, CarParams, Driver, DrivelineModel, Model, ParamReport, RoadLoad,
+};
 
 use crate::devices::{CarDevices, DeviceSpec};
 use crate::keyboard::{KeyPress, Keyboard};
@@ -63,6 +65,8 @@ pub struct CarBuilder {
     road_load: Option<RoadLoad<f64>>,
     /// Its energy accounting and its battery's starting charge, `None` for none.
     energy: Option<(EnergyParams<f64>, f64)>,
+    /// How its driven wheels are driven in torque mode.
+    driveline: DrivelineModel,
 }
 
 /// A car built from a [`CarBuilder`]: its driver, its body and where it starts.
@@ -101,6 +105,7 @@ impl CarBuilder {
             aero: None,
             road_load: None,
             energy: None,
+            driveline: DrivelineModel::Inertial,
         }
     }
 
@@ -134,6 +139,16 @@ impl CarBuilder {
     #[must_use]
     pub fn mounting(mut self, mounting: Mounting) -> Self {
         self.mounting = mounting;
+        self
+    }
+
+    /// How its driven wheels are driven in torque mode: by default
+    /// [`DrivelineModel::Inertial`], the engine's inertia turning with them (no launch
+    /// chatter, COMPATIBILITY.md); [`DrivelineModel::Webots`] for Webots' wheel-acceleration
+    /// limiter exactly.
+    #[must_use]
+    pub fn driveline(mut self, model: DrivelineModel) -> Self {
+        self.driveline = model;
         self
     }
 
@@ -269,6 +284,7 @@ impl CarBuilder {
         }
         let devices = CarDevices::build(&self.devices, self.slots.as_ref(), self.seed)?;
         let (mut driver, report) = Driver::new(self.params, step_ms);
+        driver.set_driveline_model(self.driveline);
         driver
             .set_brake_balance(self.brake_balance)
             .map_err(SimError::BrakeBalance)?;
@@ -312,6 +328,7 @@ impl From<&CarDescription> for CarBuilder {
             aero: car.aero,
             road_load: car.road_load,
             energy: car.energy.map(|e| (e, 1.0)),
+            driveline: DrivelineModel::Inertial,
         }
     }
 }

@@ -117,8 +117,12 @@ fn run(sim: &mut Simulation, steps: f64) {
 fn launch_report() {
     let seconds: f64 = std::env::var("LAUNCH_SECONDS").map_or(8.0, |s| s.parse().unwrap());
     let dt_ms: u32 = std::env::var("LAUNCH_DT_MS").map_or(10, |s| s.parse().unwrap());
+    let only = std::env::var("LAUNCH_MODELS").unwrap_or_default();
     for mounting in [Mounting::Cast, Mounting::Joints] {
         for model in Model::ALL {
+            if !only.is_empty() && !only.split(',').any(|m| m == model.to_string()) {
+                continue;
+            }
             for mu in [0.5, 1.0, 1.5] {
                 let l = launch(model, mu, mounting, dt_ms, seconds);
                 println!(

@@ -1,7 +1,7 @@
 //! One driver step (Webots `wbu_driver_step`, spec §2), in Webots' order.
 
 use ackermann::{PerWheel, Real};
-use powertrain::{Gear, split_torque};
+use powertrain::{DrivelineModel, Gear, split_torque};
 
 use super::Driver;
 use crate::io::{Commands, Sensors};
@@ -16,8 +16,10 @@ impl<T: Real> Driver<T> {
     ///
     /// Order (spec §2): indicators from the blink clock; wipers; backwards light; wheel speeds
     /// (finite differences, one step behind); engine speed; in torque mode the limited-slip
-    /// update and the wheel torques (engine model × throttle × gear ratio, acceleration limiter,
-    /// geometric differential with limited slip); brake torques; engine sound.
+    /// update and the wheel torques (engine model × throttle × gear ratio, acceleration limiter
+    /// in [`DrivelineModel::Webots`], geometric differential with limited slip); brake torques;
+    /// engine sound. In [`DrivelineModel::Inertial`] the commands also carry the engine's
+    /// inertia on the driven wheels ([`Commands::driveline_inertia`](crate::Commands)).
     ///
     /// Non-finite readings count as "no sample": the time and steering angles keep their last
     /// values, a wheel without a sample has no speed. All returned numbers are finite.
@@ -78,12 +80,14 @@ impl<T: Real> Driver<T> {
         // 6. Torque mode: limited slip, then the wheel torques.
         let torques = if self.mode == ControlMode::Torque {
             self.limited_slip.update(self.car.drive, &speeds);
-            let out = powertrain.output_torque(
-                self.rpm,
-                self.throttle,
-                self.gear,
-                self.wheel_speeds.max_acceleration(),
-            );
+            // With the engine's inertia on the driven wheels, that inertia bounds their
+            // spin-up; Webots' limiter, a delayed on/off switch of the torque, is left out.
+            let limiter_input = match self.driveline_model {
+                DrivelineModel::Webots => self.wheel_speeds.max_acceleration(),
+                DrivelineModel::Inertial => T::ZERO,
+            };
+            let out =
+                powertrain.output_torque(self.rpm, self.throttle, self.gear, limiter_input);
             split_torque(out, self.car.drive, &self.limited_slip.apply(&self.ratios))
         } else {
             PerWheel::splat(T::ZERO)
