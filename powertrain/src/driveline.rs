@@ -1,7 +1,7 @@
 //! The rotating inertia of the engine and driveline, as the driven wheels feel it through a
 //! closed clutch: what bounds a driven wheel's spin-up in a real car (issue #35).
 
-use ackermann::Real;
+use ackermann::{DriveType, PerWheel, Real, Wheel};
 
 /// Wong's rotational-mass coefficient of the engine side (dimensionless): J. Y. Wong, *Theory
 /// of Ground Vehicles* (4th ed., 2008), §3.1, gives the mass factor of a passenger car as
@@ -25,7 +25,10 @@ pub enum DrivelineModel {
     /// their inertia, reflected through the gear ratio, is added to the driven wheels'
     /// ([`Driveline::wheel_inertia`]) and the host integrates it with the wheel (implicitly,
     /// with the tyre), so a wheel past its grip spins up at the rate the engine's inertia
-    /// allows; the limiter is not applied. The torque of a wheel that holds is Webots'.
+    /// allows; the limiter is not applied. The engine speed is read off the driven wheels
+    /// ([`engine_side_speeds`]), which it turns with, and the torque meets `engineMaxRPM` on a
+    /// governor's droop line ([`governor_factor`]) rather than being cut there. Below the
+    /// droop, the torque of a wheel that holds is Webots' for the same engine speed.
     Inertial,
 }
 
@@ -88,6 +91,52 @@ impl<T: Real> Driveline<T> {
     }
 }
 
+/// The governor's droop (dimensionless share of `engineMaxRPM`): in
+/// [`DrivelineModel::Inertial`] the full-throttle torque falls linearly to 0 over the last
+/// 5 % of the engine speed below `engineMaxRPM` ([`governor_factor`]), as an engine governor's
+/// droop line does (the regulation of engine governors is a few per cent to 10 % of rated
+/// speed), where Webots cuts it from full to 0 at `engineMaxRPM`. With the engine's inertia
+/// on the wheels that cut is a delayed on/off switch again, at the top of every gear a spinning
+/// wheel reaches: the engine speed bounces on it. On the droop line the engine speed's error
+/// is multiplied by `1 − g` each step, `g = T·dt/(J_e·0.05·ω_max)` (`T` the engine torque
+/// there, N·m; `dt` the step, s; `ω_max` the maximum engine speed, rad/s), since the torque
+/// follows the speed the driver read at the end of the last step: it settles monotonically
+/// for `g ≤ 1` — every shipped model at 10 ms (`g` ≤ 0.41) and most at 32 ms — and with a
+/// decaying alternation for `1 < g < 2` (the Car, LincolnMKZ and MercedesBenzSprinter at
+/// 32 ms, `g` = 1.15–1.31).
+pub const GOVERNOR_DROOP: f64 = 0.05;
+
+/// The factor (dimensionless, in [0, 1]) the engine torque is multiplied by at engine speed
+/// `rpm` (rpm) for an engine of maximum speed `max_rpm` (rpm, > 0) in
+/// [`DrivelineModel::Inertial`]: 1 up to `(1 − GOVERNOR_DROOP)·max_rpm`, then falling
+/// linearly to 0 at `max_rpm`. 1 for a NaN engine speed (the torque is then 0 elsewhere).
+pub fn governor_factor<T: Real>(rpm: T, max_rpm: T) -> T {
+    let band = T::from_f64(GOVERNOR_DROOP) * max_rpm;
+    let factor = (max_rpm - rpm) / band;
+    if factor.is_nan() {
+        T::ONE
+    } else {
+        factor.clamp(T::ZERO, T::ONE)
+    }
+}
+
+/// The wheel speeds (rad/s) the engine-speed estimate reads in [`DrivelineModel::Inertial`]:
+/// every wheel at the mean of the driven wheels' speeds, so that
+/// [`Powertrain::rpm`](crate::Powertrain::rpm)'s mean of four is the speed the engine turns
+/// at through the closed clutch. (Webots' mean of all four wheels reads a driven wheel
+/// spinning in the air at half its speed on a two-wheel-drive car: the engine would give
+/// torque beyond `engineMaxRPM` and power beyond `engineMaxPower`, into the inertia it now
+/// turns.) NaN if a driven wheel's speed is NaN.
+pub fn engine_side_speeds<T: Real>(wheel_speeds: &PerWheel<T>, drive: DriveType) -> PerWheel<T> {
+    let (sum, count) = Wheel::ALL
+        .into_iter()
+        .filter(|&w| drive.drives(w))
+        .fold((T::ZERO, T::ZERO), |(s, n), w| {
+            (s + wheel_speeds[w], n + T::ONE)
+        });
+    PerWheel::splat(sum / count)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -108,8 +157,42 @@ mod tests {
     }
 
     #[test]
+    fn engine_side_speeds_are_the_driven_wheels_mean() {
+        // Front-driven: (10 + 30)/2 = 20 rad/s on every wheel; the rear wheels do not count.
+        let w = PerWheel::new(10.0_f64, 30.0, 2.0, 2.0);
+        assert_eq!(
+            engine_side_speeds(&w, DriveType::Traction),
+            PerWheel::splat(20.0)
+        );
+        assert_eq!(
+            engine_side_speeds(&w, DriveType::Propulsion),
+            PerWheel::splat(2.0)
+        );
+        assert_eq!(
+            engine_side_speeds(&w, DriveType::FourByFour),
+            PerWheel::splat(11.0)
+        );
+    }
+
+    #[test]
+    fn governor_droop() {
+        // engineMaxRPM 6000: full torque to 5700 rpm, half at 5850, none from 6000.
+        assert_eq!(governor_factor(5700.0_f64, 6000.0), 1.0);
+        assert_eq!(governor_factor(1000.0_f64, 6000.0), 1.0);
+        assert!((governor_factor(5850.0_f64, 6000.0) - 0.5).abs() < 1e-12);
+        assert_eq!(governor_factor(6000.0_f64, 6000.0), 0.0);
+        assert_eq!(governor_factor(7000.0_f32, 6000.0), 0.0);
+        assert_eq!(governor_factor(f64::NAN, 6000.0), 1.0);
+    }
+
+    #[test]
     fn refuses_implausible_input() {
-        for (m, r) in [(0.0, 0.3), (-1.0, 0.3), (1e3, f64::NAN), (f64::INFINITY, 0.3)] {
+        for (m, r) in [
+            (0.0, 0.3),
+            (-1.0, 0.3),
+            (1e3, f64::NAN),
+            (f64::INFINITY, 0.3),
+        ] {
             assert_eq!(Driveline::from_mass_factor(m, r), None);
         }
     }

@@ -6,7 +6,7 @@
 use proto_geom::SensorSlots;
 use vehicle_model::energy::EnergyParams;
 use vehicle_model::{
-    Aero, BrakeBalance, CarParams, Driver, DrivelineModel, Model, ParamReport, RoadLoad,
+    Aero, BrakeBalance, CarParams, DrivelineModel, Driver, Model, ParamReport, RoadLoad,
 };
 
 use crate::devices::{CarDevices, DeviceSpec};

@@ -305,7 +305,10 @@ impl World {
             energy += 0.5 * springs.stiffness * x * x;
         }
         if !vehicle.on_joints() {
-            for (w, omega) in vehicle_model::Wheel::ALL.into_iter().zip(state.wheel_speeds.0) {
+            for (w, omega) in vehicle_model::Wheel::ALL
+                .into_iter()
+                .zip(state.wheel_speeds.0)
+            {
                 // The engine's share turns with a torque-driven wheel.
                 let inertia = vehicle.spin_inertia(w);
                 energy += 0.5 * inertia * omega * omega;

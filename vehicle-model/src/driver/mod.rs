@@ -280,12 +280,21 @@ impl<T: Real> Driver<T> {
             && !self.gear.is_neutral();
         let share = match (engaged, self.car.driveline) {
             (true, Some(d)) => {
-                let driven = Wheel::ALL.iter().filter(|&&w| self.car.drive.drives(w)).count();
+                let driven = Wheel::ALL
+                    .iter()
+                    .filter(|&&w| self.car.drive.drives(w))
+                    .count();
                 d.wheel_inertia(self.car.powertrain.gearbox().ratio(self.gear), driven)
             }
             _ => T::ZERO,
         };
-        PerWheel::from_fn(|w| if self.car.drive.drives(w) { share } else { T::ZERO })
+        PerWheel::from_fn(|w| {
+            if self.car.drive.drives(w) {
+                share
+            } else {
+                T::ZERO
+            }
+        })
     }
 
     /// The commands implied by the current state, the torque-mode wheel torques `torques`
