@@ -25,8 +25,9 @@ pub enum DrivelineModel {
     /// their inertia, reflected through the gear ratio, is added to the driven wheels'
     /// ([`Driveline::wheel_inertia`]) and the host integrates it with the wheel (implicitly,
     /// with the tyre), so a wheel past its grip spins up at the rate the engine's inertia
-    /// allows; the limiter is not applied. The engine speed is read off the driven wheels
-    /// ([`engine_side_speeds`]), which it turns with, and the torque meets `engineMaxRPM` on a
+    /// allows; the limiter is not applied. The engine's torque is taken at the driven
+    /// wheels' speed ([`engine_side_speeds`]), which it turns with (the reported rpm stays
+    /// Webots' mean of all four), and the torque meets `engineMaxRPM` on a
     /// governor's droop line ([`governor_factor`]) rather than being cut there. Below the
     /// droop, the torque of a wheel that holds is Webots' for the same engine speed.
     Inertial,
@@ -120,10 +121,10 @@ pub fn governor_factor<T: Real>(rpm: T, max_rpm: T) -> T {
     }
 }
 
-/// The wheel speeds (rad/s) the engine-speed estimate reads in [`DrivelineModel::Inertial`]:
-/// every wheel at the mean of the driven wheels' speeds, so that
+/// The wheel speeds (rad/s) the engine turns with in [`DrivelineModel::Inertial`]: every
+/// wheel at the mean of the driven wheels' speeds, so that
 /// [`Powertrain::rpm`](crate::Powertrain::rpm)'s mean of four is the speed the engine turns
-/// at through the closed clutch. (Webots' mean of all four wheels reads a driven wheel
+/// at through the closed clutch (the driver still reports Webots' estimate as its rpm). (Webots' mean of all four wheels reads a driven wheel
 /// spinning in the air at half its speed on a two-wheel-drive car: the engine would give
 /// torque beyond `engineMaxRPM` and power beyond `engineMaxPower`, into the inertia it now
 /// turns.) NaN if a driven wheel's speed is NaN.

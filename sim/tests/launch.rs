@@ -116,7 +116,8 @@ fn launch(model: Model, mu: f64, run_as: Run) -> Launch {
         }
         let driver = sim.driver(id).unwrap();
         let g = driver.gear().map_or(0, |g| g.number());
-        let rpm = driver.rpm().unwrap_or(0.0);
+        // The speed the engine turns at (Webots' estimate with its limiter).
+        let rpm = driver.engine_rpm();
         if g != gear {
             (gear, turns) = (g, Turns::new(swing));
         }

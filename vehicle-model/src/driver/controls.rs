@@ -406,4 +406,17 @@ impl<T: Real> Driver<T> {
     pub fn driveline_model(&self) -> DrivelineModel {
         self.driveline_model
     }
+
+    /// The speed the engine turns at (rpm, ≥ 0), from the last step: Webots' estimate
+    /// ([`Driver::rpm`], the mean of the four wheels) in [`DrivelineModel::Webots`], the mean
+    /// of the driven wheels × the gear's ratio in [`DrivelineModel::Inertial`], where the
+    /// engine turns with them; the torque, the governor and the automatic gearbox work from
+    /// it. 0 in neutral and in speed mode. Not in Webots.
+    pub fn engine_rpm(&self) -> T {
+        if self.mode == ControlMode::Speed {
+            T::ZERO
+        } else {
+            self.engine_rpm
+        }
+    }
 }

@@ -111,7 +111,12 @@ pub struct Driver<T: Real> {
     hazard_flashers: bool,
     dipped_beams: bool,
     lights: Lights,
+    /// Webots' engine-speed estimate (rpm): the mean of the four wheels × the ratio.
     rpm: T,
+    /// The speed the engine turns at (rpm): `rpm` in [`DrivelineModel::Webots`], the driven
+    /// wheels' mean × the ratio in [`DrivelineModel::Inertial`]. The torque, the governor and
+    /// the automatic gearbox work from it.
+    engine_rpm: T,
     wipers: Option<Wipers<T>>,
 
     indicator_period: T,
@@ -171,6 +176,7 @@ impl<T: Real> Driver<T> {
             dipped_beams: false,
             lights: Lights::OFF,
             rpm: T::ZERO,
+            engine_rpm: T::ZERO,
             wipers,
             indicator_period: T::from_f64(DEFAULT_INDICATOR_PERIOD),
             indicator_auto_disabling: true,

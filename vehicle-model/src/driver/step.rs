@@ -18,8 +18,9 @@ impl<T: Real> Driver<T> {
     /// (finite differences, one step behind); engine speed; in torque mode the limited-slip
     /// update and the wheel torques (engine model × throttle × gear ratio, acceleration limiter
     /// in [`DrivelineModel::Webots`], geometric differential with limited slip); brake torques;
-    /// engine sound. In [`DrivelineModel::Inertial`] the engine speed is the driven wheels'
-    /// (not the mean of all four), the limiter is replaced by the governor's droop below
+    /// engine sound. In [`DrivelineModel::Inertial`] the engine turns at the driven wheels'
+    /// speed ([`Driver::engine_rpm`]; [`Driver::rpm`] stays Webots' mean of all four), the
+    /// limiter is replaced by the governor's droop below
     /// `engineMaxRPM`, and the commands carry the engine's inertia on the driven wheels
     /// ([`Commands::driveline_inertia`](crate::Commands)).
     ///
@@ -67,21 +68,23 @@ impl<T: Real> Driver<T> {
         let speeds = self.wheel_speeds.speeds();
 
         // 5. Engine speed, every step in every mode (plus the optional automatic gearbox):
-        // Webots' mean of the four wheels, or, with the engine turning with the driven wheels,
-        // theirs.
+        // Webots' estimate from the mean of the four wheels, reported as the rpm; with the
+        // engine turning with the driven wheels, the speed it turns at is theirs.
         let powertrain = &self.car.powertrain;
         let engine_speeds = match self.driveline_model {
             DrivelineModel::Webots => speeds,
             DrivelineModel::Inertial => engine_side_speeds(&speeds, self.car.drive),
         };
-        self.rpm = powertrain.rpm(&engine_speeds, self.gear);
+        self.rpm = powertrain.rpm(&speeds, self.gear);
+        self.engine_rpm = powertrain.rpm(&engine_speeds, self.gear);
         if self.mode == ControlMode::Torque
             && let Some(auto) = &mut self.auto_shift
         {
             let dt = dt_ms / T::from_f64(super::MS_PER_S);
-            if let Some(gear) = auto.update(dt, self.rpm, self.gear, powertrain.gearbox()) {
+            if let Some(gear) = auto.update(dt, self.engine_rpm, self.gear, powertrain.gearbox()) {
                 self.gear = gear;
-                self.rpm = powertrain.rpm(&engine_speeds, gear);
+                self.rpm = powertrain.rpm(&speeds, gear);
+                self.engine_rpm = powertrain.rpm(&engine_speeds, gear);
             }
         }
 
@@ -95,11 +98,16 @@ impl<T: Real> Driver<T> {
                 DrivelineModel::Webots => (self.wheel_speeds.max_acceleration(), T::ONE),
                 DrivelineModel::Inertial => (
                     T::ZERO,
-                    governor_factor(self.rpm, powertrain.engine().max_rpm()),
+                    governor_factor(self.engine_rpm, powertrain.engine().max_rpm()),
                 ),
             };
             let out = governor
-                * powertrain.output_torque(self.rpm, self.throttle, self.gear, limiter_input);
+                * powertrain.output_torque(
+                    self.engine_rpm,
+                    self.throttle,
+                    self.gear,
+                    limiter_input,
+                );
             split_torque(out, self.car.drive, &self.limited_slip.apply(&self.ratios))
         } else {
             PerWheel::splat(T::ZERO)
