@@ -15,8 +15,9 @@ pub const ENGINE_MASS_FACTOR: f64 = 0.0025;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub enum DrivelineModel {
     /// Webots' driver library exactly: the wheels carry only their own inertia and the output
-    /// torque is scaled by the wheel-acceleration limiter ([`acceleration_limit_factor`]
-    /// (crate::acceleration_limit_factor)). A wheel spinning past its grip makes the limiter
+    /// torque is scaled by the wheel-acceleration limiter
+    /// ([`acceleration_limit_factor`](crate::acceleration_limit_factor)). A wheel spinning past
+    /// its grip makes the limiter
     /// switch the torque on and off from one step to the next (issue #35). The default: what a
     /// controller on Webots itself gets.
     #[default]
