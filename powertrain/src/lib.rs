@@ -66,6 +66,7 @@
 
 mod auto_shift;
 mod brake;
+mod driveline;
 mod engine;
 mod error;
 mod gearbox;
@@ -75,6 +76,10 @@ mod split;
 
 pub use auto_shift::{AutoShift, AutoShiftParams};
 pub use brake::{Brake, DEFAULT_BRAKE_COEFFICIENT, coulomb_torque};
+pub use driveline::{
+    Driveline, DrivelineModel, ENGINE_MASS_FACTOR, GOVERNOR_DROOP, engine_side_speeds,
+    governor_factor,
+};
 pub use engine::{Engine, EngineParams, EngineType};
 pub use error::{Field, PowertrainError};
 pub use gearbox::{Gear, GearSelection, GearWarning, Gearbox};

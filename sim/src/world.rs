@@ -305,8 +305,12 @@ impl World {
             energy += 0.5 * springs.stiffness * x * x;
         }
         if !vehicle.on_joints() {
-            for (w, omega) in state.wheel_speeds.0.iter().enumerate() {
-                let inertia = spec.wheels.0[w].spin_inertia();
+            for (w, omega) in vehicle_model::Wheel::ALL
+                .into_iter()
+                .zip(state.wheel_speeds.0)
+            {
+                // The engine's share turns with a torque-driven wheel.
+                let inertia = vehicle.spin_inertia(w);
                 energy += 0.5 * inertia * omega * omega;
             }
         }
