@@ -212,6 +212,39 @@ impl VecSim {
         write_flags(py, &mut self.flags, &self.terminated, &terminated)?;
         write_flags(py, &mut self.flags, &self.truncated, &truncated)
     }
+
+    /// Steps the batch `steps` times from Rust with the actions of the last `step` call (zero
+    /// before), resetting each environment whose episode ended to `start` (x m, y m, yaw rad,
+    /// speed m/s, lead speed m/s) as the autoreset does; returns the wall time taken (s).
+    /// `python/bench/gym_step.py` times the same steps through `step()` in the same process:
+    /// the difference is the cost of the Python layers.
+    fn bench_steps(&mut self, steps: u64, start: [f64; START_LEN]) -> PyResult<f64> {
+        let begin = std::time::Instant::now();
+        self.starts.fill(start_of(&start));
+        for _ in 0..steps {
+            for (r, (t, u)) in self
+                .reset
+                .iter_mut()
+                .zip(self.terminated.iter().zip(&self.truncated))
+            {
+                *r = *t || *u;
+            }
+            self.batch
+                .step(
+                    &self.actions,
+                    &self.reset,
+                    &self.starts,
+                    StepOut {
+                        observations: &mut self.observations,
+                        rewards: &mut self.rewards,
+                        terminated: &mut self.terminated,
+                        truncated: &mut self.truncated,
+                    },
+                )
+                .map_err(batch_error)?;
+        }
+        Ok(begin.elapsed().as_secs_f64())
+    }
 }
 
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

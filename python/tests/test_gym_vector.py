@@ -3,6 +3,8 @@ same seed and actions, bit for bit (observations, rewards, flags), including acr
 NEXT_STEP autoreset; gymnasium's make_vec builds it; its batches lie in its spaces; bad
 actions are refused."""
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -104,3 +106,14 @@ def test_bad_arguments_are_refused():
         wvgym.VectorEnv("Drift", num_envs=2)
     with pytest.raises(ValueError, match="num_envs"):
         wvgym.VectorEnv("ACC", num_envs=0)
+
+
+def test_the_readme_training_loop_runs():
+    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text(encoding="utf-8")
+    section = readme.split("### The vector environment", 1)[1]
+    code = section.split("```python\n", 1)[1].split("```", 1)[0]
+    assert len(code.strip().splitlines()) <= 15
+    scope: dict = {}
+    exec(compile(code, "python/README.md", "exec"), scope)
+    # 3 generations of 8 policies, 100 steps each: a best policy was kept.
+    assert scope["best"].shape == (2, 11) and np.isfinite(scope["best_return"])
