@@ -45,6 +45,10 @@ built (bit for bit the same state), then places the car from the episode's rando
 (from ``seed``) or from ``options``: ``{"pose": (x, y, yaw), "speed": v}`` (m, rad, m/s;
 ACC also ``"lead_speed"``). The same seed gives the same trajectory for the same actions.
 
+**Vectorised**: :class:`VectorEnv` (``gymnasium.make_vec(id, num_envs,
+vectorization_mode="vector_entry_point")``) steps many copies of a world in Rust with one call
+on numpy arrays; each copy equals the single environment bit for bit.
+
 **Render**: ``render_mode="rgb_array"``: a 128×128 top-down image centred on the car
 (0.5 m per pixel, north up): the car red, other cars blue, the lane's markings (LaneKeep)
 not drawn.
