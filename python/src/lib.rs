@@ -12,6 +12,8 @@
 //!   the controller's world, for `controller.Supervisor` (module `supervisor`).
 //! * `Sweep`, the core of `webots_vehicle.Sweep`: a sweep file's cases by index, each run into
 //!   the row `vehicle-sim sweep` writes for it (module `sweep`).
+//! * `VecSim`, the core of `webots_vehicle.gym.VectorEnv`: many copies of a gym world stepped
+//!   with one call on numpy arrays (module `vec_env`).
 //!
 //! Units: m, rad (positive steers right), rad/s, s; km/h and ms where the Webots API uses them.
 
@@ -26,6 +28,7 @@ mod snapshot;
 mod supervisor;
 mod sweep;
 mod telemetry;
+mod vec_env;
 mod webots;
 
 use pyo3::prelude::*;
@@ -67,5 +70,6 @@ fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     supervisor::register(m)?;
     sweep::register(m)?;
     telemetry::register(m)?;
+    vec_env::register(m)?;
     Ok(())
 }

@@ -102,6 +102,7 @@ pub mod scenario;
 pub mod sweep;
 pub mod telemetry;
 pub mod traffic;
+pub mod vec_env;
 pub mod world_file;
 
 mod config;

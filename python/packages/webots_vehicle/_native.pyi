@@ -5,7 +5,7 @@ stderr, same values), and the core of :class:`webots_vehicle.Simulation`. C ``bo
 ``int`` 0/1 here. Units: rad (positive steers right), km/h, rpm, m, rad/s, s; ms for steps.
 """
 
-from typing import Any, List, Optional, Tuple, Union
+from typing import Any, List, Optional, Sequence, Tuple, Union
 
 TELEMETRY_COLUMNS: int
 
@@ -303,3 +303,34 @@ class TelemetryRows:
     samples x columns, C order); it keeps that memory alive."""
 
     def __len__(self) -> int: ...
+
+
+class VecSim:
+    """``num_envs`` copies of a gym world stepped in Rust (``webots_vehicle.gym.VectorEnv``).
+    Arrays are numpy, C order: float64 actions (N, 2) and starts (N, 5: x m, y m, yaw rad,
+    speed m/s, lead speed m/s), float32 observations (N, m), float64 rewards (N), flags as
+    uint8 views of bool arrays (N)."""
+
+    def __init__(self, world: str, task: str, num_envs: int, frame_skip: int) -> None: ...
+    @property
+    def num_envs(self) -> int: ...
+    @property
+    def observation_len(self) -> int: ...
+    @property
+    def dt(self) -> float:
+        """Simulated time per step (s)."""
+    def time(self, i: int) -> float:
+        """Simulated time of copy ``i`` (s)."""
+    def reset(self, i: int, start: Sequence[float], observations: Any) -> None: ...
+    def step(
+        self,
+        actions: Any,
+        reset: Any,
+        starts: Any,
+        observations: Any,
+        rewards: Any,
+        terminated: Any,
+        truncated: Any,
+    ) -> None: ...
+    def bench_steps(self, steps: int, start: Sequence[float]) -> float:
+        """``steps`` steps timed in Rust (s), for python/bench/gym_step.py."""

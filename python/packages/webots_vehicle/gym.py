@@ -45,25 +45,35 @@ built (bit for bit the same state), then places the car from the episode's rando
 (from ``seed``) or from ``options``: ``{"pose": (x, y, yaw), "speed": v}`` (m, rad, m/s;
 ACC also ``"lead_speed"``). The same seed gives the same trajectory for the same actions.
 
+**Vectorised**: :class:`VectorEnv` (``gymnasium.make_vec(id, num_envs,
+vectorization_mode="vector_entry_point")``) steps many copies of a world in Rust with one call
+on numpy arrays; each copy equals the single environment bit for bit.
+
 **Render**: ``render_mode="rgb_array"``: a 128×128 top-down image centred on the car
 (0.5 m per pixel, north up): the car red, other cars blue, the lane's markings (LaneKeep)
 not drawn.
 """
 
+import functools
 import math
 from pathlib import Path
-from typing import Any, Callable, Dict, List, Optional, Tuple
+from typing import Any, Callable, Dict, List, Optional, Tuple, Union
 
 import gymnasium
+import gymnasium.vector
 import numpy as np
 from gymnasium import spaces
+from gymnasium.utils import seeding
+from gymnasium.vector.utils import batch_space
 
+from webots_vehicle import _native
 from webots_vehicle.simulation import Simulation
 
 __all__ = [
     "ACCEnv",
     "LaneKeepEnv",
     "TrackEnv",
+    "VectorEnv",
     "VehicleEnv",
     "acc_reward",
     "lane_keep_reward",
@@ -81,6 +91,9 @@ MAX_ACCELERATION = 3.0
 MAX_SPEED = 40.0
 #: Radar targets in an observation.
 RADAR_TARGETS = 8
+
+#: An episode's start: x, y (m), yaw (rad), speed (m/s), the ACC lead's speed (m/s).
+Start = Tuple[float, float, float, float, float]
 
 RewardFn = Callable[["VehicleEnv", Dict[str, np.ndarray], np.ndarray], float]
 
@@ -131,7 +144,8 @@ class VehicleEnv(gymnasium.Env):
         self.render_mode = render_mode
         self.reward_fn: RewardFn = reward_fn or type(self).default_reward_fn
         self.frame_skip = int(frame_skip)
-        self.sim = Simulation(WORLDS / self.world)
+        # Observations read the car's last state (O(1)); a training run keeps no telemetry.
+        self.sim = Simulation(WORLDS / self.world, record=False)
         self.car = self.sim.cars[self.car_index]
         self.dt = self.sim.basic_time_step * self.frame_skip / 1000.0
         self.metadata = dict(self.metadata, render_fps=round(1.0 / self.dt))
@@ -140,26 +154,35 @@ class VehicleEnv(gymnasium.Env):
         self._rest_height = self.car.placement.translation[2]
         self._target = 0.0
         self.action_space = spaces.Box(-1.0, 1.0, shape=(2,), dtype=np.float32)
-        self.observation_space = spaces.Dict({"car": _box(5, 100.0), **self.extra_spaces()})
+        self.observation_space = self.single_observation_space()
 
     # What each environment adds.
-    def extra_spaces(self) -> Dict[str, spaces.Space]:
+    @classmethod
+    def extra_spaces(cls) -> Dict[str, spaces.Space]:
         return {}
+
+    @classmethod
+    def single_observation_space(cls) -> spaces.Dict:
+        """The observation space (the same for every instance)."""
+        return spaces.Dict({"car": _box(5, 100.0), **cls.extra_spaces()})
 
     def extra_observation(self) -> Dict[str, np.ndarray]:
         return {}
 
-    def start_pose(self, options: Dict[str, Any]) -> Tuple[float, float, float, float]:
-        """x, y (m), yaw (rad), speed (m/s) of the car at an episode's start: ``options``'
-        ``pose`` and ``speed``, else at rest where the world file puts it (each environment
-        draws its own)."""
+    @classmethod
+    def draw_start(cls, rng: np.random.Generator, options: Dict[str, Any]) -> Start:
+        """x, y (m), yaw (rad), speed (m/s) of the car at an episode's start and the ACC
+        lead's speed (m/s, 0 elsewhere): ``options``' ``pose``, ``speed`` (and
+        ``lead_speed``), else drawn from ``rng`` (each environment draws its own; here at
+        rest where the world file puts it). :class:`VectorEnv` draws with it too, so that a
+        vector environment's episodes start where the single environment's do."""
         x, y, yaw = options.get("pose", (0.0, 0.0, 0.0))
-        return float(x), float(y), float(yaw), float(options.get("speed", 0.0))
+        return float(x), float(y), float(yaw), float(options.get("speed", 0.0)), 0.0
 
     def is_terminated(self, obs: Dict[str, np.ndarray]) -> bool:
         return False
 
-    def setup_episode(self, options: Dict[str, Any]) -> None:
+    def setup_episode(self, start: Start) -> None:
         """Anything else an episode starts with (the ACC lead's speed)."""
 
     # The gymnasium API.
@@ -169,13 +192,14 @@ class VehicleEnv(gymnasium.Env):
         super().reset(seed=seed)
         options = dict(options or {})
         self.sim.restore(self._start)
-        x, y, yaw, speed = self.start_pose(options)
+        start = self.draw_start(self.np_random, options)
+        x, y, yaw, speed, _ = start
         self.car.set_pose([x, y, self._rest_height], [0.0, 0.0, 1.0, yaw])
         self.car.set_velocity([speed * math.cos(yaw), speed * math.sin(yaw), 0.0])
         self._target = float(np.clip(speed, 0.0, MAX_SPEED))
         self.car.set_cruising_speed(self._target * 3.6)
         self.car.set_steering_angle(0.0)
-        self.setup_episode(options)
+        self.setup_episode(start)
         # One step, so that the devices have their first sample.
         self.sim.step(1)
         return self._observation(), {"time": self.sim.time}
@@ -275,7 +299,8 @@ class LaneKeepEnv(VehicleEnv):
     world = "lane_keep.toml"
     default_reward_fn = staticmethod(lane_keep_reward)
 
-    def extra_spaces(self) -> Dict[str, spaces.Space]:
+    @classmethod
+    def extra_spaces(cls) -> Dict[str, spaces.Space]:
         return {"lane": _box(6, 100.0)}
 
     def extra_observation(self) -> Dict[str, np.ndarray]:
@@ -284,12 +309,15 @@ class LaneKeepEnv(VehicleEnv):
             return {"lane": np.zeros(6, dtype=np.float32)}
         return {"lane": _vector([r[3], r[4], r[5], r[6], r[11], 1.0], 100.0)}
 
-    def start_pose(self, options: Dict[str, Any]) -> Tuple[float, float, float, float]:
-        rng = self.np_random
+    @classmethod
+    def draw_start(cls, rng: np.random.Generator, options: Dict[str, Any]) -> Start:
+        # The draws are made whether or not ``options`` overrides them, so that the random
+        # sequence does not depend on the options.
         x, y, yaw = options.get(
             "pose", (20.0, -5.625 + rng.uniform(-0.5, 0.5), rng.uniform(-0.05, 0.05))
         )
-        return float(x), float(y), float(yaw), float(options.get("speed", rng.uniform(10, 20)))
+        speed = options.get("speed", rng.uniform(10, 20))
+        return float(x), float(y), float(yaw), float(speed), 0.0
 
     def is_terminated(self, obs: Dict[str, np.ndarray]) -> bool:
         offset, _, _, _, width, on_road = (float(v) for v in obs["lane"])
@@ -306,7 +334,8 @@ class ACCEnv(VehicleEnv):
     #: The lead's speed this episode (m/s).
     lead_speed = 0.0
 
-    def extra_spaces(self) -> Dict[str, spaces.Space]:
+    @classmethod
+    def extra_spaces(cls) -> Dict[str, spaces.Space]:
         return {
             "radar": spaces.Box(-1000.0, 1000.0, shape=(RADAR_TARGETS, 4), dtype=np.float32),
             "radar_mask": spaces.Box(0.0, 1.0, shape=(RADAR_TARGETS,), dtype=np.float32),
@@ -321,12 +350,14 @@ class ACCEnv(VehicleEnv):
             mask[i] = 1.0
         return {"radar": radar, "radar_mask": mask}
 
-    def start_pose(self, options: Dict[str, Any]) -> Tuple[float, float, float, float]:
+    @classmethod
+    def draw_start(cls, rng: np.random.Generator, options: Dict[str, Any]) -> Start:
         x, y, yaw = options.get("pose", (0.0, 0.0, 0.0))
-        return float(x), float(y), float(yaw), float(options.get("speed", 15.0))
+        lead_speed = options.get("lead_speed", rng.uniform(10.0, 20.0))
+        return float(x), float(y), float(yaw), float(options.get("speed", 15.0)), float(lead_speed)
 
-    def setup_episode(self, options: Dict[str, Any]) -> None:
-        self.lead_speed = float(options.get("lead_speed", self.np_random.uniform(10.0, 20.0)))
+    def setup_episode(self, start: Start) -> None:
+        self.lead_speed = start[4]
         lead = self.sim.cars[0]
         lead.set_velocity([self.lead_speed, 0.0, 0.0])
         lead.set_cruising_speed(self.lead_speed * 3.6)
@@ -345,7 +376,8 @@ class TrackEnv(VehicleEnv):
     speed = 10.0
     default_reward_fn = staticmethod(track_reward)
 
-    def extra_spaces(self) -> Dict[str, spaces.Space]:
+    @classmethod
+    def extra_spaces(cls) -> Dict[str, spaces.Space]:
         return {"track": _box(2, 1000.0)}
 
     def extra_observation(self) -> Dict[str, np.ndarray]:
@@ -357,21 +389,142 @@ class TrackEnv(VehicleEnv):
         error = (_yaw(p.rotation) - tangent + math.pi) % (2 * math.pi) - math.pi
         return {"track": _vector([off, error], 1000.0)}
 
-    def start_pose(self, options: Dict[str, Any]) -> Tuple[float, float, float, float]:
-        rng = self.np_random
+    @classmethod
+    def draw_start(cls, rng: np.random.Generator, options: Dict[str, Any]) -> Start:
         x, y, yaw = options.get("pose", (0.0, rng.uniform(-1.0, 1.0), rng.uniform(-0.1, 0.1)))
-        return float(x), float(y), float(yaw), float(options.get("speed", self.speed))
+        return float(x), float(y), float(yaw), float(options.get("speed", cls.speed)), 0.0
 
     def is_terminated(self, obs: Dict[str, np.ndarray]) -> bool:
         return abs(float(obs["track"][0])) > 10.0
 
 
+class VectorEnv(gymnasium.vector.VectorEnv):
+    """``num_envs`` copies of one environment stepped together in Rust: one call takes the
+    ``(num_envs, 2)`` action array and fills the observations, rewards and flags of all of
+    them in place (numpy arrays, no Python object per environment), single-threaded.
+
+    ``task`` is ``"LaneKeep"``, ``"ACC"`` or ``"Track"``; ``gymnasium.make_vec(id, num_envs,
+    vectorization_mode="vector_entry_point")`` builds one for a registered id. Each copy runs
+    the single environment's world, actions, observation, default reward and end of episode
+    with the same floating-point operations: copy ``i`` after ``reset(seed=s)`` equals the
+    single environment after ``reset(seed=s + i)`` given the same actions, bit for bit
+    (its episodes start from its own random generator, seeded ``s + i``).
+
+    **Autoreset**: gymnasium's ``NEXT_STEP`` mode (``metadata["autoreset_mode"]``): the step
+    after a copy's episode ends resets it (its action ignored), returning its first
+    observation with reward 0, not terminated and not truncated. ``reset(options=...)`` gives
+    every copy the same options (as the single environment takes them); autoresets draw
+    their starts.
+
+    Differences from ``SyncVectorEnv`` over the single environments: the reward is the
+    environment's default (compute another from the observations), ``infos`` is empty, and
+    there is no rendering. ``copy=False`` returns the observation arrays the next step
+    overwrites (no copy at all).
+    """
+
+    metadata = {"autoreset_mode": gymnasium.vector.AutoresetMode.NEXT_STEP, "render_modes": []}
+
+    def __init__(self, task: str, num_envs: int = 1, frame_skip: int = 4, copy: bool = True) -> None:
+        classes = {"LaneKeep": LaneKeepEnv, "ACC": ACCEnv, "Track": TrackEnv}
+        if task not in classes:
+            raise ValueError(f"task must be one of {sorted(classes)}, not {task!r}")
+        if int(num_envs) < 1:
+            raise ValueError(f"num_envs must be at least 1, not {num_envs}")
+        if int(frame_skip) < 1:
+            raise ValueError(f"frame_skip must be at least 1, not {frame_skip}")
+        self.env_class = classes[task]
+        self.num_envs = n = int(num_envs)
+        self.copy = bool(copy)
+        self.render_mode = None
+        self._core = _native.VecSim(str(WORLDS / self.env_class.world), task, n, int(frame_skip))
+        self.dt = self._core.dt
+        self.single_action_space = spaces.Box(-1.0, 1.0, shape=(2,), dtype=np.float32)
+        self.single_observation_space = self.env_class.single_observation_space()
+        self.action_space = batch_space(self.single_action_space, n)
+        self.observation_space = batch_space(self.single_observation_space, n)
+        # The buffers the Rust side fills; the observation's entries are views of `_obs`.
+        self._obs = np.zeros((n, self._core.observation_len), dtype=np.float32)
+        self._actions = np.zeros((n, 2), dtype=np.float64)
+        self._starts = np.zeros((n, 5), dtype=np.float64)
+        self._rewards = np.zeros(n, dtype=np.float64)
+        self._terminated = np.zeros(n, dtype=np.bool_)
+        self._truncated = np.zeros(n, dtype=np.bool_)
+        self._autoreset = np.zeros(n, dtype=np.bool_)
+        self._views: Dict[str, np.ndarray] = {}
+        column = 0
+        for key, space in self.single_observation_space.spaces.items():
+            width = int(np.prod(space.shape))
+            self._views[key] = self._obs[:, column : column + width].reshape(n, *space.shape)
+            column += width
+        self._rngs = [np.random.default_rng() for _ in range(n)]
+
+    def _observation(self) -> Dict[str, np.ndarray]:
+        if self.copy:
+            return {k: v.copy() for k, v in self._views.items()}
+        return dict(self._views)
+
+    def reset(
+        self,
+        *,
+        seed: Optional[Union[int, List[Optional[int]]]] = None,
+        options: Optional[Dict[str, Any]] = None,
+    ) -> Tuple[Dict[str, np.ndarray], Dict[str, Any]]:
+        super().reset(seed=seed)
+        if seed is None:
+            seeds: List[Optional[int]] = [None] * self.num_envs
+        elif isinstance(seed, int):
+            seeds = [seed + i for i in range(self.num_envs)]
+        else:
+            seeds = list(seed)
+            if len(seeds) != self.num_envs:
+                raise ValueError(f"seed has {len(seeds)} values for {self.num_envs} environments")
+        options = dict(options or {})
+        for i, s in enumerate(seeds):
+            if s is not None:
+                self._rngs[i], _ = seeding.np_random(s)
+            start = self.env_class.draw_start(self._rngs[i], options)
+            self._core.reset(i, start, self._obs)
+        self._autoreset[:] = False
+        return self._observation(), {}
+
+    def step(
+        self, actions: np.ndarray
+    ) -> Tuple[Dict[str, np.ndarray], np.ndarray, np.ndarray, np.ndarray, Dict[str, Any]]:
+        a = np.asarray(actions, dtype=np.float64)
+        if a.shape != self._actions.shape:
+            raise ValueError(f"actions must have shape {self._actions.shape}, not {a.shape}")
+        self._actions[...] = a
+        for i in np.flatnonzero(self._autoreset):
+            self._starts[i] = self.env_class.draw_start(self._rngs[i], {})
+        self._core.step(
+            self._actions,
+            self._autoreset.view(np.uint8),
+            self._starts,
+            self._obs,
+            self._rewards,
+            self._terminated.view(np.uint8),
+            self._truncated.view(np.uint8),
+        )
+        self._autoreset = self._terminated | self._truncated
+        return (
+            self._observation(),
+            self._rewards.copy(),
+            self._terminated.copy(),
+            self._truncated.copy(),
+            {},
+        )
+
+
 def register_envs() -> None:
     """Registers the three ids (importing this module does; again is harmless)."""
-    for name, cls in (("LaneKeep-v0", LaneKeepEnv), ("ACC-v0", ACCEnv), ("Track-v0", TrackEnv)):
-        env_id = f"WebotsVehicle/{name}"
+    for task, cls in (("LaneKeep", LaneKeepEnv), ("ACC", ACCEnv), ("Track", TrackEnv)):
+        env_id = f"WebotsVehicle/{task}-v0"
         if env_id not in gymnasium.registry:
-            gymnasium.register(id=env_id, entry_point=f"webots_vehicle.gym:{cls.__name__}")
+            gymnasium.register(
+                id=env_id,
+                entry_point=f"webots_vehicle.gym:{cls.__name__}",
+                vector_entry_point=functools.partial(VectorEnv, task),
+            )
 
 
 register_envs()
