@@ -66,7 +66,6 @@
 
 mod auto_shift;
 mod brake;
-mod driveline;
 mod engine;
 mod error;
 mod gearbox;
@@ -76,10 +75,6 @@ mod split;
 
 pub use auto_shift::{AutoShift, AutoShiftParams};
 pub use brake::{Brake, DEFAULT_BRAKE_COEFFICIENT, coulomb_torque};
-pub use driveline::{
-    Driveline, DrivelineModel, ENGINE_MASS_FACTOR, GOVERNOR_DROOP, engine_side_speeds,
-    governor_factor,
-};
 pub use engine::{Engine, EngineParams, EngineType};
 pub use error::{Field, PowertrainError};
 pub use gearbox::{Gear, GearSelection, GearWarning, Gearbox};

@@ -5,9 +5,7 @@
 
 use proto_geom::SensorSlots;
 use vehicle_model::energy::EnergyParams;
-use vehicle_model::{
-    Aero, BrakeBalance, CarParams, DrivelineModel, Driver, Model, ParamReport, RoadLoad,
-};
+use vehicle_model::{Aero, BrakeBalance, CarParams, Driver, Model, ParamReport, RoadLoad};
 
 use crate::devices::{CarDevices, DeviceSpec};
 use crate::keyboard::{KeyPress, Keyboard};
@@ -67,8 +65,6 @@ pub struct CarBuilder {
     energy: Option<(EnergyParams<f64>, f64)>,
     /// True if its battery is Webots' Robot battery: the controller stops when it is empty.
     powers_controller: bool,
-    /// How its driven wheels are driven in torque mode.
-    driveline: DrivelineModel,
 }
 
 /// A car built from a [`CarBuilder`]: its driver, its body and where it starts.
@@ -109,7 +105,6 @@ impl CarBuilder {
             road_load: None,
             energy: None,
             powers_controller: false,
-            driveline: DrivelineModel::Inertial,
         }
     }
 
@@ -143,16 +138,6 @@ impl CarBuilder {
     #[must_use]
     pub fn mounting(mut self, mounting: Mounting) -> Self {
         self.mounting = mounting;
-        self
-    }
-
-    /// How its driven wheels are driven in torque mode: by default
-    /// [`DrivelineModel::Inertial`], the engine's inertia turning with them (no launch
-    /// chatter, COMPATIBILITY.md); [`DrivelineModel::Webots`] for Webots' wheel-acceleration
-    /// limiter exactly.
-    #[must_use]
-    pub fn driveline(mut self, model: DrivelineModel) -> Self {
-        self.driveline = model;
         self
     }
 
@@ -312,7 +297,6 @@ impl CarBuilder {
         }
         let devices = CarDevices::build(&self.devices, self.slots.as_ref(), self.seed)?;
         let (mut driver, report) = Driver::new(self.params, step_ms);
-        driver.set_driveline_model(self.driveline);
         driver
             .set_brake_balance(self.brake_balance)
             .map_err(SimError::BrakeBalance)?;
@@ -358,7 +342,6 @@ impl From<&CarDescription> for CarBuilder {
             road_load: car.road_load,
             energy: car.energy.map(|e| (e, car.state_of_charge)),
             powers_controller: car.webots_battery.is_some(),
-            driveline: DrivelineModel::Inertial,
         }
     }
 }

@@ -305,12 +305,8 @@ impl World {
             energy += 0.5 * springs.stiffness * x * x;
         }
         if !vehicle.on_joints() {
-            for (w, omega) in vehicle_model::Wheel::ALL
-                .into_iter()
-                .zip(state.wheel_speeds.0)
-            {
-                // The engine's share turns with a torque-driven wheel.
-                let inertia = vehicle.spin_inertia(w);
+            for (w, omega) in state.wheel_speeds.0.iter().enumerate() {
+                let inertia = spec.wheels.0[w].spin_inertia();
                 energy += 0.5 * inertia * omega * omega;
             }
         }

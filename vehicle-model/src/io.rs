@@ -123,12 +123,6 @@ pub struct Commands<T: Real> {
     /// opposing the wheel's rotation, which also holds a stopped wheel (Webots: `Brake` devices
     /// `right_front_brake` …, emulated by a damping of `brake·brakeCoefficient/|ω|`).
     pub brake_torque: PerWheel<T>,
-    /// The engine and gearbox-input inertia each wheel carries through the closed clutch
-    /// (kg·m², ≥ 0), to be added to the wheel's own spin inertia by the host: non-zero only on
-    /// the driven wheels in torque mode with a gear engaged and
-    /// [`DrivelineModel::Inertial`](powertrain::DrivelineModel) chosen. Webots has no such
-    /// command (its motors take only a torque): 0 everywhere by default. Not in Webots.
-    pub driveline_inertia: PerWheel<T>,
     /// Every light.
     pub lights: Lights,
     /// Steering wheel, lever, needles, wipers.
@@ -139,7 +133,7 @@ pub struct Commands<T: Real> {
 
 impl<T: Real> Commands<T> {
     /// True if every number is finite: steering targets, drive commands, brake torques,
-    /// driveline inertias, cockpit positions, wiper command and engine-sound volume and pitch. Always true for the
+    /// cockpit positions, wiper command and engine-sound volume and pitch. Always true for the
     /// commands of a [`Driver`](crate::Driver); a host or firmware can assert it cheaply.
     pub fn is_finite(&self) -> bool {
         let drive_finite = |d: &WheelDrive<T>| match *d {
@@ -156,7 +150,6 @@ impl<T: Real> Commands<T> {
             && self.steering.left.is_finite()
             && self.drive.iter().all(drive_finite)
             && self.brake_torque.iter().all(|t| t.is_finite())
-            && self.driveline_inertia.iter().all(|j| j.is_finite())
             && k.steering_wheel.is_finite()
             && k.rpm_needle.is_finite()
             && k.speed_needle.is_finite()

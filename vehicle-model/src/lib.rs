@@ -196,5 +196,5 @@ pub use ackermann::{DriveType, Geometry, PerWheel, Real, Wheel, WheelAngles};
 
 /// km/h per m/s: the factor between the Webots API's speeds (km/h) and the SI ones.
 pub const KMH_PER_MS: f64 = 3.6;
-pub use powertrain::{AutoShiftParams, DrivelineModel, EngineParams, EngineType, Gear};
+pub use powertrain::{AutoShiftParams, EngineParams, EngineType, Gear};
 pub use proto_geom::{DEFAULT_WHEEL_DENSITY, SensorSlots, WheelParams, WheelPhysics};

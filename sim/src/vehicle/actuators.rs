@@ -86,7 +86,7 @@ impl Vehicle {
             );
         }
         self.ramps[w] = None;
-        let inertia = self.spin_inertia(w);
+        let inertia = self.spec.wheels[w].spin_inertia();
         let wheel = vehicle_model::actuator::WheelSpin {
             inertia,
             damping: self.viscous_wheel_drag(),
@@ -102,26 +102,6 @@ impl Vehicle {
             brake_impulse: (brake * dt) as f32,
         };
         (spin, omega)
-    }
-
-    /// Wheel `w`'s inertia about its axle for the coming step (kg·m²): its own, plus the
-    /// engine's share the driver's commands put on a torque-driven wheel
-    /// ([`Commands::driveline_inertia`](vehicle_model::Commands), through the closed clutch).
-    /// The wheel's spin, its brake, its tyre's solve and the spin's reaction on the chassis
-    /// all take it, so the engine spins up and down with the wheel, implicitly with the tyre.
-    pub(crate) fn spin_inertia(&self, w: Wheel) -> f64 {
-        let own = self.spec.wheels[w].spin_inertia();
-        let driveline = match &self.commands {
-            Some(c) if c.drive[w].torque().is_some() => c.driveline_inertia[w],
-            _ => 0.0,
-        };
-        // The driver's commands are finite; a host-set command with a negative or non-finite
-        // inertia adds nothing rather than a NaN or a negative mass.
-        if driveline.is_finite() && driveline > 0.0 {
-            own + driveline
-        } else {
-            own
-        }
     }
 
     /// Moves the kinematic wipers toward their command for a step of `dt` seconds.

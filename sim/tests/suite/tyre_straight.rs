@@ -4,13 +4,10 @@
 //!
 //! A symmetric car on symmetric commands has no reason to turn, but some runs pass through a
 //! yaw-unstable phase that amplifies any asymmetry some 10⁵-fold or more: driven wheels that
-//! spin (speed mode's ramp beyond the grip: the TeslaModel3's, on friction 0.5, for 9 s) or,
-//! with Webots' brakes (the same torque on every wheel), rear wheels that lock while the front
-//! ones roll. A torque launch beyond the grip was one too while the Webots driver library's
-//! wheel-acceleration limiter switched the torque on and off every few steps; with the
-//! engine's inertia on the driven wheels (`DrivelineModel::Inertial`, the sim's default) it
-//! is not (ARCHITECTURE.md, "Launch chatter"), and it is held to the bounds on both
-//! mountings, but for one named run on joints ([`SPINS_OUT_ON_JOINTS`]).
+//! spin (speed mode's ramp beyond the grip: the TeslaModel3's, on friction 0.5, for 9 s), a
+//! torque launch beyond the grip, where the Webots driver library's wheel-acceleration limiter
+//! and limited-slip integrator switch the torque on and off every few steps, or, with Webots'
+//! brakes (the same torque on every wheel), rear wheels that lock while the front ones roll.
 //! Spinning and locked wheels keep little side grip, so a real car turns there too; what it
 //! turns on is a real asymmetry, never the order of a computation.
 //!
@@ -21,17 +18,15 @@
 //! the bounds: |y| ≤ 0.2 % of the distance and |yaw| ≤ 0.01 rad. Two models are not
 //! mirror-symmetric in Webots' data. The C-Zero's centre of mass lies 2 mm right of the centre
 //! line: it yaws a few mrad, within the bounds. The ToyotaPrius' `inertiaMatrix` has a
-//! product `I₁₂ = −300 kg·m²` across the plane of symmetry, coupling roll and pitch: its
-//! torque launch on friction 0.5 drifted 0.34 % of its 403 m sideways through the limiter's
-//! chatter (0.04 % with the engine's inertia, within the bounds), so its unstable runs are
-//! held to the heading bound only, and the same car with that product removed is held to
-//! both.
+//! product `I₁₂ = −300 kg·m²` across the plane of symmetry, coupling roll and pitch: its torque
+//! launch on friction 0.5 drifts 0.34 % of its 403 m sideways, so its unstable runs are held
+//! to the heading bound only, and the same car with that product removed is held to both.
 //!
 //! On joints, rapier's f32 multibody and contact solver are not mirror-exact: as the tread's
 //! core went from 3 µm to 1 mm the RangeRover's stop on friction 0.5 with Webots' brakes ended
 //! anywhere between −0.03 and +0.38 rad. There, runs through spinning wheels or rear wheels
-//! locked first are held to no heading (torque launches beyond the grip were held to 0.05 rad
-//! with Webots' limiter, and are now held to the bounds). The same stops with the brake torque proportioned to the front (`BrakeBalance::Proportioned`,
+//! locked first are held to no heading, and torque launches beyond the grip to 0.05 rad. The
+//! same stops with the brake torque proportioned to the front (`BrakeBalance::Proportioned`,
 //! as real cars share it for this reason) are held to the bounds on both mountings.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -141,16 +136,6 @@ fn launch_exceeds_grip(sim: &Simulation, id: sim::VehicleId, mu: f64) -> bool {
     })
 }
 
-/// The one torque launch not held to the bounds on joints (issue #35, left open): the
-/// TeslaModel3 on friction 0.5, whose motor gives its rear tyres about twice the torque they
-/// can carry up to its top speed. With the engine's inertia on the driven wheels (no limiter)
-/// its rear wheels spin at far more than the ground speed for seconds, as in its speed-mode run
-/// on the same friction, keep little side grip, and rapier's round-off on joints turns it
-/// (−0.155 rad after 225 m; exactly straight on the mirror-exact cast car). Webots' limiter,
-/// switching the torque on and off, held it within 0.05 rad. Named here rather than a class
-/// of runs exempted, so that no other run loses its bound.
-const SPINS_OUT_ON_JOINTS: (Model, f64, bool) = (Model::TeslaModel3, 0.5, true);
-
 /// The model whose Webots data turn it sideways beyond the bounds through an unstable phase
 /// (see the module docs; the C-Zero's asymmetry stays within them).
 const ASYMMETRIC: Model = Model::ToyotaPrius;
@@ -176,20 +161,16 @@ fn check_params(model: Model, params: CarParams<f64>, asymmetric: bool) {
             );
             assert!(x > 10.0, "{model} {d:?} mu {mu}: moved only {x} m");
             let proportioned = matches!(d, Drive::Brake(BrakeBalance::Proportioned));
-            // A launch beyond the grip spins its driven wheels up at the engine's rate, with
-            // no switching of the torque: not an unstable phase.
             let amplified = match unstable {
-                Unstable::No | Unstable::Launch => false,
+                Unstable::No => false,
                 Unstable::RearLockedFirst => !proportioned,
-                Unstable::Spinning => true,
+                Unstable::Launch | Unstable::Spinning => true,
             };
-            let yaw_bound = match (amplified, exact) {
-                (false, _) | (true, true) => 0.01,
-                (true, false) => continue,
+            let yaw_bound = match (amplified, exact, unstable) {
+                (false, _, _) | (true, true, _) => 0.01,
+                (true, false, Unstable::Launch) => 0.05,
+                (true, false, _) => continue,
             };
-            if !exact && (model, mu, matches!(d, Drive::Torque)) == SPINS_OUT_ON_JOINTS {
-                continue;
-            }
             assert!(
                 yaw.abs() <= yaw_bound,
                 "{model} {d:?} mu {mu}: yaw {yaw} rad"

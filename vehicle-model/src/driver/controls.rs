@@ -1,7 +1,7 @@
 //! The driver library's commands and getters (Webots `wbu_driver_*`).
 
 use ackermann::{DriveType, PerWheel, Real, Wheel};
-use powertrain::{AutoShift, AutoShiftParams, DrivelineModel, Gear, GearWarning, PowertrainError};
+use powertrain::{AutoShift, AutoShiftParams, Gear, GearWarning, PowertrainError};
 
 use super::Driver;
 use crate::KMH_PER_MS;
@@ -392,31 +392,5 @@ impl<T: Real> Driver<T> {
     /// Webots.
     pub fn brake_front_share(&self) -> T {
         self.car.brake_front_share
-    }
-
-    /// Chooses how the driven wheels are driven in torque mode: Webots' limiter
-    /// ([`DrivelineModel::Webots`], the default) or the engine's inertia carried by the driven
-    /// wheels ([`DrivelineModel::Inertial`], which a host must apply from
-    /// [`Commands::driveline_inertia`](crate::Commands)). Not in Webots.
-    pub fn set_driveline_model(&mut self, model: DrivelineModel) {
-        self.driveline_model = model;
-    }
-
-    /// How the driven wheels are driven in torque mode. Not in Webots.
-    pub fn driveline_model(&self) -> DrivelineModel {
-        self.driveline_model
-    }
-
-    /// The speed the engine turns at (rpm, ≥ 0), from the last step: Webots' estimate
-    /// ([`Driver::rpm`], the mean of the four wheels) in [`DrivelineModel::Webots`], the mean
-    /// of the driven wheels × the gear's ratio in [`DrivelineModel::Inertial`], where the
-    /// engine turns with them; the torque, the governor and the automatic gearbox work from
-    /// it. 0 in neutral and in speed mode. Not in Webots.
-    pub fn engine_rpm(&self) -> T {
-        if self.mode == ControlMode::Speed {
-            T::ZERO
-        } else {
-            self.engine_rpm
-        }
     }
 }

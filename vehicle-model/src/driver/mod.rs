@@ -8,9 +8,7 @@ mod step;
 use core::cell::Cell;
 
 use ackermann::{DifferentialRatios, DriveType, Geometry, PerWheel, Real, Wheel, WheelAngles};
-use powertrain::{
-    AutoShift, Brake, Driveline, DrivelineModel, Engine, Gear, Gearbox, LimitedSlip, Powertrain,
-};
+use powertrain::{AutoShift, Brake, Engine, Gear, Gearbox, LimitedSlip, Powertrain};
 
 use crate::brake_balance::{BrakeBalance, axle_brake_factor};
 use crate::io::{Cockpit, Commands, WheelDrive};
@@ -33,9 +31,6 @@ struct Car<T: Real> {
     geometry: Geometry<T>,
     drive: DriveType,
     powertrain: Powertrain<T>,
-    /// The engine inertia the driven wheels carry in [`DrivelineModel::Inertial`]; `None` for
-    /// a body mass or tyre radius it cannot be derived from (then no inertia is added).
-    driveline: Option<Driveline<T>>,
     brake: Brake<T>,
     /// The front axle's share of the brake torque (dimensionless, in [0, 1]).
     brake_front_share: T,
@@ -52,18 +47,10 @@ impl<T: Real> Car<T> {
         let geometry = p.geometry().unwrap_or_default();
         let engine = p.engine().unwrap_or_else(|_| Engine::default());
         let gearbox = p.gearbox().unwrap_or_else(|_| Gearbox::default());
-        // The driven axle's tyre radius (the rear one for four-wheel drive, as Webots' speed
-        // estimate does).
-        let driven_radius = if p.drive_type.rear_driven() {
-            p.radius_rear()
-        } else {
-            p.radius_front()
-        };
         Car {
             geometry,
             drive: p.drive_type,
             powertrain: Powertrain::new(engine, gearbox),
-            driveline: Driveline::from_mass_factor(p.body.mass, driven_radius),
             brake: p.brake().unwrap_or_default(),
             brake_front_share: T::HALF,
             motors: PerWheel::from_fn(|w| p.wheel_motor(w)),
@@ -111,19 +98,13 @@ pub struct Driver<T: Real> {
     hazard_flashers: bool,
     dipped_beams: bool,
     lights: Lights,
-    /// Webots' engine-speed estimate (rpm): the mean of the four wheels × the ratio.
     rpm: T,
-    /// The speed the engine turns at (rpm): `rpm` in [`DrivelineModel::Webots`], the driven
-    /// wheels' mean × the ratio in [`DrivelineModel::Inertial`]. The torque, the governor and
-    /// the automatic gearbox work from it.
-    engine_rpm: T,
     wipers: Option<Wipers<T>>,
 
     indicator_period: T,
     indicator_auto_disabling: bool,
     limited_slip: LimitedSlip<T>,
     auto_shift: Option<AutoShift<T>>,
-    driveline_model: DrivelineModel,
     brake_balance: BrakeBalance<T>,
 
     time: T,
@@ -176,13 +157,11 @@ impl<T: Real> Driver<T> {
             dipped_beams: false,
             lights: Lights::OFF,
             rpm: T::ZERO,
-            engine_rpm: T::ZERO,
             wipers,
             indicator_period: T::from_f64(DEFAULT_INDICATOR_PERIOD),
             indicator_auto_disabling: true,
             limited_slip,
             auto_shift: None,
-            driveline_model: DrivelineModel::Webots,
             brake_balance: BrakeBalance::Equal,
             time: T::ZERO,
             wheel_speeds: WheelSpeedEstimator::new(),
@@ -192,7 +171,6 @@ impl<T: Real> Driver<T> {
                 steering: WheelAngles::STRAIGHT,
                 drive: PerWheel::splat(WheelDrive::Free),
                 brake_torque: PerWheel::splat(T::ZERO),
-                driveline_inertia: PerWheel::splat(T::ZERO),
                 lights: Lights::OFF,
                 cockpit: Cockpit {
                     steering_wheel: T::ZERO,
@@ -276,33 +254,6 @@ impl<T: Real> Driver<T> {
         })
     }
 
-    /// The engine inertia each wheel carries for the coming step (kg·m²): in
-    /// [`DrivelineModel::Inertial`], torque mode and a gear engaged, the driven wheels' share
-    /// [`Driveline::wheel_inertia`] through the gear's ratio; 0 otherwise (in speed mode the
-    /// motors impose the spin, in neutral the clutch is open).
-    fn driveline_inertia(&self) -> PerWheel<T> {
-        let engaged = self.driveline_model == DrivelineModel::Inertial
-            && self.mode == ControlMode::Torque
-            && !self.gear.is_neutral();
-        let share = match (engaged, self.car.driveline) {
-            (true, Some(d)) => {
-                let driven = Wheel::ALL
-                    .iter()
-                    .filter(|&&w| self.car.drive.drives(w))
-                    .count();
-                d.wheel_inertia(self.car.powertrain.gearbox().ratio(self.gear), driven)
-            }
-            _ => T::ZERO,
-        };
-        PerWheel::from_fn(|w| {
-            if self.car.drive.drives(w) {
-                share
-            } else {
-                T::ZERO
-            }
-        })
-    }
-
     /// The commands implied by the current state, the torque-mode wheel torques `torques`
     /// (N·m) and the estimated vehicle speed `speed_kmh` ([`Driver::current_speed`], km/h).
     fn assemble_commands(&self, torques: &PerWheel<T>, speed_kmh: T) -> Commands<T> {
@@ -317,7 +268,6 @@ impl<T: Real> Driver<T> {
             steering: self.wheel_angles,
             drive: self.drive_commands(torques),
             brake_torque,
-            driveline_inertia: self.driveline_inertia(),
             lights: self.lights,
             cockpit: Cockpit {
                 steering_wheel: saturate(T::from_f64(STEERING_WHEEL_RATIO) * self.steering_angle),

@@ -1,7 +1,7 @@
 //! One driver step (Webots `wbu_driver_step`, spec §2), in Webots' order.
 
 use ackermann::{PerWheel, Real};
-use powertrain::{DrivelineModel, Gear, engine_side_speeds, governor_factor, split_torque};
+use powertrain::{Gear, split_torque};
 
 use super::Driver;
 use crate::io::{Commands, Sensors};
@@ -16,13 +16,8 @@ impl<T: Real> Driver<T> {
     ///
     /// Order (spec §2): indicators from the blink clock; wipers; backwards light; wheel speeds
     /// (finite differences, one step behind); engine speed; in torque mode the limited-slip
-    /// update and the wheel torques (engine model × throttle × gear ratio, acceleration limiter
-    /// in [`DrivelineModel::Webots`], geometric differential with limited slip); brake torques;
-    /// engine sound. In [`DrivelineModel::Inertial`] the engine turns at the driven wheels'
-    /// speed ([`Driver::engine_rpm`]; [`Driver::rpm`] stays Webots' mean of all four), the
-    /// limiter is replaced by the governor's droop below
-    /// `engineMaxRPM`, and the commands carry the engine's inertia on the driven wheels
-    /// ([`Commands::driveline_inertia`](crate::Commands)).
+    /// update and the wheel torques (engine model × throttle × gear ratio, acceleration limiter,
+    /// geometric differential with limited slip); brake torques; engine sound.
     ///
     /// Non-finite readings count as "no sample": the time and steering angles keep their last
     /// values, a wheel without a sample has no speed. All returned numbers are finite.
@@ -67,47 +62,28 @@ impl<T: Real> Driver<T> {
         }
         let speeds = self.wheel_speeds.speeds();
 
-        // 5. Engine speed, every step in every mode (plus the optional automatic gearbox):
-        // Webots' estimate from the mean of the four wheels, reported as the rpm; with the
-        // engine turning with the driven wheels, the speed it turns at is theirs.
+        // 5. Engine speed, every step in every mode (plus the optional automatic gearbox).
         let powertrain = &self.car.powertrain;
-        let engine_speeds = match self.driveline_model {
-            DrivelineModel::Webots => speeds,
-            DrivelineModel::Inertial => engine_side_speeds(&speeds, self.car.drive),
-        };
         self.rpm = powertrain.rpm(&speeds, self.gear);
-        self.engine_rpm = powertrain.rpm(&engine_speeds, self.gear);
         if self.mode == ControlMode::Torque
             && let Some(auto) = &mut self.auto_shift
         {
             let dt = dt_ms / T::from_f64(super::MS_PER_S);
-            if let Some(gear) = auto.update(dt, self.engine_rpm, self.gear, powertrain.gearbox()) {
+            if let Some(gear) = auto.update(dt, self.rpm, self.gear, powertrain.gearbox()) {
                 self.gear = gear;
                 self.rpm = powertrain.rpm(&speeds, gear);
-                self.engine_rpm = powertrain.rpm(&engine_speeds, gear);
             }
         }
 
         // 6. Torque mode: limited slip, then the wheel torques.
         let torques = if self.mode == ControlMode::Torque {
             self.limited_slip.update(self.car.drive, &speeds);
-            // With the engine's inertia on the driven wheels, that inertia bounds their
-            // spin-up; Webots' limiter, a delayed on/off switch of the torque, is left out, and
-            // the torque meets engineMaxRPM on the governor's droop line, not as a cut.
-            let (limiter_input, governor) = match self.driveline_model {
-                DrivelineModel::Webots => (self.wheel_speeds.max_acceleration(), T::ONE),
-                DrivelineModel::Inertial => (
-                    T::ZERO,
-                    governor_factor(self.engine_rpm, powertrain.engine().max_rpm()),
-                ),
-            };
-            let out = governor
-                * powertrain.output_torque(
-                    self.engine_rpm,
-                    self.throttle,
-                    self.gear,
-                    limiter_input,
-                );
+            let out = powertrain.output_torque(
+                self.rpm,
+                self.throttle,
+                self.gear,
+                self.wheel_speeds.max_acceleration(),
+            );
             split_torque(out, self.car.drive, &self.limited_slip.apply(&self.ratios))
         } else {
             PerWheel::splat(T::ZERO)
