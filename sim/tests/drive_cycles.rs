@@ -7,10 +7,14 @@
 //! 32 ms), which keeps the debug build at about a minute for the 1874 s FTP-75.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+#[path = "support/resisting_force.rs"]
+mod support;
+
 use sim::scenario::{self, Cycle, RunReport, Scenario, Value};
 use sim::world_file::parse_str;
-use sim::{CarBuilder, Simulation, VehicleSpec, World, WorldConfig};
-use vehicle_model::{Aero, Model, RoadLoad, TyreModel, Wheel};
+use sim::{CarBuilder, Simulation, World, WorldConfig};
+use support::resisting_force;
+use vehicle_model::{Model, RoadLoad};
 
 /// A world of one `model` with its air, road-load losses and energy accounting, at 20 ms.
 fn world(model: &str) -> String {
@@ -85,30 +89,6 @@ fn a_combustion_car_follows_the_hwfet_and_burns_fuel() {
     let fuel_wh_per_km = litres_per_km * 0.745 * 43e6 / 3600.0;
     let efficiency = number(&r, "wheel_wh_per_km") / fuel_wh_per_km;
     assert!((0.1..0.38).contains(&efficiency), "{efficiency}");
-}
-
-/// The force slowing the car at `speed` (m/s) on flat ground through still air (N): the drag
-/// plus each wheel's rolling resistance under its static load and its driveline drag (as
-/// `tests/road_load.rs` checks them in a coast-down).
-fn resisting_force(
-    spec: &VehicleSpec,
-    aero: &Aero<f64>,
-    losses: &RoadLoad<f64>,
-    speed: f64,
-) -> f64 {
-    let loads = spec.static_wheel_loads();
-    let rolling = |w: Wheel| match spec.tyres.of(w) {
-        TyreModel::MagicFormula(t) => {
-            let r = spec.wheels[w].radius;
-            t.rolling_resistance_torque(loads[w], r) / r
-        }
-        TyreModel::Webots(_) => 0.0,
-    };
-    aero.drag_at(speed)
-        + Wheel::ALL
-            .into_iter()
-            .map(|w| rolling(w) + losses.wheel_force(spec.wheels[w].radius, speed))
-            .sum::<f64>()
 }
 
 #[test]

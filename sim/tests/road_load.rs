@@ -4,8 +4,12 @@
 //! mountings.
 #![allow(clippy::unwrap_used)]
 
+#[path = "support/resisting_force.rs"]
+mod support;
+
 use sim::{CarBuilder, Mounting, Simulation, VehicleId, VehicleSpec, World, WorldConfig};
-use vehicle_model::{Aero, Model, RoadLoad, TyreModel, Wheel};
+use support::resisting_force;
+use vehicle_model::{Model, RoadLoad, Wheel};
 
 /// The speed the coast starts from (km/h).
 const START_KMH: f64 = 120.0;
@@ -40,29 +44,6 @@ fn effective_mass(spec: &VehicleSpec) -> f64 {
                 let s = &spec.wheels[w];
                 s.mass + s.spin_inertia() / (s.radius * s.radius)
             })
-            .sum::<f64>()
-}
-
-/// The force slowing the car at `speed` (m/s) on flat ground through still air (N): the drag
-/// plus each wheel's rolling resistance under its static load and its driveline drag.
-fn resisting_force(
-    spec: &VehicleSpec,
-    aero: &Aero<f64>,
-    losses: &RoadLoad<f64>,
-    speed: f64,
-) -> f64 {
-    let loads = spec.static_wheel_loads();
-    let rolling = |w: Wheel| match spec.tyres.of(w) {
-        TyreModel::MagicFormula(t) => {
-            let r = spec.wheels[w].radius;
-            t.rolling_resistance_torque(loads[w], r) / r
-        }
-        TyreModel::Webots(_) => 0.0,
-    };
-    aero.drag_at(speed)
-        + Wheel::ALL
-            .into_iter()
-            .map(|w| rolling(w) + losses.wheel_force(spec.wheels[w].radius, speed))
             .sum::<f64>()
 }
 
