@@ -26,10 +26,7 @@ fn sensor(robot: &Robot) -> BatterySensor {
 /// Enables the sensor with `period_ms` (0 disables); a negative period is refused with
 /// Webots' error naming `function`.
 fn enable(robot: &mut Robot, period_ms: c_int, function: &str) {
-    let Ok(period) = u32::try_from(period_ms) else {
-        message::error(format_args!(
-            "{function}() called with negative sampling period."
-        ));
+    let Some(period) = message::sampling_period(period_ms, function) else {
         return;
     };
     match robot.body {

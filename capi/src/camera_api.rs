@@ -178,10 +178,7 @@ fn objects<'r>(
 
 /// Enables (or with 0 disables) the Recognition of the camera with `tag`.
 fn enable_recognition(robot: &mut Robot, tag: WbDeviceTag, period_ms: c_int, function: &str) {
-    let Ok(period) = u32::try_from(period_ms) else {
-        message::error(format_args!(
-            "{function}() called with negative sampling period."
-        ));
+    let Some(period) = message::sampling_period(period_ms, function) else {
         return;
     };
     let Some(found) = find(robot, tag, DeviceKind::Camera, function, true) else {

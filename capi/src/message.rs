@@ -31,6 +31,18 @@ pub(crate) fn error(text: impl Display) {
     eprintln!("Error: {text}");
 }
 
+/// A device's sampling period (ms) from the C argument; a negative one is refused with
+/// Webots' error naming `function` (`None`: nothing is to be enabled).
+pub(crate) fn sampling_period(period_ms: std::os::raw::c_int, function: &str) -> Option<u32> {
+    let period = u32::try_from(period_ms).ok();
+    if period.is_none() {
+        error(format_args!(
+            "{function}() called with negative sampling period."
+        ));
+    }
+    period
+}
+
 /// Formats `x` as C's `printf("%g", x)` does: 6 significant digits, trailing zeros removed,
 /// exponent form (`1e-05`, `1.5e+07`) below 1e-4 and from 1e6 on, `inf`, `-inf`, `nan`.
 pub(crate) fn format_g(x: f64) -> String {

@@ -185,10 +185,7 @@ pub(crate) fn enable(
     tag: WbDeviceTag,
     period_ms: c_int,
 ) {
-    let Ok(period) = u32::try_from(period_ms) else {
-        message::error(format_args!(
-            "{function}() called with negative sampling period."
-        ));
+    let Some(period) = message::sampling_period(period_ms, function) else {
         return;
     };
     if let Some((car, index)) = find(robot, tag, kind, function, true) {
