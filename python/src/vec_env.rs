@@ -72,6 +72,26 @@ fn write_flags(
     out.copy_from_slice(py, scratch)
 }
 
+impl VecSim {
+    /// One step of the whole batch with the actions, reset flags and starts held, into the
+    /// held outputs: what `step` and `bench_steps` both run.
+    fn step_batch(&mut self) -> PyResult<()> {
+        self.batch
+            .step(
+                &self.actions,
+                &self.reset,
+                &self.starts,
+                StepOut {
+                    observations: &mut self.observations,
+                    rewards: &mut self.rewards,
+                    terminated: &mut self.terminated,
+                    truncated: &mut self.truncated,
+                },
+            )
+            .map_err(batch_error)
+    }
+}
+
 #[pymethods]
 impl VecSim {
     /// `num_envs` copies of world file `world` for `task` ("LaneKeep", "ACC" or "Track"), each
@@ -194,19 +214,7 @@ impl VecSim {
                 *s = start_of(row);
             }
         }
-        self.batch
-            .step(
-                &self.actions,
-                &self.reset,
-                &self.starts,
-                StepOut {
-                    observations: &mut self.observations,
-                    rewards: &mut self.rewards,
-                    terminated: &mut self.terminated,
-                    truncated: &mut self.truncated,
-                },
-            )
-            .map_err(batch_error)?;
+        self.step_batch()?;
         observations.copy_from_slice(py, &self.observations)?;
         rewards.copy_from_slice(py, &self.rewards)?;
         write_flags(py, &mut self.flags, &self.terminated, &terminated)?;
@@ -229,19 +237,7 @@ impl VecSim {
             {
                 *r = *t || *u;
             }
-            self.batch
-                .step(
-                    &self.actions,
-                    &self.reset,
-                    &self.starts,
-                    StepOut {
-                        observations: &mut self.observations,
-                        rewards: &mut self.rewards,
-                        terminated: &mut self.terminated,
-                        truncated: &mut self.truncated,
-                    },
-                )
-                .map_err(batch_error)?;
+            self.step_batch()?;
         }
         Ok(begin.elapsed().as_secs_f64())
     }
