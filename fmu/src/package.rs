@@ -189,7 +189,7 @@ pub fn write_fmu(
     let binary = std::fs::read(library).map_err(|e| {
         format!(
             "cannot read the FMU's shared library {}: {e} (build it with cargo build \
-             --release -p vehicle-fmu)",
+             -p vehicle-fmu --lib in the profile of this vehicle-fmu, e.g. with --release)",
             library.display()
         )
     })?;
