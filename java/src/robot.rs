@@ -1,7 +1,7 @@
 //! `WebotsNative`, robot part: `wb_robot_*` (the battery sensor's included), `wb_keyboard_*` and `wb_device_*` for
 //! `com.cyberbotics.webots.controller.Robot`, `Keyboard` and `Device`. Times in s, steps in ms.
 
-use std::ffi::{CStr, CString, c_char};
+use std::ffi::{CStr, c_char};
 
 use jni::JNIEnv;
 use jni::objects::JString;
@@ -53,13 +53,7 @@ natives! { "com_cyberbotics_webots_controller_WebotsNative";
 /// The tag `wb_robot_get_device` gives for a Java string; 0 for `null` or a name with a NUL
 /// character (neither can name a device).
 fn device_by_name(env: &mut JNIEnv<'_>, name: &JString<'_>) -> jint {
-    if name.is_null() {
-        return 0;
-    }
-    let Ok(name) = env.get_string(name) else {
-        return 0;
-    };
-    let Ok(name) = CString::new(String::from(name)) else {
+    let Some(name) = crate::c_string(env, name) else {
         return 0;
     };
     // SAFETY: a NUL-terminated string that lives until the call returns.

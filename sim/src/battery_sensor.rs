@@ -6,13 +6,12 @@
 //! (`vehicle_model::energy::Battery::energy`); a car without a battery reads NaN, as does
 //! any sensor before its first sample.
 
+use crate::sampling::Schedule;
+
 /// A controller's battery sensor: its sampling and its last reading.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BatterySensor {
-    /// The sampling period (ms), 0 when disabled.
-    period_ms: u32,
-    /// The time of the last sample, or of enabling (ms).
-    last_ms: u64,
+    schedule: Schedule,
     /// The last sample (J), NaN before the first.
     value: f64,
 }
@@ -20,8 +19,7 @@ pub struct BatterySensor {
 impl Default for BatterySensor {
     fn default() -> Self {
         BatterySensor {
-            period_ms: 0,
-            last_ms: 0,
+            schedule: Schedule::default(),
             value: f64::NAN,
         }
     }
@@ -30,7 +28,7 @@ impl Default for BatterySensor {
 impl BatterySensor {
     /// Its sampling period (ms), 0 when disabled.
     pub fn period_ms(&self) -> u32 {
-        self.period_ms
+        self.schedule.period_ms()
     }
 
     /// Its last sample (J): the battery's energy at the last sample time; NaN before the
@@ -43,17 +41,14 @@ impl BatterySensor {
     /// restarts the wait for a full period; the period in force changes nothing, so a
     /// controller that enables in its loop still gets samples (as every device).
     pub fn enable(&mut self, period_ms: u32, now_ms: u64) {
-        if period_ms != self.period_ms {
-            self.period_ms = period_ms;
-            self.last_ms = now_ms;
-        }
+        self.schedule.enable(period_ms, now_ms);
     }
 
     /// The step end at `now_ms` with `energy` (J; `None` without a battery) in the battery:
     /// samples it if a full period has passed since the last sample.
     pub(crate) fn refresh(&mut self, now_ms: u64, energy: Option<f64>) {
-        if self.period_ms != 0 && now_ms - self.last_ms >= u64::from(self.period_ms) {
-            self.last_ms = now_ms;
+        if self.schedule.due(now_ms) {
+            self.schedule.sampled(now_ms);
             self.value = energy.unwrap_or(f64::NAN);
         }
     }

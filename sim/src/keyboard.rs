@@ -9,6 +9,7 @@
 //! nothing.
 
 use crate::error::ParamError;
+use crate::sampling::Schedule;
 
 /// The most keys one sample holds (Webots' library keeps 7).
 pub const MAX_KEYS: usize = 7;
@@ -100,8 +101,7 @@ pub struct Keyboard {
     presses: Vec<KeyPress>,
     /// The first press not yet sampled.
     next_press: usize,
-    period_ms: u32,
-    last_ms: u64,
+    schedule: Schedule,
     /// The keys of the last sample.
     held: Vec<i32>,
     /// How many of them were read.
@@ -120,15 +120,13 @@ impl Keyboard {
 
     /// Its sampling period (ms), 0 when disabled.
     pub fn period_ms(&self) -> u32 {
-        self.period_ms
+        self.schedule.period_ms()
     }
 
     /// Enables it with a period of `period_ms` (0 disables) at `now_ms`: presses before now
     /// are never seen.
     pub fn enable(&mut self, period_ms: u32, now_ms: u64) {
-        if period_ms != self.period_ms {
-            self.period_ms = period_ms;
-            self.last_ms = now_ms;
+        if self.schedule.enable(period_ms, now_ms) {
             self.skip_until(now_ms);
         }
     }
@@ -148,14 +146,14 @@ impl Keyboard {
     pub fn refresh(&mut self, now_ms: u64) {
         self.held.clear();
         self.read = 0;
-        if self.period_ms == 0 {
+        if !self.schedule.is_enabled() {
             self.skip_until(now_ms);
             return;
         }
-        if now_ms - self.last_ms < u64::from(self.period_ms) {
+        if !self.schedule.due(now_ms) {
             return;
         }
-        self.last_ms = now_ms;
+        self.schedule.sampled(now_ms);
         while let Some(p) = self
             .presses
             .get(self.next_press)

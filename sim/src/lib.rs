@@ -110,6 +110,7 @@ mod diff_wheels;
 mod error;
 mod geom;
 mod ground;
+mod sampling;
 mod simulation;
 mod vehicle;
 mod world;

@@ -47,6 +47,7 @@ use proto_geom::{SensorSlot, SensorSlots};
 use crate::error::{ParamError, Rule, SimError};
 use crate::rng::SplitMix64;
 use crate::road::RoadNetwork;
+use crate::sampling::Schedule;
 use crate::vehicle::VehicleId;
 use camera::solids::Solids;
 
@@ -184,10 +185,7 @@ pub struct Device {
     settings: DeviceSettings,
     /// Device frame → car frame (m).
     mount: Isometry3<f64>,
-    /// Sampling period (ms), 0 when disabled.
-    period_ms: u32,
-    /// Time of the last sample, or of enabling (ms).
-    last_ms: u64,
+    schedule: Schedule,
     rng: SplitMix64,
     /// A GPS's correlated position noise.
     gps_noise: GpsNoise,
@@ -225,7 +223,7 @@ impl Device {
 
     /// Its sampling period (ms), 0 when disabled.
     pub fn period_ms(&self) -> u32 {
-        self.period_ms
+        self.schedule.period_ms()
     }
 
     /// Its last sample (NaN before the first), kept while disabled.
@@ -266,9 +264,9 @@ impl Device {
     pub fn point_cloud(&self) -> Option<Vec<LidarPoint>> {
         match (&self.settings, &self.reading) {
             (DeviceSettings::Lidar(s), Reading::Lidar(r))
-                if self.point_cloud && self.period_ms != 0 =>
+                if self.point_cloud && self.schedule.is_enabled() =>
             {
-                Some(r.point_cloud(s, self.period_ms))
+                Some(r.point_cloud(s, self.schedule.period_ms()))
             }
             _ => None,
         }
@@ -279,12 +277,11 @@ impl Device {
     fn due(&self, now_ms: u64) -> bool {
         let rotating = matches!(&self.settings, DeviceSettings::Lidar(s)
             if s.lidar_type == LidarType::Rotating);
-        let period = if rotating {
-            1
+        if rotating {
+            self.schedule.due_every_step(now_ms)
         } else {
-            u64::from(self.period_ms)
-        };
-        self.period_ms != 0 && now_ms - self.last_ms >= period
+            self.schedule.due(now_ms)
+        }
     }
 
     /// Enables it with a period of `period_ms` ms at time `now_ms` (0 disables). A new period
@@ -292,10 +289,7 @@ impl Device {
     /// with the period in force changes nothing, so a controller that enables in its loop
     /// still gets samples.
     fn enable(&mut self, period_ms: u32, now_ms: u64) {
-        if period_ms != self.period_ms {
-            self.period_ms = period_ms;
-            self.last_ms = now_ms;
-        }
+        self.schedule.enable(period_ms, now_ms);
     }
 
     /// Samples if enabled and a full period has passed since the last sample; a camera
@@ -313,10 +307,10 @@ impl Device {
         if let (DeviceSettings::Camera(settings), Some(camera), Some(solids)) =
             (&self.settings, self.camera.as_mut(), solids)
         {
-            let image = self.period_ms != 0 && now_ms - self.last_ms >= u64::from(self.period_ms);
+            let image = self.schedule.due(now_ms);
             if image || camera.recognition_due(now_ms) {
                 if image {
-                    self.last_ms = now_ms;
+                    self.schedule.sampled(now_ms);
                 }
                 let pose = chassis.pose * self.mount;
                 let view = camera::View {
@@ -332,8 +326,7 @@ impl Device {
             return;
         }
         // Whole ms: exact in f64.
-        let dt = (now_ms - self.last_ms) as f64 / 1000.0;
-        self.last_ms = now_ms;
+        let dt = self.schedule.sampled(now_ms) as f64 / 1000.0;
         let point = chassis.point(&self.mount);
         let rng = &mut self.rng;
         let vector = |quantity: Quantity,
@@ -548,8 +541,7 @@ impl CarDevices {
                 name,
                 settings: spec.settings.clone(),
                 mount: slot * own,
-                period_ms,
-                last_ms: 0,
+                schedule: Schedule::new(period_ms),
                 rng,
                 gps_noise: GpsNoise::default(),
                 previous_velocity: PreviousVelocity::default(),
@@ -567,7 +559,7 @@ impl CarDevices {
     /// period later, as after a controller's enable.
     pub(crate) fn start_at(&mut self, now_ms: u64) {
         for d in &mut self.devices {
-            d.last_ms = now_ms;
+            d.schedule.restart(now_ms);
         }
     }
 
@@ -645,7 +637,7 @@ impl CarDevices {
     /// the chassis.
     pub(crate) fn any_enabled(&self) -> bool {
         self.devices.iter().any(|d| {
-            d.period_ms != 0
+            d.schedule.is_enabled()
                 || d.camera
                     .as_ref()
                     .is_some_and(|c| c.recognition_period_ms() != 0)

@@ -44,7 +44,7 @@ impl Device {
     /// from then. Only meaningful after a step's sampling, where enabling (which also sets the
     /// last sample time) cannot have happened at the same time.
     pub(crate) fn sampled_at(&self, now_ms: u64) -> bool {
-        self.period_ms != 0 && self.last_ms == now_ms
+        self.schedule.sampled_at(now_ms)
     }
 
     /// Calls `f` on each value the recording keeps of the last sample, with what it measures

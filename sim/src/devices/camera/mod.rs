@@ -16,6 +16,7 @@ use proto_geom::nalgebra::Isometry3;
 
 use crate::error::ParamError;
 use crate::rng::SplitMix64;
+use crate::sampling::Schedule;
 use crate::vehicle::VehicleId;
 
 use super::noise::gaussian;
@@ -135,10 +136,8 @@ pub struct CameraState {
     image: Vec<u8>,
     /// The objects of the last Recognition sample.
     objects: Vec<RecognitionObject>,
-    /// Recognition's sampling period (ms), 0 when disabled.
-    recognition_period_ms: u32,
-    /// Time of its last sample, or of enabling (ms).
-    recognition_last_ms: u64,
+    /// Recognition's sampling.
+    recognition: Schedule,
     /// The render buffers, kept between samples.
     frame: Frame,
     /// True once an image was taken.
@@ -150,8 +149,7 @@ impl CameraState {
         CameraState {
             image: vec![0; settings.width as usize * settings.height as usize * 4],
             objects: Vec::new(),
-            recognition_period_ms: 0,
-            recognition_last_ms: 0,
+            recognition: Schedule::default(),
             frame: Frame::default(),
             has_image: false,
         }
@@ -174,22 +172,18 @@ impl CameraState {
 
     /// Recognition's sampling period (ms), 0 when disabled.
     pub fn recognition_period_ms(&self) -> u32 {
-        self.recognition_period_ms
+        self.recognition.period_ms()
     }
 
     /// Enables Recognition with a period of `period_ms` ms at `now_ms` (0 disables), with the
     /// sampling rules of every device.
     pub(crate) fn enable_recognition(&mut self, period_ms: u32, now_ms: u64) {
-        if period_ms != self.recognition_period_ms {
-            self.recognition_period_ms = period_ms;
-            self.recognition_last_ms = now_ms;
-        }
+        self.recognition.enable(period_ms, now_ms);
     }
 
     /// True if Recognition is to sample at `now_ms`.
     pub(crate) fn recognition_due(&self, now_ms: u64) -> bool {
-        self.recognition_period_ms != 0
-            && now_ms - self.recognition_last_ms >= u64::from(self.recognition_period_ms)
+        self.recognition.due(now_ms)
     }
 
     /// Renders what the camera of `settings` sees from `view`; keeps the image if `image` is
@@ -223,7 +217,7 @@ impl CameraState {
         if let Some(r) = &settings.recognition
             && self.recognition_due(now_ms)
         {
-            self.recognition_last_ms = now_ms;
+            self.recognition.sampled(now_ms);
             self.objects = recognition::recognise(r, &pin, pose, &solids.all, own, &self.frame);
         }
     }
