@@ -201,6 +201,8 @@ speed = [0, 0]
     );
 }
 
+// The plots are the application's (`app` feature).
+#[cfg(feature = "app")]
 #[test]
 fn several_cars_are_named_and_drawn() {
     let w = parse_str(

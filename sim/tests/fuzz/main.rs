@@ -24,6 +24,8 @@ mod strategies;
 mod corpus;
 mod documents;
 mod simulation;
+// Sweep files are read by the application (`app` feature).
+#[cfg(feature = "app")]
 mod sweep_files;
 mod world_file;
 
@@ -117,47 +119,53 @@ proptest! {
     }
 }
 
-proptest! {
-    #![proptest_config(config(64))]
+/// The sweep files' properties: sweeps are the application's (`app` feature).
+#[cfg(feature = "app")]
+mod sweep_properties {
+    use super::*;
 
-    #[test]
-    fn any_sweep_text_loads_or_gives_an_error_naming_the_file(text in any::<String>()) {
-        let checked = sweep_files::check_text(&text);
-        prop_assert!(checked.is_ok(), "{}", checked.unwrap_err());
+    proptest! {
+        #![proptest_config(config(64))]
+
+        #[test]
+        fn any_sweep_text_loads_or_gives_an_error_naming_the_file(text in any::<String>()) {
+            let checked = sweep_files::check_text(&text);
+            prop_assert!(checked.is_ok(), "{}", checked.unwrap_err());
+        }
     }
-}
 
-proptest! {
-    // Each case copies two shard directories and resumes a shard: a few ms.
-    #![proptest_config(config(24))]
+    proptest! {
+        // Each case copies two shard directories and resumes a shard: a few ms.
+        #![proptest_config(config(24))]
 
-    #[test]
-    fn damaged_shard_files_never_merge_or_resume_into_wrong_rows(
-        timings in any::<bool>(),
-        cut in proptest::option::of(any::<usize>()),
-        byte in proptest::option::of((any::<usize>(), any::<u8>())),
-    ) {
-        let damage = sweep_files::Damage { timings, cut, byte };
-        let checked = sweep_files::check_damage(damage);
-        prop_assert!(checked.is_ok(), "{damage:?}: {}", checked.unwrap_err());
-    }
-}
-
-/// The damage the fuzz target found (fuzz/seeds/sweep_files/damage-newline-to-cr): a line's
-/// `\n` overwritten by `\r`, which the csv crate's default reader also takes as a line end,
-/// so a resume kept the file with the damaged byte. Every byte of both shard files (the files
-/// are under 600 bytes; the offset wraps) is overwritten with `\r` in turn.
-#[test]
-fn a_newline_damaged_into_a_carriage_return_is_not_resumed() {
-    for timings in [false, true] {
-        for at in 0..600 {
-            let damage = sweep_files::Damage {
-                timings,
-                cut: None,
-                byte: Some((at, b'\r')),
-            };
+        #[test]
+        fn damaged_shard_files_never_merge_or_resume_into_wrong_rows(
+            timings in any::<bool>(),
+            cut in proptest::option::of(any::<usize>()),
+            byte in proptest::option::of((any::<usize>(), any::<u8>())),
+        ) {
+            let damage = sweep_files::Damage { timings, cut, byte };
             let checked = sweep_files::check_damage(damage);
-            assert!(checked.is_ok(), "{damage:?}: {}", checked.unwrap_err());
+            prop_assert!(checked.is_ok(), "{damage:?}: {}", checked.unwrap_err());
+        }
+    }
+
+    /// The damage the fuzz target found (fuzz/seeds/sweep_files/damage-newline-to-cr): a line's
+    /// `\n` overwritten by `\r`, which the csv crate's default reader also takes as a line end,
+    /// so a resume kept the file with the damaged byte. Every byte of both shard files (the files
+    /// are under 600 bytes; the offset wraps) is overwritten with `\r` in turn.
+    #[test]
+    fn a_newline_damaged_into_a_carriage_return_is_not_resumed() {
+        for timings in [false, true] {
+            for at in 0..600 {
+                let damage = sweep_files::Damage {
+                    timings,
+                    cut: None,
+                    byte: Some((at, b'\r')),
+                };
+                let checked = sweep_files::check_damage(damage);
+                assert!(checked.is_ok(), "{damage:?}: {}", checked.unwrap_err());
+            }
         }
     }
 }
