@@ -105,6 +105,12 @@ fn bad_values_names_and_types_are_located_at_their_key() {
             "vehicle.losses.viscous_drag",
             2,
         ),
+        // A rolling resistance typed in per cent.
+        (
+            "[vehicle]\n[vehicle.losses]\nrolling_resistance = 1.2\n",
+            "vehicle.losses.rolling_resistance",
+            3,
+        ),
     ];
     for (text, key, line) in invalid {
         let e = parse_str("w.toml", text).expect_err(text);
