@@ -187,8 +187,8 @@ impl crate::Model {
     /// The model's aerodynamic coefficients. Webots' models have none: these are the real
     /// cars' where the maker published a drag coefficient, else the drag area of the US EPA's
     /// coast-down coefficients ([`crate::Model::epa_drag_area`]) where the EPA tested the car,
-    /// else a value typical of the body class, and the table in `vehicle-model/README.md` says which is which and where each
-    /// number comes from. The frontal areas are `0.84 × width × height` of the real car (a
+    /// else a value typical of the body class, and the table in `vehicle-model/README.md`
+    /// says which is which and where each number comes from. The frontal areas are `0.84 × width × height` of the real car (a
     /// passenger car's front fills about 0.8–0.85 of its bounding rectangle; for the vans,
     /// buses and lorries, whose fronts are nearly rectangular, `0.95 × width × height`): an
     /// estimate, since makers rarely publish the area. No shipped model's lift is published: front and rear lift are 0.

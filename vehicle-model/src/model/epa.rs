@@ -225,6 +225,16 @@ mod tests {
     }
 
     #[test]
+    fn without_a_published_cd_the_air_is_the_epa_s_c() {
+        for model in [Model::LincolnMKZ, Model::RangeRoverSportSVR] {
+            let c = model.epa_test_car().unwrap().c();
+            let aero = model.aero::<f64>();
+            // ½·ρ·Cd·A at 1 m/s is C.
+            assert!((aero.drag_at(1.0) - c).abs() < 1e-12, "{model}");
+        }
+    }
+
+    #[test]
     fn the_set_gives_back_a_and_b_at_the_test_mass() {
         for model in Model::ALL {
             let Some(car) = model.epa_test_car() else {
