@@ -5,7 +5,9 @@
 
 use proto_geom::SensorSlots;
 use vehicle_model::energy::EnergyParams;
-use vehicle_model::{Aero, BrakeBalance, CarParams, Driver, Model, ParamReport, RoadLoad};
+use vehicle_model::{
+    Aero, BrakeBalance, CarParams, Driver, Model, ParamReport, RoadLoad, TyreField,
+};
 
 use crate::devices::{CarDevices, DeviceSpec};
 use crate::keyboard::{KeyPress, Keyboard};
@@ -193,7 +195,7 @@ impl CarBuilder {
         self
     }
 
-    /// Its wheels' road-load losses ([`RoadLoad`]; e.g. [`RoadLoad::default`]), which replace
+    /// Its wheels' road-load losses ([`RoadLoad`]; e.g. [`Model::road_load`]), which replace
     /// the `wheelsDampingConstant`; `None` (the default, Webots'): that damping alone. Checked
     /// when the car is added.
     #[must_use]
@@ -296,11 +298,12 @@ impl CarBuilder {
             check_energy(energy, *soc)?;
         }
         let devices = CarDevices::build(&self.devices, self.slots.as_ref(), self.seed)?;
+        let tyre = self.tyre_with_road_load();
         let (mut driver, report) = Driver::new(self.params, step_ms);
         driver
             .set_brake_balance(self.brake_balance)
             .map_err(SimError::BrakeBalance)?;
-        let mut spec = VehicleSpec::from_car_with(driver.params(), &self.tyre)?;
+        let mut spec = VehicleSpec::from_car_with(driver.params(), &tyre)?;
         spec.mounting = self.mounting;
         spec.aero = self.aero;
         spec.road_load = self.road_load;
@@ -318,6 +321,21 @@ impl CarBuilder {
             energy: self.energy,
             powers_controller: self.powers_controller,
         })
+    }
+}
+
+impl CarBuilder {
+    /// The tyre with the road-load set's rolling resistance ([`RoadLoad::rolling_resistance`])
+    /// when it carries one: applied before the tyre's own coefficients, so a rolling
+    /// resistance written for the tyre (`[vehicle.tyre]`, its property file) keeps the last
+    /// word. Webots' contact has no rolling resistance to replace.
+    fn tyre_with_road_load(&self) -> TyreChoice {
+        let mut tyre = self.tyre.clone();
+        let rolling = self.road_load.and_then(|r| r.rolling_resistance);
+        if let (Some(c), TyreChoice::MagicFormula { overrides, .. }) = (rolling, &mut tyre) {
+            overrides.insert(0, (TyreField::RollingResistance, c));
+        }
+        tyre
     }
 }
 

@@ -5,7 +5,7 @@
 
 use sim::world_file::{CarDescription, Location, WorldFileErrorKind, parse_str};
 use sim::{CarBuilder, Simulation, World};
-use vehicle_model::{Model, RoadLoad};
+use vehicle_model::{Model, RoadLoad, TyreModel};
 
 fn car_of(text: &str) -> CarDescription {
     let w = parse_str("w.toml", text).unwrap_or_else(|e| panic!("{e}"));
@@ -25,13 +25,16 @@ fn without_the_key_or_with_webots_the_wheels_keep_webots_damping_alone() {
 }
 
 #[test]
-fn road_load_gives_the_default_set_and_the_model_s_air_unless_aero_says_otherwise() {
+fn road_load_gives_the_model_s_set_and_its_air_unless_aero_says_otherwise() {
     let car = car_of("[vehicle]\nmodel = \"BmwX5\"\nlosses = \"road-load\"\n");
-    assert_eq!(car.road_load, Some(RoadLoad::default()));
+    assert_eq!(car.road_load, Some(Model::BmwX5.road_load()));
     assert_eq!(car.aero, Some(Model::BmwX5.aero()));
     let car = car_of("[vehicle]\nmodel = \"BmwX5\"\nlosses = \"road-load\"\naero = false\n");
-    assert_eq!(car.road_load, Some(RoadLoad::default()));
+    assert_eq!(car.road_load, Some(Model::BmwX5.road_load()));
     assert_eq!(car.aero, None);
+    // A model the EPA has not tested keeps the tyre's rolling resistance.
+    let car = car_of("[vehicle]\nmodel = \"Bus\"\nlosses = \"road-load\"\n");
+    assert_eq!(car.road_load, Some(RoadLoad::default()));
 }
 
 #[test]
@@ -40,7 +43,7 @@ fn a_table_overrides_the_default_values_and_reaches_the_simulated_car() {
     let w = parse_str("w.toml", text).unwrap();
     let expected = RoadLoad {
         viscous_drag: 0.05,
-        ..RoadLoad::default()
+        ..Model::TeslaModel3.road_load()
     };
     assert_eq!(w.car().unwrap().road_load, Some(expected));
     let mut sim = Simulation::new(World::new(w.config.clone()).unwrap());
@@ -48,6 +51,39 @@ fn a_table_overrides_the_default_values_and_reaches_the_simulated_car() {
     let spec = sim.world().vehicle(id).unwrap().spec();
     assert_eq!(spec.road_load, Some(expected));
     assert_eq!(spec.aero, Some(Model::TeslaModel3.aero()));
+}
+
+#[test]
+fn the_set_s_rolling_resistance_reaches_the_tyres_unless_the_tyre_writes_its_own() {
+    let c_rr = |text: &str| {
+        let w = parse_str("w.toml", text).unwrap_or_else(|e| panic!("{e}"));
+        let mut sim = Simulation::new(World::new(w.config.clone()).unwrap());
+        let (id, _) = sim.add_car(CarBuilder::from(w.car().unwrap())).unwrap();
+        match sim.world().vehicle(id).unwrap().spec().tyres.rear {
+            TyreModel::MagicFormula(t) => t.params().rolling_resistance,
+            TyreModel::Webots(_) => panic!("{text}"),
+        }
+    };
+    let model = "[vehicle]\nmodel = \"TeslaModel3\"\n";
+    let derived = Model::TeslaModel3
+        .road_load::<f64>()
+        .rolling_resistance
+        .unwrap();
+    assert_eq!(c_rr(&format!("{model}losses = \"road-load\"\n")), derived);
+    // Webots' losses keep the tyre class's.
+    assert_eq!(c_rr(model), 0.012);
+    assert_eq!(
+        c_rr(&format!(
+            "{model}[vehicle.losses]\nrolling_resistance = 0.01\n"
+        )),
+        0.01
+    );
+    assert_eq!(
+        c_rr(&format!(
+            "{model}losses = \"road-load\"\n[vehicle.tyre]\nrolling_resistance = 0.02\n"
+        )),
+        0.02
+    );
 }
 
 #[test]
@@ -68,6 +104,12 @@ fn bad_values_names_and_types_are_located_at_their_key() {
             "[vehicle]\nlosses.viscous_drag = nan\n",
             "vehicle.losses.viscous_drag",
             2,
+        ),
+        // A rolling resistance typed in per cent.
+        (
+            "[vehicle]\n[vehicle.losses]\nrolling_resistance = 1.2\n",
+            "vehicle.losses.rolling_resistance",
+            3,
         ),
     ];
     for (text, key, line) in invalid {

@@ -175,11 +175,20 @@ fn body<T: Real>(cd: f64, area: f64, lift_front: f64, lift_rear: f64) -> Aero<T>
     }
 }
 
+/// The body of `model`, whose maker publishes no drag coefficient, of frontal area `area`
+/// (m²): `Cd` is the EPA's drag area ([`crate::Model::epa_drag_area`]) over `area`.
+fn epa_body<T: Real>(model: crate::Model, area: f64) -> Aero<T> {
+    // Every model routed here has an EPA test car (`model/epa.rs`).
+    let drag_area = model.epa_drag_area().unwrap_or(0.0);
+    body(drag_area / area, area, 0.0, 0.0)
+}
+
 impl crate::Model {
     /// The model's aerodynamic coefficients. Webots' models have none: these are the real
-    /// cars' where the maker published a drag coefficient, else a value typical of the body
-    /// class, and the table in `vehicle-model/README.md` says which is which and where each
-    /// number comes from. The frontal areas are `0.84 × width × height` of the real car (a
+    /// cars' where the maker published a drag coefficient, else the drag area of the US EPA's
+    /// coast-down coefficients ([`crate::Model::epa_drag_area`]) where the EPA tested the car,
+    /// else a value typical of the body class, and the table in `vehicle-model/README.md`
+    /// says which is which and where each number comes from. The frontal areas are `0.84 × width × height` of the real car (a
     /// passenger car's front fills about 0.8–0.85 of its bounding rectangle; for the vans,
     /// buses and lorries, whose fronts are nearly rectangular, `0.95 × width × height`): an
     /// estimate, since makers rarely publish the area. No shipped model's lift is published: front and rear lift are 0.
@@ -192,10 +201,11 @@ impl crate::Model {
             M::ToyotaPrius => body(0.24, 2.17, 0.0, 0.0),
             // BMW's published Cd 0.33 (X5 G05, 2018); 2.004 m × 1.745 m.
             M::BmwX5 => body(0.33, 2.94, 0.0, 0.0),
-            // Class-typical saloon Cd; 1.864 m × 1.476 m.
-            M::LincolnMKZ => body(0.30, 2.31, 0.0, 0.0),
-            // Class-typical large SUV Cd; 1.983 m × 1.803 m.
-            M::RangeRoverSportSVR => body(0.37, 3.00, 0.0, 0.0),
+            // No published Cd: the EPA's drag area (`Model::epa_drag_area`) over the
+            // estimated area; 1.864 m × 1.476 m.
+            M::LincolnMKZ => epa_body(M::LincolnMKZ, 2.31),
+            // No published Cd: the EPA's drag area; 1.983 m × 1.803 m.
+            M::RangeRoverSportSVR => epa_body(M::RangeRoverSportSVR, 3.00),
             // Class-typical city-car Cd; 1.475 m × 1.608 m.
             M::CitroenCZero => body(0.35, 1.99, 0.0, 0.0),
             // Class-typical van Cd; 1.993 m × 2.426 m.

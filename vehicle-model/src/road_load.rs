@@ -12,6 +12,11 @@
 //! `F(v) = D(v) + c_rr·m·g + Σ_w (T₀ + b·v/r_w)/r_w` (N), the physical counterpart of the
 //! `A + B·v + C·v²` a coast-down test fits: `A` holds the rolling resistance and `T₀`, `B`
 //! the viscous drag, `C` the air.
+//!
+//! A set may also carry the tyres' rolling resistance coefficient `c_rr`
+//! ([`RoadLoad::rolling_resistance`]), which then replaces the tyre's own: each shipped model's
+//! set ([`crate::Model::road_load`]) takes it from the US EPA's coast-down coefficients of
+//! the real car, since a tyre class's single value cannot be every car's.
 
 use ackermann::Real;
 
@@ -23,6 +28,10 @@ pub struct RoadLoad<T> {
     /// Viscous drag `b` of each wheel's driveline and bearing (N·m·s/rad, in [0, 10]): takes
     /// the place of Webots' `wheelsDampingConstant`.
     pub viscous_drag: T,
+    /// The tyres' rolling resistance coefficient `c_rr` (dimensionless, in [0, 0.5], the
+    /// tyre's own range), replacing [`crate::TyreParams::rolling_resistance`] of every tyre
+    /// of the car; `None`: the tyre's own.
+    pub rolling_resistance: Option<T>,
 }
 
 /// Which field of a [`RoadLoad`] is out of range, and its value.
@@ -54,6 +63,9 @@ const MAX_DRAG_TORQUE: f64 = 100.0;
 /// Largest viscous drag accepted (N·m·s/rad): Webots' models use 1 to 30 as
 /// `wheelsDampingConstant`; 10 already takes 3 kN from a car's four wheels at 100 km/h.
 const MAX_VISCOUS_DRAG: f64 = 10.0;
+/// Largest rolling resistance coefficient accepted: the tyre's own bound for
+/// `rolling_resistance` (a tractor tyre in soft soil reaches 0.2; 0.5 is no rolling tyre).
+const MAX_ROLLING_RESISTANCE: f64 = 0.5;
 
 /// A released disc brake's residual drag and a wheel bearing's (N·m per wheel): residual
 /// brake drag is commonly quoted at 0.5 to 3 N·m per corner, the bearing's a fraction of 1.
@@ -65,18 +77,20 @@ const DEFAULT_VISCOUS_DRAG: f64 = 0.0125;
 
 impl<T: Real> Default for RoadLoad<T> {
     /// The estimates of 1 N·m of constant drag and 0.0125 N·m·s/rad of viscous drag per
-    /// wheel (their reasons are at their constants in the source), the same for every model.
+    /// wheel (their reasons are at their constants in the source) and the tyre's own rolling
+    /// resistance: the set of a car without published coast-down coefficients.
     fn default() -> Self {
         RoadLoad {
             drag_torque: T::from_f64(DEFAULT_DRAG_TORQUE),
             viscous_drag: T::from_f64(DEFAULT_VISCOUS_DRAG),
+            rolling_resistance: None,
         }
     }
 }
 
 impl<T: Real> RoadLoad<T> {
-    /// Checks every field: `T₀` in [0, 100] N·m, `b` in [0, 10] N·m·s/rad (the bounds'
-    /// reasons are at their constants).
+    /// Checks every field: `T₀` in [0, 100] N·m, `b` in [0, 10] N·m·s/rad, `c_rr` (when
+    /// given) in [0, 0.5] (the bounds' reasons are at their constants).
     ///
     /// # Errors
     /// The first [`RoadLoadError`] in field order.
@@ -105,6 +119,14 @@ impl<T: Real> RoadLoad<T> {
             MAX_VISCOUS_DRAG,
             "within [0, 10] N·m·s/rad",
         )?;
+        if let Some(c) = self.rolling_resistance {
+            check(
+                "rolling_resistance",
+                c,
+                MAX_ROLLING_RESISTANCE,
+                "within [0, 0.5]",
+            )?;
+        }
         Ok(self)
     }
 
@@ -133,6 +155,11 @@ mod tests {
             ..ok
         };
         assert_eq!(bad.validated().unwrap_err().field, "viscous_drag");
+        let bad = RoadLoad {
+            rolling_resistance: Some(0.6),
+            ..ok
+        };
+        assert_eq!(bad.validated().unwrap_err().field, "rolling_resistance");
     }
 
     #[test]
@@ -140,6 +167,7 @@ mod tests {
         let r = RoadLoad {
             drag_torque: 2.0,
             viscous_drag: 0.5,
+            rolling_resistance: None,
         };
         // 2 N·m / 0.4 m + 0.5 N·m·s/rad · (20 / 0.4) rad/s / 0.4 m.
         let expected = 5.0 + 0.5 * 50.0 / 0.4;

@@ -109,6 +109,7 @@ SCENARIOS: Tuple[str, ...] = (
     "test-track",
     "ftp75",
     "hwfet",
+    "wltc",
     "square",
     "spin",
 )

@@ -125,6 +125,7 @@ pub(crate) fn run(
         Scenario::SplitMu
         | Scenario::Ftp75
         | Scenario::Hwfet
+        | Scenario::Wltc
         | Scenario::TestTrack
         | Scenario::Square
         | Scenario::Spin

@@ -3,10 +3,11 @@
 //!
 //! The tables ship as data in `sim/data/cycles/`, each with its source in its header:
 //! the EPA Urban Dynamometer Driving Schedule (40 CFR 86 Appendix I(a)), from which FTP-75
-//! is built, and the Highway Fuel Economy Driving Schedule (40 CFR 600 Appendix I). The
-//! regulations define the trace as "a smooth trace drawn through the specified speed versus
-//! time relationships" (40 CFR 600.109(b)(1)); [`Trace::speed`] draws it with straight lines
-//! between the seconds.
+//! is built, the Highway Fuel Economy Driving Schedule (40 CFR 600 Appendix I), and the WLTC
+//! class 3b of UN GTR No. 15 (ECE/TRANS/180/Add.15, Annex 1). The EPA regulations define the
+//! trace as "a smooth trace drawn through the specified speed versus time relationships"
+//! (40 CFR 600.109(b)(1)); [`Trace::speed`] draws it with straight lines between the
+//! seconds, for the WLTC too.
 
 use core::fmt;
 
@@ -17,6 +18,10 @@ pub const MS_PER_MPH: f64 = 0.447_04;
 const UDDS: &str = include_str!("../../data/cycles/udds.txt");
 /// The EPA HWFET table (mph, 1 Hz), with its header.
 const HWFET: &str = include_str!("../../data/cycles/hwfet.txt");
+/// The GTR 15 WLTC class 3b table (km/h, 1 Hz), with its header.
+const WLTC3B: &str = include_str!("../../data/cycles/wltc3b.txt");
+/// m/s per km/h.
+const MS_PER_KMH: f64 = 1.0 / 3.6;
 
 /// Length of the FTP-75's hot-start phase (s): the first 505 s of the UDDS driven again
 /// after the 10-minute soak (40 CFR 86.137-94(b)(27)).
@@ -30,17 +35,21 @@ pub enum Cycle {
     Ftp75,
     /// EPA Highway Fuel Economy Test: 765 s.
     Hwfet,
+    /// WLTC class 3b of UN GTR No. 15 (cars of more than 34 W/kg and at least 120 km/h):
+    /// 1800 s in four phases, Low, Medium, High and Extra High.
+    Wltc,
 }
 
 impl Cycle {
     /// Every cycle shipped.
-    pub const ALL: [Cycle; 2] = [Cycle::Ftp75, Cycle::Hwfet];
+    pub const ALL: [Cycle; 3] = [Cycle::Ftp75, Cycle::Hwfet, Cycle::Wltc];
 
     /// The cycle's name, e.g. `"ftp75"`.
     pub const fn name(self) -> &'static str {
         match self {
             Cycle::Ftp75 => "ftp75",
             Cycle::Hwfet => "hwfet",
+            Cycle::Wltc => "wltc",
         }
     }
 
@@ -63,17 +72,23 @@ impl Cycle {
                 Trace { speeds }
             }
             Cycle::Hwfet => table(HWFET),
+            Cycle::Wltc => Trace::from_table(WLTC3B, MS_PER_KMH).unwrap_or_default(),
         }
     }
 
     /// Half-width of the speed tolerance band (m/s): 2 mph for the EPA cycles (40 CFR
-    /// 86.115-78(c), 40 CFR 600.109-08(b)(2)).
+    /// 86.115-78(c), 40 CFR 600.109-08(b)(2)), 2 km/h for the WLTC (GTR No. 15, Annex 6,
+    /// §2.6.8.3, speed trace tolerances).
     pub const fn speed_tolerance(self) -> f64 {
-        2.0 * MS_PER_MPH
+        match self {
+            Cycle::Ftp75 | Cycle::Hwfet => 2.0 * MS_PER_MPH,
+            Cycle::Wltc => 2.0 * MS_PER_KMH,
+        }
     }
 
     /// Half-width of the band's time window (s): 1 s, the band's edges being the highest and
-    /// lowest trace speeds within 1 s of the time (same sections).
+    /// lowest trace speeds within 1 s of the time (same sections; the same ±1.0 s in GTR
+    /// No. 15).
     pub const fn time_tolerance(self) -> f64 {
         1.0
     }
@@ -250,11 +265,47 @@ mod tests {
             "UDDS: 0..=1369 s"
         );
         assert_eq!(Trace::from_table(HWFET, 1.0).unwrap().speeds().len(), 766);
+        assert_eq!(
+            Trace::from_table(WLTC3B, 1.0).unwrap().speeds().len(),
+            1801,
+            "WLTC: 0..=1800 s"
+        );
     }
 
-    /// The published figures of each cycle. The distances are the trace integrated with
-    /// straight lines (the "smooth trace" of 40 CFR 600.109); the EPA publishes them to
-    /// 0.01 mi, hence the 0.005 mi tolerance (half the last digit), and the speeds to 0.1 mph.
+    /// The WLTC class 3b's published phase figures (GTR No. 15 Annex 1; the durations and
+    /// top speeds also as a second source gives them, evdb.nz "WLTP Explained": 9:49, 7:13,
+    /// 7:35 and 5:23 min; 56.5, 76.6, 97.4 and 131.3 km/h; the whole cycle's 1800 s and mean
+    /// 46.5 km/h as Mercedes-Benz's WLTP page gives them). Each phase ends where the next
+    /// begins (the GTR's phases share their boundary second); distances are integrated with
+    /// straight lines between the seconds and published to the metre, hence 0.5 m, plus 0.1 m
+    /// for the table's 0.1 km/h resolution over a phase of a few hundred seconds (m).
+    #[test]
+    fn the_wltc_matches_its_published_phases() {
+        let wltc = Cycle::Wltc.trace();
+        let v = wltc.speeds();
+        let phases = [
+            (0, 589, 3095.0, 56.5),
+            (589, 1022, 4756.0, 76.6),
+            (1022, 1477, 7162.0, 97.4),
+            (1477, 1800, 8254.0, 131.3),
+        ];
+        for (start, end, metres, top_kmh) in phases {
+            let phase = Trace::new(v[start..=end].to_vec()).unwrap();
+            assert!(
+                (phase.distance() - metres).abs() <= 0.6,
+                "{start}–{end} s: {} m",
+                phase.distance()
+            );
+            assert!(
+                (phase.max_speed() * 3.6 - top_kmh).abs() < 1e-9,
+                "{start} s"
+            );
+        }
+        assert_eq!(wltc.duration(), 1800.0);
+        assert!((wltc.distance() / 1000.0 - 23.27).abs() <= 0.005);
+        assert!((wltc.mean_speed() * 3.6 - 46.5).abs() <= 0.05);
+    }
+
     #[test]
     fn traces_match_their_published_duration_distance_and_speeds() {
         // UDDS: 1369 s, 7.45 mi, 56.7 mph top (EPA; 40 CFR 86.115).

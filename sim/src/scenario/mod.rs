@@ -97,6 +97,8 @@ pub enum Scenario {
     Ftp75,
     /// The EPA Highway Fuel Economy Test drive cycle.
     Hwfet,
+    /// The WLTC class 3b drive cycle of UN GTR No. 15.
+    Wltc,
     /// A DifferentialWheels robot drives a square.
     Square,
     /// A DifferentialWheels robot turns on the spot.
@@ -107,7 +109,7 @@ pub enum Scenario {
 
 impl Scenario {
     /// Every scenario.
-    pub const ALL: [Scenario; 16] = [
+    pub const ALL: [Scenario; 17] = [
         Scenario::AccelSpeed,
         Scenario::AccelTorque,
         Scenario::Brake,
@@ -121,6 +123,7 @@ impl Scenario {
         Scenario::TestTrack,
         Scenario::Ftp75,
         Scenario::Hwfet,
+        Scenario::Wltc,
         Scenario::Square,
         Scenario::Spin,
         Scenario::Programme,
@@ -151,6 +154,7 @@ impl Scenario {
             Scenario::TestTrack => "test-track",
             Scenario::Ftp75 => "ftp75",
             Scenario::Hwfet => "hwfet",
+            Scenario::Wltc => "wltc",
             Scenario::Square => "square",
             Scenario::Spin => "spin",
             Scenario::Programme => "programme",
@@ -188,6 +192,7 @@ impl Scenario {
             Scenario::TestTrack => "all five car scenarios in turn",
             Scenario::Ftp75 => "EPA FTP-75 drive cycle (1874 s): band tracking, Wh/km, l/100 km",
             Scenario::Hwfet => "EPA highway cycle HWFET (765 s): band tracking, Wh/km, l/100 km",
+            Scenario::Wltc => "WLTC class 3b, GTR 15 (1800 s): band tracking, Wh/km, l/100 km",
             Scenario::Square => "DifferentialWheels: drive a square, open loop",
             Scenario::Spin => "DifferentialWheels: turn on the spot for 10 s",
             Scenario::Programme => "the world file's driving programmes, every car and robot",
@@ -259,6 +264,7 @@ impl Scenario {
             // The trace and a few seconds to stop after it.
             Scenario::Ftp75 => 1880.0,
             Scenario::Hwfet => 770.0,
+            Scenario::Wltc => 1805.0,
             Scenario::Square => 600.0,
             Scenario::Spin => 10.0,
             Scenario::Programme => f64::INFINITY,

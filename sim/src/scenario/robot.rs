@@ -180,6 +180,7 @@ pub(crate) fn run(
         | Scenario::TestTrack
         | Scenario::Ftp75
         | Scenario::Hwfet
+        | Scenario::Wltc
         | Scenario::Programme => Err(ScenarioError::WrongVehicle {
             scenario,
             vehicle: world.vehicles_label(),

@@ -191,7 +191,7 @@ pub(crate) fn read_vehicle(
         })?,
     };
     let tyre = tyre::read_tyre(s, model, warnings)?;
-    let road_load = losses::read_losses(s)?;
+    let road_load = losses::read_losses(s, model)?;
     // The road-load set is the realistic car, air included, unless `aero` says otherwise.
     let aero = match aero::read_aero(s, model)? {
         None if road_load.is_some() && s.value(aero::KEY).is_none() => Some(model.aero()),
