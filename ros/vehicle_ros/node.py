@@ -59,8 +59,10 @@ def choose_cars(cars: List[Tuple[str, bool]], spec: Optional[str]) -> List[str]:
     programme (the only car of a one-car world, programme or not, as a Webots controller
     drives it), ``all`` every car, ``A,B`` those named. Raises ``ValueError`` for a selection
     that names no car, a name the world lacks or twice, or a world whose every car runs a
-    programme (nothing to serve unless ``--cars`` says so)."""
+    programme (nothing to serve unless ``--cars`` says so). A world without cars gives none."""
     names = [name for name, _ in cars]
+    if not names:  # a DifferentialWheels world: the caller reports that it has no car
+        return []
     if spec is None:
         if len(cars) == 1:
             return names
