@@ -490,3 +490,94 @@ mod tests {
         assert!(robot.simulation.telemetry(ids[0]).unwrap().speed.abs() < 0.1);
     }
 }
+
+#[cfg(test)]
+mod several_controllers {
+    use super::*;
+
+    /// Two cars without a programme, 10 m apart, loaded for `first`.
+    fn two(first: &str) -> Robot {
+        let text =
+            "[[vehicle]]\nname = \"a\"\n[[vehicle]]\nname = \"b\"\ntranslation = [0, 10, 0]\n";
+        let description = world_file::parse_str("w.toml", text).unwrap();
+        Robot::build(&description, None, Some(first)).unwrap()
+    }
+
+    /// Commands car `name`'s controller (the driver library) to cruise at 20 km/h.
+    fn cruise(robot: &mut Robot, name: &str, libraries: Libraries) {
+        robot.select(name).unwrap();
+        let Body::Car { id, .. } = robot.body() else {
+            panic!("a car");
+        };
+        robot.controller_mut().body = Body::Car { id, libraries };
+        robot.simulation.start_car_library(id).unwrap();
+        // 20 km/h is within the driver library's range: no warning.
+        let warning = robot
+            .simulation
+            .driver_mut(id)
+            .unwrap()
+            .set_cruising_speed(20.0);
+        assert!(warning.is_none(), "{warning:?}");
+    }
+
+    fn speed(robot: &Robot, name: &str) -> f64 {
+        let sim = &robot.simulation;
+        let id = sim
+            .car_ids()
+            .find(|&id| sim.car_name(id) == Ok(name))
+            .unwrap();
+        sim.telemetry(id).unwrap().speed
+    }
+
+    #[test]
+    fn a_driver_step_runs_the_drivers_of_the_controllers_with_the_driver_library() {
+        let mut robot = two("b");
+        assert_eq!(robot.current_car(), Some("b"));
+        cruise(&mut robot, "a", Libraries::Driver);
+        // b's controller only initialised the car library: its driver does not run, the
+        // wheels stay held at 0 rad/s although its driver was told 20 km/h.
+        cruise(&mut robot, "b", Libraries::Car);
+        assert_eq!(robot.controllers().len(), 2);
+        for _ in 0..200 {
+            assert_eq!(robot.driver_step(), 0);
+        }
+        // 2 s at the world's 10 ms: one world step per call, not one per controller.
+        assert!((robot.time() - 2.0).abs() < 1e-9);
+        assert!(
+            speed(&robot, "a") > 3.0,
+            "a cruises: {} m/s",
+            speed(&robot, "a")
+        );
+        assert!(
+            speed(&robot, "b").abs() < 0.1,
+            "b is held: {} m/s",
+            speed(&robot, "b")
+        );
+        // Selecting a car again returns to its controller (with its libraries).
+        robot.select("a").unwrap();
+        assert_eq!(robot.controllers().len(), 2);
+        assert_eq!(robot.current_car(), Some("a"));
+        assert_eq!(robot.controller().libraries(), Libraries::Driver);
+    }
+
+    #[test]
+    fn a_robot_step_runs_no_controller_s_driver() {
+        let mut robot = two("a");
+        cruise(&mut robot, "a", Libraries::Driver);
+        cruise(&mut robot, "b", Libraries::Driver);
+        robot.advance(100);
+        assert!((robot.time() - 1.0).abs() < 1e-9);
+        // Held at 0 rad/s by the car library since neither driver ran.
+        assert!(speed(&robot, "a").abs() < 0.1 && speed(&robot, "b").abs() < 0.1);
+    }
+
+    #[test]
+    fn an_unknown_car_is_refused_with_the_world_s_names() {
+        let mut robot = two("a");
+        assert_eq!(
+            robot.select("c"),
+            Err("the world w.toml has no car named \"c\" (its cars: a, b)".to_string())
+        );
+        assert_eq!(robot.current_car(), Some("a"));
+    }
+}
