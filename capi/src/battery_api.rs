@@ -13,13 +13,13 @@ use crate::session::with_robot;
 
 /// The robot's battery sensor: its car's, or the DifferentialWheels robot's own.
 fn sensor(robot: &Robot) -> BatterySensor {
-    match robot.body {
+    match robot.body() {
         Body::Car { id, .. } => robot
             .simulation
             .battery_sensor(id)
             .copied()
             .unwrap_or_default(),
-        Body::DifferentialWheels(_) => robot.robot_battery,
+        Body::DifferentialWheels(_) => robot.controller().robot_battery,
     }
 }
 
@@ -29,14 +29,14 @@ fn enable(robot: &mut Robot, period_ms: c_int, function: &str) {
     let Some(period) = message::sampling_period(period_ms, function) else {
         return;
     };
-    match robot.body {
+    match robot.body() {
         Body::Car { id, .. } => {
             // The robot's own car: it exists.
             let _ = robot.simulation.enable_battery_sensor(id, period);
         }
         Body::DifferentialWheels(_) => {
             let now_ms = robot.simulation.world().time_ms();
-            robot.robot_battery.enable(period, now_ms);
+            robot.controller_mut().robot_battery.enable(period, now_ms);
         }
     }
 }

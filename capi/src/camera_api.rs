@@ -326,7 +326,7 @@ pub extern "C" fn wb_camera_recognition_get_objects(
             let function = "wb_camera_recognition_get_objects";
             let (index, _) = with_recognition(r, tag, function)?;
             let objects = objects(r, tag, function)?.to_vec();
-            let store = r.buffers.recognition(index)?;
+            let store = r.controller_mut().buffers.recognition(index)?;
             store.fill(&objects);
             Some(store.objects.as_ptr())
         })

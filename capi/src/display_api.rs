@@ -166,7 +166,7 @@ pub extern "C" fn wb_display_image_copy(
     let handle = crate::guard::call("wb_display_image_copy", move || {
         with_robot(|r| {
             let copy = display(r, tag, "wb_display_image_copy")?.copy(x, y, width, height)?;
-            Some(r.images.insert(copy))
+            Some(r.controller_mut().images.insert(copy))
         })
         .unwrap_or(0)
     });
@@ -247,7 +247,7 @@ pub unsafe extern "C" fn wb_display_image_new(
         with_robot(|r| {
             display(r, tag, "wb_display_image_new")?;
             let image = DisplayImage::from_bytes(w, h, data, f)?;
-            Some(r.images.insert(image))
+            Some(r.controller_mut().images.insert(image))
         })
         .unwrap_or(0)
     });
@@ -267,7 +267,7 @@ pub extern "C" fn wb_display_image_paste(
     let handle = image as usize;
     crate::guard::call("wb_display_image_paste", move || {
         with_robot(|r| {
-            let Some(image) = r.images.get(handle).cloned() else {
+            let Some(image) = r.controller().images.get(handle).cloned() else {
                 message::error("wb_display_image_paste(): invalid image reference.");
                 return;
             };
@@ -284,7 +284,9 @@ pub extern "C" fn wb_display_image_delete(tag: WbDeviceTag, image: WbImageRef) {
     let handle = image as usize;
     crate::guard::call("wb_display_image_delete", move || {
         with_robot(|r| {
-            if display(r, tag, "wb_display_image_delete").is_some() && !r.images.remove(handle) {
+            if display(r, tag, "wb_display_image_delete").is_some()
+                && !r.controller_mut().images.remove(handle)
+            {
                 message::error("wb_display_image_delete(): invalid image reference.");
             }
         })
@@ -376,7 +378,7 @@ pub unsafe extern "C" fn wb_display_image_save(
             };
             let picture = if handle == 0 {
                 whole
-            } else if let Some(i) = r.images.get(handle) {
+            } else if let Some(i) = r.controller().images.get(handle) {
                 i.clone()
             } else {
                 message::error("wb_display_image_save(): invalid image reference.");
@@ -414,7 +416,7 @@ pub unsafe extern "C" fn wb_display_image_load(
                 return None;
             };
             match load_png(Path::new(&name)) {
-                Ok(image) => Some(r.images.insert(image)),
+                Ok(image) => Some(r.controller_mut().images.insert(image)),
                 Err(e) => {
                     message::error(format_args!("{function}(): {e}."));
                     None

@@ -30,7 +30,7 @@ fn settings<'a>(
 /// The sensor's lookup table (row-major), `None` if empty or a wrong tag.
 fn lookup_table<'a>(robot: &'a Robot, function: &str, tag: WbDeviceTag) -> Option<&'a [f64]> {
     let (index, _) = settings(robot, function, tag)?;
-    Some(robot.buffers.table(index)).filter(|t| !t.is_empty())
+    Some(robot.controller().buffers.table(index)).filter(|t| !t.is_empty())
 }
 
 /// The Rust twin of [`wb_distance_sensor_get_lookup_table`] for the Python package: the rows

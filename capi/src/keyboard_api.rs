@@ -11,9 +11,9 @@ use crate::session::with_robot;
 
 /// The keyboard of the robot: its car's, or the DifferentialWheels robot's own.
 fn period(robot: &Robot) -> u32 {
-    match robot.body {
+    match robot.body() {
         Body::Car { id, .. } => robot.simulation.keyboard(id).map_or(0, Keyboard::period_ms),
-        Body::DifferentialWheels(_) => robot.robot_keyboard.period_ms(),
+        Body::DifferentialWheels(_) => robot.controller().robot_keyboard.period_ms(),
     }
 }
 
@@ -23,14 +23,14 @@ fn enable(robot: &mut Robot, period_ms: c_int, function: &str) {
     let Some(period) = message::sampling_period(period_ms, function) else {
         return;
     };
-    match robot.body {
+    match robot.body() {
         Body::Car { id, .. } => {
             // The robot's own car: it exists.
             let _ = robot.simulation.enable_keyboard(id, period);
         }
         Body::DifferentialWheels(_) => {
             let now_ms = robot.simulation.world().time_ms();
-            robot.robot_keyboard.enable(period, now_ms);
+            robot.controller_mut().robot_keyboard.enable(period, now_ms);
         }
     }
 }
@@ -62,9 +62,9 @@ entry_points! {
                 );
                 return -1;
             }
-            match r.body {
+            match r.body() {
                 Body::Car { id, .. } => r.simulation.next_key(id).unwrap_or(-1),
-                Body::DifferentialWheels(_) => r.robot_keyboard.next_key(),
+                Body::DifferentialWheels(_) => r.controller_mut().robot_keyboard.next_key(),
             }
         })
     }

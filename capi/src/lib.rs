@@ -69,6 +69,8 @@ mod abi;
 mod battery_api;
 mod camera_api;
 mod car_api;
+mod controller;
+pub mod controllers;
 mod device_api;
 mod devices;
 mod differential_wheels_api;

@@ -237,7 +237,7 @@ entry_points! {
         with_robot(|r| {
             let index = lidar(r, "wb_lidar_get_frequency", tag).map(|(i, _, _)| i);
             index
-                .and_then(|i| r.buffers.slot(i))
+                .and_then(|i| r.controller_mut().buffers.slot(i))
                 .map_or(f64::NAN, |s| s.frequency)
         })
     }
@@ -256,7 +256,7 @@ entry_points! {
                 message::error(format_args!("{f}() out of frequency range [{lo:.6}, {hi:.6}]."));
                 return;
             }
-            if let Some(slot) = r.buffers.slot(i) {
+            if let Some(slot) = r.controller_mut().buffers.slot(i) {
                 slot.frequency = frequency;
             }
         })
@@ -309,7 +309,7 @@ pub extern "C" fn wb_lidar_get_range_image(tag: WbDeviceTag) -> *const f32 {
     call_pointer("wb_lidar_get_range_image", || {
         with_robot(|r| {
             let (i, image) = range_image(r, "wb_lidar_get_range_image", tag)?;
-            let slot = r.buffers.slot(i)?;
+            let slot = r.controller_mut().buffers.slot(i)?;
             slot.range_image = image;
             Some(slot.range_image.as_ptr())
         })
@@ -329,7 +329,7 @@ pub extern "C" fn wb_lidar_get_layer_range_image(tag: WbDeviceTag, layer: c_int)
             };
             let image = reading.range_image.clone();
             let offset = usize::try_from(layer).ok()? * s.horizontal_resolution as usize;
-            let slot = r.buffers.slot(i)?;
+            let slot = r.controller_mut().buffers.slot(i)?;
             slot.range_image = image;
             slot.range_image.get(offset..).map(<[f32]>::as_ptr)
         })
@@ -344,7 +344,7 @@ pub extern "C" fn wb_lidar_get_point_cloud(tag: WbDeviceTag) -> *const LidarPoin
     call_pointer("wb_lidar_get_point_cloud", || {
         with_robot(|r| {
             let (i, cloud) = point_cloud(r, "wb_lidar_get_point_cloud", tag)?;
-            let slot = r.buffers.slot(i)?;
+            let slot = r.controller_mut().buffers.slot(i)?;
             slot.point_cloud = cloud;
             Some(slot.point_cloud.as_ptr())
         })
@@ -364,7 +364,7 @@ pub extern "C" fn wb_lidar_get_layer_point_cloud(
             let (_, _, s) = layer_of(r, function, tag, layer)?;
             let offset = usize::try_from(layer).ok()? * s.horizontal_resolution as usize;
             let (i, cloud) = point_cloud(r, function, tag)?;
-            let slot = r.buffers.slot(i)?;
+            let slot = r.controller_mut().buffers.slot(i)?;
             slot.point_cloud = cloud;
             slot.point_cloud.get(offset..).map(<[LidarPoint]>::as_ptr)
         })

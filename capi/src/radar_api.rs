@@ -108,7 +108,7 @@ pub extern "C" fn wb_radar_get_targets(tag: WbDeviceTag) -> *const WbRadarTarget
     call_pointer("wb_radar_get_targets", || {
         with_robot(|r| {
             let (i, t) = targets(r, "wb_radar_get_targets", tag)?;
-            let slot = r.buffers.slot(i)?;
+            let slot = r.controller_mut().buffers.slot(i)?;
             slot.targets = t;
             (!slot.targets.is_empty()).then_some(slot.targets.as_ptr())
         })

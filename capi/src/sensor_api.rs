@@ -88,9 +88,9 @@ fn roll_pitch_yaw(robot: &mut Robot, tag: WbDeviceTag) -> &[f64; 3] {
         read(robot, DeviceKind::InertialUnit, function, tag, true)
     {
         let rpy = u.roll_pitch_yaw();
-        *robot.buffers.roll_pitch_yaw = [rpy.roll, rpy.pitch, rpy.yaw];
+        *robot.controller_mut().buffers.roll_pitch_yaw = [rpy.roll, rpy.pitch, rpy.yaw];
     }
-    &robot.buffers.roll_pitch_yaw
+    &robot.controller().buffers.roll_pitch_yaw
 }
 
 /// A three-axis sensor's values, with its index. The accelerometer's getter says nothing of a
@@ -108,7 +108,7 @@ fn triaxial(robot: &Robot, kind: DeviceKind, tag: WbDeviceTag) -> Option<(usize,
 fn lookup_table(robot: &Robot, kind: DeviceKind, tag: WbDeviceTag) -> Option<&[f64]> {
     let function = format!("wb_{}_get_lookup_table", prefix(kind));
     let (_, index) = find(robot, tag, kind, &function, true)?;
-    Some(robot.buffers.table(index)).filter(|t| !t.is_empty())
+    Some(robot.controller().buffers.table(index)).filter(|t| !t.is_empty())
 }
 
 /// Webots' `"%d° %d′ %d″"` of a decimal angle: whole degrees, minutes and seconds, each
@@ -123,7 +123,7 @@ fn degrees_minutes_seconds(x: f64) -> String {
 
 /// Copies `values` into sensor `index`'s storage and points at it.
 fn store(robot: &mut Robot, index: usize, values: &[f64]) -> Option<*const f64> {
-    let slot = robot.buffers.slot(index)?;
+    let slot = robot.controller_mut().buffers.slot(index)?;
     slot.values[..values.len()].copy_from_slice(values);
     Some(slot.values.as_ptr())
 }
@@ -305,7 +305,7 @@ pub extern "C" fn wb_gps_get_speed_vector(tag: WbDeviceTag) -> *const f64 {
     call_pointer("wb_gps_get_speed_vector", || {
         with_robot(|r| {
             let (i, _, v) = gps(r, "wb_gps_get_speed_vector", tag)?;
-            let slot = r.buffers.slot(i)?;
+            let slot = r.controller_mut().buffers.slot(i)?;
             slot.speed_vector = v;
             Some(slot.speed_vector.as_ptr())
         })

@@ -1,9 +1,11 @@
-//! The one robot of the controller process, shared by every entry point of `libcar` and
+//! The world of the controller process, shared by every entry point of `libcar` and
 //! `libdriver` (they are one shared object, so C, C++ and Python callers all see this state).
 //!
 //! Webots keeps one robot connection, one car and one driver per process as C globals; here
 //! they live behind a mutex (entry points may be called from any thread, one at a time) and
-//! every access goes through a function that checks the initialisation state first.
+//! every access goes through a function that checks the initialisation state first. The
+//! entry points act on the world's current controller: the process's one controller, unless
+//! a front-end added more with [`select`] (the project's extension, `crate::controllers`).
 
 use std::sync::{Mutex, MutexGuard, PoisonError};
 
@@ -13,7 +15,8 @@ use vehicle_model::Driver;
 use crate::message;
 use crate::robot::{Body, Libraries, Robot};
 
-/// The loaded robot, `None` before `wb_robot_init` and after `wb_robot_cleanup`.
+/// The loaded world and its controllers, `None` before `wb_robot_init` and after
+/// `wb_robot_cleanup`.
 static SESSION: Mutex<Option<Robot>> = Mutex::new(None);
 
 /// The `wbu_driver_init()` name in "should be called before" warnings.
@@ -35,7 +38,7 @@ pub(crate) fn with_robot<R>(f: impl FnOnce(&mut Robot) -> R) -> R {
     let mut slot = lock();
     let robot = match &mut *slot {
         Some(robot) => robot,
-        None => match Robot::from_environment() {
+        None => match Robot::from_environment(None) {
             Ok(robot) => slot.insert(robot),
             Err(problem) => {
                 // One `Error: ` line per error of the world file.
@@ -60,9 +63,31 @@ pub(crate) fn with_robot<R>(f: impl FnOnce(&mut Robot) -> R) -> R {
 pub fn load_world() -> Result<(), String> {
     let mut slot = lock();
     if slot.is_none() {
-        *slot = Some(Robot::from_environment()?);
+        *slot = Some(Robot::from_environment(None)?);
     }
     Ok(())
+}
+
+/// Makes the controller of the world's car `car` the current one (see `Robot::select`),
+/// loading the world named by `VEHICLE_WORLD` for that car first if none is loaded (its
+/// warnings printed as `wb_robot_init` prints them).
+///
+/// # Errors
+/// What is wrong with the world (as [`load_world`]), or a name no car of it has.
+pub(crate) fn select(car: &str) -> Result<(), String> {
+    let mut slot = lock();
+    match &mut *slot {
+        Some(robot) => robot.select(car),
+        None => {
+            *slot = Some(Robot::from_environment(Some(car))?);
+            Ok(())
+        }
+    }
+}
+
+/// Runs `f` on the loaded world, `None` if none is loaded (nothing is loaded).
+pub(crate) fn with_loaded<R>(f: impl FnOnce(&Robot) -> R) -> Option<R> {
+    lock().as_ref().map(f)
 }
 
 /// Frees the robot (Webots: `wb_robot_cleanup`, also reached from `wbu_car_cleanup` and
@@ -81,11 +106,13 @@ pub(crate) fn init_car() {
 
 /// [`init_car`] on a loaded robot; returns the car's id.
 fn init_car_of(robot: &mut Robot) -> VehicleId {
-    match &mut robot.body {
+    match robot.body() {
         Body::Car { id, libraries } => {
-            let id = *id;
-            if *libraries == Libraries::None {
-                *libraries = Libraries::Car;
+            if libraries == Libraries::None {
+                robot.controller_mut().body = Body::Car {
+                    id,
+                    libraries: Libraries::Car,
+                };
                 // Webots' car library puts the driven wheels in velocity mode at 0 rad/s: the
                 // car stands as if parked until a control mode is chosen. The id is the
                 // simulation's own, so this cannot fail.
@@ -104,10 +131,11 @@ fn init_car_of(robot: &mut Robot) -> VehicleId {
 /// Does nothing if it is already initialised.
 pub(crate) fn init_driver() {
     with_robot(|robot| {
-        init_car_of(robot);
-        if let Body::Car { libraries, .. } = &mut robot.body {
-            *libraries = Libraries::Driver;
-        }
+        let id = init_car_of(robot);
+        robot.controller_mut().body = Body::Car {
+            id,
+            libraries: Libraries::Driver,
+        };
     });
 }
 
@@ -119,7 +147,7 @@ fn initialised<'a>(
     function: &'static str,
 ) -> Option<(&'a mut Robot, VehicleId)> {
     if let Some(robot) = slot
-        && let Body::Car { id, libraries } = robot.body
+        && let Body::Car { id, libraries } = robot.body()
         && libraries >= library
     {
         return Some((robot, id));
@@ -221,7 +249,7 @@ pub(crate) fn with_differential_wheels<R>(
     neutral: R,
     f: impl FnOnce(&mut DifferentialWheels) -> R,
 ) -> R {
-    with_robot(|robot| match robot.body {
+    with_robot(|robot| match robot.body() {
         Body::DifferentialWheels(id) => robot
             .simulation
             .world_mut()

@@ -11,7 +11,7 @@
 use sim::nalgebra::{Point3, Vector3};
 use sim::{Placement, SimError, VehicleId};
 
-use crate::robot::{Body, CONTROLLER_RUN, Robot};
+use crate::robot::{CONTROLLER_RUN, Controller, Robot};
 use crate::session::with_robot;
 
 /// A node a supervisor can move.
@@ -104,14 +104,16 @@ pub fn set_velocity(node: NodeRef, linear: [f64; 3], angular: [f64; 3]) -> Resul
 /// The engine's refusal, as text (none for a world loaded from a file).
 pub fn simulation_reset() -> Result<(), String> {
     with_robot(|robot| {
-        let periods: Vec<(VehicleId, Vec<u32>)> = match &robot.body {
-            Body::Car { id, .. } => robot
-                .simulation
-                .devices(*id)
-                .map(|ds| vec![(*id, ds.iter().map(|d| d.period_ms()).collect())])
-                .unwrap_or_default(),
-            _ => Vec::new(),
-        };
+        // Every controller's car (the process's one, or each car a front-end serves).
+        let periods: Vec<(VehicleId, Vec<u32>)> = robot
+            .controllers()
+            .iter()
+            .filter_map(Controller::car)
+            .filter_map(|id| {
+                let devices = robot.simulation.devices(id).ok()?;
+                Some((id, devices.iter().map(|d| d.period_ms()).collect()))
+            })
+            .collect();
         let recording = robot.simulation.is_recording();
         robot
             .simulation

@@ -8,6 +8,8 @@
 //!   `sim::Simulation`, cars added at will, per-step telemetry, the `vehicle-sim` scenarios
 //!   (module `simulation`), its telemetry shown to numpy without a copy (module `telemetry`), its snapshots (module
 //!   `snapshot`).
+//! * Several controllers in one process, one per car (`controllers_*`), the `capi` crate's
+//!   `controllers` extension for `webots_vehicle.controllers` (module `controllers`).
 //! * Webots' Supervisor subset (`supervisor_*`), the `capi` crate's `supervisor` functions on
 //!   the controller's world, for `controller.Supervisor` (module `supervisor`).
 //! * `Sweep`, the core of `webots_vehicle.Sweep`: a sweep file's cases by index, each run into
@@ -18,6 +20,7 @@
 //! Units: m, rad (positive steers right), rad/s, s; km/h and ms where the Webots API uses them.
 
 mod camera;
+mod controllers;
 mod display;
 mod keyboard;
 mod ray_sensors;
@@ -59,6 +62,7 @@ fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("WorldError", m.py().get_type::<WorldError>())?;
     m.add("SimulationError", m.py().get_type::<SimulationError>())?;
     webots::register(m)?;
+    controllers::register(m)?;
     sensors::register(m)?;
     camera::register(m)?;
     display::register(m)?;

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """An independent rospy client of ``vehicle-ros`` (ros/tests/run.sh starts the master and the
-node on ros/tests/worlds/ros.toml, then this). It knows the node only through ROS: the names
+node on ros/tests/worlds/ros.toml, then this; with the argument ``two-cars``, the node on
+ros/tests/worlds/two_cars.toml, on a master of its own). It knows the node only through ROS: the names
 and types of the driver library's ROS tabs (../shared/seeds/driver-library.md, corrected by
 RosAutomobile.cpp where the spec says the source differs), the webots_ros classes, and the
 BmwX5's published numbers (Webots' PROTO). Exit status 0 when every check passes.
@@ -15,6 +16,7 @@ import sys
 import threading
 import time
 
+from geometry_msgs.msg import PointStamped
 import rosgraph
 import rospy
 import rosservice
@@ -457,5 +459,135 @@ def main():
     return 0
 
 
+def two_cars():
+    """The node on ros/tests/worlds/two_cars.toml (run.sh, on a master of its own): each car
+    without a programme under its own name, each following its own commands."""
+    rospy.init_node("vehicle_ros_two_cars_client")
+    cars = ("alpha", "beta")
+    for car in cars:
+        proxy(f"/{car}/robot/get_device_list", robot_get_device_list)  # the node is up
+
+    # Names: every automobile service and topic under /<car>/, nothing at the root, the
+    # programmed car not served; each car's devices are its own.
+    topics, services = names_and_types()
+    types = dict(rosgraph.Master("/client").getTopicTypes())
+    for car in cars:
+        missing = [n for n in SERVICES if f"/{car}/automobile/{n}" not in services]
+        check(not missing, f"/{car}/automobile/ has every service (missing {missing})")
+        missing = [n for n in TOPICS if n != "rpm" and f"/{car}/automobile/{n}" not in topics]
+        check(not missing, f"/{car}/automobile/ has every topic but rpm (missing {missing})")
+        check(
+            rosservice.get_service_type(f"/{car}/automobile/set_cruising_speed")
+            == "webots_ros/set_float",
+            f"/{car}/automobile/set_cruising_speed is webots_ros/set_float",
+        )
+        check(f"/{car}/gps/enable" in services, f"/{car}/gps/enable")
+        check(f"/{car}/robot/get_time" in services, f"/{car}/robot/get_time")
+    check("/alpha/gyro/enable" in services, "/alpha/gyro/enable")
+    check("/beta/gyro/enable" not in services, "beta has no gyro")
+    check(not any(s.startswith("/gamma/") for s in services), "gamma (programmed) is not served")
+    check("/automobile/set_gear" not in services, "no car in the root namespace")
+
+    # One node, /clock published once, by it.
+    expected = re.sub(
+        r"[-. ()]", "_", f"vehicle_ros_{os.environ['VEHICLE_ROS_NODE_PID']}_{socket.gethostname()}"
+    )
+    model = Latest("/model_name", String).wait()
+    check(model is not None and model.data == expected, f"/model_name is {expected}")
+    publishers = dict(rosgraph.Master("/client").getSystemState()[0])
+    check(publishers.get("/clock") == [f"/{expected}"], f"/clock published by /{expected} only")
+    check(types.get("/clock") == "rosgraph_msgs/Clock", "/clock is rosgraph_msgs/Clock")
+    clock = Latest("/clock", Clock)
+    first = clock.wait()
+    later = clock.wait(after=clock.count + 10)
+    if first is not None and later is not None:
+        # One /clock message per world step: consecutive messages are 10 ms apart, whatever
+        # the number of cars (a message per car would repeat a stamp).
+        stamps = []
+        done = threading.Event()
+
+        def collect(message):
+            stamps.append(message.clock.to_nsec())
+            if len(stamps) >= 20:
+                done.set()
+
+        sub = rospy.Subscriber("/clock", Clock, collect, queue_size=100)
+        done.wait(20.0)
+        sub.unregister()
+        steps = {b - a for a, b in zip(stamps, stamps[1:])}
+        check(steps == {10_000_000}, f"/clock advances 10 ms per message ({sorted(steps)} ns)")
+
+    # Each car its own commands: alpha 20 km/h steering right, beta 10 km/h steering left.
+    commands = {"alpha": (20.0, 0.1), "beta": (10.0, -0.05)}
+    for car, (speed, steering) in commands.items():
+        proxy(f"/{car}/gps/enable", set_int)(10)
+        proxy(f"/{car}/automobile/set_cruising_speed", set_float)(speed)
+        proxy(f"/{car}/automobile/set_steering_angle", set_float)(steering)
+    proxy("/alpha/automobile/set_dipped_beam", set_bool)(True)
+    proxy("/alpha/automobile/set_indicator", set_int)(1)  # RIGHT
+    proxy("/beta/automobile/set_wiper_mode", set_int)(2)  # NORMAL
+    for car, (speed, steering) in commands.items():
+        current = Latest(f"/{car}/automobile/current_speed", Float64Stamped)
+        # The cruise control settles within 0.5 km/h of its target (as the one-car test);
+        # 60 s of wall time is 60 s simulated at the node's real-time pace.
+        reached = wait_until(
+            lambda: current.message is not None and abs(current.message.data - speed) < 0.5, 60.0
+        )
+        message = current.message
+        check(
+            bool(reached),
+            f"/{car}/automobile/current_speed reaches {speed} km/h ({message and message.data})",
+        )
+        check(
+            message is not None and message.header.frame_id == f"{car}/automobile",
+            f"/{car}/automobile/current_speed frame_id {car}/automobile",
+        )
+        angle = Latest(f"/{car}/automobile/steering_angle", Float64Stamped).wait()
+        # The mean of the two measured wheel angles: within 1e-3 rad of the command (the
+        # Ackermann pair's mean differs by a second-order term).
+        check(
+            angle is not None and abs(angle.data - steering) < 1e-3,
+            f"/{car}/automobile/steering_angle ≈ {steering} rad ({angle and angle.data})",
+        )
+        target = proxy(f"/{car}/automobile/get_cruising_speed", get_float)(True).value
+        check(target == speed, f"/{car}/automobile/get_cruising_speed = {speed} ({target})")
+        # The car's own GPS: its speed settles at the car's (km/h to m/s; 0.2 m/s for the
+        # cruise control's 0.5 km/h and the roof's sweep around the turn). The driven wheels'
+        # estimate reaches the target first, while the body still gains on their slip, so
+        # the GPS is given 20 s more; the other car's speed is 2.8 m/s away.
+        gps = Latest(f"/{car}/gps/speed", Float64Stamped)
+        settled = wait_until(
+            lambda: gps.message is not None and abs(gps.message.data - speed / 3.6) < 0.2, 20.0
+        )
+        check(
+            bool(settled),
+            f"/{car}/gps/speed ≈ {speed / 3.6:.2f} m/s ({gps.message and gps.message.data})",
+        )
+    # Alpha turns right (towards −y), beta left (+y) from 10 m apart: they only draw apart.
+    alpha = Latest("/alpha/gps/values", PointStamped).wait()
+    beta = Latest("/beta/gps/values", PointStamped).wait()
+    check(
+        alpha is not None and beta is not None and beta.point.y - alpha.point.y > 10.0,
+        f"each GPS follows its car: beta's y − alpha's y > 10 m "
+        f"({alpha and alpha.point.y}, {beta and beta.point.y})",
+    )
+    lights = {
+        car: (
+            proxy(f"/{car}/automobile/get_dipped_beam", get_bool)(True).value,
+            proxy(f"/{car}/automobile/get_indicator", get_int)(True).value,
+            proxy(f"/{car}/automobile/get_wiper_mode", get_int)(True).value,
+        )
+        for car in cars
+    }
+    check(lights["alpha"] == (True, 1, 0), f"alpha: dipped beams, indicator right ({lights['alpha']})")
+    check(lights["beta"] == (False, 0, 2), f"beta: wipers NORMAL only ({lights['beta']})")
+
+    if FAILURES:
+        print(f"{len(FAILURES)} check(s) failed", file=sys.stderr)
+        return 1
+    print("all two-car checks passed")
+    return 0
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(two_cars() if sys.argv[1:] == ["two-cars"] else main())

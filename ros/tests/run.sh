@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The ROS tests of vehicle-ros (ros/README.md, "Tests"): a real rosmaster, the node on
 # ros/tests/worlds/ros.toml, an independent rospy client (ros/tests/client.py) that calls the
-# services and reads the topics, then the master stopped under the node, which must exit 0.
+# services and reads the topics, then the master stopped under the node, which must exit 0;
+# then, on a master of its own, the node on ros/tests/worlds/two_cars.toml serving two cars,
+# each driven differently by the client.
 #
 #   ros/tests/run.sh            # builds target/ros-venv: pip install ./python ./ros
 #
@@ -142,4 +144,52 @@ if [ "$status" -ne 0 ] || ! grep -q "the master went away" "$LOGS/node.log"; the
   exit 1
 fi
 echo "ok   vehicle-ros exits 0 when the master goes away"
+
+# Several cars (ros/README.md, "Several cars"): a master of its own, the node on the two-car
+# world serving each car without a programme under /<car>/, the client driving both.
+PORT=$(free_port)
+export ROS_MASTER_URI="http://127.0.0.1:$PORT"
+rosmaster --core -p "$PORT" >"$LOGS/master-two-cars.log" 2>&1 &
+MASTER_PID=$!
+for _ in $(seq 100); do
+  if /usr/bin/python3 -c 'import rosgraph, sys; sys.exit(0 if rosgraph.is_master_online() else 1)'; then break; fi
+  sleep 0.1
+done
+refused() {  # refused EXPECTED-TEXT ARGUMENTS...: the node exits 1 saying EXPECTED-TEXT
+  local expected=$1
+  shift
+  set +e
+  "$VENV/bin/vehicle-ros" --world ros/tests/worlds/two_cars.toml "$@" >"$LOGS/refused.log" 2>&1
+  local status=$?
+  set -e
+  if [ "$status" -ne 1 ] || ! grep -qF -- "$expected" "$LOGS/refused.log"; then
+    echo "FAIL vehicle-ros $*: status $status" >&2
+    cat "$LOGS/refused.log" >&2
+    exit 1
+  fi
+  echo "ok   vehicle-ros $* exits 1: $expected"
+}
+refused "--name names one car's node" --name ego
+refused "--cars names 'delta', which is no car of the world (its cars: alpha, beta, gamma)" --cars delta
+refused "--cars names 'alpha' twice" --cars alpha,alpha
+
+"$VENV/bin/vehicle-ros" --world ros/tests/worlds/two_cars.toml >"$LOGS/node-two-cars.log" 2>&1 &
+NODE_PID=$!
+if ! VEHICLE_ROS_NODE_PID=$NODE_PID "$VENV/bin/python" ros/tests/client.py two-cars; then
+  echo "--- two-car node log (last 40 lines) ---" >&2
+  tail -n 40 "$LOGS/node-two-cars.log" >&2
+  exit 1
+fi
+kill -INT "$NODE_PID"
+set +e
+wait "$NODE_PID"
+status=$?
+set -e
+NODE_PID=""
+if [ "$status" -ne 0 ]; then
+  echo "FAIL the two-car node after SIGINT: status $status" >&2
+  tail -n 20 "$LOGS/node-two-cars.log" >&2
+  exit 1
+fi
+echo "ok   the two-car node exits 0 on SIGINT"
 echo "ROS tests passed"

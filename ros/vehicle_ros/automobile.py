@@ -28,7 +28,7 @@ from webots_ros.srv import (
     set_intResponse,
 )
 
-from vehicle_ros.calls import MainThreadCalls
+from vehicle_ros.calls import CarCalls
 
 __all__ = ["Automobile", "SERVICES", "TOPICS"]
 
@@ -111,7 +111,7 @@ _TORQUE = 1  # Driver.TORQUE: ``rpm`` is published only in this control mode, as
 class Automobile:
     """Advertises the automobile services and topics of one car and publishes the topics."""
 
-    def __init__(self, car: Any, calls: MainThreadCalls, namespace: str, frame_id: str) -> None:
+    def __init__(self, car: Any, calls: CarCalls, namespace: str, frame_id: str) -> None:
         self._car = car
         self._prefix = f"{namespace}automobile/"
         self._calls = calls

@@ -14,7 +14,7 @@ import tempfile
 import threading
 from typing import Any, Callable, List, Optional, Tuple
 
-__all__ = ["MainThreadCalls", "SimulationEnded"]
+__all__ = ["CarCalls", "MainThreadCalls", "SimulationEnded"]
 
 
 class SimulationEnded(RuntimeError):
@@ -98,3 +98,22 @@ class MainThreadCalls:
         """No more calls: the waiting ones and later ones raise :class:`SimulationEnded`."""
         self._closed.set()
         self.run_pending()
+
+
+class CarCalls:
+    """One car's view of the node's queue when the node serves several cars: each call runs
+    with that car's controller selected (``webots_vehicle.controllers.select``), so the
+    library call reaches that car's controller."""
+
+    def __init__(self, calls: MainThreadCalls, select: Callable[[], None]) -> None:
+        self._calls = calls
+        self._select = select
+
+    def call(self, work: Callable[[], Any]) -> Any:
+        """As :meth:`MainThreadCalls.call`, with the car's controller selected first."""
+
+        def selected() -> Any:
+            self._select()
+            return work()
+
+        return self._calls.call(selected)

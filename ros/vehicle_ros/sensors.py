@@ -51,7 +51,7 @@ from webots_ros.srv import (
 )
 
 from controller import GPS, Node
-from vehicle_ros.calls import MainThreadCalls
+from vehicle_ros.calls import CarCalls
 
 __all__ = ["HIDDEN_DEVICES", "SensorInterface", "ros_name"]
 
@@ -100,7 +100,7 @@ class _Device:
     """One device: its services, and the topics of a sensor while enabled."""
 
     def __init__(
-        self, device: Any, calls: MainThreadCalls, namespace: str, basic_step: int
+        self, device: Any, calls: CarCalls, namespace: str, basic_step: int
     ) -> None:
         self.device = device
         self.name = ros_name(device.getName())
@@ -315,7 +315,7 @@ class SensorInterface:
     """The generic interface of every device of the robot except the car's own."""
 
     def __init__(
-        self, robot: Any, calls: MainThreadCalls, namespace: str, auto_publish: bool
+        self, robot: Any, calls: CarCalls, namespace: str, auto_publish: bool
     ) -> None:
         basic_step = int(robot.getBasicTimeStep())
         self.devices: List[_Device] = []

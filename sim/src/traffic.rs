@@ -111,6 +111,14 @@ impl Traffic {
         self.cars.is_empty()
     }
 
+    /// Takes car `id` out of the traffic: its programmes no longer run (a front-end drives
+    /// it). False if it was not in the traffic.
+    pub fn release(&mut self, id: VehicleId) -> bool {
+        let before = self.cars.len();
+        self.cars.retain(|c| c.id != id);
+        self.cars.len() != before
+    }
+
     /// Gives the programmed cars' drivers and lane followers the commands due at the
     /// simulation's time; what those commands caused, in order.
     pub fn issue_due(&mut self, simulation: &mut Simulation) -> Vec<TrafficNote> {
@@ -198,6 +206,24 @@ mod tests {
         assert_ne!(traffic.position(), start);
         traffic.rewind();
         assert_eq!(traffic.position(), start);
+    }
+
+    #[test]
+    fn a_released_car_runs_its_programme_no_more() {
+        let description = world_file::parse_str("w", TWO).unwrap();
+        let (mut sim, _) = Simulation::from_description(&description).unwrap();
+        let ids: Vec<_> = sim.car_ids().collect();
+        let mut traffic = Traffic::new(&description, &ids, 1);
+        assert!(traffic.release(ids[0]));
+        assert!(!traffic.release(ids[0]), "released twice");
+        assert!(traffic.is_empty());
+        for _ in 0..100 {
+            assert_eq!(traffic.issue_due(&mut sim), []);
+            sim.step().unwrap();
+        }
+        // Its 36 km/h at 0 s was never issued: the lead stands (well under the 3 m/s it
+        // reaches in 1.5 s when it runs its programme, above).
+        assert!(sim.telemetry(ids[0]).unwrap().speed.abs() < 0.1);
     }
 
     #[test]

@@ -38,7 +38,7 @@ import numbers
 import operator
 import struct
 import sys
-from typing import Dict, List, Optional, Union
+from typing import Dict, List, Optional, Set, Union
 
 from webots_vehicle import _native
 from webots_vehicle._native import WorldError
@@ -1001,13 +1001,20 @@ class Robot:
 
     Creating it loads the world named by ``VEHICLE_WORLD`` (see the module docs). Only one
     robot exists per process: creating a second prints Webots' error on stderr and gives an
-    object that controls the same robot.
+    object that controls the same robot. A process that serves several cars through the
+    project's extension :mod:`webots_vehicle.controllers` has one robot per car's
+    controller: created while that controller is selected.
     """
 
     created: Optional["Robot"] = None
+    #: The cars whose controller has a Robot (``None``: the process's one controller).
+    _controllers: Set[Optional[str]] = set()
 
     def __init__(self) -> None:
-        if Robot.created is not None:
+        if Robot.created is None:
+            Robot._controllers = set()
+        controller = _native.controllers_current()  # None until a world is loaded
+        if Robot.created is not None and controller in Robot._controllers:
             print(
                 "Error: only one Robot instance can be created per controller process.",
                 file=sys.stderr,
@@ -1018,6 +1025,7 @@ class Robot:
             # recorded under VEHICLE_OUT writes its outputs then if it has not ended before.
             atexit.register(_native.wb_robot_cleanup)
         Robot.created = self
+        Robot._controllers.add(_native.controllers_current())
         self._devices: Dict[str, Device] = {}
         self._keyboard: Optional[Keyboard] = None
 

@@ -281,6 +281,15 @@ class Sweep:
     def values(self, index: int) -> List[Any]: ...
     def run_case(self, index: int) -> Tuple[List[Any], str]: ...
 
+def controllers_cars() -> List[Tuple[str, bool]]:
+    """The world's cars as (name, programmed) (project extension)."""
+
+def controllers_select(name: str) -> None:
+    """Makes the controller of car `name` current (project extension)."""
+
+def controllers_current() -> Optional[str]:
+    """The current controller's car (project extension)."""
+
 def supervisor_node_from_def(def_name: str) -> Optional[Tuple[str, int]]:
     """The controller world's node of DEF name ``def_name``: ("car" or "body", index)."""
 

@@ -445,6 +445,18 @@ impl Simulation {
         self.step_physics()
     }
 
+    /// Runs the drivers of every car not in `held`, then advances the world by one
+    /// `basicTimeStep`: a step of a process whose controllers drive the cars of `held`
+    /// without the driver library (their commands hold), while the other cars' drivers run.
+    /// With `held` empty it is [`Simulation::step`], with one car [`Simulation::step_others`].
+    ///
+    /// # Errors
+    /// As [`Simulation::step`].
+    pub fn step_except(&mut self, held: &[VehicleId]) -> Result<(), SimError> {
+        self.run_drivers(|id| !held.contains(&id))?;
+        self.step_physics()
+    }
+
     /// Runs the drivers of the cars `which` selects with the current sensor readings and
     /// applies their commands.
     fn run_drivers(&mut self, which: impl Fn(VehicleId) -> bool) -> Result<(), SimError> {
