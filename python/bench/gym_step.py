@@ -1,24 +1,27 @@
 """What one gymnasium ``step()`` from Python costs beyond the same step in Rust (issue #33).
 
 LaneKeep-v0 (a BmwX5, cast mounting, RoadSensor, no camera; 4 basic time steps of 10 ms per
-action), straight-ahead actions. In the same process, short blocks of ``step()`` calls are
-each followed at once by a block of the same number of steps run from Rust on the same
-environment (``bench_steps``: ``sim::vec_env::TaskEnv::step`` alone for the single
-environment, ``sim::vec_env::VecEnv::step`` on a batch of one for the vector environment;
-one Python call per block). Adjacent blocks see nearly the same load from the rest of the
-machine, so the statistic is the median over the pairs of (Python block - Rust block) per
-step, on two clocks: the wall time, and the process's CPU time (``time.process_time``),
-which leaves out the time other processes of a loaded machine take the core. For:
+action), straight-ahead actions. In the same process, each block of ``step()`` calls is
+paired with a block of as many steps run from Rust on the same environment, just before or
+just after it (alternately): ``bench_steps``, one Python call per block, runs
+``sim::vec_env::TaskEnv::step`` alone for the single environment and
+``sim::vec_env::VecEnv::step`` on a batch of one for the vector environment. Adjacent blocks
+see nearly the same load from the rest of the machine, so the statistic is the median over
+the pairs of (Python block - Rust block) per step, on two clocks: the wall time, and the
+process's CPU time (``time.process_time``), which leaves out the time other processes of a
+loaded machine take the core. For:
 
 * ``LaneKeepEnv.step()``, the single environment, unwrapped;
 * the same environment as ``gymnasium.make`` returns it (its ``OrderEnforcing`` and
   ``PassiveEnvChecker`` wrappers);
 * ``VectorEnv(num_envs=1).step()``, the vector environment on one copy;
+* ``LaneKeepEnv(copy=False).step()``, which returns the arrays the core writes into;
 
 then the same single-environment pairs once the world's 40 s are over (a step then runs no
-physics, only the observation and reward: about a microsecond of Rust, so the difference is
-measured without the noise of an 80 µs step); what each part of the Python ``step()`` costs
-alone; and the vector environment's throughput at ``num_envs=16`` (car steps per second).
+physics, only the observation and reward: a fraction of a microsecond of Rust, so the
+difference is measured without the noise of a 70 µs step); what each part of the Python
+``step()`` costs alone; and the vector environment's throughput at ``num_envs=16`` (car
+steps per second).
 
     pip install ./python[gym] && python python/bench/gym_step.py
 """
@@ -33,7 +36,7 @@ import numpy as np
 import webots_vehicle.gym as wvgym
 
 BLOCK = 25  # steps per timed block (1 s of simulated time)
-PAIRS = 200
+PAIRS = 1000
 START = (20.0, -5.625, 0.0, 15.0, 0.0)  # x m, y m, yaw rad, speed m/s, lead speed m/s
 OPTIONS = {"pose": START[:3], "speed": START[3]}
 ZERO = (0.0, 0.0)
@@ -43,15 +46,19 @@ def pairs(step_block, rust_block, before=lambda: None):
     """(Python, Rust, difference) per step (us) of each pair, for the wall time and for
     the process's CPU time (the two clocks read around each block)."""
     wall, cpu = ([], [], []), ([], [], [])
-    for _ in range(PAIRS):
+    for i in range(PAIRS):
         before()  # outside the timing
+        # Every other pair runs the Rust block first, so that neither half always follows
+        # the other (the cache state and the simulated state one block on).
+        blocks = (step_block, rust_block) if i % 2 == 0 else (rust_block, step_block)
         w0, c0 = time.perf_counter(), time.process_time()
-        step_block()
+        blocks[0]()
         w1, c1 = time.perf_counter(), time.process_time()
-        rust_block()
+        blocks[1]()
         w2, c2 = time.perf_counter(), time.process_time()
         for out, (t0, t1, t2) in ((wall, (w0, w1, w2)), (cpu, (c0, c1, c2))):
-            py, rs = (t1 - t0) / BLOCK * 1e6, (t2 - t1) / BLOCK * 1e6
+            first, second = (t1 - t0) / BLOCK * 1e6, (t2 - t1) / BLOCK * 1e6
+            py, rs = (first, second) if i % 2 == 0 else (second, first)
             out[0].append(py)
             out[1].append(rs)
             out[2].append(py - rs)
@@ -121,6 +128,24 @@ report(
     pairs(timed(vec.step, np.zeros((1, 2))), lambda: vec._core.bench_steps(BLOCK, START)),
 )
 
+single_views = wvgym.LaneKeepEnv(copy=False)
+single_views.reset(options=OPTIONS)
+
+
+def restart_views():
+    if not on_road_before_the_end(single_views):
+        single_views.reset(options=OPTIONS)
+
+
+report(
+    "LaneKeepEnv(copy=False).step()",
+    pairs(
+        timed(single_views.step, action),
+        lambda: single_views._core.bench_steps(BLOCK, ZERO),
+        restart_views,
+    ),
+)
+
 # The world's duration over: steps run no physics (see the module docs).
 over = wvgym.LaneKeepEnv()
 over.reset(options=OPTIONS)
@@ -134,6 +159,10 @@ report(
 # What each part of step() costs alone (on the finished environment: no physics), CPU time,
 # best of 5 repeats of 200,000 calls.
 core = over._core
+views = wvgym.LaneKeepEnv(copy=False)
+views.reset(options=OPTIONS)
+while not views.step(action)[3]:
+    pass
 action64 = np.zeros(2)
 parts = [
     ("_native.GymEnv.step(float32 array)", lambda: core.step(action)),
@@ -143,6 +172,7 @@ parts = [
     ("a method call (env.touching)", lambda: over.touching),
     ("info dict {'time': t}", lambda: {"time": 1.0}),
     ("LaneKeepEnv.step(float32 array)", lambda: over.step(action)),
+    ("LaneKeepEnv(copy=False).step(float32 array)", lambda: views.step(action)),
 ]
 
 

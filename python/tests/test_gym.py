@@ -124,6 +124,19 @@ def test_observations_are_the_callers_to_keep():
     assert not np.array_equal(first["car"], second["car"])
 
 
+def test_copy_false_returns_the_arrays_the_next_step_overwrites():
+    copies, views = wvgym.TrackEnv(), wvgym.TrackEnv(copy=False)
+    first, _ = copies.reset(seed=1)
+    view, _ = views.reset(seed=1)
+    for key in first:
+        np.testing.assert_array_equal(view[key], first[key])
+    second, *_ = copies.step(np.zeros(2, dtype=np.float32))
+    again, *_ = views.step(np.zeros(2, dtype=np.float32))
+    # The same arrays, now holding the second observation.
+    assert again["car"] is view["car"]
+    np.testing.assert_array_equal(view["car"], second["car"])
+
+
 def test_a_replacement_reward_gets_the_clipped_action():
     seen = []
     env = wvgym.LaneKeepEnv(reward_fn=lambda env, obs, a: seen.append(a) or 2.5)
