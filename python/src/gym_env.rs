@@ -11,7 +11,7 @@ use pyo3::buffer::PyBuffer;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
-use sim::vec_env::{ACTION_LEN, Start, Task, TaskEnv, VecEnvError};
+use sim::vec_env::{ACTION_LEN, Task, TaskEnv, VecEnvError};
 
 use crate::simulation::Simulation;
 use crate::vec_env::{START_LEN, batch_error, start_of};
@@ -71,19 +71,6 @@ fn action_of(action: &Bound<'_, PyAny>) -> PyResult<[f64; ACTION_LEN]> {
     <[f64; ACTION_LEN]>::try_from(values.as_slice()).map_err(|_| wrong(values.len()))
 }
 
-impl GymEnv {
-    fn start_episode(&mut self, py: Python<'_>, start: &Start) -> PyResult<f64> {
-        let mut sim = self.sim.bind(py).try_borrow_mut()?;
-        let engine = sim.engine_mut();
-        self.env
-            .start(engine, start, &mut self.observation)
-            .map_err(env_error)?;
-        let time = engine.world().time();
-        self.out.copy_from_slice(py, &self.observation)?;
-        Ok(time)
-    }
-}
-
 #[pymethods]
 impl GymEnv {
     /// `task` ("LaneKeep", "ACC" or "Track") on `simulation` (the core of a
@@ -134,7 +121,14 @@ impl GymEnv {
     /// simulation, which the caller has restored to the environment's start; writes the first
     /// observation; returns the simulated time (s).
     fn start(&mut self, py: Python<'_>, start: [f64; START_LEN]) -> PyResult<f64> {
-        self.start_episode(py, &start_of(&start))
+        let mut sim = self.sim.bind(py).try_borrow_mut()?;
+        let engine = sim.engine_mut();
+        self.env
+            .start(engine, &start_of(&start), &mut self.observation)
+            .map_err(env_error)?;
+        let time = engine.world().time();
+        self.out.copy_from_slice(py, &self.observation)?;
+        Ok(time)
     }
 
     /// One step with `action` (steering, acceleration; clipped to −1 to 1): writes the
