@@ -3,8 +3,9 @@
 //! worlds (BmwX5s on cast mountings, 10 ms basic time steps, 4 per action, no camera), with
 //! autoreset of the episodes that ended, as the Python vector environment runs it. The summary
 //! prints car steps per second on this one thread (a car step: one car advanced 10 ms).
-//! `vec_env/lane_keep/1` is also the Rust step that `python/bench/gym_step.py` subtracts from
-//! the Python `step()` to get its overhead.
+//! `vec_env/single/lane_keep` is one `sim::vec_env::TaskEnv::step` on a simulation of its own,
+//! what the single environment `webots_vehicle.gym.LaneKeepEnv` runs per `step()` (and what
+//! `python/bench/gym_step.py` subtracts from the Python `step()`, timed in its process).
 #![allow(
     clippy::unwrap_used,
     reason = "bench setup from the shipped worlds: a failure is a fixture bug and must stop the run"
@@ -13,8 +14,10 @@
 use std::hint::black_box;
 
 use benches::report::{self, Medians, format_ns};
-use criterion::{BenchmarkId, Criterion, Throughput, criterion_group};
-use sim::vec_env::{ACTION_LEN, Start, StepOut, Task, VecEnv};
+use criterion::measurement::WallTime;
+use criterion::{BenchmarkGroup, BenchmarkId, Criterion, Throughput, criterion_group};
+use sim::Simulation;
+use sim::vec_env::{ACTION_LEN, Start, StepOut, Task, TaskEnv, VecEnv};
 use sim::world_file;
 
 /// Basic time steps per action (the gym environments' default `frame_skip`).
@@ -107,7 +110,32 @@ fn vec_env(c: &mut Criterion) {
             });
         }
     }
+    single(&mut g);
     g.finish();
+}
+
+/// `vec_env/single/{lane_keep,acc}`: one `TaskEnv::step` on a simulation of its own.
+fn single(g: &mut BenchmarkGroup<'_, WallTime>) {
+    for (name, task) in [("lane_keep", Task::LaneKeep), ("acc", Task::Acc)] {
+        let (mut sim, _) = Simulation::from_description(&world(task)).unwrap();
+        let mut env = TaskEnv::new(&sim, task, FRAME_SKIP).unwrap();
+        let loaded = sim.snapshot();
+        let mut obs = vec![0.0f32; task.observation_len()];
+        env.start(&mut sim, &start(task), &mut obs).unwrap();
+        g.throughput(Throughput::Elements(
+            cars(task) as u64 * u64::from(FRAME_SKIP),
+        ));
+        g.bench_function(BenchmarkId::new("single", name), |b| {
+            b.iter(|| {
+                let outcome = env.step(&mut sim, black_box([0.0; 2]), &mut obs).unwrap();
+                // A new episode when this one ends, as a training loop resets.
+                if outcome.terminated || outcome.truncated {
+                    sim.restore(&loaded).unwrap();
+                    env.start(&mut sim, &start(task), &mut obs).unwrap();
+                }
+            })
+        });
+    }
 }
 
 criterion_group! {
@@ -120,8 +148,11 @@ criterion_group! {
 fn summary(m: &Medians) {
     println!("\nvec_env: car steps (one car, 10 ms) per second on one thread");
     for (name, task) in [("lane_keep", Task::LaneKeep), ("acc", Task::Acc)] {
-        for n in SIZES {
-            let id = format!("vec_env/{name}/{n}");
+        let ids = SIZES
+            .iter()
+            .map(|n| (format!("vec_env/{name}/{n}"), *n))
+            .chain([(format!("vec_env/single/{name}"), 1)]);
+        for (id, n) in ids {
             if let Some(ns) = m.get(&id) {
                 let car_steps = (n * cars(task)) as f64 * f64::from(FRAME_SKIP);
                 println!(

@@ -15,13 +15,16 @@
 //! * `Sweep`, the core of `webots_vehicle.Sweep`: a sweep file's cases by index, each run into
 //!   the row `vehicle-sim sweep` writes for it (module `sweep`).
 //! * `VecSim`, the core of `webots_vehicle.gym.VectorEnv`: many copies of a gym world stepped
-//!   with one call on numpy arrays (module `vec_env`).
+//!   with one call on numpy arrays (module `vec_env`); `GymEnv`, the core of the single
+//!   environments of `webots_vehicle.gym`: one environment on a `Simulation`, one call per
+//!   step (module `gym_env`).
 //!
 //! Units: m, rad (positive steers right), rad/s, s; km/h and ms where the Webots API uses them.
 
 mod camera;
 mod controllers;
 mod display;
+mod gym_env;
 mod keyboard;
 mod ray_sensors;
 mod road_sensor;
@@ -75,5 +78,6 @@ fn native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     sweep::register(m)?;
     telemetry::register(m)?;
     vec_env::register(m)?;
+    gym_env::register(m)?;
     Ok(())
 }

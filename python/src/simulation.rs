@@ -10,7 +10,6 @@ use pyo3::exceptions::{PyIndexError, PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
 
-use sim::devices::Reading;
 use sim::scenario::{self, Scenario};
 use sim::telemetry::{CSV_HEADER, Retention, SAMPLE_COLUMNS, TelemetryLog};
 use sim::world_file::{self, WorldDescription, WorldFileError};
@@ -67,7 +66,7 @@ fn placement_error(e: &SimError) -> PyErr {
 }
 
 /// A physics failure as a Python `RuntimeError`.
-fn sim_error(e: &SimError) -> PyErr {
+pub(crate) fn sim_error(e: &SimError) -> PyErr {
     SimulationError::new_err(format!("the simulation failed: {e}"))
 }
 
@@ -104,6 +103,17 @@ impl Simulation {
             warnings,
             retention: Retention::All,
         })
+    }
+
+    /// The engine's simulation.
+    pub(crate) fn engine(&self) -> &sim::Simulation {
+        &self.simulation
+    }
+
+    /// The engine's simulation, to step it outside `step` (`_native.GymEnv`: no telemetry
+    /// is recorded then).
+    pub(crate) fn engine_mut(&mut self) -> &mut sim::Simulation {
+        &mut self.simulation
     }
 
     fn car(&self, car: usize) -> PyResult<&Car> {
@@ -393,64 +403,6 @@ impl Simulation {
             }
         };
         done.map_err(|e| placement_error(&e))
-    }
-
-    /// The last reading of car `car`'s first RoadSensor: road index (−1 off the roads), lane
-    /// (0 off the roads), s (m), lateral offset (m), heading error (rad), curvature and
-    /// curvature ahead (1/m), left and right line, left and right edge, lane width (m); NaN
-    /// where unsampled or off the roads. None if the car has no RoadSensor.
-    fn road_reading(&self, car: usize) -> PyResult<Option<[f64; 12]>> {
-        let id = self.car(car)?.id;
-        let devices = self.simulation.devices(id).map_err(|e| sim_error(&e))?;
-        Ok(devices.iter().find_map(|d| match d.reading() {
-            Reading::Road(r) => Some([
-                r.road.map_or(-1.0, |i| i as f64),
-                f64::from(r.lane.unwrap_or(0)),
-                r.s,
-                r.lateral_offset,
-                r.heading_error,
-                r.curvature,
-                r.curvature_ahead,
-                r.left_line,
-                r.right_line,
-                r.left_edge,
-                r.right_edge,
-                r.lane_width,
-            ]),
-            _ => None,
-        }))
-    }
-
-    /// The last targets of car `car`'s first Radar: distance (m), received power (dBm), speed
-    /// (m/s, > 0 receding), azimuth (rad, > 0 right) each; empty before its first sample or
-    /// without a radar.
-    fn radar_targets(&self, car: usize) -> PyResult<Vec<[f64; 4]>> {
-        let id = self.car(car)?.id;
-        let devices = self.simulation.devices(id).map_err(|e| sim_error(&e))?;
-        Ok(devices
-            .iter()
-            .find_map(|d| match d.reading() {
-                Reading::Radar(targets) => Some(
-                    targets
-                        .iter()
-                        .flatten()
-                        .map(|t| [t.distance, t.received_power, t.speed, t.azimuth])
-                        .collect(),
-                ),
-                _ => None,
-            })
-            .unwrap_or_default())
-    }
-
-    /// True while car `car` touches another car.
-    fn touching(&self, car: usize) -> PyResult<bool> {
-        let id = self.car(car)?.id;
-        let world = self.simulation.world();
-        Ok(self
-            .cars
-            .iter()
-            .filter(|c| c.id != id)
-            .any(|c| world.vehicles_in_contact(id, c.id).unwrap_or(false)))
     }
 
     /// The number of dynamic bodies (`[[body]]`).

@@ -9,13 +9,14 @@ use pyo3::buffer::PyBuffer;
 use pyo3::exceptions::{PyIndexError, PyValueError};
 use pyo3::prelude::*;
 
-use sim::vec_env::{ACTION_LEN, Start, StepOut, Task, VecEnv, VecEnvError};
+use sim::vec_env::{ACTION_LEN, Start, StepOut, VecEnv, VecEnvError};
 use sim::world_file;
 
+use crate::gym_env::task_of;
 use crate::{SimulationError, WorldError};
 
 /// Values of one start row: x (m), y (m), yaw (rad), speed (m/s), the ACC lead's speed (m/s).
-const START_LEN: usize = 5;
+pub(crate) const START_LEN: usize = 5;
 
 /// A batch of simulations of one world: see the module docs.
 #[pyclass(module = "webots_vehicle._native", unsendable)]
@@ -32,7 +33,7 @@ pub(crate) struct VecSim {
     truncated: Vec<bool>,
 }
 
-fn batch_error(e: VecEnvError) -> PyErr {
+pub(crate) fn batch_error(e: VecEnvError) -> PyErr {
     match e {
         VecEnvError::UnknownEnv(_) => PyIndexError::new_err(e.to_string()),
         VecEnvError::Sim {
@@ -50,7 +51,7 @@ fn batch_error(e: VecEnvError) -> PyErr {
     }
 }
 
-fn start_of(row: &[f64]) -> Start {
+pub(crate) fn start_of(row: &[f64]) -> Start {
     Start {
         x: row[0],
         y: row[1],
@@ -98,16 +99,7 @@ impl VecSim {
     /// stepped `frame_skip` basic time steps per action.
     #[new]
     fn new(world: &str, task: &str, num_envs: usize, frame_skip: u32) -> PyResult<Self> {
-        let task = match task {
-            "LaneKeep" => Task::LaneKeep,
-            "ACC" => Task::Acc,
-            "Track" => Task::Track,
-            other => {
-                return Err(PyValueError::new_err(format!(
-                    "task must be 'LaneKeep', 'ACC' or 'Track', not {other:?}"
-                )));
-            }
-        };
+        let task = task_of(task)?;
         let description =
             world_file::load(world).map_err(|e| WorldError::new_err(e.to_string()))?;
         let batch = VecEnv::new(&description, task, num_envs, frame_skip).map_err(batch_error)?;

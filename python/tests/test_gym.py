@@ -1,5 +1,6 @@
 """The gymnasium environments: gymnasium's own checker on every id, identical trajectories
-for the same seed, finite observations over 10⁴ random steps, replaceable rewards, render."""
+for the same seed, finite observations over 10⁴ random steps, the default rewards' formulas,
+replaceable rewards, observations the caller keeps, bad actions refused, render."""
 
 import numpy as np
 import pytest
@@ -68,6 +69,95 @@ def test_options_place_the_car_and_rewards_are_replaceable():
     assert obs["track"][0] == pytest.approx(0.0, abs=0.05)
     _, reward, *_ = env.step(np.zeros(2, dtype=np.float32))
     assert reward == pytest.approx(12.0, abs=0.5)
+
+
+def _obs(car, **extra):
+    return {"car": np.array(car, dtype=np.float32), **{k: np.asarray(v, dtype=np.float32) for k, v in extra.items()}}
+
+
+def test_default_rewards_follow_their_documented_formulas():
+    # The formulas of the functions' docstrings, by hand. 0.5, 12, 15, 30 and 3.75 are exact in
+    # float32, so the only rounding is the float64 arithmetic's: 1e-12.
+    lane = wvgym.LaneKeepEnv()
+    on_road = _obs([15, 0, 0, 0, 15], lane=[0.5, 0, 0, 0, 3.75, 1])
+    # 15/30 − 0.5² − 0.1 × 1² (heading error 0: the whole speed is along the lane).
+    assert wvgym.lane_keep_reward(lane, on_road, np.array([1.0, 0.0])) == pytest.approx(0.15, abs=1e-12)
+    # The speed term saturates at 30 m/s; an action beyond 1 counts as 1.
+    fast = _obs([45, 0, 0, 0, 45], lane=[0, 0, 0, 0, 3.75, 1])
+    assert wvgym.lane_keep_reward(lane, fast, np.array([2.0, 0.0])) == pytest.approx(0.9, abs=1e-12)
+    off_road = _obs([15, 0, 0, 0, 15], lane=[0, 0, 0, 0, 0, 0])
+    assert wvgym.lane_keep_reward(lane, off_road, np.zeros(2)) == -10.0
+    track = wvgym.TrackEnv()
+    # 1 − 0.5 − |12 − 10| / 10.
+    assert wvgym.track_reward(track, _obs([12, 0, 0, 0, 12], track=[0.5, 0]), np.zeros(2)) == pytest.approx(0.3, abs=1e-12)
+    acc = wvgym.ACCEnv()
+    acc.reset(seed=0)  # 50 m apart: not touching
+    radar, mask = np.zeros((8, 4)), np.zeros(8)
+    radar[0], mask[0] = (30.0, 0.0, 0.0, -40.0), 1.0
+    # A 30 m gap at 12 m/s is 2.5 s: −(2.5 − 2)² − 0.1 × 0.5².
+    seen = _obs([12, 0, 0, 0, 12], radar=radar, radar_mask=mask)
+    assert wvgym.acc_reward(acc, seen, np.array([0.0, 0.5])) == pytest.approx(-0.275, abs=1e-12)
+    assert wvgym.acc_reward(acc, _obs([12, 0, 0, 0, 12], radar=np.zeros((8, 4)), radar_mask=np.zeros(8)), np.zeros(2)) == -1.0
+
+
+@pytest.mark.parametrize("cls", [wvgym.LaneKeepEnv, wvgym.ACCEnv, wvgym.TrackEnv])
+def test_the_reward_returned_is_the_default_function_of_the_observation(cls):
+    env = cls()
+    env.reset(seed=2)
+    actions = np.random.default_rng(2).uniform(-1.2, 1.2, size=(30, 2)).astype(np.float32)
+    for a in actions:
+        obs, reward, terminated, truncated, info = env.step(a)
+        # The same Rust formula on the float32 observation returned: equal to the last bit.
+        assert reward == env.default_reward_fn(env, obs, np.clip(a.astype(np.float64), -1, 1))
+        assert info["time"] == env.sim.time
+        if terminated or truncated:
+            break
+
+
+def test_observations_are_the_callers_to_keep():
+    env = wvgym.TrackEnv()
+    first, _ = env.reset(seed=1)
+    kept = {k: v.copy() for k, v in first.items()}
+    second, *_ = env.step(np.zeros(2, dtype=np.float32))
+    for key in kept:
+        np.testing.assert_array_equal(first[key], kept[key])
+    assert not np.array_equal(first["car"], second["car"])
+
+
+def test_copy_false_returns_the_arrays_the_next_step_overwrites():
+    copies, views = wvgym.TrackEnv(), wvgym.TrackEnv(copy=False)
+    first, _ = copies.reset(seed=1)
+    view, _ = views.reset(seed=1)
+    for key in first:
+        np.testing.assert_array_equal(view[key], first[key])
+    second, *_ = copies.step(np.zeros(2, dtype=np.float32))
+    again, *_ = views.step(np.zeros(2, dtype=np.float32))
+    # The same arrays, now holding the second observation.
+    assert again["car"] is view["car"]
+    np.testing.assert_array_equal(view["car"], second["car"])
+
+
+def test_a_replacement_reward_gets_the_clipped_action():
+    seen = []
+    env = wvgym.LaneKeepEnv(reward_fn=lambda env, obs, a: seen.append(a) or 2.5)
+    env.reset(seed=0)
+    _, reward, *_ = env.step(np.array([3.0, -0.5], dtype=np.float32))
+    assert reward == 2.5
+    assert seen[0].dtype == np.float64 and list(seen[0]) == [1.0, -0.5]
+
+
+def test_bad_actions_are_refused():
+    env = wvgym.LaneKeepEnv()
+    env.reset(seed=0)
+    with pytest.raises(ValueError, match=r"action\[1\] must be finite, not NaN"):
+        env.step(np.array([0.0, np.nan], dtype=np.float32))
+    with pytest.raises(ValueError, match="2 values"):
+        env.step(np.zeros(3))
+    with pytest.raises(TypeError):
+        env.step("left")
+    # A list, or float64, is as good as the space's float32.
+    env.step([0.1, 0.0])
+    env.step(np.array([0.1, 0.0]))
 
 
 def test_render_shows_the_car():

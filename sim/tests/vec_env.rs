@@ -1,12 +1,15 @@
 //! `sim::vec_env`: copies are independent and deterministic, a reset starts where it is told,
-//! the autoreset flag resets instead of stepping, bad input is refused by name. (The Python
-//! tests compare each copy with `webots_vehicle.gym`'s single environment bit for bit.)
+//! the autoreset flag resets instead of stepping, a `TaskEnv` on a simulation of its own is a
+//! copy of a batch bit for bit, the default rewards follow their documented formulas, bad
+//! input is refused by name. (The Python tests compare each copy with `webots_vehicle.gym`'s
+//! single environment, which runs a `TaskEnv`, bit for bit.)
 #![allow(
     clippy::unwrap_used,
     reason = "test fixtures: the shipped world loads; a failure must stop the test"
 )]
 
-use sim::vec_env::{ACTION_LEN, Start, StepOut, Task, VecEnv, VecEnvError};
+use sim::Simulation;
+use sim::vec_env::{ACTION_LEN, Start, StepOut, Task, TaskEnv, VecEnv, VecEnvError};
 use sim::world_file::{self, WorldDescription};
 
 fn lane_keep() -> WorldDescription {
@@ -115,6 +118,104 @@ fn the_reset_flag_resets_instead_of_stepping() {
     );
     assert!((b.time(0) - 0.01).abs() < 1e-12);
     assert!((b.time(1) - 0.45).abs() < 1e-12);
+}
+
+#[test]
+fn a_task_env_on_its_own_simulation_equals_a_copy() {
+    // What the Python single environment runs (a TaskEnv on the Simulation it owns) against
+    // copy 0 of a batch: the same start and actions give the same bits, actions beyond ±1
+    // clipped alike.
+    let (mut batch, mut out) = batch(1);
+    let (mut sim, _) = Simulation::from_description(&lane_keep()).unwrap();
+    let mut env = TaskEnv::new(&sim, Task::LaneKeep, 4).unwrap();
+    let mut obs = vec![0.0f32; Task::LaneKeep.observation_len()];
+    env.start(&mut sim, &START, &mut obs).unwrap();
+    assert_eq!(obs, out.obs);
+    for t in 0..60 {
+        let a = [0.3 * f64::from(t % 7) - 0.9, 1.5 - 0.1 * f64::from(t)];
+        batch.step(&a, &[false], &[START], out.view()).unwrap();
+        let outcome = env.step(&mut sim, a, &mut obs).unwrap();
+        assert_eq!(obs, out.obs, "step {t}");
+        assert_eq!(outcome.reward.to_bits(), out.rewards[0].to_bits());
+        assert_eq!(
+            (outcome.terminated, outcome.truncated),
+            (out.terminated[0], out.truncated[0])
+        );
+    }
+    assert_eq!(sim.world().time(), batch.time(0));
+    // The observation's fifth value is the cruise target.
+    assert_eq!(env.target() as f32, obs[4]);
+}
+
+#[test]
+fn the_default_rewards_follow_their_formulas() {
+    // The formulas of `Task::reward`'s docs by hand. 0.5, 12, 15, 30, 45 and 3.75 are exact in
+    // f32, so only the f64 arithmetic rounds: 1e-12.
+    let close = |a: f64, b: f64| (a - b).abs() < 1e-12;
+    let lane = |speed: f32, offset: f32, on_road: f32| {
+        [
+            speed, 0.0, 0.0, 0.0, speed, offset, 0.0, 0.0, 0.0, 3.75, on_road,
+        ]
+    };
+    let r = |task: Task, obs: &[f32], a: [f64; 2], touching: bool| {
+        task.reward(obs, a, touching).unwrap()
+    };
+    // 15/30 − 0.5² − 0.1 × 1²; within the lane.
+    let (reward, ended) = r(Task::LaneKeep, &lane(15.0, 0.5, 1.0), [1.0, 0.0], false);
+    assert!(close(reward, 0.15) && !ended, "{reward}");
+    // The speed term saturates at 30 m/s.
+    assert!(close(
+        r(Task::LaneKeep, &lane(45.0, 0.0, 1.0), [0.0; 2], false).0,
+        1.0
+    ));
+    // Off the road: −10, and the episode ends; so it does beyond a lane width off the centre.
+    assert_eq!(
+        r(Task::LaneKeep, &lane(15.0, 0.0, 0.0), [0.0; 2], false),
+        (-10.0, true)
+    );
+    assert!(r(Task::LaneKeep, &lane(15.0, 3.8, 1.0), [0.0; 2], false).1);
+    // 1 − 0.5 − |12 − 10| / 10.
+    let (reward, ended) = r(
+        Task::Track,
+        &[12.0, 0.0, 0.0, 0.0, 12.0, 0.5, 0.0],
+        [0.0; 2],
+        false,
+    );
+    assert!(close(reward, 0.3) && !ended, "{reward}");
+    assert!(
+        r(
+            Task::Track,
+            &[12.0, 0.0, 0.0, 0.0, 12.0, 10.5, 0.0],
+            [0.0; 2],
+            false
+        )
+        .1
+    );
+    // A target 30 m ahead at 12 m/s: a 2.5 s gap, −(2.5 − 2)² − 0.1 × 0.5².
+    let mut acc = vec![0.0f32; Task::Acc.observation_len()];
+    acc[0] = 12.0;
+    acc[5..9].copy_from_slice(&[30.0, 0.0, 0.0, -40.0]);
+    acc[5 + 32] = 1.0;
+    let (reward, ended) = r(Task::Acc, &acc, [0.0, 0.5], false);
+    assert!(close(reward, -0.275) && !ended, "{reward}");
+    assert_eq!(r(Task::Acc, &acc, [0.0, 0.5], true), (-100.0, true));
+    acc[5 + 32] = 0.0;
+    assert_eq!(r(Task::Acc, &acc, [0.0; 2], false), (-1.0, false));
+    assert!(matches!(
+        Task::Track.reward(&acc, [0.0; 2], false),
+        Err(VecEnvError::Buffer { expected: 7, .. })
+    ));
+}
+
+#[test]
+fn task_names_parse() {
+    assert_eq!("LaneKeep".parse::<Task>().unwrap(), Task::LaneKeep);
+    assert_eq!("ACC".parse::<Task>().unwrap(), Task::Acc);
+    assert_eq!("Track".parse::<Task>().unwrap(), Task::Track);
+    assert_eq!(
+        "Drift".parse::<Task>().unwrap_err().to_string(),
+        "task must be 'LaneKeep', 'ACC' or 'Track', not \"Drift\""
+    );
 }
 
 #[test]

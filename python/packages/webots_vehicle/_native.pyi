@@ -217,13 +217,6 @@ class Simulation:
     def set_velocity(
         self, kind: str, index: int, linear: List[float], angular: List[float]
     ) -> None: ...
-    def road_reading(self, car: int) -> Optional[List[float]]:
-        """Car ``car``'s first RoadSensor: road (-1 off), lane, s, lateral offset, heading
-        error, curvature, curvature ahead, left/right line, left/right edge, lane width."""
-    def radar_targets(self, car: int) -> List[List[float]]:
-        """Car ``car``'s first Radar's targets: distance, received power, speed, azimuth."""
-    def touching(self, car: int) -> bool:
-        """True while car ``car`` touches another car."""
     def simulation_reset(self) -> None:
         """Back to the world as loaded."""
     def snapshot(self) -> Snapshot:
@@ -313,6 +306,31 @@ class TelemetryRows:
 
     def __len__(self) -> int: ...
 
+
+class GymEnv:
+    """One gym environment on a ``Simulation`` core (``webots_vehicle.gym.VehicleEnv``): the
+    Rust ``sim::vec_env::TaskEnv``. Observations are written into ``observation`` (a writable
+    C-contiguous float32 array of ``observation_len`` values, held open while this lives)."""
+
+    def __init__(self, simulation: Simulation, task: str, frame_skip: int, observation: Any) -> None: ...
+    @property
+    def observation_len(self) -> int: ...
+    @property
+    def dt(self) -> float:
+        """Simulated time per step (s)."""
+    @property
+    def touching(self) -> bool:
+        """True while the agent's car touches another car."""
+    def start(self, start: Sequence[float]) -> float:
+        """Starts an episode (x m, y m, yaw rad, speed m/s, lead speed m/s) on the simulation
+        just restored; writes the observation; returns the simulated time (s)."""
+    def step(self, action: Any) -> Tuple[float, bool, bool, float]:
+        """One step: writes the observation; returns reward, terminated, truncated, time (s)."""
+    def bench_steps(self, steps: int, action: Sequence[float]) -> float:
+        """``steps`` Rust steps timed in Rust (s), for python/bench/gym_step.py."""
+
+def task_reward(task: str, observation: Sequence[float], action: Sequence[float], touching: bool) -> float:
+    """The default reward of ``task`` for one flat observation and an action."""
 
 class VecSim:
     """``num_envs`` copies of a gym world stepped in Rust (``webots_vehicle.gym.VectorEnv``).

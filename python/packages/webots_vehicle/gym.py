@@ -36,18 +36,31 @@ control step; the driver library's SPEED mode reaches it).
 * Track ``track``: signed distance from the circle (m, outside > 0) and heading error to the
   circle's tangent (rad).
 
-**Reward**: a replaceable function ``reward_fn(env, observation, action) -> float``, given to
-the constructor (``gym.make(id, reward_fn=...)``); the defaults are
-:func:`lane_keep_reward`, :func:`acc_reward` and :func:`track_reward`.
+**Reward**: by default the task's own (:func:`lane_keep_reward`, :func:`acc_reward`,
+:func:`track_reward` say what it is), computed in Rust in the same call as the step.
+``gym.make(id, reward_fn=f)`` replaces it: ``f(env, observation, action) -> float`` is then
+called after each step with the observation returned and the action clipped to [-1, 1]
+(float64). The three functions compute the default from an observation and an action (in
+Rust too), so a replacement can build on it, e.g. ``lambda env, obs, a: lane_keep_reward(env,
+obs, a) - 0.5 * a[1] ** 2``.
 
 **Reset**: ``reset(seed=s)`` restores the world's snapshot taken when the environment was
 built (bit for bit the same state), then places the car from the episode's random draw
 (from ``seed``) or from ``options``: ``{"pose": (x, y, yaw), "speed": v}`` (m, rad, m/s;
 ACC also ``"lead_speed"``). The same seed gives the same trajectory for the same actions.
 
+**Where it runs**: the action, the basic time steps, the observation, the default reward
+and the end of the episode are computed in Rust (``sim::vec_env::TaskEnv``), one extension
+call per ``step()``; the environment's :attr:`VehicleEnv.sim` is the
+:class:`~webots_vehicle.Simulation` it steps (it records no telemetry: read its cars'
+``placement`` and devices). The observation's arrays are the caller's to keep (a copy per
+step); ``copy=False`` (``gym.make(id, copy=False)``) returns the arrays the Rust core writes
+into instead, which the next step or reset overwrites (no copy at all).
+
 **Vectorised**: :class:`VectorEnv` (``gymnasium.make_vec(id, num_envs,
 vectorization_mode="vector_entry_point")``) steps many copies of a world in Rust with one call
-on numpy arrays; each copy equals the single environment bit for bit.
+on numpy arrays, each with the same Rust code as the single environment: each copy equals the
+single environment bit for bit.
 
 **Render**: ``render_mode="rgb_array"``: a 128×128 top-down image centred on the car
 (0.5 m per pixel, north up): the car red, other cars blue, the lane's markings (LaneKeep)
@@ -83,12 +96,6 @@ __all__ = [
 
 WORLDS = Path(__file__).resolve().parent / "worlds"
 
-#: Steering angle of a full action (rad).
-MAX_STEERING = 0.4
-#: Acceleration of a full action (m/s²).
-MAX_ACCELERATION = 3.0
-#: Highest cruise target (m/s).
-MAX_SPEED = 40.0
 #: Radar targets in an observation.
 RADAR_TARGETS = 8
 
@@ -102,14 +109,20 @@ def _box(n: int, bound: float) -> spaces.Box:
     return spaces.Box(-bound, bound, shape=(n,), dtype=np.float32)
 
 
-def _vector(values: List[float], bound: float) -> np.ndarray:
-    """``values`` as float32, NaN as 0, within ±``bound`` (the space's limits)."""
-    a = np.nan_to_num(np.asarray(values, dtype=np.float64), nan=0.0, posinf=bound, neginf=-bound)
-    return np.clip(a, -bound, bound).astype(np.float32)
+def _layout(space: spaces.Dict) -> List[Tuple[str, slice, Tuple[int, ...]]]:
+    """Each entry of an observation space: its key, its columns in the flat observation the
+    Rust core writes (the space's keys in order) and its shape."""
+    layout, column = [], 0
+    for key, entry in space.spaces.items():
+        width = int(np.prod(entry.shape))
+        layout.append((key, slice(column, column + width), entry.shape))
+        column += width
+    return layout
 
 
 def _yaw(rotation: Tuple[float, float, float, float]) -> float:
-    """The heading (rad) of a Webots axis-angle rotation: its x axis projected on the ground."""
+    """The heading (rad) of a Webots axis-angle rotation: its x axis projected on the ground
+    (for ``render``; the observations' headings are computed in Rust)."""
     x, y, z, angle = rotation
     c, s = math.cos(angle), math.sin(angle)
     # First column of the rotation matrix (Rodrigues).
@@ -120,15 +133,20 @@ def _yaw(rotation: Tuple[float, float, float, float]) -> float:
 
 class VehicleEnv(gymnasium.Env):
     """The common part of the three environments (see the module docs): a
-    :class:`~webots_vehicle.Simulation` of a world file, its car ``car`` driven by the
-    action, stepped ``frame_skip`` basic time steps per action."""
+    :class:`~webots_vehicle.Simulation` of a world file, :attr:`sim`, its car :attr:`car`
+    driven by the action, stepped ``frame_skip`` basic time steps per action by the Rust
+    core (``_native.GymEnv``)."""
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": 25}
 
-    #: The world file (in ``worlds/``), the index of the agent's car, and the default reward
-    #: (each environment gives its own).
+    #: The world file (in ``worlds/``), the task the Rust core runs on it ("LaneKeep", "ACC"
+    #: or "Track") and the index of the agent's car (each environment gives its own, and its
+    #: default reward).
     world = ""
+    task = ""
     car_index = 0
+    #: The task's default reward as a Python function of (env, observation, action): what
+    #: ``step()`` returns without ``reward_fn`` (computed there in Rust in the step's call).
     default_reward_fn: RewardFn
 
     def __init__(
@@ -136,25 +154,38 @@ class VehicleEnv(gymnasium.Env):
         render_mode: Optional[str] = None,
         reward_fn: Optional[RewardFn] = None,
         frame_skip: int = 4,
+        copy: bool = True,
     ) -> None:
         if render_mode not in (None, "rgb_array"):
             raise ValueError(f"render_mode must be None or 'rgb_array', not {render_mode!r}")
         if frame_skip < 1:
             raise ValueError(f"frame_skip must be at least 1, not {frame_skip}")
         self.render_mode = render_mode
-        self.reward_fn: RewardFn = reward_fn or type(self).default_reward_fn
+        #: The replacement reward, or None for the task's default (computed in Rust).
+        self.reward_fn: Optional[RewardFn] = reward_fn
         self.frame_skip = int(frame_skip)
-        # Observations read the car's last state (O(1)); a training run keeps no telemetry.
+        #: Whether observations are copies (True) or views the next step overwrites.
+        self.copy = bool(copy)
+        # The steps record no telemetry: a training run keeps none.
         self.sim = Simulation(WORLDS / self.world, record=False)
         self.car = self.sim.cars[self.car_index]
-        self.dt = self.sim.basic_time_step * self.frame_skip / 1000.0
+        self.action_space = spaces.Box(-1.0, 1.0, shape=(2,), dtype=np.float32)
+        self.observation_space = self.single_observation_space()
+        # The Rust core writes each observation into `_buffer`; `_views` are the
+        # observation's entries over it (the space's keys in order, as the core lays them).
+        # Each step returns copies of them: copying a view costs less than slicing a copy.
+        layout = _layout(self.observation_space)
+        self._buffer = np.zeros(layout[-1][1].stop, dtype=np.float32)
+        self._views: Tuple[Tuple[str, np.ndarray], ...] = tuple(
+            (key, self._buffer[part].reshape(shape)) for key, part, shape in layout
+        )
+        self._core = _native.GymEnv(self.sim._core, self.task, self.frame_skip, self._buffer)
+        self.dt = self._core.dt
         self.metadata = dict(self.metadata, render_fps=round(1.0 / self.dt))
         # The state as loaded: every episode starts from it, bit for bit.
         self._start = self.sim.snapshot()
-        self._rest_height = self.car.placement.translation[2]
-        self._target = 0.0
-        self.action_space = spaces.Box(-1.0, 1.0, shape=(2,), dtype=np.float32)
-        self.observation_space = self.single_observation_space()
+        #: Where this episode started: x, y (m), yaw (rad), speed (m/s), the ACC lead's speed.
+        self.episode_start: Start = (0.0, 0.0, 0.0, 0.0, 0.0)
 
     # What each environment adds.
     @classmethod
@@ -166,9 +197,6 @@ class VehicleEnv(gymnasium.Env):
         """The observation space (the same for every instance)."""
         return spaces.Dict({"car": _box(5, 100.0), **cls.extra_spaces()})
 
-    def extra_observation(self) -> Dict[str, np.ndarray]:
-        return {}
-
     @classmethod
     def draw_start(cls, rng: np.random.Generator, options: Dict[str, Any]) -> Start:
         """x, y (m), yaw (rad), speed (m/s) of the car at an episode's start and the ACC
@@ -179,47 +207,40 @@ class VehicleEnv(gymnasium.Env):
         x, y, yaw = options.get("pose", (0.0, 0.0, 0.0))
         return float(x), float(y), float(yaw), float(options.get("speed", 0.0)), 0.0
 
-    def is_terminated(self, obs: Dict[str, np.ndarray]) -> bool:
-        return False
-
-    def setup_episode(self, start: Start) -> None:
-        """Anything else an episode starts with (the ACC lead's speed)."""
+    @property
+    def touching(self) -> bool:
+        """True while the agent's car touches another car."""
+        return self._core.touching
 
     # The gymnasium API.
     def reset(
         self, *, seed: Optional[int] = None, options: Optional[Dict[str, Any]] = None
     ) -> Tuple[Dict[str, np.ndarray], Dict[str, Any]]:
         super().reset(seed=seed)
-        options = dict(options or {})
+        self.episode_start = self.draw_start(self.np_random, dict(options or {}))
         self.sim.restore(self._start)
-        start = self.draw_start(self.np_random, options)
-        x, y, yaw, speed, _ = start
-        self.car.set_pose([x, y, self._rest_height], [0.0, 0.0, 1.0, yaw])
-        self.car.set_velocity([speed * math.cos(yaw), speed * math.sin(yaw), 0.0])
-        self._target = float(np.clip(speed, 0.0, MAX_SPEED))
-        self.car.set_cruising_speed(self._target * 3.6)
-        self.car.set_steering_angle(0.0)
-        self.setup_episode(start)
-        # One step, so that the devices have their first sample.
-        self.sim.step(1)
-        return self._observation(), {"time": self.sim.time}
+        # The car placed, its cruise control at the start speed, one basic time step so that
+        # the devices have their first sample.
+        time = self._core.start(self.episode_start)
+        return self._observation(), {"time": time}
 
     def step(
         self, action: np.ndarray
     ) -> Tuple[Dict[str, np.ndarray], float, bool, bool, Dict[str, Any]]:
-        a = np.clip(np.asarray(action, dtype=np.float64), -1.0, 1.0)
-        if not np.all(np.isfinite(a)):
-            raise ValueError(f"the action must be finite, not {action!r}")
-        self.car.set_steering_angle(float(a[0]) * MAX_STEERING)
-        self._target = float(
-            np.clip(self._target + a[1] * MAX_ACCELERATION * self.dt, 0.0, MAX_SPEED)
-        )
-        self.car.set_cruising_speed(self._target * 3.6)
-        going = self.sim.step(self.frame_skip)
-        obs = self._observation()
-        terminated = self._rolled_over() or self.is_terminated(obs)
-        reward = float(self.reward_fn(self, obs, a))
-        return obs, reward, terminated, not going, {"time": self.sim.time}
+        # The least Python the step allows (python/bench/gym_step.py measures it): one
+        # extension call, then `_observation()` inlined (a method call is 0.15 µs of the 2 µs
+        # budget).
+        reward, terminated, truncated, time = self._core.step(action)
+        if self.copy:
+            obs = {}
+            for key, view in self._views:
+                obs[key] = view.copy()
+        else:
+            obs = dict(self._views)
+        if self.reward_fn is not None:
+            a = np.clip(np.asarray(action, dtype=np.float64), -1.0, 1.0)
+            reward = float(self.reward_fn(self, obs, a))
+        return obs, reward, terminated, truncated, {"time": time}
 
     def render(self) -> Optional[np.ndarray]:
         if self.render_mode != "rgb_array":
@@ -243,71 +264,55 @@ class VehicleEnv(gymnasium.Env):
                         image[row, col] = colour
         return image
 
-    # Helpers.
     def _observation(self) -> Dict[str, np.ndarray]:
-        p = self.car.placement
-        yaw = _yaw(p.rotation)
-        vx, vy, _ = p.velocity
-        forward = vx * math.cos(yaw) + vy * math.sin(yaw)
-        lateral = -vx * math.sin(yaw) + vy * math.cos(yaw)
-        state = self.car.state or {}
-        steering = state.get("steering_rad", 0.0)
-        car = _vector([forward, p.angular_velocity[2], lateral, steering, self._target], 100.0)
-        return {"car": car, **self.extra_observation()}
+        """The last observation: copies of the buffer's entries, or the entries themselves
+        with ``copy=False`` (see ``step``)."""
+        if not self.copy:
+            return dict(self._views)
+        obs = {}
+        for key, view in self._views:
+            obs[key] = view.copy()
+        return obs
 
-    def _rolled_over(self) -> bool:
-        x, y, z, angle = self.car.placement.rotation
-        # The car's up axis tilted more than 60° from vertical.
-        c = math.cos(angle)
-        up_z = c + z * z * (1 - c)
-        return up_z < 0.5
+
+def _task_reward(task: str, env: "VehicleEnv", obs: Dict[str, np.ndarray], action) -> float:
+    flat = np.concatenate([np.ravel(obs[key]) for key in env.observation_space.spaces])
+    touching = task == "ACC" and env.touching
+    a = np.asarray(action, dtype=np.float64).tolist()
+    return _native.task_reward(task, flat.astype(np.float32).tolist(), a, touching)
 
 
 def lane_keep_reward(env: "VehicleEnv", obs: Dict[str, np.ndarray], action: np.ndarray) -> float:
-    """Speed along the lane (m/s, up to 30) scaled to 1, less the lateral offset (m) squared,
-    less a tenth of the steering action squared; −10 off the road."""
-    offset, heading, _, _, _, on_road = (float(v) for v in obs["lane"])
-    if on_road < 0.5:
-        return -10.0
-    speed = float(obs["car"][0]) * math.cos(heading)
-    return min(speed, 30.0) / 30.0 - offset * offset - 0.1 * float(action[0]) ** 2
+    """LaneKeep's default reward: the speed along the lane (m/s, up to 30) scaled to 1, less the
+    lateral offset (m) squared, less a tenth of the steering action squared; −10 off the road
+    (computed in Rust, ``sim::vec_env::Task::reward``)."""
+    return _task_reward("LaneKeep", env, obs, action)
 
 
 def acc_reward(env: "VehicleEnv", obs: Dict[str, np.ndarray], action: np.ndarray) -> float:
-    """−(time gap − 2 s)² (the gap to the nearest target over the car's speed, capped at
-    5 s), less a tenth of the acceleration action squared; −1 with no target in sight, −100
-    for touching the lead."""
-    if env.sim._core.touching(env.car_index):
-        return -100.0
-    mask = obs["radar_mask"]
-    if mask[0] < 0.5:
-        return -1.0
-    speed = max(float(obs["car"][0]), 0.5)
-    gap = min(float(obs["radar"][0][0]) / speed, 5.0)
-    return -((gap - 2.0) ** 2) - 0.1 * float(action[1]) ** 2
+    """ACC's default reward: −(time gap − 2 s)² (the gap to the nearest target over the car's
+    speed, at least 0.5 m/s, capped at 5 s), less a tenth of the acceleration action squared;
+    −1 with no target in sight, −100 while the cars touch (``env.touching``; computed in
+    Rust, ``sim::vec_env::Task::reward``)."""
+    return _task_reward("ACC", env, obs, action)
 
 
 def track_reward(env: "VehicleEnv", obs: Dict[str, np.ndarray], action: np.ndarray) -> float:
-    """1 less the distance from the circle (m), less the speed error to 10 m/s (m/s) over 10."""
-    off, _ = (float(v) for v in obs["track"])
-    return 1.0 - abs(off) - abs(float(obs["car"][0]) - TrackEnv.speed) / 10.0
+    """Track's default reward: 1 less the distance from the circle (m), less the speed error
+    to 10 m/s (m/s) over 10 (computed in Rust, ``sim::vec_env::Task::reward``)."""
+    return _task_reward("Track", env, obs, action)
 
 
 class LaneKeepEnv(VehicleEnv):
     """``WebotsVehicle/LaneKeep-v0`` (see the module docs)."""
 
     world = "lane_keep.toml"
+    task = "LaneKeep"
     default_reward_fn = staticmethod(lane_keep_reward)
 
     @classmethod
     def extra_spaces(cls) -> Dict[str, spaces.Space]:
         return {"lane": _box(6, 100.0)}
-
-    def extra_observation(self) -> Dict[str, np.ndarray]:
-        r = self.sim._core.road_reading(self.car_index)
-        if r is None or r[0] < 0 or not math.isfinite(r[3]):
-            return {"lane": np.zeros(6, dtype=np.float32)}
-        return {"lane": _vector([r[3], r[4], r[5], r[6], r[11], 1.0], 100.0)}
 
     @classmethod
     def draw_start(cls, rng: np.random.Generator, options: Dict[str, Any]) -> Start:
@@ -319,20 +324,20 @@ class LaneKeepEnv(VehicleEnv):
         speed = options.get("speed", rng.uniform(10, 20))
         return float(x), float(y), float(yaw), float(speed), 0.0
 
-    def is_terminated(self, obs: Dict[str, np.ndarray]) -> bool:
-        offset, _, _, _, width, on_road = (float(v) for v in obs["lane"])
-        return on_road < 0.5 or abs(offset) > width
-
 
 class ACCEnv(VehicleEnv):
     """``WebotsVehicle/ACC-v0`` (see the module docs): the agent drives car 1 (the follower);
-    the environment drives car 0 (the lead) at the episode's ``lead_speed``."""
+    the environment drives car 0 (the lead) at the episode's :attr:`lead_speed`."""
 
     world = "acc.toml"
-    car_index = 1
+    task = "ACC"
     default_reward_fn = staticmethod(acc_reward)
-    #: The lead's speed this episode (m/s).
-    lead_speed = 0.0
+    car_index = 1
+
+    @property
+    def lead_speed(self) -> float:
+        """The lead's speed this episode (m/s)."""
+        return self.episode_start[4]
 
     @classmethod
     def extra_spaces(cls) -> Dict[str, spaces.Space]:
@@ -341,61 +346,30 @@ class ACCEnv(VehicleEnv):
             "radar_mask": spaces.Box(0.0, 1.0, shape=(RADAR_TARGETS,), dtype=np.float32),
         }
 
-    def extra_observation(self) -> Dict[str, np.ndarray]:
-        targets = sorted(self.sim._core.radar_targets(self.car_index))[:RADAR_TARGETS]
-        radar = np.zeros((RADAR_TARGETS, 4), dtype=np.float32)
-        mask = np.zeros(RADAR_TARGETS, dtype=np.float32)
-        for i, (distance, power, speed, azimuth) in enumerate(targets):
-            radar[i] = _vector([distance, speed, azimuth, power], 1000.0)
-            mask[i] = 1.0
-        return {"radar": radar, "radar_mask": mask}
-
     @classmethod
     def draw_start(cls, rng: np.random.Generator, options: Dict[str, Any]) -> Start:
         x, y, yaw = options.get("pose", (0.0, 0.0, 0.0))
         lead_speed = options.get("lead_speed", rng.uniform(10.0, 20.0))
         return float(x), float(y), float(yaw), float(options.get("speed", 15.0)), float(lead_speed)
 
-    def setup_episode(self, start: Start) -> None:
-        self.lead_speed = start[4]
-        lead = self.sim.cars[0]
-        lead.set_velocity([self.lead_speed, 0.0, 0.0])
-        lead.set_cruising_speed(self.lead_speed * 3.6)
-
-    def is_terminated(self, obs: Dict[str, np.ndarray]) -> bool:
-        return bool(self.sim._core.touching(self.car_index))
-
 
 class TrackEnv(VehicleEnv):
     """``WebotsVehicle/Track-v0`` (see the module docs)."""
 
     world = "track.toml"
-    #: The circle's radius (m), centre (m) and speed (m/s).
-    radius = 30.0
-    centre = (0.0, 30.0)
-    speed = 10.0
+    task = "Track"
     default_reward_fn = staticmethod(track_reward)
+    #: The speed the reward asks for and episodes start at (m/s).
+    speed = 10.0
 
     @classmethod
     def extra_spaces(cls) -> Dict[str, spaces.Space]:
         return {"track": _box(2, 1000.0)}
 
-    def extra_observation(self) -> Dict[str, np.ndarray]:
-        p = self.car.placement
-        dx, dy = p.translation[0] - self.centre[0], p.translation[1] - self.centre[1]
-        off = math.hypot(dx, dy) - self.radius
-        # Counter-clockwise round the centre: the tangent is the radius turned by +90°.
-        tangent = math.atan2(dy, dx) + math.pi / 2
-        error = (_yaw(p.rotation) - tangent + math.pi) % (2 * math.pi) - math.pi
-        return {"track": _vector([off, error], 1000.0)}
-
     @classmethod
     def draw_start(cls, rng: np.random.Generator, options: Dict[str, Any]) -> Start:
         x, y, yaw = options.get("pose", (0.0, rng.uniform(-1.0, 1.0), rng.uniform(-0.1, 0.1)))
         return float(x), float(y), float(yaw), float(options.get("speed", cls.speed)), 0.0
-
-    def is_terminated(self, obs: Dict[str, np.ndarray]) -> bool:
-        return abs(float(obs["track"][0])) > 10.0
 
 
 class VectorEnv(gymnasium.vector.VectorEnv):
@@ -406,9 +380,9 @@ class VectorEnv(gymnasium.vector.VectorEnv):
     ``task`` is ``"LaneKeep"``, ``"ACC"`` or ``"Track"``; ``gymnasium.make_vec(id, num_envs,
     vectorization_mode="vector_entry_point")`` builds one for a registered id. Each copy runs
     the single environment's world, actions, observation, default reward and end of episode
-    with the same floating-point operations: copy ``i`` after ``reset(seed=s)`` equals the
-    single environment after ``reset(seed=s + i)`` given the same actions, bit for bit
-    (its episodes start from its own random generator, seeded ``s + i``).
+    with the same Rust code (``sim::vec_env::TaskEnv``): copy ``i`` after ``reset(seed=s)``
+    equals the single environment after ``reset(seed=s + i)`` given the same actions, bit for
+    bit (its episodes start from its own random generator, seeded ``s + i``).
 
     **Autoreset**: gymnasium's ``NEXT_STEP`` mode (``metadata["autoreset_mode"]``): the step
     after a copy's episode ends resets it (its action ignored), returning its first
@@ -425,7 +399,7 @@ class VectorEnv(gymnasium.vector.VectorEnv):
     metadata = {"autoreset_mode": gymnasium.vector.AutoresetMode.NEXT_STEP, "render_modes": []}
 
     def __init__(self, task: str, num_envs: int = 1, frame_skip: int = 4, copy: bool = True) -> None:
-        classes = {"LaneKeep": LaneKeepEnv, "ACC": ACCEnv, "Track": TrackEnv}
+        classes = {cls.task: cls for cls in (LaneKeepEnv, ACCEnv, TrackEnv)}
         if task not in classes:
             raise ValueError(f"task must be one of {sorted(classes)}, not {task!r}")
         if int(num_envs) < 1:
@@ -450,12 +424,10 @@ class VectorEnv(gymnasium.vector.VectorEnv):
         self._terminated = np.zeros(n, dtype=np.bool_)
         self._truncated = np.zeros(n, dtype=np.bool_)
         self._autoreset = np.zeros(n, dtype=np.bool_)
-        self._views: Dict[str, np.ndarray] = {}
-        column = 0
-        for key, space in self.single_observation_space.spaces.items():
-            width = int(np.prod(space.shape))
-            self._views[key] = self._obs[:, column : column + width].reshape(n, *space.shape)
-            column += width
+        self._views: Dict[str, np.ndarray] = {
+            key: self._obs[:, part].reshape(n, *shape)
+            for key, part, shape in _layout(self.single_observation_space)
+        }
         self._rngs = [np.random.default_rng() for _ in range(n)]
 
     def _observation(self) -> Dict[str, np.ndarray]:
