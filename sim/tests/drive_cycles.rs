@@ -165,8 +165,8 @@ fn full_throttle_settles_where_the_resistances_take_the_maximum_power() {
     // 170 s is almost seven of them. (Held longer, the car leaves its straight line: its yaw
     // rate doubles every 6 s from 140 s on, and at 200 s it spins. The model oversteers: the
     // constant-radius scenario measures an understeer gradient of -0.32 °/g at the road
-    // wheels, whose single-track critical speed √(L/|K|) is 257 km/h, just under the 265 km/h
-    // it reaches. See the closing note of 2026-11-28 on the shipped models' gradients.)
+    // wheels, whose single-track critical speed √(L/|K|) is 260 km/h, just under the 265 km/h
+    // it reaches: sim/README.md, "the same balance shows at speed".)
     let dt = sim.world().dt();
     let mut speeds = Vec::new();
     for _ in 0..(170.0 / dt) as usize {
