@@ -18,10 +18,19 @@ use crate::{SimError, Simulation, VehicleId};
 /// without a programme (the others run theirs).
 ///
 /// # Errors
-/// A world without cars, with a robot beside its cars, or with several cars of which not
-/// exactly one has no programme, as a sentence naming the world.
+/// A world without cars, with a robot beside its cars, with several cars of which not
+/// exactly one has no programme, or with a car whose programme follows a drive cycle (only
+/// `vehicle-sim`'s `programme` scenario runs the cycle driver), as a sentence naming the
+/// world.
 pub fn driven_car(description: &WorldDescription) -> Result<usize, String> {
     let cars = &description.cars;
+    if let Some(car) = cars.iter().find(|c| c.cycle.is_some()) {
+        return Err(format!(
+            "cannot drive the world {}: car {} follows a drive cycle (`cycle` in its \
+             programme), which only vehicle-sim's programme scenario runs",
+            description.source, car.name
+        ));
+    }
     if description.robot.is_some() || cars.is_empty() {
         return Err(format!(
             "cannot drive the world {}: it holds {}, and this front-end drives exactly one car",
@@ -33,7 +42,7 @@ pub fn driven_car(description: &WorldDescription) -> Result<usize, String> {
         return Ok(0);
     }
     let free: Vec<usize> = (0..cars.len())
-        .filter(|&i| cars[i].programme.is_empty() && cars[i].lanes.is_empty())
+        .filter(|&i| !cars[i].has_programme())
         .collect();
     match free[..] {
         [one] => Ok(one),
@@ -198,6 +207,17 @@ mod tests {
         assert_ne!(traffic.position(), start);
         traffic.rewind();
         assert_eq!(traffic.position(), start);
+    }
+
+    #[test]
+    fn a_world_with_a_drive_cycle_is_refused_not_dropped() {
+        let cycle = TWO.replace(
+            "cruising_speed = 36\n",
+            "cruising_speed = 36\n[[vehicle.programme]]\nat = 2\ncycle = \"udds\"\n",
+        );
+        let description = world_file::parse_str("w", &cycle).unwrap();
+        let e = driven_car(&description).unwrap_err();
+        assert!(e.contains("car lead follows a drive cycle"), "{e}");
     }
 
     #[test]

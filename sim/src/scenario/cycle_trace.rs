@@ -22,6 +22,14 @@ const HWFET: &str = include_str!("../../data/cycles/hwfet.txt");
 /// after the 10-minute soak (40 CFR 86.137-94(b)(27)).
 const FTP75_HOT_START_S: usize = 505;
 
+/// Half-width of the EPA's speed tolerance band (m/s): 2 mph (40 CFR 86.115-78(c), 40 CFR
+/// 600.109-08(b)(2)).
+pub const EPA_SPEED_TOLERANCE: f64 = 2.0 * MS_PER_MPH;
+
+/// Half-width of the EPA band's time window (s): the band's edges are the highest and lowest
+/// trace speeds within 1 s of the time (same sections).
+pub const EPA_TIME_TOLERANCE: f64 = 1.0;
+
 /// A regulatory drive cycle.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Cycle {
@@ -30,17 +38,21 @@ pub enum Cycle {
     Ftp75,
     /// EPA Highway Fuel Economy Test: 765 s.
     Hwfet,
+    /// EPA Urban Dynamometer Driving Schedule (UDDS, LA-4): 1369 s, the FTP-75's cold start
+    /// and stabilised phases alone.
+    Udds,
 }
 
 impl Cycle {
     /// Every cycle shipped.
-    pub const ALL: [Cycle; 2] = [Cycle::Ftp75, Cycle::Hwfet];
+    pub const ALL: [Cycle; 3] = [Cycle::Ftp75, Cycle::Hwfet, Cycle::Udds];
 
     /// The cycle's name, e.g. `"ftp75"`.
     pub const fn name(self) -> &'static str {
         match self {
             Cycle::Ftp75 => "ftp75",
             Cycle::Hwfet => "hwfet",
+            Cycle::Udds => "udds",
         }
     }
 
@@ -63,19 +75,19 @@ impl Cycle {
                 Trace { speeds }
             }
             Cycle::Hwfet => table(HWFET),
+            Cycle::Udds => table(UDDS),
         }
     }
 
-    /// Half-width of the speed tolerance band (m/s): 2 mph for the EPA cycles (40 CFR
-    /// 86.115-78(c), 40 CFR 600.109-08(b)(2)).
+    /// Half-width of the speed tolerance band (m/s): [`EPA_SPEED_TOLERANCE`] for the EPA
+    /// cycles.
     pub const fn speed_tolerance(self) -> f64 {
-        2.0 * MS_PER_MPH
+        EPA_SPEED_TOLERANCE
     }
 
-    /// Half-width of the band's time window (s): 1 s, the band's edges being the highest and
-    /// lowest trace speeds within 1 s of the time (same sections).
+    /// Half-width of the band's time window (s): [`EPA_TIME_TOLERANCE`] for the EPA cycles.
     pub const fn time_tolerance(self) -> f64 {
-        1.0
+        EPA_TIME_TOLERANCE
     }
 }
 
