@@ -12,7 +12,7 @@ use std::env::{self, VarError};
 use std::ffi::c_int;
 use std::path::PathBuf;
 
-use sim::traffic::{Traffic, TrafficNote, driven_car};
+use sim::traffic::{Traffic, TrafficNote, driven_car, refuse_cycles};
 use sim::world_file::{self, WorldDescription};
 use sim::{SimError, Simulation, VehicleId};
 
@@ -106,6 +106,9 @@ impl Robot {
         car: Option<&str>,
     ) -> Result<Robot, String> {
         let cars = &description.cars;
+        // A car chosen by name skips `driven_car`, which refuses drive cycles: refuse them
+        // here for every choice.
+        refuse_cycles(description)?;
         let cars_list = crate::controllers::world_cars(description);
         // A robot alone is driven; otherwise the named car or the one the traffic rule leaves
         // free.

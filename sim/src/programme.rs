@@ -153,7 +153,7 @@ impl<C> Default for Programme<C> {
 
 /// Time within which a step counts as due (s): far below any step length, so that a step at
 /// `at = 0.3` is due at the step starting at 0.3 s although 30 × 0.01 is 0.30000000000000004.
-const DUE_TOLERANCE: f64 = 1e-9;
+pub(crate) const DUE_TOLERANCE: f64 = 1e-9;
 
 impl<C> Programme<C> {
     /// The programme of `steps`, sorted by `at`.

@@ -14,13 +14,33 @@ use crate::programme::Programme;
 use crate::world_file::WorldDescription;
 use crate::{SimError, Simulation, VehicleId};
 
+/// Refuses a world of which a car follows a drive cycle: the controller front-ends run the
+/// other cars' programmes through [`Traffic`], which has no cycle driver (only
+/// `vehicle-sim`'s `programme` scenario runs it), and a cycle is never dropped silently.
+///
+/// # Errors
+/// The first such car, as a sentence naming the world.
+pub fn refuse_cycles(description: &WorldDescription) -> Result<(), String> {
+    match description.cars.iter().find(|c| c.cycle.is_some()) {
+        Some(car) => Err(format!(
+            "cannot drive the world {}: car {} follows a drive cycle (`cycle` in its \
+             programme), which only vehicle-sim's programme scenario runs",
+            description.source, car.name
+        )),
+        None => Ok(()),
+    }
+}
+
 /// Which car of `description` a front-end drives: the only car, or of several the one
 /// without a programme (the others run theirs).
 ///
 /// # Errors
-/// A world without cars, with a robot beside its cars, or with several cars of which not
-/// exactly one has no programme, as a sentence naming the world.
+/// A world without cars, with a robot beside its cars, with several cars of which not
+/// exactly one has no programme, or with a car whose programme follows a drive cycle (only
+/// `vehicle-sim`'s `programme` scenario runs the cycle driver), as a sentence naming the
+/// world.
 pub fn driven_car(description: &WorldDescription) -> Result<usize, String> {
+    refuse_cycles(description)?;
     let cars = &description.cars;
     if description.robot.is_some() || cars.is_empty() {
         return Err(format!(
@@ -33,7 +53,7 @@ pub fn driven_car(description: &WorldDescription) -> Result<usize, String> {
         return Ok(0);
     }
     let free: Vec<usize> = (0..cars.len())
-        .filter(|&i| cars[i].programme.is_empty() && cars[i].lanes.is_empty())
+        .filter(|&i| !cars[i].has_programme())
         .collect();
     match free[..] {
         [one] => Ok(one),
@@ -224,6 +244,17 @@ mod tests {
         // Its 36 km/h at 0 s was never issued: the lead stands (well under the 3 m/s it
         // reaches in 1.5 s when it runs its programme, above).
         assert!(sim.telemetry(ids[0]).unwrap().speed.abs() < 0.1);
+    }
+
+    #[test]
+    fn a_world_with_a_drive_cycle_is_refused_not_dropped() {
+        let cycle = TWO.replace(
+            "cruising_speed = 36\n",
+            "cruising_speed = 36\n[[vehicle.programme]]\nat = 2\ncycle = \"udds\"\n",
+        );
+        let description = world_file::parse_str("w", &cycle).unwrap();
+        let e = driven_car(&description).unwrap_err();
+        assert!(e.contains("car lead follows a drive cycle"), "{e}");
     }
 
     #[test]

@@ -6,7 +6,7 @@ use vehicle_model::Driver;
 
 use crate::error::SimError;
 use crate::replay::Recorder;
-use crate::simulation::{EnergyReport, Simulation};
+use crate::simulation::Simulation;
 use crate::telemetry::{DeviceLog, Sample, Telemetry, VehicleKind};
 use crate::vehicle::{VehicleId, VehicleSpec, VehicleState};
 use crate::world_file::{CarDescription, WorldDescription};
@@ -102,9 +102,15 @@ impl CarRig {
         &self.spec
     }
 
-    /// What the car's powertrain did so far, `None` without energy accounting.
-    pub(crate) fn energy(&self) -> Result<Option<EnergyReport>, ScenarioError> {
-        Ok(self.sim.energy(self.id)?)
+    /// The simulation and the car in it, for a driver written for any car of a simulation
+    /// (the drive-cycle follower).
+    pub(crate) fn simulation_mut(&mut self) -> (&mut Simulation, VehicleId) {
+        (&mut self.sim, self.id)
+    }
+
+    /// The simulation and the car in it.
+    pub(crate) fn simulation(&self) -> (&Simulation, VehicleId) {
+        (&self.sim, self.id)
     }
 
     /// The step length (s).

@@ -1,7 +1,9 @@
 //! The car scenarios: each drives a fresh car through the driver library and measures it.
 
 use proto_geom::nalgebra::Point3;
-use vehicle_model::{AutoShiftParams, IndicatorState, TyreModel, Wheel, axle_brake_factor};
+use vehicle_model::{AutoShiftParams, Driver, IndicatorState, TyreModel, Wheel, axle_brake_factor};
+
+use crate::vehicle::VehicleSpec;
 
 use crate::world_file::{CarDescription, WorldDescription};
 
@@ -106,7 +108,7 @@ pub(crate) fn run(
     }
     if let Some(cycle) = drive_cycles::cycle_of(scenario) {
         // Its own world: the car's energy accounted.
-        return drive_cycles::run(world, car, cycle, progress);
+        return drive_cycles::run(world, car, scenario, cycle, progress);
     }
     let t0100 = car.params.time_0_to_100;
     // Each programme and the simulated time it expects (s), for the progress bar;
@@ -220,26 +222,33 @@ fn accel_torque(mut rig: CarRig, progress: Progress<'_>) -> Result<ScenarioResul
     Ok(rig.finish(Scenario::AccelTorque, metrics))
 }
 
-/// The deceleration (m/s²) the brakes alone give the car, limited by the grip:
+/// The deceleration (m/s²) the brakes alone give the rig's car ([`brake_deceleration`]).
+pub(super) fn expected_deceleration(rig: &CarRig) -> Result<f64, ScenarioError> {
+    Ok(brake_deceleration(rig.spec(), rig.driver()?, rig.ground()))
+}
+
+/// The deceleration (m/s²) the brakes alone give a car built as `spec` driven by `driver`
+/// on a ground of `(friction, gravity)` (dimensionless, m/s²), limited by the grip:
 /// `min(Σ T_w/r_w / m, μ·g)` with `T_w` each wheel's brake torque at intensity 1
 /// (`brakeCoefficient`, times its axle's factor under a brake balance other than Webots'), `m`
 /// the whole car's mass and μ the ground's friction times the slip-based tyre's longitudinal
 /// peak friction (1 for Webots' contact).
-pub(super) fn expected_deceleration(rig: &CarRig) -> Result<f64, ScenarioError> {
-    let spec = rig.spec();
+pub(super) fn brake_deceleration(
+    spec: &VehicleSpec,
+    driver: &Driver<f64>,
+    (friction, gravity): (f64, f64),
+) -> f64 {
     let mass = spec.chassis.mass + Wheel::ALL.iter().map(|&w| spec.wheels[w].mass).sum::<f64>();
-    let driver = rig.driver()?;
     let (p, share) = (driver.params(), driver.brake_front_share());
     let force: f64 = Wheel::ALL
         .iter()
         .map(|&w| p.brake_coefficient * axle_brake_factor(share, w) / p.axle_radius(w))
         .sum();
-    let (friction, gravity) = rig.ground();
     let tyre = match spec.tyres.of(Wheel::FrontRight) {
         TyreModel::MagicFormula(t) => t.params().longitudinal.peak_friction,
         TyreModel::Webots(_) => 1.0,
     };
-    Ok((force / mass).min(friction * tyre * gravity))
+    (force / mass).min(friction * tyre * gravity)
 }
 
 /// True once the speed has reached 90 % of `target` (m/s) and changed by less than 0.1 km/h

@@ -27,6 +27,14 @@ const MS_PER_KMH: f64 = 1.0 / 3.6;
 /// after the 10-minute soak (40 CFR 86.137-94(b)(27)).
 const FTP75_HOT_START_S: usize = 505;
 
+/// Half-width of the EPA's speed tolerance band (m/s): 2 mph (40 CFR 86.115-78(c), 40 CFR
+/// 600.109-08(b)(2)).
+pub const EPA_SPEED_TOLERANCE: f64 = 2.0 * MS_PER_MPH;
+
+/// Half-width of the EPA band's time window (s): the band's edges are the highest and lowest
+/// trace speeds within 1 s of the time (same sections).
+pub const EPA_TIME_TOLERANCE: f64 = 1.0;
+
 /// A regulatory drive cycle.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Cycle {
@@ -38,11 +46,41 @@ pub enum Cycle {
     /// WLTC class 3b of UN GTR No. 15 (cars of more than 34 W/kg and at least 120 km/h):
     /// 1800 s in four phases, Low, Medium, High and Extra High.
     Wltc,
+    /// EPA Urban Dynamometer Driving Schedule (UDDS, LA-4): 1369 s, the FTP-75's cold start
+    /// and stabilised phases alone.
+    Udds,
+}
+
+/// A trace's tolerance band: the half-widths the car's speed may stray from the trace.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Band {
+    /// In speed (m/s).
+    pub speed: f64,
+    /// In time (s): the band's edges are the highest and lowest trace speeds this close.
+    pub time: f64,
+    /// "time outside the tolerance band (…)", for the metrics table.
+    pub outside_label: &'static str,
+}
+
+impl Band {
+    /// The EPA's band, ±2 mph and ±1 s: its cycles', and a user's trace's.
+    pub const EPA: Band = Band {
+        speed: EPA_SPEED_TOLERANCE,
+        time: EPA_TIME_TOLERANCE,
+        outside_label: "time outside the tolerance band (±2 mph, ±1 s)",
+    };
+
+    /// GTR No. 15's band for the WLTC, ±2 km/h and ±1 s.
+    pub const WLTC: Band = Band {
+        speed: 2.0 * MS_PER_KMH,
+        time: 1.0,
+        outside_label: "time outside the tolerance band (±2 km/h, ±1 s)",
+    };
 }
 
 impl Cycle {
     /// Every cycle shipped.
-    pub const ALL: [Cycle; 3] = [Cycle::Ftp75, Cycle::Hwfet, Cycle::Wltc];
+    pub const ALL: [Cycle; 4] = [Cycle::Ftp75, Cycle::Hwfet, Cycle::Wltc, Cycle::Udds];
 
     /// The cycle's name, e.g. `"ftp75"`.
     pub const fn name(self) -> &'static str {
@@ -50,6 +88,7 @@ impl Cycle {
             Cycle::Ftp75 => "ftp75",
             Cycle::Hwfet => "hwfet",
             Cycle::Wltc => "wltc",
+            Cycle::Udds => "udds",
         }
     }
 
@@ -73,24 +112,33 @@ impl Cycle {
             }
             Cycle::Hwfet => table(HWFET),
             Cycle::Wltc => Trace::from_table(WLTC3B, MS_PER_KMH).unwrap_or_default(),
+            Cycle::Udds => table(UDDS),
         }
     }
 
-    /// Half-width of the speed tolerance band (m/s): 2 mph for the EPA cycles (40 CFR
-    /// 86.115-78(c), 40 CFR 600.109-08(b)(2)), 2 km/h for the WLTC (GTR No. 15, Annex 6,
-    /// §2.6.8.3, speed trace tolerances).
+    /// Half-width of the speed tolerance band (m/s): [`EPA_SPEED_TOLERANCE`] (2 mph) for the
+    /// EPA cycles (40 CFR 86.115-78(c), 40 CFR 600.109-08(b)(2)), 2 km/h for the WLTC (GTR
+    /// No. 15, Annex 6, §2.6.8.3, speed trace tolerances).
     pub const fn speed_tolerance(self) -> f64 {
         match self {
-            Cycle::Ftp75 | Cycle::Hwfet => 2.0 * MS_PER_MPH,
+            Cycle::Ftp75 | Cycle::Hwfet | Cycle::Udds => EPA_SPEED_TOLERANCE,
             Cycle::Wltc => 2.0 * MS_PER_KMH,
         }
     }
 
-    /// Half-width of the band's time window (s): 1 s, the band's edges being the highest and
-    /// lowest trace speeds within 1 s of the time (same sections; the same ±1.0 s in GTR
-    /// No. 15).
+    /// Half-width of the band's time window (s): [`EPA_TIME_TOLERANCE`], the band's edges
+    /// being the highest and lowest trace speeds within 1 s of the time (the same ±1.0 s in
+    /// GTR No. 15).
     pub const fn time_tolerance(self) -> f64 {
-        1.0
+        EPA_TIME_TOLERANCE
+    }
+
+    /// The cycle's tolerance band.
+    pub const fn band(self) -> Band {
+        match self {
+            Cycle::Ftp75 | Cycle::Hwfet | Cycle::Udds => Band::EPA,
+            Cycle::Wltc => Band::WLTC,
+        }
     }
 }
 

@@ -24,7 +24,7 @@
 //! | `hwfet` | car | EPA Highway Fuel Economy Test (765 s), likewise | as `ftp75` |
 //! | `square` | robot | a square of side 10 × `axleLength`, open loop | final pose, `closure_error_m` |
 //! | `spin` | robot | turns on the spot for 10 s | final pose, `turns` |
-//! | `programme` | any | every car's and the robot's programme from the world file | per vehicle: [`motion_metrics`]; for several cars `min_gap_m`, `touched` |
+//! | `programme` | any | every car's and the robot's programme from the world file | per vehicle: [`motion_metrics`], a `cycle`'s metrics as `ftp75`'s ([`CycleCommand`]); for several cars `min_gap_m`, `touched` |
 //!
 //! The built-in car scenarios need a world with exactly one car (and no robot), the robot
 //! scenarios one with exactly the robot; `programme` runs any world.
@@ -32,6 +32,7 @@
 mod car;
 mod car_programmes;
 mod cycle_driver;
+mod cycle_follow;
 mod cycle_trace;
 mod drive_cycles;
 mod fit;
@@ -54,8 +55,10 @@ use core::fmt;
 use std::time::Instant;
 
 pub use cycle_driver::{AuthorityError, BandMeter, CycleDriver, PedalAuthority, Pedals};
-pub use cycle_trace::{Cycle, MS_PER_MPH, Trace, TraceError};
-pub use drive_cycles::FUEL_DENSITY;
+pub use cycle_follow::{CycleCommand, CycleSource, FUEL_DENSITY};
+pub use cycle_trace::{
+    Band, Cycle, EPA_SPEED_TOLERANCE, EPA_TIME_TOLERANCE, MS_PER_MPH, Trace, TraceError,
+};
 pub use fit::{Circle, fit_circle};
 pub use lane::{LaneSection, double_lane_change};
 pub use lane_departure::{DepartureMeter, LaneDeparture, Side};

@@ -4,12 +4,13 @@
 
 use crate::diff_wheels::RobotId;
 use crate::lane_following::{FollowCommand, FollowStatus};
-use crate::programme::{Cursor, DriverCommand, WheelSpeeds};
+use crate::programme::{Cursor, DUE_TOLERANCE, DriverCommand, WheelSpeeds};
 use crate::simulation::Simulation;
 use crate::vehicle::VehicleId;
 use crate::world_file::WorldDescription;
 
-use super::{RunReport, Scenario, ScenarioError, ScenarioResult};
+use super::cycle_follow::{CycleCommand, CycleFollower, account_energy};
+use super::{Metric, RunReport, Scenario, ScenarioError, ScenarioResult};
 
 /// How long a programme runs past its last step when the world sets no `duration` (s): long
 /// enough for a command to play out (a car braking from 100 km/h stops within 4 s, a cruise
@@ -26,6 +27,14 @@ struct Follower<'w, C, I> {
     cursor: Cursor<'w, C>,
 }
 
+/// A car's drive cycle: due at `command.at`, then followed.
+struct CycleCursor<'w> {
+    id: VehicleId,
+    name: &'w str,
+    command: &'w CycleCommand,
+    follower: Option<CycleFollower>,
+}
+
 /// A car's lane-follower commands and where it is in them.
 struct LaneCursor<'w> {
     id: VehicleId,
@@ -36,17 +45,50 @@ struct LaneCursor<'w> {
 }
 
 /// The simulated time the programme of `world` runs (s): the world's `duration`, else the
-/// last step of any programme plus [`PROGRAMME_TAIL`].
+/// last step of any programme (or the end of a drive cycle) plus [`PROGRAMME_TAIL`].
 pub(crate) fn duration(world: &WorldDescription) -> f64 {
     world.duration.unwrap_or_else(|| {
         let last = world
             .cars
             .iter()
-            .map(|c| c.programme.last_time().max(c.lanes.last_time()))
+            .map(|c| {
+                let cycle_end = c.cycle.as_ref().map_or(0.0, CycleCommand::end);
+                c.programme
+                    .last_time()
+                    .max(c.lanes.last_time())
+                    .max(cycle_end)
+            })
             .chain(world.robot.iter().map(|r| r.programme.last_time()))
             .fold(0.0, f64::max);
         last + PROGRAMME_TAIL
     })
+}
+
+/// The metrics of `car`'s cycle, and a note if it was cut short or never started.
+fn cycle_metrics(
+    sim: &Simulation,
+    car: &CycleCursor<'_>,
+    notes: &mut Vec<String>,
+) -> Result<Vec<Metric>, ScenarioError> {
+    let label = car.command.label();
+    let Some(f) = &car.follower else {
+        notes.push(format!(
+            "{}: the run ended before {label} was due at {} s",
+            car.name, car.command.at
+        ));
+        return Ok(Vec::new());
+    };
+    if !f.finished() {
+        notes.push(format!(
+            "{}: the run ended at {:.1} s, before the end of {label} at {} s: its metrics are \
+             those of the part driven",
+            car.name,
+            sim.world().time(),
+            car.command.end()
+        ));
+    }
+    let engine = sim.driver(car.id)?.params().engine.engine_type;
+    f.metrics(sim, car.id, engine)
 }
 
 /// Runs the programmes of `world`: the simulation of the world as described
@@ -56,8 +98,27 @@ pub(crate) fn run(
     world: &WorldDescription,
     progress: &mut dyn FnMut(f64, f64),
 ) -> Result<ScenarioResult, ScenarioError> {
-    let (mut sim, _) = Simulation::from_description(world)?;
+    // A car that follows a cycle has its energy accounted, as in the drive-cycle scenarios.
+    let mut accounted = world.clone();
+    let mut notes = Vec::new();
+    for car in world.cars.iter().filter(|c| c.cycle.is_some()) {
+        notes.extend(account_energy(&mut accounted.cars, &car.name));
+    }
+    let (mut sim, _) = Simulation::from_description(&accounted)?;
     let name = Scenario::Programme.name();
+    let mut cycles: Vec<CycleCursor<'_>> = world
+        .cars
+        .iter()
+        .zip(sim.car_ids())
+        .filter_map(|(c, id)| {
+            c.cycle.as_ref().map(|command| CycleCursor {
+                id,
+                name: &c.name,
+                command,
+                follower: None,
+            })
+        })
+        .collect();
     let mut cars: Vec<Follower<'_, DriverCommand, VehicleId>> = world
         .cars
         .iter()
@@ -92,7 +153,6 @@ pub(crate) fn run(
     sim.record(name);
     let end = duration(world);
     let steps = (end / sim.world().dt()).round() as u64;
-    let mut notes = Vec::new();
     let mut next_progress = 0.0;
     for _ in 0..steps {
         let t = sim.world().time();
@@ -118,6 +178,20 @@ pub(crate) fn run(
                 }
             }
         }
+        for car in &mut cycles {
+            if car.follower.is_none() && car.command.at <= t + DUE_TOLERANCE {
+                let trace = car.command.trace.clone();
+                let band = car.command.band();
+                let (follower, note) = CycleFollower::engage(&mut sim, car.id, trace, band)?;
+                if let Some(n) = note {
+                    notes.push(format!("{} at {t} s, cycle: {n}", car.name));
+                }
+                car.follower = Some(follower);
+            }
+            if let Some(f) = &mut car.follower {
+                f.drive(&mut sim, car.id)?;
+            }
+        }
         if let Some(r) = &mut robot {
             let due: Vec<WheelSpeeds> = r.cursor.due(t).map(|(_, s)| *s).collect();
             let device = sim.world_mut().robot_mut(r.id)?;
@@ -128,6 +202,11 @@ pub(crate) fn run(
             }
         }
         sim.step()?;
+        for car in &mut cycles {
+            if let Some(f) = &mut car.follower {
+                f.measure(&sim, car.id)?;
+            }
+        }
         for car in &mut lanes {
             let status = sim
                 .lane_follower(car.id)?
@@ -159,6 +238,13 @@ pub(crate) fn run(
         None => RunReport::default(),
     };
     let mut result = report.results.into_iter().next().unwrap_or_default();
+    for car in &cycles {
+        result.metrics.extend(
+            cycle_metrics(&sim, car, &mut notes)?
+                .into_iter()
+                .map(|m| m.of(car.name)),
+        );
+    }
     result.devices = sim.take_device_readings();
     notes.append(&mut result.notes);
     result.notes = notes;

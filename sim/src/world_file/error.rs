@@ -128,6 +128,10 @@ pub enum NameSet {
     ContactPoint,
     /// `[vehicle] losses`: `webots`, `road-load`.
     Losses,
+    /// A programme's `cycle`: the shipped drive cycles.
+    DriveCycle,
+    /// A programme's `cycle_unit`: `km/h`, `mph`, `m/s`.
+    SpeedUnit,
 }
 
 impl fmt::Display for NameSet {
@@ -152,6 +156,8 @@ impl fmt::Display for NameSet {
             NameSet::LineType => "road line type",
             NameSet::ContactPoint => "contact point",
             NameSet::Losses => "wheel loss set",
+            NameSet::DriveCycle => "drive cycle",
+            NameSet::SpeedUnit => "speed unit",
         })
     }
 }

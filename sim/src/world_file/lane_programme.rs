@@ -15,7 +15,7 @@ use crate::programme::{Programme, Step};
 use crate::road::{RoadNetwork, travel_direction};
 
 use super::error::{WorldFileError, WorldFileErrorKind};
-use super::programme::{KEY, steps};
+use super::programme::{step_keys, steps};
 use super::read::Section;
 
 /// The key that starts (`true`) or stops (`false`) following.
@@ -40,11 +40,7 @@ pub(crate) fn read_lane_programme(
     s: &Section<'_, '_>,
     roads: &RoadNetwork,
 ) -> Result<Programme<FollowCommand>, WorldFileError> {
-    let keys: Vec<&str> = [super::programme::AT, KEY]
-        .into_iter()
-        .chain(crate::programme::DriverCommand::KEYS)
-        .chain(FOLLOW_KEYS)
-        .collect();
+    let keys = step_keys();
     let mut out = Vec::new();
     let mut direction: Option<f64> = None;
     for (at, step) in steps(s, &keys)? {

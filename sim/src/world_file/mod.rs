@@ -32,6 +32,7 @@
 mod aero;
 mod bodies;
 mod cone;
+mod cycle_programme;
 mod devices;
 pub mod diagnostics;
 mod energy;
@@ -198,9 +199,7 @@ impl WorldDescription {
 
     /// True when a car or the robot has a programme.
     pub fn has_programme(&self) -> bool {
-        self.cars
-            .iter()
-            .any(|c| !c.programme.is_empty() || !c.lanes.is_empty())
+        self.cars.iter().any(CarDescription::has_programme)
             || self.robot.as_ref().is_some_and(|r| !r.programme.is_empty())
     }
 }

@@ -9,6 +9,7 @@ use crate::keyboard::{KeyPress, check_code, parse_key};
 use crate::programme::{DriverCommand, Programme, Step, WheelSpeeds};
 use crate::simulation::MAX_DURATION;
 
+use super::cycle_programme::CYCLE_KEYS;
 use super::error::{NameSet, WorldFileError, WorldFileErrorKind};
 use super::lane_programme::FOLLOW_KEYS;
 use super::read::Section;
@@ -117,11 +118,12 @@ fn flag(step: &Section<'_, '_>, key: &str) -> Result<bool, WorldFileError> {
 }
 
 /// Every key a car's programme step may have.
-fn step_keys() -> Vec<&'static str> {
+pub(crate) fn step_keys() -> Vec<&'static str> {
     [AT, KEY]
         .into_iter()
         .chain(DriverCommand::KEYS)
         .chain(FOLLOW_KEYS)
+        .chain(CYCLE_KEYS)
         .collect()
 }
 
@@ -138,7 +140,7 @@ pub(crate) fn read_car_programme(
         for (key, ..) in step.entries() {
             let command = match key {
                 AT | KEY => continue,
-                k if FOLLOW_KEYS.contains(&k) => continue,
+                k if FOLLOW_KEYS.contains(&k) || CYCLE_KEYS.contains(&k) => continue,
                 "cruising_speed" => {
                     DriverCommand::CruisingSpeed(number_in(&step, key, f64::MIN, f64::MAX)?)
                 }

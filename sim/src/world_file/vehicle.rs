@@ -12,13 +12,14 @@ use vehicle_model::{
     ParamWarning, RoadLoad, Wheel, WheelSetting, WheelSlot,
 };
 
+use super::cycle_programme::read_cycle;
 use super::devices::{DEVICE, read_devices};
 use super::energy::WebotsBattery;
 use super::error::{
     NameSet, WorldFileError, WorldFileErrorKind, WorldWarning, closest, model_names,
 };
 use super::lane_programme::read_lane_programme;
-use super::programme::{PROGRAMME, read_car_keys, read_car_programme};
+use super::programme::{PROGRAMME, read_car_keys, read_car_programme, step_keys};
 use super::read::{Section, as_f64, describe};
 use super::{aero, energy, losses, tyre};
 use crate::devices::DeviceSpec;
@@ -27,6 +28,7 @@ use crate::keyboard::KeyPress;
 use crate::lane_following::FollowCommand;
 use crate::programme::Programme;
 use crate::road::RoadNetwork;
+use crate::scenario::CycleCommand;
 use crate::vehicle::{Mounting, TyreChoice, VehicleSpec};
 
 /// The key of a vehicle's name in `[vehicle]` and `[differential_wheels]`.
@@ -98,6 +100,9 @@ pub struct CarDescription {
     /// Its lane follower's commands (`follow_lane`, `lane` … in `[[vehicle.programme]]`),
     /// empty if none.
     pub lanes: Programme<FollowCommand>,
+    /// The drive cycle its programme follows (`cycle`, `cycle_file` in
+    /// `[[vehicle.programme]]`), if any.
+    pub cycle: Option<CycleCommand>,
     /// The keys its programme presses for the controller's keyboard (`key`).
     pub keys: Vec<KeyPress>,
     /// Its sensor devices (`[[vehicle.device]]`), in file order, empty if none.
@@ -126,6 +131,12 @@ pub struct CarDescription {
 }
 
 impl CarDescription {
+    /// True when its programme gives commands: driver commands, the lane follower's or a
+    /// drive cycle.
+    pub fn has_programme(&self) -> bool {
+        !self.programme.is_empty() || !self.lanes.is_empty() || self.cycle.is_some()
+    }
+
     /// The validated parameters of `model` on the tyres of its class, and the messages of
     /// its validation (none for the shipped models).
     ///
@@ -146,6 +157,7 @@ impl CarDescription {
                 name: model.webots_name().to_string(),
                 programme: Programme::default(),
                 lanes: Programme::default(),
+                cycle: None,
                 keys: Vec::new(),
                 devices: Vec::new(),
                 seed: 0,
@@ -307,6 +319,7 @@ pub(crate) fn read_vehicle(
     let gears = i32::try_from(params.gear_ratios.len().saturating_sub(1)).unwrap_or(i32::MAX);
     let programme = read_car_programme(s, gears)?;
     let lanes = read_lane_programme(s, roads)?;
+    let cycle = read_cycle(s, &step_keys())?;
     let keys = read_car_keys(s)?;
     let devices = read_devices(s, model)?;
     let seed = s.unsigned(SEED)?.unwrap_or(0);
@@ -327,6 +340,7 @@ pub(crate) fn read_vehicle(
         name,
         programme,
         lanes,
+        cycle,
         keys,
         devices,
         seed,
