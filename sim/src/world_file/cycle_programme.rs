@@ -8,8 +8,6 @@
 //! programme, and a pedal or gear command (`throttle`, `brake_intensity`, `cruising_speed`,
 //! `gear`) while the cycle drives the pedals, which the driver would overwrite at once.
 
-use std::path::Path;
-
 use proto_geom::plausible::Compact;
 
 use crate::scenario::{Cycle, CycleCommand, CycleSource, MS_PER_MPH, Trace};
@@ -162,22 +160,12 @@ fn read_trace(step: &Section<'_, '_>) -> Result<(CycleSource, Trace), WorldFileE
 /// The trace in the file `name` (relative to the world file) of speeds in units of `scale`
 /// m/s.
 fn read_file(step: &Section<'_, '_>, name: &str, scale: f64) -> Result<Trace, WorldFileError> {
-    let path = Path::new(step.src.file)
-        .parent()
-        .unwrap_or(Path::new(""))
-        .join(name);
+    let path = shipped::include_path(step.src.file, name);
     let shown = path.display().to_string();
     let fail = |message: String| step.error(CYCLE_FILE, WorldFileErrorKind::InvalidValue(message));
-    let owned;
     // A shipped world's includes are embedded with it.
-    let text = match shipped::included(&path) {
-        Some(text) => text,
-        None => {
-            owned = std::fs::read_to_string(&path).map_err(|e| fail(format!("{shown}: {e}")))?;
-            owned.as_str()
-        }
-    };
-    let trace = Trace::from_table(text, scale).map_err(|e| fail(format!("{shown}: {e}")))?;
+    let text = shipped::read_included(&path).map_err(|e| fail(format!("{shown}: {e}")))?;
+    let trace = Trace::from_table(&text, scale).map_err(|e| fail(format!("{shown}: {e}")))?;
     if let Some((second, v)) = trace
         .speeds()
         .iter()

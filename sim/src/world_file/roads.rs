@@ -1,8 +1,6 @@
 //! `[[road]]` and `[[junction]]`: roads in Webots' Road vocabulary (segments, lanes, lines,
 //! borders), and the top-level `road = "file.xodr"` that imports an OpenDRIVE file.
 
-use std::path::Path;
-
 use proto_geom::nalgebra::Point2;
 use proto_geom::plausible::Compact;
 
@@ -74,7 +72,7 @@ pub(crate) fn read_roads(
     let sections = match root.value("road") {
         Some(toml::de::DeValue::String(_)) => {
             let name = root.string("road")?.unwrap_or_default();
-            let path = Path::new(file).parent().unwrap_or(Path::new("")).join(name);
+            let path = shipped::include_path(file, name);
             // A shipped world's includes are embedded with it.
             let imported = match shipped::included(&path) {
                 Some(text) => crate::road::opendrive::parse_str(&path.display().to_string(), text),

@@ -3,7 +3,8 @@
 //! loads `sim/worlds/two-cars.toml` when no file of that name exists. The files a shipped
 //! world includes (e.g. `road = "hilly-banked.xodr"`) are read from the same embedded set.
 
-use std::path::Path;
+use std::borrow::Cow;
+use std::path::{Path, PathBuf};
 
 /// Every file of `sim/worlds` by file name, sorted by name: `(file name, text)`.
 const FILES: &[(&str, &str)] = include!(concat!(env!("OUT_DIR"), "/shipped_worlds.rs"));
@@ -75,6 +76,27 @@ pub(crate) fn included(path: &Path) -> Option<&'static str> {
         .iter()
         .find(|(f, _)| *f == name)
         .map(|&(_, text)| text)
+}
+
+/// The path of the file `name` that the world file `world` includes (relative to its
+/// directory).
+pub(crate) fn include_path(world: &str, name: &str) -> PathBuf {
+    Path::new(world)
+        .parent()
+        .unwrap_or(Path::new(""))
+        .join(name)
+}
+
+/// The text of the included file at `path`: the embedded copy for a file a shipped world
+/// includes ([`included`]), else the file on disk.
+///
+/// # Errors
+/// The disk read's error.
+pub(crate) fn read_included(path: &Path) -> std::io::Result<Cow<'static, str>> {
+    match included(path) {
+        Some(text) => Ok(Cow::Borrowed(text)),
+        None => std::fs::read_to_string(path).map(Cow::Owned),
+    }
 }
 
 #[cfg(test)]

@@ -2,8 +2,6 @@
 //! relative to the world file, read by [`vehicle_model::TirFile`] and mapped onto the
 //! slip-based tyre's coefficients (the mapping: `vehicle_model::tyre::tir::mapping`).
 
-use std::path::Path;
-
 use vehicle_model::{TirFile, TyreField, TyreParams};
 
 use super::error::{WorldFileError, WorldFileErrorKind, WorldWarning};
@@ -28,23 +26,13 @@ pub(crate) fn read_tyre_file(
     let Some(name) = t.string(FILE)? else {
         return Ok(Vec::new());
     };
-    let path = Path::new(t.src.file)
-        .parent()
-        .unwrap_or(Path::new(""))
-        .join(name);
+    let path = shipped::include_path(t.src.file, name);
     let shown = path.display().to_string();
     let fail = |message: String| t.error(FILE, WorldFileErrorKind::InvalidValue(message));
-    let owned;
     // A shipped world's includes are embedded with it.
-    let text = match shipped::included(&path) {
-        Some(text) => text,
-        None => {
-            owned = std::fs::read_to_string(&path).map_err(|e| fail(format!("{shown}: {e}")))?;
-            owned.as_str()
-        }
-    };
+    let text = shipped::read_included(&path).map_err(|e| fail(format!("{shown}: {e}")))?;
     let located = |e: vehicle_model::TirError<'_>| fail(format!("{shown}: {e}"));
-    let tir = TirFile::read(text).map_err(located)?;
+    let tir = TirFile::read(&text).map_err(located)?;
     tir.apply(probe).map_err(located)?;
     let set = tir.mapped().map_err(located)?;
     let list = |keys: Vec<String>| keys.join(", ");
