@@ -4,9 +4,13 @@
 //! lift changes the axle loads by the lift forces.
 #![allow(clippy::unwrap_used)]
 
-use sim::{
-    CarBuilder, Mounting, Simulation, VehicleId, VehiclePlacement, VehicleSpec, World, WorldConfig,
-};
+// Only its effective mass is used here.
+#[allow(dead_code)]
+#[path = "support/coast_down.rs"]
+mod coast_down;
+
+use coast_down::effective_mass;
+use sim::{CarBuilder, Mounting, Simulation, VehicleId, VehiclePlacement, World, WorldConfig};
 use vehicle_model::{Aero, Model, Wheel};
 
 /// The model of these tests: a passenger car with a published drag coefficient.
@@ -38,19 +42,6 @@ fn car(mounting: Mounting, aero: Option<Aero<f64>>, wind: [f64; 3]) -> (Simulati
     builder.params_mut().wheels_damping_constant = WHEELS_DAMPING;
     let (id, _) = sim.add_car(builder).unwrap();
     (sim, id)
-}
-
-/// The car's mass as the road sees it when it slows down (kg): the chassis and wheels plus
-/// each wheel's spin inertia over its radius squared.
-fn effective_mass(spec: &VehicleSpec) -> f64 {
-    spec.chassis.mass
-        + Wheel::ALL
-            .into_iter()
-            .map(|w| {
-                let s = &spec.wheels[w];
-                s.mass + s.spin_inertia() / (s.radius * s.radius)
-            })
-            .sum::<f64>()
 }
 
 /// Cruises at [`START_KMH`], then rolls free in torque mode (throttle 0, no brake) for 0.5 s
