@@ -19,7 +19,8 @@ an exception), and getters never return NaN. ``Driver`` derives from
 Units: rad (positive steers right), km/h (speeds), rpm, m, rad/s, s.
 """
 
-from controller import Supervisor, _c_double, _c_int
+from controller import Supervisor
+from controller._c import _c_double, _c_int
 from webots_vehicle import _native
 
 __all__ = ["Car", "Driver"]
