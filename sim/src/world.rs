@@ -3,9 +3,8 @@
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
-use proto_geom::nalgebra::{Point2, Vector3};
+use proto_geom::nalgebra::Point2;
 use rapier3d::na::Unit;
-use rapier3d::parry::query::distance;
 use rapier3d::prelude::{
     CoefficientCombineRule, ColliderBuilder, ColliderHandle, IntegrationParameters, PhysicsWorld,
     Pose, RigidBodyHandle, Rotation, TriMeshFlags, Vector,
@@ -13,7 +12,6 @@ use rapier3d::prelude::{
 
 use crate::body::{self, BodyPose};
 use crate::config::{Obstacle, WorldConfig, ramp_corners};
-use crate::devices::rays::{RadarEcho, Scene};
 use crate::diff_wheels::{
     DifferentialWheels, DifferentialWheelsParams, RobotId, RobotMode, RobotPlacement,
 };
@@ -23,6 +21,8 @@ use crate::ground::{Ground, Surface};
 use crate::road::{LaneKind, RoadError};
 use crate::vehicle::{Vehicle, VehicleId, VehiclePlacement, VehicleSpec, WheelRoadHooks};
 
+mod contact;
+mod scene;
 mod snapshot;
 mod supervisor;
 pub(crate) use snapshot::WorldSnapshot;
@@ -313,137 +313,6 @@ impl World {
         Ok(energy)
     }
 
-    /// The world as the ray devices of car `own` see it after the last step (its own bodies
-    /// transparent), with the other cars, the dynamic boxes, the static boxes and ramps and
-    /// the robots of `radarCrossSection` > 0 as radar targets, in that order, when `radar` is
-    /// true.
-    pub(crate) fn scene(&self, own: VehicleId, radar: bool) -> Result<Scene<'_>, SimError> {
-        let echoes = if radar {
-            let boxes = self
-                .bodies
-                .iter()
-                .zip(&self.config.bodies)
-                .filter(|(_, spec)| spec.radar_cross_section > 0.0)
-                .filter_map(|(&h, spec)| {
-                    let pose = body::pose(&self.physics, h)?;
-                    Some(RadarEcho {
-                        position: pose.position,
-                        velocity: pose.velocity,
-                        cross_section: spec.radar_cross_section,
-                        centre: pose.position,
-                        radius: spec.size.norm() / 2.0,
-                        half_length: spec.size.x / 2.0,
-                        bodies: vec![h],
-                        colliders: Vec::new(),
-                    })
-                });
-            let robots = self
-                .robots
-                .iter()
-                .filter(|r| r.radar_cross_section() > 0.0)
-                .map(|r| {
-                    let (p, position) = (r.params(), r.pose().position);
-                    // The solid the camera draws: a cylinder of the wheels' radius across the
-                    // axle, standing on the ground under the axle.
-                    let half = Vector3::new(p.wheel_radius, p.axle_length / 2.0, p.wheel_radius);
-                    RadarEcho {
-                        position,
-                        velocity: r.velocity(&self.physics),
-                        cross_section: r.radar_cross_section(),
-                        centre: position + Vector3::new(0.0, 0.0, p.wheel_radius),
-                        radius: half.norm(),
-                        half_length: p.wheel_radius,
-                        bodies: r.bodies(),
-                        colliders: Vec::new(),
-                    }
-                });
-            let statics = self.obstacles.iter().filter_map(|&(i, h)| {
-                let o = self.config.obstacles.get(i)?;
-                (o.radar_cross_section() > 0.0).then(|| {
-                    let (centre, radius) = o.bounding_sphere();
-                    RadarEcho {
-                        position: o.placement().0,
-                        velocity: Vector3::zeros(),
-                        cross_section: o.radar_cross_section(),
-                        centre,
-                        radius,
-                        half_length: o.half_length(),
-                        bodies: Vec::new(),
-                        colliders: vec![h],
-                    }
-                })
-            });
-            self.vehicles
-                .iter()
-                .filter(|v| v.id() != own && v.radar_cross_section() > 0.0)
-                .map(|v| {
-                    let (s, chassis) = (v.state(), &v.spec().chassis);
-                    RadarEcho {
-                        position: s.position,
-                        velocity: s.velocity,
-                        cross_section: v.radar_cross_section(),
-                        centre: s.position + s.orientation * chassis.box_center.coords,
-                        radius: chassis.box_half_extents.norm(),
-                        half_length: chassis.box_half_extents.x,
-                        bodies: v.bodies(),
-                        colliders: Vec::new(),
-                    }
-                })
-                .chain(boxes)
-                .chain(statics)
-                .chain(robots)
-                .collect()
-        } else {
-            Vec::new()
-        };
-        Ok(Scene::new(
-            &self.physics,
-            self.vehicle(own)?.bodies(),
-            echoes,
-        ))
-    }
-
-    /// The colliders of car `id`'s bodies.
-    fn vehicle_colliders(&self, id: VehicleId) -> Result<Vec<ColliderHandle>, SimError> {
-        Ok(self
-            .vehicle(id)?
-            .bodies()
-            .into_iter()
-            .filter_map(|h| self.physics.bodies.get(h))
-            .flat_map(|b| b.colliders().iter().copied())
-            .collect())
-    }
-
-    /// The smallest distance (m) between the collision shapes of cars `a` and `b` (the chassis
-    /// boxes, and the wheels of a car on joints) after the last step; 0 when they touch or
-    /// overlap.
-    pub fn vehicle_gap(&self, a: VehicleId, b: VehicleId) -> Result<f64, SimError> {
-        let (ca, cb) = (self.vehicle_colliders(a)?, self.vehicle_colliders(b)?);
-        let mut gap = f64::INFINITY;
-        for x in ca.iter().filter_map(|&h| self.physics.colliders.get(h)) {
-            for y in cb.iter().filter_map(|&h| self.physics.colliders.get(h)) {
-                // Every shape of a car is convex (boxes, cylinders): parry supports each pair.
-                if let Ok(d) = distance(x.position(), x.shape(), y.position(), y.shape()) {
-                    gap = gap.min(f64::from(d.distance));
-                }
-            }
-        }
-        Ok(gap)
-    }
-
-    /// True when rapier found an active contact between a collider of car `a` and one of car
-    /// `b` in the last step: the cars touched.
-    pub fn vehicles_in_contact(&self, a: VehicleId, b: VehicleId) -> Result<bool, SimError> {
-        let cb = self.vehicle_colliders(b)?;
-        Ok(self.vehicle_colliders(a)?.into_iter().any(|x| {
-            cb.iter().any(|&y| {
-                self.physics
-                    .contact_pair(x, y)
-                    .is_some_and(|p| p.has_any_active_contact())
-            })
-        }))
-    }
-
     /// Adds a DifferentialWheels robot at `placement`; fails on an invalid field.
     pub fn add_differential_wheels(
         &mut self,
@@ -723,84 +592,4 @@ pub use cone::{
 mod ground_tests;
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::vehicle::Mounting;
-    use ackermann::Wheel;
-    use vehicle_model::Model;
-
-    /// A world with a cast car and, 10 m to its left, a car on joints.
-    fn two_cars() -> World {
-        let mut world = World::new(WorldConfig::default()).unwrap();
-        for (i, mounting) in [Mounting::Cast, Mounting::Joints].into_iter().enumerate() {
-            let mut spec = VehicleSpec::from_car(&Model::BmwX5.params()).unwrap();
-            spec.mounting = mounting;
-            let placement = VehiclePlacement {
-                y: 10.0 * i as f64,
-                ..VehiclePlacement::default()
-            };
-            world.add_vehicle(spec, placement).unwrap();
-        }
-        world
-    }
-
-    #[test]
-    fn a_panic_in_a_step_is_an_error_naming_the_car_and_ends_the_world() {
-        // A negative tyre width, past the validation, makes parry's cylinder assert in the
-        // cast car's wheel query: the step returns the error instead of unwinding.
-        let mut world = two_cars();
-        world.step().unwrap();
-        world.vehicles[0].spec_mut().wheels[Wheel::FrontRight].width = -0.2;
-        let err = world.step().unwrap_err();
-        let SimError::Panic {
-            owner,
-            time_ms,
-            ref message,
-        } = err
-        else {
-            panic!("{err:?}");
-        };
-        assert_eq!((owner, time_ms), (BodyOwner::Vehicle(0), 10));
-        assert!(message.contains("assertion failed"), "{message}");
-        assert!(
-            err.to_string()
-                .starts_with("the step at t = 10 ms failed in car 1's part of it (a bug): "),
-            "{err}"
-        );
-        // The world is failed for good: the same error, no more time.
-        assert_eq!(world.step().unwrap_err(), err);
-        assert_eq!(world.time_ms(), 10);
-        assert_eq!(world.failure(), Some(&err));
-    }
-
-    #[test]
-    fn a_diverged_body_is_named_by_its_car_and_part() {
-        // A NaN velocity written into the second car's rear-left wheel: rapier quarantines the
-        // body at the start of the step, and the error names that car and wheel.
-        let mut world = two_cars();
-        world.step().unwrap();
-        let rear_left = Some(BodyPart::Wheel(Wheel::RearLeft));
-        let wheel = world
-            .physics
-            .bodies
-            .iter()
-            .map(|(h, _)| h)
-            .find(|h| world.vehicles[1].part_of(*h) == rear_left)
-            .unwrap();
-        world.physics.bodies[wheel].set_linvel(Vector::new(f32::NAN, 0.0, 0.0), true);
-        let err = world.step().unwrap_err();
-        assert_eq!(
-            err,
-            SimError::NonFinite {
-                owner: BodyOwner::Vehicle(1),
-                part: BodyPart::Wheel(Wheel::RearLeft),
-                time_ms: 20,
-            }
-        );
-        assert_eq!(
-            err.to_string(),
-            "the simulation diverged at t = 20 ms: the pose or velocity of the rear-left wheel \
-             of car 2 stopped being finite"
-        );
-    }
-}
+mod tests;
