@@ -13,10 +13,9 @@ use proto_geom::nalgebra::Point3;
 use vehicle_model::Wheel;
 
 use super::car::{CarRig, KMH};
-use super::car_programmes::{
-    CONE_BASE_RADIUS, MIN_LOOKAHEAD, PREVIEW_TIME, Progress, cone_layout, hits_cone, steady,
-};
+use super::car_programmes::{Progress, steady};
 use super::lane::LaneSection;
+use super::lane_change::{CONE_BASE_RADIUS, MIN_LOOKAHEAD, PREVIEW_TIME, cone_layout, hits_cone};
 use super::{Metric, Scenario, ScenarioError, ScenarioResult};
 
 /// Lengths of the five sections (m).

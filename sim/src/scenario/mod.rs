@@ -39,6 +39,7 @@ mod drive_cycles;
 mod fit;
 mod iso_3888;
 mod lane;
+mod lane_change;
 mod lane_departure;
 pub mod manoeuvre_metrics;
 mod manoeuvres;
