@@ -5,7 +5,8 @@
 //! programme ([`driven_car`]); every other car issues its `[[vehicle.programme]]` commands and
 //! its lane follower's at their times ([`Traffic::issue_due`], called before each step). One
 //! implementation for every front-end, so a world's traffic behaves the same under a C
-//! controller and in an FMU.
+//! controller, in an FMU and in `vehicle-sim`'s `programme` scenario (which runs every car's
+//! programme: [`Traffic::every_car`]).
 
 use vehicle_model::Warning;
 
@@ -74,6 +75,8 @@ pub enum TrafficNote {
     Driver {
         /// The car.
         car: VehicleId,
+        /// The command's world-file key, e.g. `"cruising_speed"`.
+        command: &'static str,
         /// The warning.
         warning: Warning,
     },
@@ -110,11 +113,20 @@ impl Traffic {
     /// Every car of `description` but car `driven`, built as `ids` (the simulation's car ids
     /// in the world's order).
     pub fn new(description: &WorldDescription, ids: &[VehicleId], driven: usize) -> Traffic {
+        Traffic::except(description, ids, Some(driven))
+    }
+
+    /// Every car of `description`, built as `ids`: a world no front-end drives.
+    pub fn every_car(description: &WorldDescription, ids: &[VehicleId]) -> Traffic {
+        Traffic::except(description, ids, None)
+    }
+
+    fn except(description: &WorldDescription, ids: &[VehicleId], driven: Option<usize>) -> Traffic {
         let cars = ids
             .iter()
             .zip(&description.cars)
             .enumerate()
-            .filter(|&(i, _)| i != driven)
+            .filter(|&(i, _)| Some(i) != driven)
             .map(|(_, (&id, car))| Programmed {
                 id,
                 programme: car.programme.clone(),
@@ -147,12 +159,16 @@ impl Traffic {
         for car in &mut self.cars {
             let mut cursor = car.programme.cursor_at(car.next);
             if let Ok(driver) = simulation.driver_mut(car.id) {
-                notes.extend(cursor.apply_due(t, driver).into_iter().map(|(_, warning)| {
-                    TrafficNote::Driver {
-                        car: car.id,
-                        warning,
-                    }
-                }));
+                notes.extend(
+                    cursor
+                        .apply_due(t, driver)
+                        .into_iter()
+                        .map(|(command, warning)| TrafficNote::Driver {
+                            car: car.id,
+                            command: command.key(),
+                            warning,
+                        }),
+                );
             }
             car.next = cursor.position();
             let mut lanes = car.lanes.cursor_at(car.lanes_next);

@@ -317,3 +317,51 @@ fn the_shipped_worlds_load_and_the_overtaking_world_overtakes() {
     assert!(number(&r, None, "min_gap_m") > 1.0);
     assert!(number(&r, Some("bmw"), "final_x_m") > number(&r, Some("prius"), "final_x_m"));
 }
+
+#[test]
+fn a_refused_lane_command_is_noted_with_its_car_and_time() {
+    // Two cars on a one-lane road; the second asks at 0.2 s for lane -2, which only a
+    // second road far away has (so the world file accepts it): the note names that car and
+    // the time, and the first car's commands give none.
+    let r = run(r#"
+duration = 0.5
+[[road]]
+id = "r"
+numberOfLanes = 1
+numberOfForwardLanes = 1
+laneWidths = [3.5]
+[[road.segment]]
+type = "straight"
+length = 200
+[[road]]
+id = "far"
+start = [0, 500]
+numberOfLanes = 2
+numberOfForwardLanes = 2
+laneWidths = [3.5, 3.5]
+[[road.segment]]
+type = "straight"
+length = 50
+[[vehicle]]
+model = "BmwX5"
+name = "first"
+translation = [20, -1.75, 0]
+[[vehicle.programme]]
+at = 0.0
+cruising_speed = 10
+follow_lane = true
+[[vehicle]]
+model = "BmwX5"
+name = "second"
+translation = [60, -1.75, 0]
+[[vehicle.programme]]
+at = 0.2
+follow_lane = true
+lane = -2
+"#);
+    let notes = &r.results[0].notes;
+    let lane: Vec<&String> = notes.iter().filter(|n| n.contains("follow_lane")).collect();
+    assert_eq!(lane.len(), 1, "{notes:?}");
+    assert!(lane[0].starts_with("second at 0.2"), "{notes:?}");
+    assert!(!notes.iter().any(|n| n.starts_with("first")), "{notes:?}");
+}

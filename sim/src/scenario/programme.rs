@@ -3,9 +3,10 @@
 //! one world.
 
 use crate::diff_wheels::RobotId;
-use crate::lane_following::{FollowCommand, FollowStatus};
-use crate::programme::{Cursor, DUE_TOLERANCE, DriverCommand, WheelSpeeds};
+use crate::lane_following::FollowStatus;
+use crate::programme::{Cursor, DUE_TOLERANCE, WheelSpeeds};
 use crate::simulation::Simulation;
+use crate::traffic::{Traffic, TrafficNote};
 use crate::vehicle::VehicleId;
 use crate::world_file::WorldDescription;
 
@@ -20,11 +21,11 @@ pub const PROGRAMME_TAIL: f64 = 10.0;
 /// Simulated time between two progress reports (s).
 const PROGRESS_PERIOD: f64 = 0.5;
 
-/// A car or robot and where it is in its programme.
-struct Follower<'w, C, I> {
-    id: I,
+/// The robot and where it is in its programme.
+struct RobotFollower<'w> {
+    id: RobotId,
     name: &'w str,
-    cursor: Cursor<'w, C>,
+    cursor: Cursor<'w, WheelSpeeds>,
 }
 
 /// A car's drive cycle: due at `command.at`, then followed.
@@ -35,12 +36,11 @@ struct CycleCursor<'w> {
     follower: Option<CycleFollower>,
 }
 
-/// A car's lane-follower commands and where it is in them.
-struct LaneCursor<'w> {
+/// A car with lane-follower commands, and its follower's status at the last step, to report
+/// each change once.
+struct LaneStatus<'w> {
     id: VehicleId,
     name: &'w str,
-    cursor: Cursor<'w, FollowCommand>,
-    /// The follower's status at the last step, to report each change once.
     status: FollowStatus,
 }
 
@@ -119,33 +119,31 @@ pub(crate) fn run(
             })
         })
         .collect();
-    let mut cars: Vec<Follower<'_, DriverCommand, VehicleId>> = world
-        .cars
-        .iter()
-        .zip(sim.car_ids())
-        .map(|(c, id)| Follower {
-            id,
-            name: &c.name,
-            cursor: c.programme.cursor(),
-        })
-        .collect();
-    let mut lanes: Vec<LaneCursor<'_>> = world
+    // The cars' programmes and lane commands are issued as every front-end issues a world's
+    // traffic; the cycles, the robot and the lane followers' status are this scenario's own.
+    let ids: Vec<VehicleId> = sim.car_ids().collect();
+    let mut traffic = Traffic::every_car(world, &ids);
+    let car_name = |id: VehicleId| {
+        ids.iter()
+            .position(|&i| i == id)
+            .map_or("?", |k| world.cars[k].name.as_str())
+    };
+    let mut lanes: Vec<LaneStatus<'_>> = world
         .cars
         .iter()
         .zip(sim.car_ids())
         .filter(|(c, _)| !c.lanes.is_empty())
-        .map(|(c, id)| LaneCursor {
+        .map(|(c, id)| LaneStatus {
             id,
             name: &c.name,
-            cursor: c.lanes.cursor(),
             status: FollowStatus::Following,
         })
         .collect();
-    let mut robot: Option<Follower<'_, WheelSpeeds, RobotId>> = world
+    let mut robot: Option<RobotFollower<'_>> = world
         .robot
         .as_ref()
         .zip(sim.robot_ids().next())
-        .map(|(r, id)| Follower {
+        .map(|(r, id)| RobotFollower {
             id,
             name: &r.name,
             cursor: r.programme.cursor(),
@@ -156,27 +154,17 @@ pub(crate) fn run(
     let mut next_progress = 0.0;
     for _ in 0..steps {
         let t = sim.world().time();
-        for car in &mut cars {
-            let due = car.cursor.apply_due(t, sim.driver_mut(car.id)?);
-            for (command, warning) in due {
-                notes.push(format!(
-                    "{} at {t} s, {}: {warning}",
-                    car.name,
-                    command.key()
-                ));
-            }
-        }
-        for car in &mut lanes {
-            let due: Vec<FollowCommand> = car.cursor.due(t).map(|(_, c)| *c).collect();
-            for command in due {
-                let applied = match command {
-                    FollowCommand::Follow(request) => sim.follow_lane(car.id, request),
-                    FollowCommand::Stop => sim.stop_following_lane(car.id),
-                };
-                if let Err(e) = applied {
-                    notes.push(format!("{} at {t} s, follow_lane: {e}", car.name));
+        for note in traffic.issue_due(&mut sim) {
+            notes.push(match note {
+                TrafficNote::Driver {
+                    car,
+                    command,
+                    warning,
+                } => format!("{} at {t} s, {command}: {warning}", car_name(car)),
+                TrafficNote::FollowLane { car, error } => {
+                    format!("{} at {t} s, follow_lane: {error}", car_name(car))
                 }
-            }
+            });
         }
         for car in &mut cycles {
             if car.follower.is_none() && car.command.at <= t + DUE_TOLERANCE {
