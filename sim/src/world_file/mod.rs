@@ -60,11 +60,10 @@ use proto_geom::plausible::Compact;
 use toml::de::{DeTable, DeValue};
 use vehicle_model::Model;
 
-use crate::appearance::{Appearances, BODY_COLOR, OBSTACLE_COLOR, PALETTE, SceneObject};
+use crate::appearance::Appearances;
 use crate::config::WorldConfig;
 use crate::devices::{GpsCoordinateSystem, GpsFrame};
 use crate::simulation::{DURATION_RULE, is_duration};
-use crate::world::CONE_COLOR;
 
 pub use diagnostics::{WorldFileErrors, parse_all};
 pub use energy::WebotsBattery;
@@ -427,7 +426,7 @@ pub(crate) fn parse_with(
     }
     let robot_section = root.table("differential_wheels")?;
     let robot = robot_section.as_ref().map(robot::read_robot).transpose()?;
-    let appearances = read_looks(&root, &car_sections, robot_section.as_ref())?;
+    let appearances = looks::read_looks(&root, &car_sections, robot_section.as_ref())?;
     if cars.is_empty() && robot.is_none() {
         return Err(src.error(
             None,
@@ -493,57 +492,6 @@ fn read_gps_frame(root: &Section<'_, '_>) -> Result<GpsFrame, WorldFileError> {
     };
     frame.validate().map_err(|e| devices::invalid(root, &e))?;
     Ok(frame)
-}
-
-/// The looks of the boxes, ramps, cones (in `config.obstacles`' order: boxes, ramps, then
-/// each `[[cone]]`'s `count` cones), dynamic boxes, cars and robot.
-fn read_looks(
-    root: &Section<'_, '_>,
-    cars: &[Section<'_, '_>],
-    robot: Option<&Section<'_, '_>>,
-) -> Result<Appearances, WorldFileError> {
-    let mut found = Vec::new();
-    let obstacles = root.tables("box")?.into_iter().chain(root.tables("ramp")?);
-    let mut next = 0;
-    for s in obstacles {
-        found.push(looks::read_look(
-            &s,
-            SceneObject::Obstacle(next),
-            OBSTACLE_COLOR,
-        )?);
-        next += 1;
-    }
-    for s in root.tables("cone")? {
-        let look = looks::read_look(&s, SceneObject::Obstacle(next), CONE_COLOR)?;
-        // Validated when the world was read.
-        let count = cone::count_of(&s)? as usize;
-        if let Some((_, look)) = look {
-            found.extend(
-                (next..next + count).map(|i| Some((SceneObject::Obstacle(i), look.clone()))),
-            );
-        }
-        next += count;
-    }
-    for (i, s) in root.tables("body")?.iter().enumerate() {
-        found.push(looks::read_look(s, SceneObject::Body(i), BODY_COLOR)?);
-    }
-    for (i, s) in cars.iter().enumerate() {
-        found.push(looks::read_look(
-            s,
-            SceneObject::Car(i),
-            PALETTE[i % PALETTE.len()],
-        )?);
-    }
-    if let Some(s) = robot {
-        let colour = PALETTE[cars.len() % PALETTE.len()];
-        found.push(looks::read_look(s, SceneObject::Robot(0), colour)?);
-    }
-    let mut appearances = Appearances::default();
-    for (object, look) in found.into_iter().flatten() {
-        // Validated by `read_look`.
-        let _ = appearances.set(object, look);
-    }
-    Ok(appearances)
 }
 
 /// Gives every car without a `name` its model's name, numbered `-1`, `-2`… (in file order)
