@@ -37,7 +37,7 @@ impl TelemetryRows {
     fn new(rows: SharedRows) -> PyResult<TelemetryRows> {
         let too_large = || PyBufferError::new_err("the telemetry table is too large to export");
         let n = isize::try_from(rows.rows()).map_err(|_| too_large())?;
-        // SAMPLE_COLUMNS (38) and its row bytes (304) fit an isize on every platform.
+        // SAMPLE_COLUMNS (43) and its row bytes (344) fit an isize on every platform.
         let columns = SAMPLE_COLUMNS as isize;
         let value = VALUE_BYTES as isize;
         n.checked_mul(columns * value).ok_or_else(too_large)?;

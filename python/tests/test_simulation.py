@@ -125,7 +125,7 @@ def test_cars_step_and_record_telemetry_as_numpy_arrays():
     # The state at the start, then one sample per step.
     t1, t2 = first.telemetry, second.telemetry
     assert len(t1) == len(t2) == 301
-    assert list(t1.columns) == list(wv.COLUMNS) and len(wv.COLUMNS) == 38
+    assert list(t1.columns) == list(wv.COLUMNS) and len(wv.COLUMNS) == 43
     np.testing.assert_allclose(t1.time_s, np.arange(0, 301) * 0.01, rtol=0, atol=1e-12)
     # Speed mode: no engine model, so no rpm or gear (NaN); torque mode has both.
     assert np.isnan(t1["rpm"]).all() and np.isnan(t1["gear"]).all()

@@ -178,10 +178,37 @@ def test_a_long_unrecorded_run_keeps_its_memory_flat():
     # The sample at the first step's start and one per step (100 + steps) were recorded.
     assert (recorded, held) == (100 + steps + 1, 0)
     assert float(out[4]) == pytest.approx((100 + steps) * 0.01, abs=1e-9)
-    # Holding the run's rows would take 10^5 x 304 B = 30 MB; the bound is half of that, so a
+    # Holding the run's rows would take 10^5 x 344 B = 34 MB; the bound is half of that, so a
     # leak of one row per step fails it, with room for the allocator's slack.
     print(f"peak RSS {peak >> 20} MB, {before >> 20} MB before the {steps} steps")
     assert peak - before < steps * len(COLUMNS) * 8 // 2, (before, peak)
     # And the bound for the whole interpreter (numpy and the extension loaded: 30 MB
     # on the CI machine, flat over the run).
     assert peak < 50 << 20, peak
+
+
+ENERGY_COLUMNS = ("wheel_power_w", "battery_power_w", "soc_percent", "fuel_rate_gps", "drag_force_n")
+
+
+def test_energy_columns_are_the_engines_accounting():
+    # The CSV's energy columns, last, with their units in their names (W, W, %, g/s, N).
+    assert tuple(COLUMNS[-5:]) == ENERGY_COLUMNS
+    sim = wv.Simulation(vehicle={"model": "TeslaModel3", "energy": True, "aero": True})
+    car = sim.car
+    car.set_gear(1)
+    car.set_throttle(1.0)
+    sim.step(300)
+    t = car.telemetry
+    # An electric car at full throttle: at 3 s the battery gives more than the wheels take
+    # (the machine's losses), its charge falls from 100 %, it burns no fuel (NaN), and the
+    # air pushes back with ½ρCdAv² > 0 once it moves.
+    assert t.battery_power_w[-1] > t.wheel_power_w[-1] > 0.0
+    assert t.soc_percent[0] == 100.0 and t.soc_percent[-1] < 100.0
+    assert np.isnan(t.fuel_rate_gps).all()
+    assert np.isnan(t.drag_force_n[0]) and t.drag_force_n[-1] > 0.0
+    # A car without energy accounting or air has none of them.
+    plain = wv.Simulation(model="BmwX5")
+    plain.car.set_cruising_speed(30.0)
+    plain.step(10)
+    for column in ENERGY_COLUMNS:
+        assert np.isnan(plain.car.telemetry[column]).all(), column

@@ -290,7 +290,7 @@ class Simulation:
     ``record`` says how much of the run each car's :attr:`SimCar.telemetry` keeps: ``True``
     every sample (memory beyond 16,384 samples moves to a temporary file), ``False`` none
     (:attr:`SimCar.state`, the last sample, is still there: a long run in flat memory), or a
-    whole number ``N`` the last ``N`` samples (a ring in memory, 2 x 304 bytes per sample).
+    whole number ``N`` the last ``N`` samples (a ring in memory, 2 x 344 bytes per sample).
     Anything else raises ValueError naming ``record``. A bounded recording (``False`` or
     ``N``) also keeps no device rows and only the first replay frame in :meth:`save`.
     """

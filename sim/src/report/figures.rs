@@ -60,9 +60,9 @@ fn series(
         .collect()
 }
 
-/// The plots of a run, by file name: speed, rpm and gear, steering, the lane change and its
-/// tyres' friction use, and the trajectory; a plot without data (e.g. rpm for a robot) is left
-/// out. Car speeds are in km/h, robot speeds in m/s.
+/// The plots of a run, by file name: speed, rpm and gear, the energy flows (cars with
+/// energy accounting), steering, the lane change and its tyres' friction use, and the
+/// trajectory; a plot without data (e.g. rpm for a robot) is left out. Car speeds are in km/h, robot speeds in m/s.
 pub fn figures(report: &RunReport) -> Vec<(&'static str, Figure)> {
     let title = |what: &str| format!("{what}: {}, {}", report.vehicle, report.scenario);
     let time = "time (s)".to_string();
@@ -128,6 +128,9 @@ pub fn figures(report: &RunReport) -> Vec<(&'static str, Figure)> {
                 legend_title: None,
             },
         ));
+    }
+    if let Some(figure) = energy(report, title("Energy")) {
+        out.push(("energy.svg", figure));
     }
     let turning = |s: &Sample| s.steering_command.is_some_and(|d| d != 0.0);
     let mut lines = Vec::new();
@@ -207,6 +210,59 @@ pub fn figures(report: &RunReport) -> Vec<(&'static str, Figure)> {
         out.push(("lateral.svg", figure));
     }
     out
+}
+
+/// W per kW.
+const W_PER_KW: f64 = 1000.0;
+
+/// The energy flows of the cars with energy accounting against time: the power at the driven
+/// wheels and the battery's (kW), the state of charge (%) and the fuel rate (g/s), a panel
+/// each where some car has it; `None` when no car has energy accounting.
+fn energy(report: &RunReport, title: String) -> Option<Figure> {
+    let kw = |v: Option<f64>| v.map(|v| v / W_PER_KW);
+    let named = |suffix: &str, series: Vec<Series>| -> Vec<Series> {
+        series
+            .into_iter()
+            .map(|s| Series {
+                name: format!("{} ({suffix})", s.name),
+                ..s
+            })
+            .collect()
+    };
+    let mut power = named(
+        "wheels",
+        series(report, VehicleKind::Car, |s| kw(s.wheel_power)),
+    );
+    power.extend(named(
+        "battery",
+        series(report, VehicleKind::Car, |s| kw(s.battery_power)),
+    ));
+    let panels: Vec<Panel> = [
+        ("power (kW)", power),
+        (
+            "state of charge (%)",
+            series(report, VehicleKind::Car, |s| s.soc_percent),
+        ),
+        (
+            "fuel rate (g/s)",
+            series(report, VehicleKind::Car, |s| s.fuel_rate),
+        ),
+    ]
+    .into_iter()
+    .filter(|(_, series)| !series.is_empty())
+    .map(|(y_label, series)| Panel {
+        y_label: y_label.into(),
+        series,
+    })
+    .collect();
+    (!panels.is_empty()).then(|| Figure {
+        title,
+        x_label: "time (s)".into(),
+        panels,
+        equal_aspect: false,
+        x_axis: XAxis::Continuous,
+        legend_title: None,
+    })
 }
 
 /// How many times longer than wide a run is when its lateral motion gets its own plot: at

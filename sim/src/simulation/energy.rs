@@ -35,6 +35,12 @@ pub struct EnergyReport {
     pub fuel: f64,
     /// Distance driven (m, the chassis' forward speed integrated).
     pub distance: f64,
+    /// The power the driven wheels received over the last step (W; what
+    /// [`EnergyReport::wheel_energy`] adds up).
+    pub wheel_power: f64,
+    /// The power the battery gave at its terminals over the last step (W, negative while it
+    /// charges; what [`EnergyReport::battery_energy`] adds up; 0 without a battery).
+    pub battery_power: f64,
     /// The last step's flows.
     pub last: PowerFlow<f64>,
 }
@@ -163,10 +169,12 @@ impl EnergyMeter {
         if let Some(battery) = self.params.battery {
             let s = battery.step(r.soc, flow.battery, dt);
             r.soc = s.soc;
+            r.battery_power = s.power;
             r.battery_energy += s.power * dt;
             r.battery_loss += s.loss * dt;
         }
         r.motor_loss += flow.motor_loss * dt;
+        r.wheel_power = wheel_power;
         r.wheel_energy += wheel_power * dt;
         r.regenerated += flow.regenerated * dt;
         r.fuel += flow.fuel_rate * dt;

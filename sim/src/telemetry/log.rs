@@ -3,7 +3,7 @@
 //!
 //! A [`Sample`] in memory takes about 450 bytes (its `Option`s and tyre table); a run of a
 //! million steps kept as samples needed close to a gigabyte. The log keeps each sample as its
-//! [`SAMPLE_COLUMNS`] values (f64, NaN where a quantity does not exist: 304 bytes) in a
+//! [`SAMPLE_COLUMNS`] values (f64, NaN where a quantity does not exist: 344 bytes) in a
 //! [`Block`] that front-ends can share without a copy ([`TelemetryLog::shared_rows`]) and,
 //! keeping all of a run, past [`MEMORY_ROWS`] rows, moves them to an unnamed temporary file,
 //! so that a run's memory stays near 12 MB whatever its length. Reading the log back gives
@@ -18,12 +18,12 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use super::rows::{Block, SharedRows};
 use super::{SAMPLE_COLUMNS, Sample};
 
-/// Rows kept in memory before they move to the temporary file: 16,384 rows of 304 bytes,
-/// 5 MB (twice that while they are written out).
+/// Rows kept in memory before they move to the temporary file: 16,384 rows of 344 bytes,
+/// 5.6 MB (twice that while they are written out).
 pub const MEMORY_ROWS: usize = 16_384;
 
 /// Rows a log makes room for at its first sample; it doubles its room up to [`MEMORY_ROWS`]
-/// (a short run, or many simulations side by side, need not take 5 MB each).
+/// (a short run, or many simulations side by side, need not take 5.6 MB each).
 const FIRST_ROWS: usize = 64;
 
 /// Bytes of one row.
@@ -39,7 +39,7 @@ pub enum Retention {
     /// Every sample: in memory, then, past [`MEMORY_ROWS`], in a temporary file.
     #[default]
     All,
-    /// The last `n` samples, in memory (a ring: 2 × 304 × `n` bytes).
+    /// The last `n` samples, in memory (a ring: 2 × 344 × `n` bytes).
     Last(NonZeroUsize),
     /// None but the last.
     Off,

@@ -13,7 +13,7 @@ pub use device_readings::DeviceReadings;
 pub use log::{LogMark, MEMORY_ROWS, Retention, Row, TelemetryLog};
 pub use rows::SharedRows;
 
-use vehicle_model::{KMH_PER_MS, PerWheel, Wheel};
+use vehicle_model::{EngineType, KMH_PER_MS, PerWheel, Wheel};
 
 use crate::diff_wheels::RobotId;
 use crate::error::SimError;
@@ -58,6 +58,20 @@ pub struct Sample {
     /// What each tyre did over the step (slips, forces in N, friction use), in wheel order
     /// FR, FL, RR, RL.
     pub tyres: Option<PerWheel<TyreTelemetry>>,
+    /// Power the driven wheels received over the step (W; negative for a combustion
+    /// engine's braking curve), from the car's energy accounting (`None` without).
+    pub wheel_power: Option<f64>,
+    /// Power the battery gave at its terminals over the step (W, negative while charging),
+    /// for a car with a battery and energy accounting.
+    pub battery_power: Option<f64>,
+    /// The battery's state of charge after the step (%, 0 to 100), likewise.
+    pub soc_percent: Option<f64>,
+    /// Fuel the combustion engine burnt per second over the step (g/s), for a car with a
+    /// combustion engine and energy accounting.
+    pub fuel_rate: Option<f64>,
+    /// The magnitude of the air's drag on the body over the step (N), for a car with air
+    /// (`Vehicle::drag_force`: from the velocity at the step's start).
+    pub drag_force: Option<f64>,
 }
 
 impl Sample {
@@ -69,6 +83,10 @@ impl Sample {
         let t = sim.telemetry(id)?;
         let d = sim.driver(id)?;
         let s = &t.state;
+        let engine = d.params().engine.engine_type;
+        let energy = sim.energy(id)?;
+        let battery = energy.filter(|_| engine != EngineType::Combustion);
+        let fuel = energy.filter(|_| engine != EngineType::Electric);
         Ok(Sample {
             time: t.time,
             x: s.position.x,
@@ -85,6 +103,11 @@ impl Sample {
             lateral_accel: Some(s.lateral_acceleration),
             longitudinal_accel: Some(s.longitudinal_acceleration),
             tyres: Some(s.tyres),
+            wheel_power: energy.map(|e| e.wheel_power),
+            battery_power: battery.map(|e| e.battery_power),
+            soc_percent: battery.map(|e| 100.0 * e.soc),
+            fuel_rate: fuel.map(|e| G_PER_KG * e.last.fuel_rate),
+            drag_force: sim.world().vehicle(id)?.drag_force(),
         })
     }
 
@@ -111,7 +134,7 @@ impl Sample {
     /// [`Sample::values`] for finite values. The tyres are present if any tyre value is.
     pub fn from_row(row: &Row) -> Sample {
         let opt = |v: f64| (!v.is_nan()).then_some(v);
-        let tyre_values = &row[14..];
+        let tyre_values = &row[14..ENERGY_COLUMN];
         let tyres = tyre_values.iter().any(|v| !v.is_nan()).then(|| {
             PerWheel::from_fn(|w| {
                 let i = Wheel::ALL.iter().position(|&v| v == w).unwrap_or(0) * 6;
@@ -143,6 +166,11 @@ impl Sample {
             lateral_accel: opt(row[12]),
             longitudinal_accel: opt(row[13]),
             tyres,
+            wheel_power: opt(row[ENERGY_COLUMN]),
+            battery_power: opt(row[ENERGY_COLUMN + 1]),
+            soc_percent: opt(row[ENERGY_COLUMN + 2]),
+            fuel_rate: opt(row[ENERGY_COLUMN + 3]),
+            drag_force: opt(row[ENERGY_COLUMN + 4]),
         }
     }
 
@@ -175,7 +203,17 @@ impl Sample {
             let tyre = self.tyres.map(|t| t[w]);
             TYRE_CELLS.map(|v| tyre.map(v))
         });
-        for (cell, v) in out.iter_mut().zip(vehicle.into_iter().chain(tyres)) {
+        let energy = [
+            self.wheel_power,
+            self.battery_power,
+            self.soc_percent,
+            self.fuel_rate,
+            self.drag_force,
+        ];
+        for (cell, v) in out
+            .iter_mut()
+            .zip(vehicle.into_iter().chain(tyres).chain(energy))
+        {
             *cell = v;
         }
         out
@@ -183,7 +221,14 @@ impl Sample {
 }
 
 /// The number of columns of a [`Sample`] in [`CSV_HEADER`] (all but `scenario` and `car`).
-pub const SAMPLE_COLUMNS: usize = 14 + 6 * 4;
+pub const SAMPLE_COLUMNS: usize = ENERGY_COLUMN + 5;
+
+/// The index of the first of the five energy columns among a [`Sample`]'s: after the
+/// vehicle's 14 and the tyres' 6 × 4.
+const ENERGY_COLUMN: usize = 14 + 6 * 4;
+
+/// g per kg.
+const G_PER_KG: f64 = 1000.0;
 
 /// The six columns of one tyre, prefixed with the wheel's short name.
 macro_rules! tyre_columns {
@@ -208,7 +253,9 @@ macro_rules! tyre_columns {
 
 /// The CSV header written by [`write_csv`]: the vehicle's columns, then six per tyre in
 /// wheel order `fr`, `fl`, `rr`, `rl` ([`TyreTelemetry`]: slip ratio, slip angle in rad,
-/// the road's forces along the wheel's heading and axis and the load in N, friction use 0–1).
+/// the road's forces along the wheel's heading and axis and the load in N, friction use 0–1),
+/// then the energy columns ([`Sample::wheel_power`] … [`Sample::drag_force`]: W, W, %, g/s,
+/// N; empty for a car without energy accounting, or without air for the drag).
 pub const CSV_HEADER: &str = concat!(
     "scenario,car,time_s,x_m,y_m,yaw_rad,speed_kmh,driver_speed_kmh,rpm,gear,",
     "steering_command_rad,steering_rad,throttle,brake,lateral_accel_mps2,longitudinal_accel_mps2",
@@ -216,6 +263,7 @@ pub const CSV_HEADER: &str = concat!(
     tyre_columns!("fl"),
     tyre_columns!("rr"),
     tyre_columns!("rl"),
+    ",wheel_power_w,battery_power_w,soc_percent,fuel_rate_gps,drag_force_n",
 );
 
 /// What kind of vehicle a [`Telemetry`] follows.
@@ -343,7 +391,8 @@ pub enum ReadError {
     /// The file cannot be read or is no CSV.
     #[error("{0}")]
     Csv(#[from] csv::Error),
-    /// The header is not [`CSV_HEADER`]: not a telemetry file of this version.
+    /// The header is neither [`CSV_HEADER`] nor the one before the energy columns: not a
+    /// telemetry file of this version or the previous one.
     #[error("the header is not that of a telemetry file (scenario,car,time_s,...)")]
     Header,
     /// A cell is not a number.
@@ -360,7 +409,9 @@ pub enum ReadError {
 
 /// Reads a telemetry CSV ([`write_csv`]'s table) back: one [`Telemetry`] per run of
 /// consecutive rows of the same scenario and vehicle, in file order. A vehicle with a
-/// commanded steering is a car, else a robot.
+/// commanded steering is a car, else a robot. A file written before the five energy columns
+/// existed (its header [`CSV_HEADER`] without them) reads with them empty, so that earlier
+/// runs' directories still plot.
 ///
 /// # Errors
 /// The first [`ReadError`].
@@ -371,7 +422,9 @@ pub fn read_csv(input: impl std::io::Read) -> Result<Vec<Telemetry>, ReadError> 
     let mut records = reader.records();
     let header = records.next().transpose()?.ok_or(ReadError::Header)?;
     let columns: Vec<&str> = CSV_HEADER.split(',').collect();
-    if header.iter().ne(columns.iter().copied()) {
+    let before_energy = &columns[..2 + ENERGY_COLUMN];
+    if header.iter().ne(columns.iter().copied()) && header.iter().ne(before_energy.iter().copied())
+    {
         return Err(ReadError::Header);
     }
     let mut out: Vec<Telemetry> = Vec::new();
@@ -441,12 +494,12 @@ mod tests {
         let mut lines = csv.lines();
         assert_eq!(lines.next(), Some(CSV_HEADER));
         let row = lines.next().unwrap();
-        // 16 vehicle columns, then 24 empty tyre cells.
+        // 16 vehicle columns, then 24 empty tyre cells and 5 empty energy cells.
         assert_eq!(
             row,
             format!(
                 "brake,BmwX5,0.01,0.333333,0,0,100,,,2,,,,,,{}",
-                ",".repeat(24)
+                ",".repeat(24 + 5)
             )
         );
         assert!(!row.contains("-0"), "{row}");
@@ -492,9 +545,67 @@ mod tests {
     }
 
     #[test]
+    fn a_csv_written_before_the_energy_columns_reads_with_them_empty() {
+        let car = Telemetry {
+            scenario: "run".into(),
+            vehicle: "a".into(),
+            kind: VehicleKind::Car,
+            samples: vec![Sample {
+                time: 0.5,
+                speed_kmh: 36.0,
+                steering_command: Some(0.1),
+                ..Sample::default()
+            }],
+        };
+        // The previous version's file: every line without its last five cells.
+        let old: String = to_csv([&car])
+            .lines()
+            .map(|l| {
+                let cells: Vec<&str> = l.split(',').collect();
+                cells[..cells.len() - 5].join(",") + "\n"
+            })
+            .collect();
+        assert!(old.starts_with("scenario,car,time_s,") && !old.contains("wheel_power_w"));
+        assert_eq!(read_csv(old.as_bytes()).unwrap(), vec![car]);
+    }
+
+    #[test]
+    fn energy_columns_last_with_their_units() {
+        let columns: Vec<&str> = CSV_HEADER.split(',').collect();
+        assert_eq!(
+            columns[40..],
+            [
+                "wheel_power_w",
+                "battery_power_w",
+                "soc_percent",
+                "fuel_rate_gps",
+                "drag_force_n"
+            ]
+        );
+        let s = Sample {
+            wheel_power: Some(20_000.0),
+            battery_power: Some(-1500.5),
+            soc_percent: Some(87.25),
+            fuel_rate: Some(1.125),
+            drag_force: Some(412.0),
+            ..Sample::default()
+        };
+        let t = Telemetry {
+            scenario: "hwfet".into(),
+            vehicle: "car".into(),
+            kind: VehicleKind::Car,
+            samples: vec![s],
+        };
+        let csv = to_csv([&t]);
+        let row: Vec<&str> = csv.lines().nth(1).unwrap().split(',').collect();
+        assert_eq!(row[40..], ["20000", "-1500.5", "87.25", "1.125", "412"]);
+        assert_eq!(read_csv(csv.as_bytes()).unwrap()[0].samples, [s]);
+    }
+
+    #[test]
     fn tyre_columns_in_wheel_order() {
         let columns: Vec<&str> = CSV_HEADER.split(',').collect();
-        assert_eq!(columns.len(), 16 + 24);
+        assert_eq!(columns.len(), 16 + 24 + 5);
         assert_eq!(
             columns[16..22],
             [

@@ -17,8 +17,9 @@ use super::{Parts, Vehicle, joints};
 impl Vehicle {
     /// Sets the aerodynamic force on the chassis for the coming rapier step(s), in `wind`
     /// (m/s, world frame). Does nothing for a car without [`VehicleSpec::aero`](
-    /// super::VehicleSpec::aero), so a car without air stays exactly Webots'.
-    pub(super) fn apply_aero(&self, world: &mut PhysicsWorld, wind: Vector) {
+    /// super::VehicleSpec::aero), so a car without air stays exactly Webots'. Keeps the
+    /// drag's magnitude for [`Vehicle::drag_force`].
+    pub(super) fn apply_aero(&mut self, world: &mut PhysicsWorld, wind: Vector) {
         let Some(aero) = self.spec.aero else {
             return;
         };
@@ -43,6 +44,7 @@ impl Vehicle {
             .inverse()
             .mul_vec3(chassis.velocity_at_point(reference) - wind);
         let forces = aero.forces([f64::from(air.x), f64::from(air.y), f64::from(air.z)]);
+        self.drag_force = Some(forces.drag.iter().map(|f| f * f).sum::<f64>().sqrt());
         let [dx, dy, dz] = forces.drag.map(|f| f as f32);
         let up = pose.rotation * Vector::Z;
         chassis.reset_forces(true);
@@ -50,6 +52,13 @@ impl Vehicle {
         chassis.add_force_at_point(pose.rotation * Vector::new(dx, dy, dz), reference, true);
         chassis.add_force_at_point(up * forces.lift_front as f32, front_point, true);
         chassis.add_force_at_point(up * forces.lift_rear as f32, rear_point, true);
+    }
+
+    /// The magnitude of the air's drag on the body over the last step (N, ≥ 0), from the
+    /// chassis' velocity relative to the wind at the step's start; `None` for a car without
+    /// [`VehicleSpec::aero`](super::VehicleSpec::aero) or before its first step.
+    pub fn drag_force(&self) -> Option<f64> {
+        self.drag_force
     }
 
     /// The chassis body and the car frame's pose in the world; `None` if the body is gone.

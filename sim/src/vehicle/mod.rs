@@ -154,6 +154,9 @@ pub struct Vehicle {
     /// The lane triangle each wheel's road ray hit last (a cast car's cache, see
     /// [`cast::RoadHits`]).
     road_hits: cast::RoadHits,
+    /// The air's drag on the body over the last step (N), for telemetry
+    /// ([`Vehicle::drag_force`]).
+    drag_force: Option<f64>,
 }
 
 impl Vehicle {
@@ -209,6 +212,7 @@ impl Vehicle {
             ),
             radar_cross_section: 0.0,
             road_hits: cast::RoadHits::default(),
+            drag_force: None,
         })
     }
 
