@@ -200,10 +200,10 @@ fn json_metrics_of_a_short_car_run() {
     assert_eq!(csv.lines().count(), 1 + 1 + 100);
     let first: Vec<&str> = csv.lines().nth(1).unwrap().split(',').collect();
     assert_eq!(first[..3], ["accel-speed", "BmwX5", "0"]);
-    // 16 columns of the car (with its name), 6 per tyre; no `-0` cell (before: many, in
-    // the lateral quantities of a car driving straight).
+    // 16 columns of the car (with its name), 6 per tyre, 5 of energy; no `-0` cell
+    // (before: many, in the lateral quantities of a car driving straight).
     for line in csv.lines() {
-        assert_eq!(line.split(',').count(), 16 + 4 * 6, "{line}");
+        assert_eq!(line.split(',').count(), 16 + 4 * 6 + 5, "{line}");
         assert!(line.split(',').all(|c| c != "-0"), "{line}");
     }
     // Every number of metrics.json has at most 6 significant digits (before:
