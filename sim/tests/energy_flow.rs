@@ -66,6 +66,43 @@ fn the_battery_energy_closes_against_wheel_energy_losses_and_regeneration() {
 }
 
 #[test]
+fn a_full_stop_on_locked_wheels_takes_nothing_from_the_battery() {
+    // Full brake from above 54 km/h locks the TeslaModel3's wheels (no ABS): they turn the
+    // machine not at all, so it regenerates nothing and, holding no torque, draws nothing;
+    // and below the speed where the machine would lose more than it returns, the friction
+    // brakes stop the car alone. Before, the regeneration faded with the car's speed and
+    // asked the machine for its torque at a standstill shaft (the battery gave 5.3 kW of
+    // copper loss all the way down), and at a standstill a crawl's regeneration cost the
+    // inverter's constant loss (640 W).
+    let (mut sim, id) = car(Model::TeslaModel3, 0.9);
+    let d = sim.driver_mut(id).unwrap();
+    d.set_gear(1);
+    d.set_throttle(0.4);
+    run(&mut sim, id, 6.0);
+    assert!(sim.telemetry(id).unwrap().speed > 15.0);
+    let d = sim.driver_mut(id).unwrap();
+    d.set_throttle(0.0);
+    d.set_brake_intensity(1.0);
+    let before = sim.energy(id).unwrap().unwrap();
+    for _ in 0..500 {
+        sim.step().unwrap();
+        let power = sim.energy(id).unwrap().unwrap().battery_power;
+        assert!(
+            power <= 0.0,
+            "the battery gives {power} W while the car brakes"
+        );
+    }
+    let after = sim.energy(id).unwrap().unwrap();
+    assert!(sim.telemetry(id).unwrap().speed.abs() < 0.1);
+    // What it took back while the wheels still turned (the first steps of the brake's
+    // rise, the last metres as they unlock): the battery ends with at least its charge.
+    assert!(
+        after.battery_energy <= before.battery_energy,
+        "{before:?} then {after:?}"
+    );
+}
+
+#[test]
 fn a_drained_battery_stops_the_car() {
     // 0.05 % of about 75 kWh: 135 kJ, a few seconds at full throttle.
     let (mut sim, id) = car(Model::TeslaModel3, 0.0005);

@@ -123,32 +123,39 @@ impl EnergyMeter {
         }
     }
 
-    /// Accounts one step of `dt` s in which `commands` drove the car now in `state` through
-    /// a gear of `ratio` (engine speed over wheel spin; `None` outside torque control). The
+    /// Accounts one step of `dt` s in which `commands` drove the car now in `state`, on tyres
+    /// of `radii` (m, wheel order), through a gear of `ratio` (engine speed over wheel spin;
+    /// `None` outside torque control). The
     /// engine speed is the driven wheels' end-of-step spin times the ratio, as Webots
     /// estimates it.
     pub(crate) fn step(
         &mut self,
         commands: &Commands<f64>,
         state: &VehicleState,
+        radii: [f64; 4],
         ratio: Option<f64>,
         dt: f64,
     ) {
         let mut wheel_power = 0.0;
         let mut brake_torque = 0.0;
         let mut spin = 0.0;
+        let mut rim = 0.0;
         let mut driven = 0.0;
-        for w in Wheel::ALL {
+        for (k, w) in Wheel::ALL.into_iter().enumerate() {
             if let WheelDrive::Torque(t) = commands.drive[w] {
                 let omega = state.wheel_speeds[w];
                 wheel_power += t * omega;
                 brake_torque += commands.brake_torque[w].max(0.0);
                 spin += omega.abs();
+                rim += omega.abs() * radii[k];
                 driven += 1.0;
             }
         }
         let ratio = ratio.filter(|r| r.is_finite()).unwrap_or(0.0).abs();
         let wheel_speed = if driven > 0.0 { spin / driven } else { 0.0 };
+        // Regeneration fades with the speed the machine turns at: the driven wheels' rim
+        // speed, not the car's (locked wheels of a sliding car turn the machine not at all).
+        let rim_speed = if driven > 0.0 { rim / driven } else { 0.0 };
         let rpm = wheel_speed * ratio / RAD_PER_S_PER_RPM;
         let flow = self.params.flow(
             &self.engine,
@@ -161,7 +168,7 @@ impl EnergyMeter {
                 },
                 brake_torque,
                 wheel_speed,
-                speed: state.forward_speed,
+                rim_speed,
                 ratio,
             },
         );

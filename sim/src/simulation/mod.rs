@@ -17,7 +17,7 @@ mod snapshot;
 
 use std::path::{Path, PathBuf};
 
-use vehicle_model::{ControlMode, Driver, Gear, ParamReport, Sensors};
+use vehicle_model::{ControlMode, Driver, Gear, ParamReport, Sensors, Wheel};
 
 use std::sync::Arc;
 
@@ -547,7 +547,8 @@ impl Simulation {
                 .then(|| car.driver.gear().ok())
                 .flatten()
                 .map(|g| car.driver.powertrain().gearbox().ratio(g));
-            meter.step(commands, vehicle.state(), ratio, dt);
+            let radii = Wheel::ALL.map(|w| vehicle.spec().wheels[w].radius);
+            meter.step(commands, vehicle.state(), radii, ratio, dt);
             if meter.powered_off() {
                 let mut commands = *commands;
                 meter.limit(&mut commands);

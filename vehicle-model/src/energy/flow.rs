@@ -8,7 +8,9 @@
 //! The wheel power arrives through a lossless gearbox (the driveline's losses are the
 //! [`crate::RoadLoad`] set's, at the wheels); the electric machine's losses are
 //! [`MotorLosses`], the engine's fuel [`FuelModel`]'s, and braking torque on the driven
-//! wheels goes back through the machine as far as [`RegenBlend`] lets it. A machine neither
+//! wheels goes back through the machine as far as [`RegenBlend`] lets it and it returns
+//! energy (never at a cost to the battery: below that the friction brakes stop the car alone,
+//! as a brake controller does). A machine neither
 //! driving nor braking is not charged its spin losses: the road-load set's drag holds them.
 
 use ackermann::Real;
@@ -60,8 +62,10 @@ pub struct DriveState<T> {
     pub brake_torque: T,
     /// The driven wheels' mean spin (rad/s).
     pub wheel_speed: T,
-    /// The car's speed (m/s).
-    pub speed: T,
+    /// The driven wheels' mean rim speed (m/s): their spin times their rolling radius, the
+    /// speed regeneration fades with ([`RegenBlend::split`]). Locked wheels have none,
+    /// whatever the car's speed.
+    pub rim_speed: T,
     /// Engine speed over wheel spin (dimensionless, the gear's ratio; 0 in neutral).
     pub ratio: T,
 }
@@ -153,13 +157,20 @@ impl<T: Real> EnergyParams<T> {
             let ratio = state.ratio.finite_or(T::ZERO).abs();
             let wheel_speed = state.wheel_speed.finite_or(T::ZERO).abs();
             let most = engine.max_torque * ratio;
-            let split = regen.split(state.brake_torque, state.speed, wheel_speed, most);
-            if ratio > T::ZERO && split.regenerative > T::ZERO {
-                let machine_speed = wheel_speed * ratio;
-                let torque = -split.regenerative / ratio;
+            let split = regen.split(state.brake_torque, state.rim_speed, wheel_speed, most);
+            let machine_speed = wheel_speed * ratio;
+            let torque = if ratio > T::ZERO {
+                -split.regenerative / ratio
+            } else {
+                T::ZERO
+            };
+            let electrical = motor.electrical_power(torque, machine_speed);
+            // The brake controller regenerates only where the machine returns energy: at a
+            // crawl its losses exceed what it takes back, and the friction brakes do it all.
+            if machine_speed > T::ZERO && split.regenerative > T::ZERO && electrical < T::ZERO {
                 flow.regenerated = split.regenerative * wheel_speed;
                 flow.friction_brake = split.friction;
-                flow.battery += motor.electrical_power(torque, machine_speed);
+                flow.battery += electrical;
                 flow.motor_loss += motor.loss(torque, machine_speed);
             }
         }
@@ -230,7 +241,7 @@ mod tests {
             wheel_power,
             brake_torque: brake,
             wheel_speed,
-            speed: wheel_speed * 0.35,
+            rim_speed: wheel_speed * 0.35,
             ratio: 9.0,
         }
     }
@@ -253,6 +264,26 @@ mod tests {
             (f.battery + f.regenerated - f.motor_loss).abs() < 1e-9,
             "{f:?}"
         );
+    }
+
+    #[test]
+    fn locked_driven_wheels_regenerate_nothing_and_draw_nothing() {
+        // A sliding car's locked wheels turn the machine not at all: the friction brakes
+        // take all of the brake torque, and the machine is not asked for a torque it could
+        // only hold by drawing current.
+        let engine = Model::TeslaModel3.params::<f64>().engine;
+        let e = EnergyParams::of_engine(&engine);
+        let locked = DriveState {
+            rpm: 0.0,
+            wheel_power: 0.0,
+            brake_torque: 3000.0,
+            wheel_speed: 0.0,
+            rim_speed: 0.0,
+            ratio: 9.0,
+        };
+        let f = e.flow(&engine, &locked);
+        assert_eq!((f.regenerated, f.battery, f.motor_loss), (0.0, 0.0, 0.0));
+        assert_eq!(f.friction_brake, 3000.0);
     }
 
     #[test]

@@ -44,7 +44,7 @@ impl<T: Real> RegenBlend<T> {
         }
     }
 
-    /// Splits `brake` (N·m, the driven wheels' total, ≥ 0) at the wheels' `speed` (m/s) and
+    /// Splits `brake` (N·m, the driven wheels' total, ≥ 0) at the wheels' rim `speed` (m/s) and
     /// spin `omega` (rad/s), with the machine's largest torque at the wheels `machine_torque`
     /// (N·m): the machine takes `min(share·brake, machine_torque, max_power/ω)` scaled by the
     /// fade, the friction brakes the rest. Non-finite inputs regenerate nothing.
