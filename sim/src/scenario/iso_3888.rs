@@ -10,12 +10,13 @@
 use core::f64::consts::PI;
 
 use proto_geom::nalgebra::Point3;
-use vehicle_model::Wheel;
 
 use super::car::{CarRig, KMH};
 use super::car_programmes::{Progress, steady};
 use super::lane::LaneSection;
-use super::lane_change::{CONE_BASE_RADIUS, MIN_LOOKAHEAD, PREVIEW_TIME, cone_layout, hits_cone};
+use super::lane_change::{
+    CONE_BASE_RADIUS, MIN_LOOKAHEAD, PREVIEW_TIME, car_width, cone_layout, hits_cone,
+};
 use super::{Metric, Scenario, ScenarioError, ScenarioResult};
 
 /// Lengths of the five sections (m).
@@ -78,11 +79,7 @@ pub(super) fn run(
 ) -> Result<ScenarioResult, ScenarioError> {
     let p = rig.driver()?.params();
     let wheelbase = p.wheelbase;
-    let width = p.track_front.max(p.track_rear)
-        + Wheel::ALL
-            .iter()
-            .map(|&w| p.wheels[w].thickness)
-            .fold(0.0, f64::max);
+    let width = car_width(p);
     let lanes = obstacle_avoidance(width);
     let origin = rig.state().position;
     let yaw0 = rig.yaw();

@@ -3,7 +3,7 @@
 //! course shares.
 
 use proto_geom::nalgebra::Point3;
-use vehicle_model::{IndicatorState, Wheel};
+use vehicle_model::{CarParams, IndicatorState, Wheel};
 
 use super::car::{CarRig, KMH};
 use super::car_programmes::{Progress, steady};
@@ -105,17 +105,23 @@ fn lane_signal(gates: &[LaneSection], x: f64) -> IndicatorState {
     IndicatorState::Off
 }
 
+/// A car's width over its tyres (m), the width the cone courses are laid out for: the wider
+/// track plus the widest tyre.
+pub(super) fn car_width(p: &CarParams<f64>) -> f64 {
+    p.track_front.max(p.track_rear)
+        + Wheel::ALL
+            .iter()
+            .map(|&w| p.wheels[w].thickness)
+            .fold(0.0, f64::max)
+}
+
 pub(super) fn run(
     mut rig: CarRig,
     progress: Progress<'_>,
 ) -> Result<ScenarioResult, ScenarioError> {
     let p = rig.driver()?.params();
     let wheelbase = p.wheelbase;
-    let width = p.track_front.max(p.track_rear)
-        + Wheel::ALL
-            .iter()
-            .map(|&w| p.wheels[w].thickness)
-            .fold(0.0, f64::max);
+    let width = car_width(p);
     let gates = double_lane_change(width, LANE_OFFSET);
     // The track frame: origin at the start, x along the starting heading.
     let origin = rig.state().position;
