@@ -168,7 +168,7 @@ parts = [
     ("_native.GymEnv.step(float32 array)", lambda: core.step(action)),
     ("_native.GymEnv.step(float64 array)", lambda: core.step(action64)),
     ("_native.GymEnv.step([0.0, 0.0])", lambda: core.step([0.0, 0.0])),
-    ("_observation() (copies of the two entries)", over._observation),
+    ("_observation() (the observation dict)", over._observation),
     ("a method call (env.touching)", lambda: over.touching),
     ("info dict {'time': t}", lambda: {"time": 1.0}),
     ("LaneKeepEnv.step(float32 array)", lambda: over.step(action)),

@@ -1,15 +1,21 @@
 //! `_native.GymEnv`: `sim::vec_env::TaskEnv` on a `webots_vehicle.Simulation`, for the single
 //! environments of `webots_vehicle.gym` (`LaneKeepEnv`, `ACCEnv`, `TrackEnv`).
 //!
-//! The Python `step()` makes one call here: the action in (a numpy array through the buffer
-//! protocol, or any two numbers), the observation written into the numpy array given at
-//! construction (held open, so no buffer is acquired per step), reward, flags and time
-//! returned as one tuple. The simulation stays the Python `Simulation`'s own, so the
-//! environment's `sim` shows the state the steps reach.
+//! The Python `step()` is this one call: the action in (a float32 or float64 numpy array of
+//! two values, or any two numbers), gymnasium's whole 5-tuple out — the observation dict
+//! (new numpy arrays made here, or the views of the array the core writes into), the
+//! reward, the two flags and the info dict `{"time": t}`. Building the tuple here rather
+//! than in Python is what keeps `step()` within 2 µs of the Rust step (issue #33; each
+//! Python-level `copy()`, dict and tuple cost 0.1–0.3 µs). The observation is also written
+//! into the numpy array given at construction (held open, so no buffer is acquired per
+//! step). The simulation stays the Python `Simulation`'s own, so the environment's `sim`
+//! shows the state the steps reach.
 
+use numpy::{PyArray1, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::buffer::PyBuffer;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyString, PyTuple};
 
 use sim::vec_env::{ACTION_LEN, Task, TaskEnv, VecEnvError};
 
@@ -24,6 +30,24 @@ pub(crate) struct GymEnv {
     observation: Vec<f32>,
     /// The numpy array the observations are written into.
     out: PyBuffer<f32>,
+    /// The observation dict's entries in the space's order.
+    entries: Vec<Entry>,
+    /// True: each observation's arrays are new (the caller's to keep); false: the entries'
+    /// views of `out`, which the next step overwrites.
+    copy: bool,
+    /// The info dict's key, interned once.
+    time_key: Py<PyString>,
+}
+
+/// One entry of the observation dict: its key, its values' place in the flat observation and
+/// its shape, and its view of the output array.
+struct Entry {
+    key: Py<PyString>,
+    start: usize,
+    end: usize,
+    /// Its shape when it has more than one dimension (reshaped after the copy), else None.
+    shape: Option<Vec<usize>>,
+    view: Py<PyAny>,
 }
 
 /// The task named `name` ("LaneKeep", "ACC" or "Track"), or ValueError.
@@ -42,19 +66,22 @@ fn env_error(e: VecEnvError) -> PyErr {
     }
 }
 
-/// `action` as two numbers: a float32 or float64 buffer of two values (numpy arrays, the
-/// fast path), else any sequence of two numbers.
+/// `action` as two numbers: a one-dimensional float32 or float64 numpy array of two values
+/// (the fast path: a type check, where a buffer request of the wrong type raises and clears
+/// an exception, about 1 µs), else any float32 or float64 buffer of two values (other shapes),
+/// else any sequence of two numbers.
 fn action_of(action: &Bound<'_, PyAny>) -> PyResult<[f64; ACTION_LEN]> {
+    if let Ok(array) = action.cast::<PyArray1<f32>>() {
+        return pair(array).map(|a| a.map(f64::from));
+    }
+    if let Ok(array) = action.cast::<PyArray1<f64>>() {
+        return pair(array);
+    }
     let py = action.py();
-    let wrong = |n: usize| {
-        PyValueError::new_err(format!(
-            "the action must have {ACTION_LEN} values (steering, acceleration), not {n}"
-        ))
-    };
     if let Ok(buffer) = PyBuffer::<f32>::get(action) {
         let mut a = [0.0f32; ACTION_LEN];
         if buffer.item_count() != ACTION_LEN {
-            return Err(wrong(buffer.item_count()));
+            return Err(wrong_length(buffer.item_count()));
         }
         buffer.copy_to_slice(py, &mut a)?;
         return Ok(a.map(f64::from));
@@ -62,13 +89,46 @@ fn action_of(action: &Bound<'_, PyAny>) -> PyResult<[f64; ACTION_LEN]> {
     if let Ok(buffer) = PyBuffer::<f64>::get(action) {
         let mut a = [0.0f64; ACTION_LEN];
         if buffer.item_count() != ACTION_LEN {
-            return Err(wrong(buffer.item_count()));
+            return Err(wrong_length(buffer.item_count()));
         }
         buffer.copy_to_slice(py, &mut a)?;
         return Ok(a);
     }
     let values: Vec<f64> = action.extract()?;
-    <[f64; ACTION_LEN]>::try_from(values.as_slice()).map_err(|_| wrong(values.len()))
+    <[f64; ACTION_LEN]>::try_from(values.as_slice()).map_err(|_| wrong_length(values.len()))
+}
+
+/// The two values of a one-dimensional array, or ValueError naming its length.
+fn pair<T: numpy::Element + Copy>(array: &Bound<'_, PyArray1<T>>) -> PyResult<[T; ACTION_LEN]> {
+    match (array.len(), array.get_owned(0), array.get_owned(1)) {
+        (ACTION_LEN, Some(a), Some(b)) => Ok([a, b]),
+        (n, ..) => Err(wrong_length(n)),
+    }
+}
+
+fn wrong_length(n: usize) -> PyErr {
+    PyValueError::new_err(format!(
+        "the action must have {ACTION_LEN} values (steering, acceleration), not {n}"
+    ))
+}
+
+impl GymEnv {
+    /// The observation dict of the last written observation: new arrays, or the views.
+    fn observation_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let dict = PyDict::new(py);
+        for e in &self.entries {
+            if self.copy {
+                let array = PyArray1::from_slice(py, &self.observation[e.start..e.end]);
+                match &e.shape {
+                    Some(shape) => dict.set_item(e.key.bind(py), array.reshape(shape.clone())?)?,
+                    None => dict.set_item(e.key.bind(py), array)?,
+                }
+            } else {
+                dict.set_item(e.key.bind(py), e.view.bind(py))?;
+            }
+        }
+        Ok(dict)
+    }
 }
 
 #[pymethods]
@@ -76,14 +136,20 @@ impl GymEnv {
     /// `task` ("LaneKeep", "ACC" or "Track") on `simulation` (the core of a
     /// `webots_vehicle.Simulation`, as loaded), `frame_skip` basic time steps per action; the
     /// observations are written into `observation` (a C-contiguous float32 numpy array of
-    /// `observation_len` values, which stays open for writing while this lives).
+    /// `observation_len` values, which stays open for writing while this lives); `layout`
+    /// gives each entry of the observation dict in order: its key, its first and one-past-last
+    /// value in the flat observation, its shape and its view of `observation`; `copy`: whether
+    /// `step()` returns new arrays (true) or those views.
     #[new]
+    #[allow(clippy::type_complexity)]
     fn new(
         py: Python<'_>,
         simulation: Py<Simulation>,
         task: &str,
         frame_skip: u32,
         observation: PyBuffer<f32>,
+        layout: Vec<(Py<PyString>, usize, usize, Vec<usize>, Py<PyAny>)>,
+        copy: bool,
     ) -> PyResult<Self> {
         let task = task_of(task)?;
         let env = {
@@ -97,12 +163,51 @@ impl GymEnv {
                 "observation must be a writable C-contiguous float32 array of {m} values"
             )));
         }
+        let mut entries = Vec::with_capacity(layout.len());
+        let mut next = 0;
+        for (key, start, end, shape, view) in layout {
+            let count: usize = shape.iter().product();
+            if start != next || end < start || end - start != count || end > m {
+                return Err(PyValueError::new_err(format!(
+                    "layout entry {} ({start}..{end}, shape {shape:?}) does not follow \
+                     {next} in an observation of {m} values",
+                    key.bind(py)
+                )));
+            }
+            next = end;
+            entries.push(Entry {
+                key,
+                start,
+                end,
+                shape: (shape.len() > 1).then_some(shape),
+                view,
+            });
+        }
+        if next != m {
+            return Err(PyValueError::new_err(format!(
+                "the layout covers {next} of the observation's {m} values"
+            )));
+        }
         Ok(GymEnv {
             sim: simulation,
             env,
             observation: vec![0.0; m],
             out: observation,
+            entries,
+            copy,
+            time_key: PyString::intern(py, "time").unbind(),
         })
+    }
+
+    /// Whether `step()` returns new arrays (true) or the views the next step overwrites.
+    #[getter]
+    fn copy(&self) -> bool {
+        self.copy
+    }
+
+    /// The last observation as the observation dict (see `copy`).
+    fn observation<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        self.observation_dict(py)
     }
 
     /// Values in an observation.
@@ -131,13 +236,13 @@ impl GymEnv {
         Ok(time)
     }
 
-    /// One step with `action` (steering, acceleration; clipped to −1 to 1): writes the
-    /// observation, returns (default reward, terminated, truncated, simulated time s).
-    fn step(
+    /// One step with `action` (steering, acceleration; clipped to −1 to 1): gymnasium's
+    /// (observation dict, default reward, terminated, truncated, {"time": simulated time s}).
+    fn step<'py>(
         &mut self,
-        py: Python<'_>,
-        action: &Bound<'_, PyAny>,
-    ) -> PyResult<(f64, bool, bool, f64)> {
+        py: Python<'py>,
+        action: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyTuple>> {
         let action = action_of(action)?;
         let mut sim = self.sim.bind(py).try_borrow_mut()?;
         let engine = sim.engine_mut();
@@ -146,8 +251,19 @@ impl GymEnv {
             .step(engine, action, &mut self.observation)
             .map_err(env_error)?;
         let time = engine.world().time();
+        drop(sim);
         self.out.copy_from_slice(py, &self.observation)?;
-        Ok((outcome.reward, outcome.terminated, outcome.truncated, time))
+        let info = PyDict::new(py);
+        info.set_item(self.time_key.bind(py), time)?;
+        let observation = self.observation_dict(py)?;
+        (
+            observation,
+            outcome.reward,
+            outcome.terminated,
+            outcome.truncated,
+            info,
+        )
+            .into_pyobject(py)
     }
 
     /// True while the agent's car touches another car.

@@ -168,3 +168,76 @@ def test_render_shows_the_car():
     red = (image[..., 0] > 200) & (image[..., 1] < 60)
     assert red.sum() > 20  # the follower, about 9.6 × 3.8 pixels
     assert red[64, 64 + 2]  # 1 m ahead of its origin, at the centre row
+
+
+@pytest.mark.parametrize(
+    "action",
+    [
+        np.array([0.3, -0.2], dtype=np.float32),
+        np.array([0.3, -0.2], dtype=np.float64),
+        np.array([[0.3, -0.2]], dtype=np.float32),
+        [0.3, -0.2],
+        (0.3, -0.2),
+    ],
+    ids=["float32", "float64", "float32 (1, 2)", "list", "tuple"],
+)
+def test_every_form_of_an_action_drives_the_same_step(action):
+    # The native step reads a 1-D numpy array directly and anything else through the buffer
+    # protocol or as a sequence: the same two numbers give the same step. The float32 value
+    # of 0.3 is not the float64 one, so each is compared with its own reference.
+    wide = np.float32 if getattr(action, "dtype", None) == np.float32 else np.float64
+    reference, env = wvgym.TrackEnv(), wvgym.TrackEnv()
+    reference.reset(seed=3)
+    env.reset(seed=3)
+    expected = reference.step(np.array([0.3, -0.2], dtype=wide).astype(np.float64))
+    got = env.step(action)
+    for key in expected[0]:
+        np.testing.assert_array_equal(got[0][key], expected[0][key])
+    assert got[1:] == expected[1:]
+
+
+@pytest.mark.parametrize("action", [np.zeros(3, dtype=np.float32), np.zeros(1), [0.0, 0.0, 0.0]])
+def test_an_action_of_the_wrong_length_is_refused_with_its_length(action):
+    env = wvgym.TrackEnv()
+    env.reset(seed=0)
+    with pytest.raises(ValueError, match=r"2 values \(steering, acceleration\), not [13]"):
+        env.step(action)
+
+
+def test_a_step_returns_gymnasiums_five_tuple_of_fresh_objects():
+    env = wvgym.ACCEnv()
+    env.reset(seed=4)
+    a = env.step(np.zeros(2, dtype=np.float32))
+    b = env.step(np.zeros(2, dtype=np.float32))
+    assert isinstance(a, tuple) and len(a) == 5
+    assert list(a[0]) == list(env.observation_space.spaces)
+    assert a[0]["radar"].shape == (wvgym.RADAR_TARGETS, 4) and a[0]["radar"].dtype == np.float32
+    assert a[0]["car"] is not b[0]["car"] and a[4] is not b[4]
+    assert env.observation_space.contains(a[0])
+    assert a[4]["time"] < b[4]["time"] and b[4] == {"time": env.sim.time}
+
+
+def test_a_reward_set_after_construction_is_used_and_can_be_removed():
+    env, reference = wvgym.TrackEnv(), wvgym.TrackEnv()
+    env.reset(seed=5)
+    reference.reset(seed=5)
+    env.reward_fn = lambda e, obs, a: 42.0
+    assert env.step(np.zeros(2, dtype=np.float32))[1] == 42.0
+    env.reward_fn = None
+    a = np.full(2, 0.5, dtype=np.float32)
+    reference.step(np.zeros(2, dtype=np.float32))
+    assert env.step(a)[1] == reference.step(a)[1]
+
+
+def test_a_subclass_overriding_step_gets_its_own_step():
+    class Counting(wvgym.TrackEnv):
+        calls = 0
+
+        def step(self, action):
+            Counting.calls += 1
+            return super().step(action)
+
+    env = Counting()
+    env.reset(seed=0)
+    env.step(np.zeros(2, dtype=np.float32))
+    assert Counting.calls == 1

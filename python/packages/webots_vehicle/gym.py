@@ -161,26 +161,26 @@ class VehicleEnv(gymnasium.Env):
         if frame_skip < 1:
             raise ValueError(f"frame_skip must be at least 1, not {frame_skip}")
         self.render_mode = render_mode
-        #: The replacement reward, or None for the task's default (computed in Rust).
-        self.reward_fn: Optional[RewardFn] = reward_fn
         self.frame_skip = int(frame_skip)
-        #: Whether observations are copies (True) or views the next step overwrites.
-        self.copy = bool(copy)
         # The steps record no telemetry: a training run keeps none.
         self.sim = Simulation(WORLDS / self.world, record=False)
         self.car = self.sim.cars[self.car_index]
         self.action_space = spaces.Box(-1.0, 1.0, shape=(2,), dtype=np.float32)
         self.observation_space = self.single_observation_space()
-        # The Rust core writes each observation into `_buffer`; `_views` are the
-        # observation's entries over it (the space's keys in order, as the core lays them).
-        # Each step returns copies of them: copying a view costs less than slicing a copy.
+        # The Rust core writes each observation into `_buffer` and builds each step's
+        # observation dict itself: new arrays, or with ``copy=False`` the entries' views of
+        # `_buffer` (the space's keys in order, as the core lays them).
         layout = _layout(self.observation_space)
         self._buffer = np.zeros(layout[-1][1].stop, dtype=np.float32)
-        self._views: Tuple[Tuple[str, np.ndarray], ...] = tuple(
-            (key, self._buffer[part].reshape(shape)) for key, part, shape in layout
+        entries = [
+            (key, part.start, part.stop, list(shape), self._buffer[part].reshape(shape))
+            for key, part, shape in layout
+        ]
+        self._core = _native.GymEnv(
+            self.sim._core, self.task, self.frame_skip, self._buffer, entries, bool(copy)
         )
-        self._core = _native.GymEnv(self.sim._core, self.task, self.frame_skip, self._buffer)
         self.dt = self._core.dt
+        self.reward_fn = reward_fn
         self.metadata = dict(self.metadata, render_fps=round(1.0 / self.dt))
         # The state as loaded: every episode starts from it, bit for bit.
         self._start = self.sim.snapshot()
@@ -212,6 +212,29 @@ class VehicleEnv(gymnasium.Env):
         """True while the agent's car touches another car."""
         return self._core.touching
 
+    @property
+    def reward_fn(self) -> Optional[RewardFn]:
+        """The replacement reward, or None for the task's default (computed in Rust)."""
+        return self._reward_fn
+
+    @reward_fn.setter
+    def reward_fn(self, fn: Optional[RewardFn]) -> None:
+        self._reward_fn = fn
+        # With the default reward and this class's own ``step``, ``env.step`` is the Rust
+        # core's step itself: the Python frame in between is 0.15–0.25 µs of the 2 µs budget
+        # (python/bench/gym_step.py). A replacement reward, or a subclass that overrides
+        # ``step``, gets the Python method.
+        if fn is None and type(self).step is VehicleEnv.step:
+            self.step = self._core.step
+        else:
+            self.__dict__.pop("step", None)
+
+    @property
+    def copy(self) -> bool:
+        """Whether observations are copies (True) or views the next step overwrites (the
+        ``copy`` argument)."""
+        return self._core.copy
+
     # The gymnasium API.
     def reset(
         self, *, seed: Optional[int] = None, options: Optional[Dict[str, Any]] = None
@@ -227,20 +250,14 @@ class VehicleEnv(gymnasium.Env):
     def step(
         self, action: np.ndarray
     ) -> Tuple[Dict[str, np.ndarray], float, bool, bool, Dict[str, Any]]:
-        # The least Python the step allows (python/bench/gym_step.py measures it): one
-        # extension call, then `_observation()` inlined (a method call is 0.15 µs of the 2 µs
-        # budget).
-        reward, terminated, truncated, time = self._core.step(action)
-        if self.copy:
-            obs = {}
-            for key, view in self._views:
-                obs[key] = view.copy()
-        else:
-            obs = dict(self._views)
-        if self.reward_fn is not None:
-            a = np.clip(np.asarray(action, dtype=np.float64), -1.0, 1.0)
-            reward = float(self.reward_fn(self, obs, a))
-        return obs, reward, terminated, truncated, {"time": time}
+        # The Rust core returns gymnasium's whole 5-tuple, observation dict and info included
+        # (python/bench/gym_step.py measures the cost). Without a replacement reward the
+        # instance's ``step`` is the core's own (see ``reward_fn``) and this is not called.
+        if self.reward_fn is None:
+            return self._core.step(action)
+        obs, _, terminated, truncated, info = self._core.step(action)
+        a = np.clip(np.asarray(action, dtype=np.float64), -1.0, 1.0)
+        return obs, float(self.reward_fn(self, obs, a)), terminated, truncated, info
 
     def render(self) -> Optional[np.ndarray]:
         if self.render_mode != "rgb_array":
@@ -267,12 +284,7 @@ class VehicleEnv(gymnasium.Env):
     def _observation(self) -> Dict[str, np.ndarray]:
         """The last observation: copies of the buffer's entries, or the entries themselves
         with ``copy=False`` (see ``step``)."""
-        if not self.copy:
-            return dict(self._views)
-        obs = {}
-        for key, view in self._views:
-            obs[key] = view.copy()
-        return obs
+        return self._core.observation()
 
 
 def _task_reward(task: str, env: "VehicleEnv", obs: Dict[str, np.ndarray], action) -> float:
