@@ -1,4 +1,5 @@
 use super::*;
+use crate::road::{Curve, LaneKind, LineStyle, cubic_length};
 use core::f64::consts::PI;
 
 /// A two-road network as the common writers (scenariogeneration, RoadRunner) lay it out: a
