@@ -81,7 +81,13 @@ pub(super) fn account_energy(cars: &mut [CarDescription], car: &str) -> Vec<Stri
         return notes;
     };
     if c.energy.is_none() {
-        c.energy = Some(EnergyParams::of_engine(&c.params.engine));
+        let defaults = EnergyParams::of_engine(&c.params.engine);
+        // On a road-load set the machine's spin losses are in its drag already.
+        c.energy = Some(if c.road_load.is_some() {
+            defaults.with_spin_losses_in_road_load()
+        } else {
+            defaults
+        });
         notes.push(format!(
             "{car}: energy accounting turned on for the drive cycle (the defaults of its engine \
              type, battery full)"

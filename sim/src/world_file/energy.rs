@@ -73,10 +73,13 @@ pub(crate) struct EnergySetting {
 }
 
 /// Reads `energy`, `battery` and `motor` of `[vehicle]` for a car of `engine`; `None` when
-/// the car's energy is not accounted.
+/// the car's energy is not accounted. On a road-load set (`road_load`) the default machine
+/// has no spin losses ([`EnergyParams::with_spin_losses_in_road_load`]); a `[vehicle.motor]`
+/// table's `iron` and `windage` are taken as given.
 pub(crate) fn read_energy(
     s: &Section<'_, '_>,
     engine: &EngineParams<f64>,
+    road_load: bool,
 ) -> Result<Option<EnergySetting>, WorldFileError> {
     let switch = s.boolean(ENERGY)?;
     let given: Vec<&str> = [BATTERY, MOTOR]
@@ -105,6 +108,9 @@ pub(crate) fn read_energy(
         return Ok(None);
     }
     let mut params = EnergyParams::of_engine(engine);
+    if road_load {
+        params = params.with_spin_losses_in_road_load();
+    }
     let mut soc = 1.0;
     let mut webots = None;
     match s.value(BATTERY) {

@@ -323,7 +323,7 @@ pub(crate) fn read_vehicle(
     let keys = read_car_keys(s)?;
     let devices = read_devices(s, model)?;
     let seed = s.unsigned(SEED)?.unwrap_or(0);
-    let energy = energy::read_energy(s, &params.engine)?;
+    let energy = energy::read_energy(s, &params.engine, road_load.is_some())?;
     let radar_cross_section = s.number(RADAR_CROSS_SECTION)?.unwrap_or(0.0);
     ParamError::non_negative(RADAR_CROSS_SECTION, radar_cross_section).map_err(|e| {
         s.error(

@@ -95,6 +95,22 @@ impl<T: Real> EnergyParams<T> {
         }
     }
 
+    /// The same parts for a car whose driveline drag is a road-load set
+    /// ([`crate::RoadLoad`], `losses = "road-load"`): the machine's spin losses (iron and
+    /// windage, [`MotorLosses::without_spin_losses`]) are in that drag already, since a
+    /// coast-down measures the car with its rotor turning, so the battery is not charged them
+    /// a second time. The US EPA's coast-down of the Tesla Model 3 RWD shows how small they
+    /// are: its whole speed-proportional term `B` (0.047 lbf/mph) is 10.4 N at 80 km/h, about
+    /// 230 W, where [`MotorLosses::rated`]'s iron term alone gives the shipped model 4.6 kW
+    /// there (it scales the rated point's iron loss linearly to speeds far above the corner).
+    #[must_use]
+    pub fn with_spin_losses_in_road_load(self) -> Self {
+        EnergyParams {
+            motor: self.motor.map(MotorLosses::without_spin_losses),
+            ..self
+        }
+    }
+
     /// The power flows of one step of a car with `engine` in `state`.
     pub fn flow(&self, engine: &EngineParams<T>, state: &DriveState<T>) -> PowerFlow<T> {
         let zero = PowerFlow {
@@ -263,6 +279,33 @@ mod tests {
         assert!(
             (f.battery + f.regenerated - f.motor_loss).abs() < 1e-9,
             "{f:?}"
+        );
+    }
+
+    #[test]
+    fn on_a_road_load_set_the_battery_pays_the_machine_s_copper_and_constant_alone() {
+        let engine = Model::TeslaModel3.params::<f64>().engine;
+        let full = EnergyParams::of_engine(&engine);
+        let e = full.with_spin_losses_in_road_load();
+        let m = e.motor.unwrap();
+        // 20 kW at 50 rad/s of wheel spin through 9:1: the machine at 450 rad/s.
+        let (speed, torque) = (450.0, 20_000.0 / 450.0);
+        let rpm = speed / RAD_PER_S_PER_RPM;
+        let f = e.flow(&engine, &state(rpm, 20_000.0, 0.0));
+        let expected = m.copper * torque * torque + m.constant;
+        assert!((f.motor_loss - expected).abs() < 1e-9, "{f:?}");
+        assert!((f.battery - 20_000.0 - expected).abs() < 1e-9, "{f:?}");
+        // The spin losses the road load holds are what the full machine loses on top.
+        let spin = full.motor.unwrap().iron * speed + full.motor.unwrap().windage * speed.powi(3);
+        let g = full.flow(&engine, &state(rpm, 20_000.0, 0.0));
+        assert!(
+            (g.motor_loss - f.motor_loss - spin).abs() < 1e-6,
+            "{g:?} {f:?}"
+        );
+        // The battery and the rest are the engine type's defaults.
+        assert_eq!(
+            (e.battery, e.regen, e.fuel),
+            (full.battery, full.regen, full.fuel)
         );
     }
 

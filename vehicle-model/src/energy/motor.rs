@@ -101,6 +101,19 @@ impl<T: Real> MotorLosses<T> {
         Ok(self)
     }
 
+    /// The same machine without its spin losses (iron and windage set to 0; copper and the
+    /// constant kept): for a car whose driveline drag comes from a coast-down, which measured
+    /// them already — the rotor turns with the wheels whether the machine drives or not, so
+    /// its iron and windage losses slowed the coasting car ([`crate::RoadLoad`]).
+    #[must_use]
+    pub fn without_spin_losses(self) -> Self {
+        MotorLosses {
+            iron: T::ZERO,
+            windage: T::ZERO,
+            ..self
+        }
+    }
+
     /// The losses (W, ≥ 0) at `torque` (N·m) and `speed` (rad/s).
     pub fn loss(&self, torque: T, speed: T) -> T {
         let w = speed.abs();
@@ -179,6 +192,21 @@ mod tests {
         // Standing still at full torque draws the copper and constant losses only.
         let expected = m.copper * 300.0 * 300.0 + m.constant;
         assert!((m.electrical_power(300.0, 0.0) - expected).abs() < 1e-9);
+    }
+
+    #[test]
+    fn without_spin_losses_a_machine_loses_its_copper_and_constant_alone() {
+        let m = machine().without_spin_losses();
+        assert_eq!((m.iron, m.windage), (0.0, 0.0));
+        assert_eq!(
+            (m.copper, m.constant),
+            (machine().copper, machine().constant)
+        );
+        // At the rated point: the copper share and the constant of the rated loss.
+        let expected = RATED_LOSS * (0.75 + 0.05);
+        assert!((m.loss(300.0, 500.0) - expected).abs() < 1e-9);
+        // Spinning without torque: the constant alone, at any speed.
+        assert_eq!(m.loss(0.0, 900.0), m.constant);
     }
 
     #[test]
