@@ -3,7 +3,8 @@
 //! ([`CycleCommand`]), so that both drive, measure and report a cycle alike.
 //!
 //! From its start the follower sets the car's throttle and brake every step (torque control,
-//! the automatic gearbox engaged in first gear), counts the time outside the tolerance band,
+//! from first gear; a combustion car of several gears shifts by the consumption tests' rule,
+//! `cycle_gears`, any other car by the automatic gearbox), counts the time outside the tolerance band,
 //! and at the trace's end keeps the car's energy report for the metrics. After the end it
 //! sets nothing: the last pedals stay, as any programme command stays until a later one.
 
@@ -17,6 +18,7 @@ use crate::world_file::CarDescription;
 use super::car::KMH;
 use super::car_programmes::brake_deceleration;
 use super::cycle_driver::{BandMeter, CycleDriver, PedalAuthority};
+use super::cycle_gears::GearChoice;
 use super::cycle_trace::{Band, Cycle, Trace};
 use super::{Metric, ScenarioError};
 
@@ -106,6 +108,8 @@ pub(super) fn account_energy(cars: &mut [CarDescription], car: &str) -> Vec<Stri
 #[derive(Debug, Clone)]
 pub(crate) struct CycleFollower {
     driver: CycleDriver,
+    /// The gear rule of a combustion car of several gears; `None`: the automatic gearbox.
+    gears: Option<GearChoice>,
     /// The tolerance band the tracking is measured against.
     tolerance: Band,
     band: BandMeter,
@@ -120,7 +124,8 @@ pub(crate) struct CycleFollower {
 impl CycleFollower {
     /// Hands car `id` of `sim` to a driver of `trace` from now on: its pedal authority from
     /// the car (100 km/h over `time0To100`, the brakes' deceleration within the grip), the
-    /// automatic gearbox engaged in first gear; its tracking measured against `tolerance`. A
+    /// car in first gear, shifting by [`GearChoice`] if it is a combustion car of several
+    /// gears, else by the automatic gearbox; its tracking measured against `tolerance`. A
     /// note if the car refused the gearbox.
     ///
     /// # Errors
@@ -140,16 +145,27 @@ impl CycleFollower {
             full_brake: brake_deceleration(&spec, driver, ground),
         };
         let cycle_driver = CycleDriver::new(trace, authority)?;
+        let gears = GearChoice::of(driver);
         let auto = AutoShiftParams::for_engine(driver.powertrain().engine());
         let driver = sim.driver_mut(id)?;
-        let note = driver
-            .set_automatic_gearbox(Some(auto))
-            .err()
-            .map(|e| format!("automatic gearbox refused ({e}): first gear only"));
+        // A combustion car shifts by the cycle rule (`GearChoice`), any other by the
+        // automatic gearbox.
+        let note = if gears.is_some() {
+            driver
+                .set_automatic_gearbox(None)
+                .err()
+                .map(|e| format!("automatic gearbox not released ({e})"))
+        } else {
+            driver
+                .set_automatic_gearbox(Some(auto))
+                .err()
+                .map(|e| format!("automatic gearbox refused ({e}): first gear only"))
+        };
         driver.set_gear(1);
         Ok((
             CycleFollower {
                 driver: cycle_driver,
+                gears,
                 tolerance,
                 band: BandMeter::default(),
                 start: sim.world().time(),
@@ -191,6 +207,14 @@ impl CycleFollower {
         let speed = sim.world().vehicle(id)?.state().forward_speed;
         let pedals = self.driver.pedals(t, speed, sim.world().dt());
         let d = sim.driver_mut(id)?;
+        if let Some(gears) = &mut self.gears
+            && let (Ok(gear), Ok(rpm)) = (d.gear(), d.rpm())
+            && let Ok(engaged) = usize::try_from(gear.number())
+            && let Some(next) = gears.choose(d, t, engaged, rpm, pedals.throttle)
+            && let Ok(next) = i32::try_from(next)
+        {
+            d.set_gear(next);
+        }
         d.set_throttle(pedals.throttle);
         d.set_brake_intensity(pedals.brake);
         Ok(())

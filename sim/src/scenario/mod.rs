@@ -34,6 +34,7 @@ mod car;
 mod car_programmes;
 mod cycle_driver;
 mod cycle_follow;
+mod cycle_gears;
 mod cycle_trace;
 mod drive_cycles;
 mod fit;

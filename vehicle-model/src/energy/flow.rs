@@ -167,6 +167,16 @@ impl<T: Real> EnergyParams<T> {
                 }
             }
         }
+        // A combustion engine not driving: below its idle speed (`engineMinRPM`; the car at
+        // rest or crawling, the clutch open) it idles and burns its friction's fuel; above it
+        // the wheels turn it and the fuel is cut (overrun cut-off).
+        if let Some(fuel) = self.fuel
+            && engine.engine_type == EngineType::Combustion
+            && combustion_power <= T::ZERO
+            && rpm <= engine.min_rpm
+        {
+            flow.fuel_rate += fuel.idle_rate(engine.min_rpm * T::from_f64(RAD_PER_S_PER_RPM));
+        }
         // Braking: the machine's share of the driven wheels' brake torque, back through the
         // gear to the machine.
         if let (Some(regen), Some(motor)) = (self.regen, self.motor) {
@@ -340,6 +350,12 @@ mod tests {
         // The fuel's power over the wheel power: the engine's efficiency, 0.2–0.38.
         let eta = 30_000.0 / (f.fuel_rate * crate::energy::PETROL_LHV);
         assert!((0.2..0.38).contains(&eta), "{eta}");
+        // At rest it idles at `engineMinRPM`; coasting in gear above it, the fuel is cut.
+        let fuel = e.fuel.unwrap();
+        let idle = fuel.idle_rate(engine.min_rpm * RAD_PER_S_PER_RPM);
+        assert!(idle > 0.0);
+        assert_eq!(e.flow(&engine, &state(0.0, 0.0, 500.0)).fuel_rate, idle);
+        assert_eq!(e.flow(&engine, &state(2500.0, 0.0, 500.0)).fuel_rate, 0.0);
     }
 
     #[test]

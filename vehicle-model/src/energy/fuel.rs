@@ -64,6 +64,15 @@ impl<T: Real> FuelModel<T> {
         ((t + friction) * w / (self.indicated_efficiency * self.heating_value)).max(T::ZERO)
     }
 
+    /// The fuel mass rate (kg/s, ≥ 0) of the engine idling at `speed` (rad/s, ≥ 0) with no
+    /// load: its friction's and pumping's power `T_f(ω)·ω` over the indicated efficiency,
+    /// the Willans line's value at zero brake torque.
+    pub fn idle_rate(&self, speed: T) -> T {
+        let w = speed.finite_or(T::ZERO).max(T::ZERO);
+        let friction = self.friction_torque + self.friction_speed * w * w;
+        (friction * w / (self.indicated_efficiency * self.heating_value)).max(T::ZERO)
+    }
+
     /// The brake-specific fuel consumption (g/kWh) at `torque` (N·m, > 0) and `speed`
     /// (rad/s, > 0); infinite at no load.
     pub fn bsfc(&self, torque: T, speed: T) -> T {
@@ -90,5 +99,23 @@ mod tests {
         // Fuel cut on overrun, nothing when stopped.
         assert_eq!(e.fuel_rate(-20.0, w), 0.0);
         assert_eq!(e.fuel_rate(100.0, 0.0), 0.0);
+    }
+
+    #[test]
+    fn idling_burns_the_friction_power_over_the_indicated_efficiency() {
+        // 250 N·m, 6500 rpm: at 1000 rpm the friction is 25·(1 + (1000/6500)²) N·m.
+        let top = 6500.0 * core::f64::consts::PI / 30.0;
+        let e = FuelModel::petrol(250.0, top);
+        let w = 1000.0 * core::f64::consts::PI / 30.0;
+        let friction = 25.0 * (1.0 + (1000.0_f64 / 6500.0).powi(2));
+        let expected = friction * w / (INDICATED_EFFICIENCY * PETROL_LHV);
+        assert!(
+            (e.idle_rate(w) - expected).abs() < 1e-15,
+            "{}",
+            e.idle_rate(w)
+        );
+        // About 0.16 g/s (0.8 l/h): a 2–3 l petrol engine's idle is 0.6–1 l/h.
+        assert!((1.4e-4..1.8e-4).contains(&expected), "{expected}");
+        assert_eq!(e.idle_rate(f64::NAN), 0.0);
     }
 }
