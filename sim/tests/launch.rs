@@ -4,7 +4,9 @@
 //! gear, and how far the car strays from its line (|y| / distance, |yaw|).
 //!
 //! `launch_report` prints the table (run with `--nocapture`); it is the diagnosis harness of
-//! ARCHITECTURE.md's "Launch" section.
+//! ARCHITECTURE.md's "Launch" section. `LAUNCH_MODELS` (comma-separated model names) and
+//! `LAUNCH_CAST_ONLY` (set: skip the joints mounting) choose a part of the matrix, since the
+//! whole of it takes minutes of a release build.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
@@ -117,8 +119,16 @@ fn run(sim: &mut Simulation, steps: f64) {
 fn launch_report() {
     let seconds: f64 = std::env::var("LAUNCH_SECONDS").map_or(8.0, |s| s.parse().unwrap());
     let dt_ms: u32 = std::env::var("LAUNCH_DT_MS").map_or(10, |s| s.parse().unwrap());
+    let only = std::env::var("LAUNCH_MODELS").unwrap_or_default();
+    let cast_only = std::env::var("LAUNCH_CAST_ONLY").is_ok();
     for mounting in [Mounting::Cast, Mounting::Joints] {
+        if cast_only && mounting == Mounting::Joints {
+            continue;
+        }
         for model in Model::ALL {
+            if !only.is_empty() && !only.split(',').any(|m| m == model.to_string()) {
+                continue;
+            }
             for mu in [0.5, 1.0, 1.5] {
                 let l = launch(model, mu, mounting, dt_ms, seconds);
                 println!(
