@@ -22,8 +22,10 @@ use super::cycle_gears::GearChoice;
 use super::cycle_trace::{Band, Cycle, Trace};
 use super::{Metric, ScenarioError};
 
-/// Density of petrol (kg/l): 0.745, the middle of EN 228's 0.720–0.775 kg/l at 15 °C.
-pub const FUEL_DENSITY: f64 = 0.745;
+/// Density of petrol (kg/l) the cycles' l/100 km use: the energy model's own
+/// ([`vehicle_model::energy::PETROL_DENSITY`], 0.745, the middle of EN 228's 0.720–0.775 kg/l
+/// at 15 °C), so that the fuel burnt and the litres reported share one figure.
+pub use vehicle_model::energy::PETROL_DENSITY as FUEL_DENSITY;
 /// J per Wh.
 const J_PER_WH: f64 = 3600.0;
 /// Time within which the trace counts as ended (s): far below a step, so that rounding of
