@@ -120,7 +120,9 @@ impl GymEnv {
             if self.copy {
                 let array = PyArray1::from_slice(py, &self.observation[e.start..e.end]);
                 match &e.shape {
-                    Some(shape) => dict.set_item(e.key.bind(py), array.reshape(shape.clone())?)?,
+                    Some(shape) => {
+                        dict.set_item(e.key.bind(py), array.reshape(shape.as_slice())?)?
+                    }
                     None => dict.set_item(e.key.bind(py), array)?,
                 }
             } else {

@@ -8,12 +8,11 @@
 //! and at the trace's end keeps the car's energy report for the metrics. After the end it
 //! sets nothing: the last pedals stay, as any programme command stays until a later one.
 
-use vehicle_model::energy::EnergyParams;
 use vehicle_model::{AutoShiftParams, EngineType};
 
 use crate::simulation::{EnergyReport, Simulation};
 use crate::vehicle::VehicleId;
-use crate::world_file::CarDescription;
+use crate::world_file::{CarDescription, default_energy_params};
 
 use super::car::KMH;
 use super::car_programmes::brake_deceleration;
@@ -85,13 +84,10 @@ pub(super) fn account_energy(cars: &mut [CarDescription], car: &str) -> Vec<Stri
         return notes;
     };
     if c.energy.is_none() {
-        let defaults = EnergyParams::of_engine(&c.params.engine);
-        // On a road-load set the machine's spin losses are in its drag already.
-        c.energy = Some(if c.road_load.is_some() {
-            defaults.with_spin_losses_in_road_load()
-        } else {
-            defaults
-        });
+        c.energy = Some(default_energy_params(
+            &c.params.engine,
+            c.road_load.is_some(),
+        ));
         notes.push(format!(
             "{car}: energy accounting turned on for the drive cycle (the defaults of its engine \
              type, battery full)"

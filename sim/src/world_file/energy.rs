@@ -72,6 +72,18 @@ pub(crate) struct EnergySetting {
     pub(crate) webots: Option<WebotsBattery>,
 }
 
+/// The energy accounting's defaults for a car of `engine` ([`EnergyParams::of_engine`]),
+/// without the machine's spin losses on a road-load set (`road_load`), whose drag holds them
+/// ([`EnergyParams::with_spin_losses_in_road_load`]).
+pub(crate) fn default_params(engine: &EngineParams<f64>, road_load: bool) -> EnergyParams<f64> {
+    let params = EnergyParams::of_engine(engine);
+    if road_load {
+        params.with_spin_losses_in_road_load()
+    } else {
+        params
+    }
+}
+
 /// Reads `energy`, `battery` and `motor` of `[vehicle]` for a car of `engine`; `None` when
 /// the car's energy is not accounted. On a road-load set (`road_load`) the default machine
 /// has no spin losses ([`EnergyParams::with_spin_losses_in_road_load`]); a `[vehicle.motor]`
@@ -107,10 +119,7 @@ pub(crate) fn read_energy(
     } else if switch != Some(true) {
         return Ok(None);
     }
-    let mut params = EnergyParams::of_engine(engine);
-    if road_load {
-        params = params.with_spin_losses_in_road_load();
-    }
+    let mut params = default_params(engine, road_load);
     let mut soc = 1.0;
     let mut webots = None;
     match s.value(BATTERY) {

@@ -67,6 +67,7 @@ use crate::simulation::{DURATION_RULE, is_duration};
 
 pub use diagnostics::{WorldFileErrors, parse_all};
 pub use energy::WebotsBattery;
+pub(crate) use energy::default_params as default_energy_params;
 pub use error::{Location, NameSet, WorldFileError, WorldFileErrorKind, WorldWarning};
 pub use numbers::{Setting, parse_with_numbers, parse_with_settings};
 pub use overrides::KeyPath;

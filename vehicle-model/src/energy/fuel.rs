@@ -66,11 +66,9 @@ impl<T: Real> FuelModel<T> {
 
     /// The fuel mass rate (kg/s, ≥ 0) of the engine idling at `speed` (rad/s, ≥ 0) with no
     /// load: its friction's and pumping's power `T_f(ω)·ω` over the indicated efficiency,
-    /// the Willans line's value at zero brake torque.
+    /// the Willans line's value at zero brake torque ([`FuelModel::fuel_rate`] of no torque).
     pub fn idle_rate(&self, speed: T) -> T {
-        let w = speed.finite_or(T::ZERO).max(T::ZERO);
-        let friction = self.friction_torque + self.friction_speed * w * w;
-        (friction * w / (self.indicated_efficiency * self.heating_value)).max(T::ZERO)
+        self.fuel_rate(T::ZERO, speed)
     }
 
     /// The brake-specific fuel consumption (g/kWh) at `torque` (N·m, > 0) and `speed`
