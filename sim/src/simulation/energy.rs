@@ -1,14 +1,18 @@
 //! A car's energy over a run ([`EnergyMeter`]): after every physics step, the driven wheels'
 //! power goes through `vehicle_model::energy` (machine losses, battery, regenerative braking,
 //! fuel) and the meter integrates what flowed, and keeps the battery's state of charge. An
-//! electric car whose battery is empty gets no more drive torque.
+//! electric car whose battery is empty gets no more drive torque, and an electric car's drive
+//! torque is capped before each step to what its battery can feed
+//! ([`EnergyMeter::cap_drive`]).
 //!
 //! The wheel power is the driven wheels' commanded torque times their spin, so the meter
 //! counts torque control (throttle and brake, Webots' `wbu_driver_set_throttle`); in speed
 //! control the spin is imposed and no torque is known, and the step counts no wheel power.
 
 use vehicle_model::energy::{DriveState, EnergyParams, PowerFlow};
-use vehicle_model::{Commands, EngineParams, EngineType, Wheel, WheelDrive};
+use vehicle_model::{
+    Commands, ControlMode, Driver, EngineParams, EngineType, PerWheel, Wheel, WheelDrive,
+};
 
 use crate::vehicle::VehicleState;
 
@@ -123,6 +127,54 @@ impl EnergyMeter {
         }
     }
 
+    /// Scales an electric car's forward drive torques in `commands` down to what its
+    /// battery can feed through its machine ([`EnergyParams::max_drive_torque`]) with the
+    /// driven wheels spinning at `spin` (rad/s, wheel order), the step's starting spin,
+    /// through a gear of `ratio` (`None` outside torque control: no cap). The meter counts
+    /// the step at its end spin ([`EnergyMeter::step`]), so a step whose driven wheels
+    /// speed up from `ω₀` to `ω₁` may ask the battery for up to `ω₁/ω₀` times its most: the
+    /// end spin is not known before the physics step, and the cap holds at the known one.
+    pub(crate) fn cap_drive(
+        &self,
+        commands: &mut Commands<f64>,
+        spin: &PerWheel<f64>,
+        ratio: Option<f64>,
+    ) {
+        let Some(ratio) = ratio.filter(|r| r.is_finite() && *r != 0.0) else {
+            return;
+        };
+        let (mut asked, mut total_spin, mut driven) = (0.0, 0.0, 0.0);
+        for w in Wheel::ALL {
+            if let WheelDrive::Torque(t) = commands.drive[w] {
+                asked += t.max(0.0) * spin[w];
+                total_spin += spin[w].abs();
+                driven += 1.0;
+            }
+        }
+        if driven == 0.0 || !(asked.is_finite() && asked > 0.0) {
+            return;
+        }
+        let wheel_speed = total_spin / driven;
+        let Some(cap) =
+            self.params
+                .max_drive_torque(&self.engine, self.report.soc, wheel_speed, ratio)
+        else {
+            return;
+        };
+        // The battery's most, at the wheels: the capped torque sum times the mean spin.
+        let most = cap * wheel_speed;
+        if asked > most {
+            let scale = (most / asked).clamp(0.0, 1.0);
+            for w in Wheel::ALL {
+                if let WheelDrive::Torque(t) = commands.drive[w]
+                    && t > 0.0
+                {
+                    commands.drive[w] = WheelDrive::Torque(t * scale);
+                }
+            }
+        }
+    }
+
     /// Accounts one step of `dt` s in which `commands` drove the car now in `state`, on tyres
     /// of `radii` (m, wheel order), through a gear of `ratio` (engine speed over wheel spin;
     /// `None` outside torque control). The
@@ -170,6 +222,7 @@ impl EnergyMeter {
                 wheel_speed,
                 rim_speed,
                 ratio,
+                soc: self.report.soc,
             },
         );
         let r = &mut self.report;
@@ -188,4 +241,14 @@ impl EnergyMeter {
         r.distance += state.forward_speed * dt;
         r.last = flow;
     }
+}
+
+/// The gear ratio (engine speed over wheel spin) `driver` drives through; `None` outside
+/// torque control or without a gear: what the meter and the drive cap turn the wheels' spin
+/// into the machine's speed with.
+pub(crate) fn drive_ratio(driver: &Driver<f64>) -> Option<f64> {
+    (driver.control_mode() == ControlMode::Torque)
+        .then(|| driver.gear().ok())
+        .flatten()
+        .map(|g| driver.powertrain().gearbox().ratio(g))
 }

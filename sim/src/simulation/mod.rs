@@ -37,8 +37,8 @@ use crate::telemetry::{Retention, TelemetryLog};
 use crate::vehicle::{VehicleId, VehicleState};
 use crate::world::World;
 use crate::world_file::{RobotDescription, WorldDescription};
-use energy::EnergyMeter;
 pub use energy::EnergyReport;
+use energy::{EnergyMeter, drive_ratio};
 use recording::Recording;
 pub use snapshot::{Snapshot, SnapshotError};
 
@@ -497,14 +497,24 @@ impl Simulation {
         // commanded since the last driver step acts on this step too. After a driver step the
         // angles are those its commands already hold. A car without commands yet (no driver
         // step, no car library) has its motors untouched, as in Webots.
+        //
+        // An electric car's drive torque is capped to what its battery can feed at the
+        // wheels' spin now (`EnergyMeter::cap_drive`), from the driver's own commands every
+        // step, so that a cap of one step does not stay once the spin allows more.
         for car in &self.cars {
             let vehicle = self.world.vehicle_mut(car.id)?;
-            let angles = car.driver.commanded_wheel_angles();
-            if let Some(commands) = vehicle.commands()
-                && commands.steering != angles
-            {
-                let mut commands = *commands;
-                commands.steering = angles;
+            let Some(&in_force) = vehicle.commands() else {
+                continue;
+            };
+            let mut commands = in_force;
+            commands.steering = car.driver.commanded_wheel_angles();
+            if let Some(meter) = &car.energy {
+                commands.drive = car.driver.commands().drive;
+                meter.limit(&mut commands);
+                let spin = vehicle.state().wheel_speeds;
+                meter.cap_drive(&mut commands, &spin, drive_ratio(&car.driver));
+            }
+            if commands != in_force {
                 vehicle.set_commands(&commands);
             }
         }
@@ -543,10 +553,7 @@ impl Simulation {
             let Some(commands) = vehicle.commands() else {
                 continue;
             };
-            let ratio = (car.driver.control_mode() == ControlMode::Torque)
-                .then(|| car.driver.gear().ok())
-                .flatten()
-                .map(|g| car.driver.powertrain().gearbox().ratio(g));
+            let ratio = drive_ratio(&car.driver);
             let radii = Wheel::ALL.map(|w| vehicle.spec().wheels[w].radius);
             meter.step(commands, vehicle.state(), radii, ratio, dt);
             if meter.powered_off() {

@@ -169,6 +169,32 @@ impl<T: Real> Battery<T> {
         e
     }
 
+    /// The most power (W, ≥ 0) the battery gives at its terminals at `soc`, as
+    /// [`Battery::step`] limits it: at the current `min(V_oc/(2R), max_discharge_current)`,
+    /// `(V_oc − R·I)·I`; 0 when empty.
+    pub fn max_discharge_power(&self, soc: T) -> T {
+        let soc = soc.finite_or(T::ZERO);
+        if soc <= T::ZERO {
+            return T::ZERO;
+        }
+        let v = self.open_circuit_voltage(soc);
+        let i = (v / (T::TWO * self.resistance)).min(self.max_discharge_current);
+        ((v - self.resistance * i) * i).max(T::ZERO)
+    }
+
+    /// The most power (W, ≥ 0) the battery takes at its terminals at `soc`, as
+    /// [`Battery::step`] limits it: at the current `max_charge_current`, `(V_oc + R·I)·I`;
+    /// 0 when full.
+    pub fn max_charge_power(&self, soc: T) -> T {
+        let soc = soc.finite_or(T::ONE);
+        if soc >= T::ONE {
+            return T::ZERO;
+        }
+        let v = self.open_circuit_voltage(soc);
+        let i = self.max_charge_current;
+        (v + self.resistance * i) * i
+    }
+
     /// Gives `power` (W; positive discharging, negative charging) for `dt` s from `soc`,
     /// within the current limits, the most power the cells can give (`V_oc²/4R`), and the
     /// charge left: an empty battery gives nothing, a full one takes nothing.
@@ -256,5 +282,26 @@ mod tests {
             ..Battery::<f64>::electric_car()
         };
         assert_eq!(b.validated().unwrap_err().field, "capacity");
+    }
+    #[test]
+    fn the_power_limits_are_the_current_limits_through_the_resistance() {
+        let b = Battery::<f64>::electric_car();
+        // Half charged, V_oc from the table; the pack's 3 C limit, 630 A, is below
+        // V_oc/(2R), so it is the current the most power flows at.
+        let v = b.open_circuit_voltage(0.5);
+        let i = b.max_discharge_current;
+        assert!(i < v / (2.0 * b.resistance));
+        let most = (v - b.resistance * i) * i;
+        assert!((b.max_discharge_power(0.5) - most).abs() < 1e-6);
+        // A step asked for more gives exactly that.
+        let s = b.step(0.5, 1e7, 0.01);
+        assert!((s.power - most).abs() < 1e-6, "{s:?}");
+        let i = b.max_charge_current;
+        let taken = (v + b.resistance * i) * i;
+        assert!((b.max_charge_power(0.5) - taken).abs() < 1e-6);
+        assert!((b.step(0.5, -1e7, 0.01).power + taken).abs() < 1e-6);
+        assert_eq!(b.max_discharge_power(0.0), 0.0);
+        assert_eq!(b.max_charge_power(1.0), 0.0);
+        assert_eq!(b.max_discharge_power(f64::NAN), 0.0);
     }
 }

@@ -68,6 +68,10 @@ pub struct DriveState<T> {
     pub rim_speed: T,
     /// Engine speed over wheel spin (dimensionless, the gear's ratio; 0 in neutral).
     pub ratio: T,
+    /// The battery's state of charge at the step's start (dimensionless, in [0, 1]): the
+    /// power it can take bounds what regeneration returns ([`Battery::max_charge_power`]).
+    /// Unused without a battery.
+    pub soc: T,
 }
 
 impl<T: Real> EnergyParams<T> {
@@ -109,6 +113,38 @@ impl<T: Real> EnergyParams<T> {
             motor: self.motor.map(MotorLosses::without_spin_losses),
             ..self
         }
+    }
+
+    /// The most drive torque (N·m, the driven wheels' sum) an electric car's battery can
+    /// feed at state of charge `soc` with its driven wheels spinning at `wheel_speed`
+    /// (rad/s) through a gear of `ratio`: the machine's torque at the battery's largest
+    /// discharge power ([`Battery::max_discharge_power`],
+    /// [`MotorLosses::torque_for_electrical`]) times the ratio. `None` (no cap) for a car
+    /// that is not purely electric (a hybrid's engine drives too), without a battery or a
+    /// machine, or standing (no power flows at zero speed; the engine's torque curve bounds
+    /// the launch).
+    pub fn max_drive_torque(
+        &self,
+        engine: &EngineParams<T>,
+        soc: T,
+        wheel_speed: T,
+        ratio: T,
+    ) -> Option<T> {
+        if engine.engine_type != EngineType::Electric {
+            return None;
+        }
+        let (battery, motor) = (self.battery?, self.motor?);
+        let ratio = ratio.finite_or(T::ZERO).abs();
+        let machine_speed = wheel_speed.finite_or(T::ZERO).abs() * ratio;
+        if machine_speed <= T::ZERO {
+            return None;
+        }
+        let most = battery.max_discharge_power(soc);
+        // Below the machine's standing losses it gives nothing.
+        let torque = motor
+            .torque_for_electrical(most, machine_speed)
+            .unwrap_or(T::ZERO);
+        Some(torque.max(T::ZERO) * ratio)
     }
 
     /// The power flows of one step of a car with `engine` in `state`.
@@ -182,9 +218,22 @@ impl<T: Real> EnergyParams<T> {
         if let (Some(regen), Some(motor)) = (self.regen, self.motor) {
             let ratio = state.ratio.finite_or(T::ZERO).abs();
             let wheel_speed = state.wheel_speed.finite_or(T::ZERO).abs();
-            let most = engine.max_torque * ratio;
-            let split = regen.split(state.brake_torque, state.rim_speed, wheel_speed, most);
             let machine_speed = wheel_speed * ratio;
+            // The machine's torque, and what the battery can take: the generating torque
+            // whose electrical power is the battery's largest charge (none when full).
+            let mut most = engine.max_torque * ratio;
+            if let Some(battery) = self.battery {
+                let charge = battery.max_charge_power(state.soc.finite_or(T::ONE));
+                let by_battery = if charge > T::ZERO {
+                    motor
+                        .torque_for_electrical(-charge, machine_speed)
+                        .map_or(most, |t| (-t).max(T::ZERO) * ratio)
+                } else {
+                    T::ZERO
+                };
+                most = most.min(by_battery);
+            }
+            let split = regen.split(state.brake_torque, state.rim_speed, wheel_speed, most);
             let torque = if ratio > T::ZERO {
                 -split.regenerative / ratio
             } else {
@@ -269,6 +318,7 @@ mod tests {
             wheel_speed,
             rim_speed: wheel_speed * 0.35,
             ratio: 9.0,
+            soc: 0.5,
         }
     }
 
@@ -333,6 +383,7 @@ mod tests {
             wheel_speed: 0.0,
             rim_speed: 0.0,
             ratio: 9.0,
+            soc: 0.5,
         };
         let f = e.flow(&engine, &locked);
         assert_eq!((f.regenerated, f.battery, f.motor_loss), (0.0, 0.0, 0.0));
@@ -378,5 +429,54 @@ mod tests {
             + motor.electrical_power(-generator / split, split);
         assert!((f.battery - expected).abs() < 1e-9, "{f:?} vs {expected}");
         assert!(f.fuel_rate > 0.0);
+    }
+    #[test]
+    fn the_drive_torque_cap_draws_the_battery_s_largest_power() {
+        let engine = Model::TeslaModel3.params::<f64>().engine;
+        let e = EnergyParams::of_engine(&engine);
+        let (battery, motor) = (e.battery.unwrap(), e.motor.unwrap());
+        // Wheels at 60 rad/s in a gear of 9: the capped torque, back through the gear,
+        // draws the battery's most at that charge (to round-off).
+        let cap = e.max_drive_torque(&engine, 0.8, 60.0, 9.0).unwrap();
+        let drawn = motor.electrical_power(cap / 9.0, 540.0);
+        let most = battery.max_discharge_power(0.8);
+        assert!((drawn - most).abs() < 1e-6 * most, "{drawn} vs {most}");
+        // Standing or a combustion car: no cap; empty: nothing.
+        assert_eq!(e.max_drive_torque(&engine, 0.8, 0.0, 9.0), None);
+        let bmw = Model::BmwX5.params::<f64>().engine;
+        let c = EnergyParams::of_engine(&bmw);
+        assert_eq!(c.max_drive_torque(&bmw, 0.8, 60.0, 9.0), None);
+        assert_eq!(e.max_drive_torque(&engine, 0.0, 60.0, 9.0), Some(0.0));
+    }
+
+    #[test]
+    fn regeneration_returns_no_more_than_the_battery_takes() {
+        // A pack whose charge limit (20 A) is far below the machine's power: braking hard at
+        // speed, the machine takes only the torque whose returned power the battery can
+        // take, and the friction brakes the rest; full, it takes none.
+        let engine = Model::TeslaModel3.params::<f64>().engine;
+        let mut e = EnergyParams::of_engine(&engine);
+        let mut battery = e.battery.unwrap();
+        battery.max_charge_current = 20.0;
+        e.battery = Some(battery);
+        let rpm = 60.0 * 9.0 / RAD_PER_S_PER_RPM;
+        let mut s = state(rpm, 0.0, 3000.0);
+        s.soc = 0.5;
+        let f = e.flow(&engine, &s);
+        let taken = battery.max_charge_power(0.5);
+        assert!((f.battery + taken).abs() < 1e-6 * taken, "{f:?} vs {taken}");
+        assert!(f.regenerated > 0.0);
+        assert!(
+            (f.regenerated / 60.0 + f.friction_brake - 3000.0).abs() < 1e-9,
+            "{f:?}"
+        );
+        // What the battery then takes in a step is what the flow returned: the balance
+        // closes.
+        let step = battery.step(0.5, f.battery, 0.01);
+        assert!((step.power - f.battery).abs() < 1e-6 * taken, "{step:?}");
+        s.soc = 1.0;
+        let full = e.flow(&engine, &s);
+        assert_eq!((full.regenerated, full.battery), (0.0, 0.0));
+        assert_eq!(full.friction_brake, 3000.0);
     }
 }

@@ -126,6 +126,29 @@ impl<T: Real> MotorLosses<T> {
         torque * speed + self.loss(torque, speed)
     }
 
+    /// The torque (N·m) at which the machine, turning at `speed` (rad/s, > 0), draws the
+    /// electrical `power` (W; negative: returns it), the inverse of
+    /// [`MotorLosses::electrical_power`]: the root of `k_c·T² + ω·T + S − P = 0` (`S` the
+    /// speed's iron, windage and constant losses) on the branch through `T = (P − S)/ω`,
+    /// written `2(P − S) / (ω + √(ω² + 4·k_c·(P − S)))` so that it holds for `k_c = 0`.
+    /// `None` when standing or non-finite, or when generating more than the machine can
+    /// return at that speed (`ω² + 4·k_c·(P − S) < 0`: the copper loss grows faster than
+    /// the power).
+    pub fn torque_for_electrical(&self, power: T, speed: T) -> Option<T> {
+        let w = speed.abs();
+        if !(w > T::ZERO && w.is_finite() && power.is_finite()) {
+            return None;
+        }
+        let net = power - self.loss(T::ZERO, w);
+        let discriminant = w * w + T::from_f64(4.0) * self.copper * net;
+        if discriminant < T::ZERO {
+            return None;
+        }
+        let torque = T::TWO * net / (w + discriminant.sqrt());
+        // The torque's sign is that of the speed's direction.
+        Some(if speed < T::ZERO { -torque } else { torque })
+    }
+
     /// The efficiency (dimensionless, in [0, 1)) at `torque` (N·m) and `speed` (rad/s):
     /// mechanical over electrical power motoring, electrical over mechanical generating; 0
     /// where no power flows out (standing, or generating less than the losses).
@@ -221,5 +244,32 @@ mod tests {
             ..machine()
         };
         assert_eq!(bad.validated().unwrap_err().field, "constant");
+    }
+    #[test]
+    fn the_torque_for_an_electrical_power_inverts_the_electrical_power() {
+        let m = machine();
+        // Motoring and generating, below and at the rated point, at two speeds.
+        for (torque, speed) in [
+            (120.0, 300.0),
+            (300.0, 500.0),
+            (-200.0, 400.0),
+            (-30.0, 900.0),
+        ] {
+            let p = m.electrical_power(torque, speed);
+            let back = m.torque_for_electrical(p, speed).unwrap();
+            assert!((back - torque).abs() < 1e-9, "{torque} at {speed}: {back}");
+        }
+        // The spin losses alone at no torque.
+        let idle = m.loss(0.0, 500.0);
+        assert!(m.torque_for_electrical(idle, 500.0).unwrap().abs() < 1e-12);
+        // Without copper loss the inverse is linear: (P − S)/ω.
+        let linear = MotorLosses { copper: 0.0, ..m };
+        let p = 40_000.0;
+        let expected = (p - linear.loss(0.0, 400.0)) / 400.0;
+        assert!((linear.torque_for_electrical(p, 400.0).unwrap() - expected).abs() < 1e-12);
+        // More returned than the machine can give at that speed, standing, or NaN: none.
+        assert_eq!(m.torque_for_electrical(-1e9, 100.0), None);
+        assert_eq!(m.torque_for_electrical(1000.0, 0.0), None);
+        assert_eq!(m.torque_for_electrical(f64::NAN, 100.0), None);
     }
 }
