@@ -1,6 +1,10 @@
 //! The cycle driver's gear choice for a car of several forward gears: the rule of UN GTR
-//! No. 15 (WLTP), Annex 2, "Gear selection and shift point determination", which the
-//! regulation applies to manual and automatic transmissions alike on a dynamometer cycle.
+//! No. 15 (WLTP), Annex 2, "Gear selection and shift point determination". The regulation
+//! writes it for manual transmissions; a car with an automatic one is tested with its own
+//! shift logic, which a Webots car does not have (its automatic gearbox,
+//! `AutoShiftParams`, is a performance schedule), so every cycle car shifts by the manual
+//! rule, the one a regulation defines. Real automatics on their economy schedule often run
+//! a gear higher at cruise, so the rule errs toward more fuel, not less.
 //! Each step the car takes the highest forward gear in which
 //! * the engine turns at least `n_min_drive`: `0.9·n_idle` in second gear,
 //!   `n_idle + 0.125·(s − n_idle)` above (Annex 2, §2(k)), `s` being the rated speed where the
