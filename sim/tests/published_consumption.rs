@@ -45,24 +45,28 @@
 //!
 //! **The transmission.** Webots' BmwX5 has five overall ratios down to 4.0; the EPA's test
 //! vehicle (same rows: 8 gears, "Axle Ratio" 3.38) has ZF's eight-speed 8HP, whose top gear
-//! 0.6667 gives 2.25 overall. At HWFET's 78 km/h mean the Webots car's engine turns 1.8 times
-//! as fast in the same gear rule, and the Willans line's friction
-//! (`vehicle_model::energy::FuelModel::petrol`, 10 % of the curve's peak torque) grows with
-//! it. [`EPA_BMW_X5_GEARS`] is that transmission: the 8HP's ratios times the row's axle
+//! 0.6667 gives 2.25 overall. On HWFET the Webots car runs in its top gear at about 2200 rpm;
+//! on the 8HP the gear rule (whose `n_min_drive` is 1690 rpm for this curve) keeps it in
+//! sixth or seventh at 1700–1900 rpm, and the Willans line's friction
+//! (`vehicle_model::energy::FuelModel::petrol`, 10 % of the curve's peak torque, growing
+//! with the speed) costs less. [`EPA_BMW_X5_GEARS`] is that transmission: the 8HP's ratios times the row's axle
 //! ratio; given as the world's `gearRatio`, everything else the shipped model's. On it the
 //! BmwX5 is within the 20 % on both cycles, and those two comparisons are the tests
 //! of the fuel model. On its Webots ratios it is within 20 % on FTP-75 (a test too) and +29 %
 //! on HWFET: the ratios are Webots' PROTO fields, kept for parity.
 //!
 //! **The other combustion cars are not compared,** because their Webots engines are not
-//! the test vehicles': the Range Rover Sport SVR's `engineMaxPower` is 50 kW (the real car's
-//! 5.0 V8 gives 423 kW), so it cannot follow either trace inside the EPA's band on any
-//! ratios, and the LincolnMKZ has Webots' default torque curve (`engineFunctionCoefficients`
-//! left at the Car PROTO's) under a 298 kW power limit; on the MKZ's six-speed (GM–Ford 6F,
-//! 4.484 … 0.742, axle 2.77) the cycle driver's gear rule keeps its engine at 1600–2100 rpm
-//! on HWFET, and its friction (10 % of that curve's peak torque) makes it +55 %. Matching
-//! them would mean replacing Webots' engine data, which a Webots user's controller was tuned
-//! on; the BmwX5, whose curve is a plausible small petrol engine's, is the check of the fuel
+//! the test vehicles': the LincolnMKZ and the RangeRoverSportSVR both keep the Car PROTO's
+//! default curve `150 + 0.1·rpm` N·m (Webots caps a combustion engine's torque by neither
+//! `engineMaxTorque` nor `engineMaxPower`), a torque rising linearly to 700 N·m at their
+//! 5500 rpm top speed, which no engine has, and the fuel model sizes an engine's friction
+//! from its curve's peak (70 N·m for both). On the test vehicles' transmissions (the MKZ's
+//! GM–Ford 6F six-speed, 4.484 … 0.742, Wikipedia "GM–Ford 6-speed automatic transmission",
+//! with the row's axle 2.77; the Range Rover's ZF 8HP with its 3.31) the MKZ burns +31 % and
+//! +55 %, its engine held at 1600–2100 rpm on HWFET by the gear rule, and the Range Rover
+//! still leaves the EPA's band (7.7 s and 16.6 s outside). Matching them would mean
+//! replacing Webots' engine data, which Webots users' controllers were tuned on; the BmwX5,
+//! whose curve is a plausible small petrol engine's, is the check of the fuel
 //! model. The hybrid ToyotaPrius is not compared: Webots' power split holds the engine at
 //! `hybridPowerSplitRPM` whatever the load and has no charge-sustaining strategy (its
 //! battery gives 67 Wh/km over FTP-75), where the EPA's figure is a charge-balanced one.
