@@ -46,7 +46,7 @@ impl<W: Write> CsvWriter<W> {
         })
     }
 
-    /// Writes one row: a sample's [`Sample::values`] (or a [`Row`], NaN for missing).
+    /// Writes one row: a sample's [`Sample::values`] (or a [`Row`](super::Row), NaN for missing).
     ///
     /// # Errors
     /// The write error.
