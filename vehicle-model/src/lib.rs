@@ -196,5 +196,7 @@ pub use ackermann::{DriveType, Geometry, PerWheel, Real, Wheel, WheelAngles};
 
 /// km/h per m/s: the factor between the Webots API's speeds (km/h) and the SI ones.
 pub const KMH_PER_MS: f64 = 3.6;
+/// rad/s per rpm (`π/30`): Webots gives engine speeds in rpm, the model works in rad/s.
+pub const RAD_PER_S_PER_RPM: f64 = core::f64::consts::PI / 30.0;
 pub use powertrain::{AutoShiftParams, EngineParams, EngineType, Gear};
 pub use proto_geom::{DEFAULT_WHEEL_DENSITY, SensorSlots, WheelParams, WheelPhysics};

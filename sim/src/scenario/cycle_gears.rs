@@ -22,10 +22,8 @@
 //! second gear near 5000 rpm, where the engine's friction is several times the road load's
 //! power: no driver of a consumption test shifts that way.
 
-use vehicle_model::{Driver, Gear};
+use vehicle_model::{Driver, Gear, RAD_PER_S_PER_RPM};
 
-/// rad/s per rpm.
-const RAD_PER_S_PER_RPM: f64 = std::f64::consts::PI / 30.0;
 /// GTR 15 Annex 2 §2(k): `n_min_drive` above second gear is `n_idle` plus this share of the
 /// span from idle to the rated speed.
 const MIN_DRIVE_SHARE: f64 = 0.125;

@@ -11,13 +11,11 @@
 
 use vehicle_model::energy::{DriveState, EnergyParams, PowerFlow};
 use vehicle_model::{
-    Commands, ControlMode, Driver, EngineParams, EngineType, PerWheel, Wheel, WheelDrive,
+    Commands, ControlMode, Driver, EngineParams, EngineType, PerWheel, RAD_PER_S_PER_RPM, Wheel,
+    WheelDrive,
 };
 
 use crate::vehicle::VehicleState;
-
-/// rad/s per rpm.
-const RAD_PER_S_PER_RPM: f64 = std::f64::consts::PI / 30.0;
 
 /// What a car's powertrain did since it was added (SI units) and its battery's charge.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]

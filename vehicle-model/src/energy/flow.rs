@@ -18,8 +18,7 @@ use powertrain::{EngineParams, EngineType};
 
 use super::{Battery, FuelModel, MotorLosses, RegenBlend};
 
-/// rad/s per rpm.
-const RAD_PER_S_PER_RPM: f64 = core::f64::consts::PI / 30.0;
+use crate::RAD_PER_S_PER_RPM;
 
 /// The energy parts of a car's powertrain: the machine, battery and regeneration of an
 /// electric or hybrid car, the fuel model of a combustion engine or hybrid.

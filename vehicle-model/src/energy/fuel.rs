@@ -85,8 +85,8 @@ mod tests {
     #[test]
     fn the_bsfc_map_falls_with_load_toward_the_indicated_limit() {
         // 250 N·m, 6500 rpm.
-        let e = FuelModel::petrol(250.0, 6500.0 * core::f64::consts::PI / 30.0);
-        let w = 3000.0 * core::f64::consts::PI / 30.0;
+        let e = FuelModel::petrol(250.0, 6500.0 * crate::RAD_PER_S_PER_RPM);
+        let w = 3000.0 * crate::RAD_PER_S_PER_RPM;
         let limit = 3.6e9 / (INDICATED_EFFICIENCY * PETROL_LHV);
         let full = e.bsfc(250.0, w);
         let light = e.bsfc(25.0, w);
@@ -102,9 +102,9 @@ mod tests {
     #[test]
     fn idling_burns_the_friction_power_over_the_indicated_efficiency() {
         // 250 N·m, 6500 rpm: at 1000 rpm the friction is 25·(1 + (1000/6500)²) N·m.
-        let top = 6500.0 * core::f64::consts::PI / 30.0;
+        let top = 6500.0 * crate::RAD_PER_S_PER_RPM;
         let e = FuelModel::petrol(250.0, top);
-        let w = 1000.0 * core::f64::consts::PI / 30.0;
+        let w = 1000.0 * crate::RAD_PER_S_PER_RPM;
         let friction = 25.0 * (1.0 + (1000.0_f64 / 6500.0).powi(2));
         let expected = friction * w / (INDICATED_EFFICIENCY * PETROL_LHV);
         assert!(
