@@ -46,7 +46,7 @@
 //! **The transmission.** Webots' BmwX5 has five overall ratios down to 4.0; the EPA's test
 //! vehicle (same rows: 8 gears, "Axle Ratio" 3.38) has ZF's eight-speed 8HP, whose top gear
 //! 0.6667 gives 2.25 overall. On HWFET the Webots car runs in its top gear at about 2200 rpm;
-//! on the 8HP the gear rule (whose `n_min_drive` is 1690 rpm for this curve) keeps it in
+//! on the 8HP the gear rule (whose `n_min_drive` is 1666 rpm for this curve) keeps it in
 //! sixth or seventh at 1700–1900 rpm, and the Willans line's friction
 //! (`vehicle_model::energy::FuelModel::petrol`, 10 % of the curve's peak torque, growing
 //! with the speed) costs less. [`EPA_BMW_X5_GEARS`] is that transmission: the 8HP's ratios times the row's axle

@@ -125,3 +125,56 @@ impl GearChoice {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use vehicle_model::Model;
+
+    fn driver(model: Model) -> Driver<f64> {
+        Driver::new(model.params(), 20).0
+    }
+
+    /// The BmwX5's curve `34.11 + 0.136·n − 1.461·10⁻⁵·n²` (N·m) gives the most power where
+    /// `f + n·f′ = 0`: `34.11 + 0.272·n − 4.383·10⁻⁵·n² = 0`, at 6328.7 rpm.
+    const BMW_X5_RATED: f64 = 6328.7;
+
+    #[test]
+    fn n_min_drive_is_an_eighth_of_the_way_from_idle_to_the_rated_speed() {
+        let d = driver(Model::BmwX5);
+        let g = GearChoice::of(&d).unwrap();
+        assert_eq!(g.ratios, vec![12.5, 8.0, 5.35, 4.3, 4.0]);
+        assert_eq!((g.idle, g.max), (1000.0, 6500.0));
+        // The search's step is 5.5 rpm; an eighth of it moves n_min_drive by 0.7 rpm.
+        let expected = 1000.0 + 0.125 * (BMW_X5_RATED - 1000.0);
+        assert!((g.min_drive - expected).abs() < 0.7, "{}", g.min_drive);
+    }
+
+    #[test]
+    fn electric_and_single_gear_cars_have_no_rule() {
+        assert!(GearChoice::of(&driver(Model::TeslaModel3)).is_none());
+        assert!(GearChoice::of(&driver(Model::CitroenCZero)).is_none());
+    }
+
+    #[test]
+    fn light_load_takes_the_highest_gear_above_n_min_drive_and_full_load_kicks_down() {
+        let d = driver(Model::BmwX5);
+        let mut g = GearChoice::of(&d).unwrap();
+        // Third gear at 3000 rpm: the wheels turn 3000/5.35 rpm, fifth gear would turn the
+        // engine at 2243 rpm, above n_min_drive (1666 rpm), and at a tenth of the throttle
+        // its full-load power less 10 % covers the demand.
+        assert_eq!(g.choose(&d, 10.0, 3, 3000.0, 0.1), Some(5));
+        // Kept at least 2 s, whatever is asked.
+        assert_eq!(g.choose(&d, 11.0, 5, 2243.0, 1.0), None);
+        // Full throttle in third at 3000 rpm asks the curve's 310.6 N·m there: no gear from
+        // third up has 10 % more power at its speed; second (4486 rpm, 350.2 N·m) has.
+        let mut g = GearChoice::of(&d).unwrap();
+        assert_eq!(g.choose(&d, 10.0, 3, 3000.0, 1.0), Some(2));
+        // Below idle in second (second's floor is 0.9·n_idle): first.
+        let mut g = GearChoice::of(&d).unwrap();
+        assert_eq!(g.choose(&d, 10.0, 2, 850.0, 0.2), Some(1));
+        // Already in the chosen gear: nothing to do.
+        let mut g = GearChoice::of(&d).unwrap();
+        assert_eq!(g.choose(&d, 10.0, 5, 2243.0, 0.1), None);
+    }
+}
