@@ -71,7 +71,8 @@
 //! `hybridPowerSplitRPM` whatever the load and has no charge-sustaining strategy (its
 //! battery gives 67 Wh/km over FTP-75), where the EPA's figure is a charge-balanced one.
 //!
-//! Run: `cargo test --release -p sim --test published_consumption -- --ignored` (each cycle
+//! Run: `cargo test --release -p sim --test published_consumption -- --include-ignored`, as
+//! `.ci/run` does (each cycle
 //! takes a minute or more in a debug build and under a second in a release build, so the
 //! combustion tests are ignored in the debug suite).
 #![allow(clippy::unwrap_used, clippy::panic)]
@@ -174,14 +175,14 @@ fn misses(runs: &[(&str, Scenario, Option<&[f64]>, Published)]) -> Vec<String> {
 }
 
 #[test]
-#[ignore = "a minute in a debug build: cargo test --release -p sim --test published_consumption -- --ignored"]
+#[ignore = "a minute in a debug build: cargo test --release -p sim --test published_consumption -- --include-ignored (CI does)"]
 fn the_bmw_x5_on_ftp75_burns_within_20_percent_of_its_epa_test() {
     let misses = misses(&[("BmwX5", Scenario::Ftp75, None, BMW_X5_FTP)]);
     assert!(misses.is_empty(), "{misses:#?}");
 }
 
 #[test]
-#[ignore = "a minute in a debug build each: cargo test --release -p sim --test published_consumption -- --ignored"]
+#[ignore = "a minute in a debug build each: cargo test --release -p sim --test published_consumption -- --include-ignored (CI does)"]
 fn the_bmw_x5_on_its_epa_transmission_burns_within_20_percent_on_both_cycles() {
     let gears = Some(&EPA_BMW_X5_GEARS[..]);
     let misses = misses(&[
