@@ -20,10 +20,24 @@ use vehicle_model::{AutoShiftParams, Model, Wheel, WheelDrive};
 /// What one launch did.
 #[derive(Debug, Clone, Copy)]
 struct Launch {
-    /// Last time (s after the throttle) a driven wheel's slip ratio changed sign, after 0.2 s.
+    /// Last time (s after the throttle) a driven wheel's slip ratio changed sign, after
+    /// [`SETTLED_AFTER`].
     last_flip: Option<f64>,
+    /// Largest |slip ratio| (dimensionless) on either side of those sign changes: how far from
+    /// rolling the wheels were that flipped.
+    flip_slip: f64,
+    /// Last time (s) a driven tyre's longitudinal force changed sign after [`SETTLED_AFTER`]:
+    /// the tyre switching between driving and braking, which the chatter did every few steps.
+    last_force_flip: Option<f64>,
     /// Most local extrema of the engine speed within one gear (between shifts).
     rpm_extrema: usize,
+    /// The engine speed's wiggle (rpm): within each gear, the changes of engine speed between
+    /// consecutive extrema but the largest (a launch's one turn, as where spinning wheels
+    /// catch the car), the largest of them over the gears; 0 with two extrema or fewer.
+    rpm_wiggle: f64,
+    /// Steps after [`SETTLED_AFTER`] in which a wheel's acceleration exceeded
+    /// [`ACCELERATION_THRESHOLD`], so that Webots' limiter scaled a later torque down.
+    limited: usize,
     /// Distance along x (m).
     x: f64,
     /// Sideways offset (m).
@@ -38,6 +52,10 @@ const SETTLED_AFTER: f64 = 0.2;
 /// the launches that did not chatter before any fix had 0 to 2, the rise and its one turn at
 /// a shift (ARCHITECTURE.md, "Launch chatter").
 const MAX_RPM_EXTREMA: usize = 2;
+/// Wheel acceleration (rad/s²) above which the driver library's limiter scales the torque down
+/// (Webots' `ACCELERATION_THRESHOLD`, `powertrain::WHEEL_ACCELERATION_LIMIT`; sim's tests do
+/// not depend on `powertrain`).
+const ACCELERATION_THRESHOLD: f64 = 50.0;
 /// Most sideways offset per distance covered (dimensionless; issue #35: 0.2 %).
 const MAX_SIDEWAYS: f64 = 0.002;
 /// Most heading at the end (rad; issue #35).
@@ -46,8 +64,7 @@ const MAX_YAW: f64 = 0.01;
 impl Launch {
     /// The criteria of issue #35 this launch misses, by name (empty: it holds them all): no
     /// sign flip of a driven wheel's slip after [`SETTLED_AFTER`], at most
-    /// [`MAX_RPM_EXTREMA`] engine-speed extrema in one gear, |y| ≤ [`MAX_SIDEWAYS`] of the
-    /// distance and |yaw| ≤ [`MAX_YAW`].
+    /// [`MAX_RPM_EXTREMA`] engine-speed extrema in one gear, and [`Launch::crooked`].
     fn failures(&self) -> Vec<String> {
         let mut failures = Vec::new();
         if let Some(t) = self.last_flip {
@@ -56,6 +73,14 @@ impl Launch {
         if self.rpm_extrema > MAX_RPM_EXTREMA {
             failures.push(format!("{} rpm extrema in a gear", self.rpm_extrema));
         }
+        failures.extend(self.crooked());
+        failures
+    }
+
+    /// The straightness criteria of issue #35 this launch misses: |y| ≤ [`MAX_SIDEWAYS`] of
+    /// the distance and |yaw| ≤ [`MAX_YAW`].
+    fn crooked(&self) -> Vec<String> {
+        let mut failures = Vec::new();
         let sideways = self.y.abs() / self.x.abs().max(f64::MIN_POSITIVE);
         if sideways > MAX_SIDEWAYS || !sideways.is_finite() {
             failures.push(format!("|y|/x {sideways:.2e}"));
@@ -69,13 +94,42 @@ impl Launch {
     /// One line of the table.
     fn line(&self) -> String {
         format!(
-            "last flip {:?} s, rpm extrema/gear {}, x {:.1} m, |y|/x {:.2e}, yaw {:.2e}",
+            "last flip {:?} s (|slip| ≤ {:.3}), last force flip {:?} s, rpm extrema/gear {} \
+             (wiggle {:.3} rpm), limiter steps {}, x {:.1} m, |y|/x {:.2e}, yaw {:.2e}",
             self.last_flip,
+            self.flip_slip,
+            self.last_force_flip,
             self.rpm_extrema,
+            self.rpm_wiggle,
+            self.limited,
             self.x,
             self.y.abs() / self.x,
             self.yaw
         )
+    }
+}
+
+/// The sign changes of one quantity per wheel after [`SETTLED_AFTER`].
+#[derive(Debug, Default)]
+struct Flips {
+    /// Each wheel's last non-zero value.
+    last: [f64; 4],
+    /// When the last change of sign happened (s).
+    at: Option<f64>,
+    /// The largest magnitude on either side of a change of sign.
+    size: f64,
+}
+
+impl Flips {
+    /// Wheel `i`'s `value` at time `t` (s).
+    fn see(&mut self, i: usize, value: f64, t: f64) {
+        if t > SETTLED_AFTER && value * self.last[i] < 0.0 {
+            self.at = Some(t);
+            self.size = self.size.max(value.abs()).max(self.last[i].abs());
+        }
+        if value != 0.0 {
+            self.last[i] = value;
+        }
     }
 }
 
@@ -105,58 +159,66 @@ fn launch(model: Model, mu: f64, mounting: Mounting, dt_ms: u32, seconds: f64) -
     d.set_gear(1);
     d.set_throttle(1.0);
     let steps = (seconds / dt).round() as usize;
-    let mut last_flip = None;
-    let mut last_sign = [0.0_f64; 4];
-    // Engine speed: the last two values and the extrema counted in the current gear.
-    let (mut gear, mut rpms, mut extrema, mut most) = (1, Vec::new(), 0, 0);
+    let (mut slips, mut forces) = (Flips::default(), Flips::default());
+    // Engine speed in the current gear: its values and extrema.
+    let (mut gear, mut rpms, mut extrema) = (1, Vec::new(), Vec::new());
+    let (mut most, mut wiggle) = (0, 0.0_f64);
+    let (mut speeds, mut limited) = (sim.world().vehicle(id).unwrap().state().wheel_speeds, 0);
     for k in 0..steps {
         sim.step().unwrap();
         let t = (k + 1) as f64 * dt;
         let vehicle = sim.world().vehicle(id).unwrap();
         let commands = vehicle.commands().unwrap();
         let tel = sim.telemetry(id).unwrap();
+        let now = tel.state.wheel_speeds;
+        let fastest = Wheel::ALL.map(|w| (now[w] - speeds[w]).abs() / dt);
+        if t > SETTLED_AFTER && fastest.into_iter().any(|a| a > ACCELERATION_THRESHOLD) {
+            limited += 1;
+        }
+        speeds = now;
         for (i, w) in Wheel::ALL.into_iter().enumerate() {
-            if !matches!(commands.drive[w], WheelDrive::Torque(_)) {
-                continue;
-            }
-            let s = tel.state.tyres[w].slip_ratio;
-            let sign = if s > 0.0 {
-                1.0
-            } else if s < 0.0 {
-                -1.0
-            } else {
-                0.0
-            };
-            if t > SETTLED_AFTER && sign * last_sign[i] < 0.0 {
-                last_flip = Some(t);
-            }
-            if sign != 0.0 {
-                last_sign[i] = sign;
+            if matches!(commands.drive[w], WheelDrive::Torque(_)) {
+                slips.see(i, tel.state.tyres[w].slip_ratio, t);
+                forces.see(i, tel.state.tyres[w].fx, t);
             }
         }
         let driver = sim.driver(id).unwrap();
         let g = driver.gear().map_or(0, |g| g.number());
         let rpm = driver.rpm().unwrap_or(0.0);
         if g != gear {
-            (gear, extrema) = (g, 0);
+            wiggle = wiggle.max(wiggle_of(&extrema));
+            (gear, extrema) = (g, Vec::new());
             rpms.clear();
         }
         rpms.push(rpm);
         if let [.., a, b, c] = rpms[..]
             && (b - a) * (c - b) < 0.0
         {
-            extrema += 1;
-            most = most.max(extrema);
+            extrema.push(b);
+            most = most.max(extrema.len());
         }
     }
+    wiggle = wiggle.max(wiggle_of(&extrema));
     let s = sim.telemetry(id).unwrap().state;
     Launch {
-        last_flip,
+        last_flip: slips.at,
+        flip_slip: slips.size,
+        last_force_flip: forces.at,
         rpm_extrema: most,
+        rpm_wiggle: wiggle,
+        limited,
         x: s.position.x,
         y: s.position.y,
         yaw: s.roll_pitch_yaw.yaw,
     }
+}
+
+/// The largest change between consecutive `extrema` (rpm) but the largest one, 0 for fewer
+/// than three ([`Launch::rpm_wiggle`]).
+fn wiggle_of(extrema: &[f64]) -> f64 {
+    let mut swings: Vec<f64> = extrema.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
+    swings.sort_by(f64::total_cmp);
+    swings.iter().rev().nth(1).copied().unwrap_or(0.0)
 }
 
 fn run(sim: &mut Simulation, steps: f64) {
