@@ -135,8 +135,13 @@ impl Vehicle {
 
     /// Wheel `w`'s share of the engaged engine, `(J_e·ξ², J_e·|ξ|)` over the number of
     /// torque-driven wheels (kg·m² each): an open differential couples the engine to the
-    /// mean of its wheels, which an equal share per wheel is the simple form of. `(0, 0)` for
-    /// a wheel not under a torque command, and before the first command.
+    /// mean of its wheels, which an equal share per wheel is the simple form of (exact while
+    /// they turn alike; it also resists their turning apart, which the differential does
+    /// not). A share in proportion to each wheel's torque was measured too and is worse: on
+    /// the 4x4 Truck it feeds the limited slip's torque shifts between the axles back into
+    /// their inertia, and the engine speed swung by up to 33 rpm (ARCHITECTURE.md, "Launch
+    /// chatter"). `(0, 0)` for a wheel not under a torque command, and before the first
+    /// command.
     fn driveline_share(&self, w: Wheel) -> (f64, f64) {
         let Some(c) = &self.commands else {
             return (0.0, 0.0);

@@ -57,9 +57,12 @@ impl Vehicle {
                     Spin::Free { brake_impulse, .. } => {
                         // Only a braked wheel is sub-stepped: its spin changes faster than its
                         // tyre relaxes, the case the sub-steps are for. A driven wheel takes
-                        // the whole step: the driver library's wheel-acceleration limiter
-                        // switches the torque of a wheel spinning past its grip on and off
-                        // every step, and a sub-stepped wheel rings under that switching.
+                        // the whole step: without its engine's inertia the driver library's
+                        // wheel-acceleration limiter switched the torque of a wheel spinning
+                        // past its grip on and off every step, and a sub-stepped wheel rang
+                        // under that switching. With it, sub-stepping driven wheels too was
+                        // measured (issue #35, ARCHITECTURE.md "Launch chatter"): it took out
+                        // sub-rpm wiggles of the engine speed but added early slip flips.
                         let braked = *brake_impulse > 0.0;
                         // The rolling resistance and the road-load set's constant drag resist
                         // the spin as the brake does, after the choice above: they do not
