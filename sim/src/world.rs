@@ -307,14 +307,10 @@ impl World {
             energy += 0.5 * springs.stiffness * x * x;
         }
         for (w, omega) in state.wheel_speeds.iter_wheels() {
-            // On joints the wheel bodies' own spin is rapier's to count; the engaged engine's
-            // share is this crate's on both.
-            let own = if vehicle.on_joints() {
-                0.0
-            } else {
-                spec.wheels[w].spin_inertia()
-            };
-            let inertia = own + vehicle.reflected_inertia(w);
+            // A cast car's wheels are no bodies: their own spin counts here (on joints it never
+            // did); the engaged engine's share counts on both.
+            let own = (!vehicle.on_joints()).then(|| spec.wheels[w].spin_inertia());
+            let inertia = own.unwrap_or(0.0) + vehicle.reflected_inertia(w);
             energy += 0.5 * inertia * omega * omega;
         }
         Ok(energy)

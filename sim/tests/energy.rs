@@ -18,7 +18,7 @@ use vehicle_model::Wheel;
 /// changes). Not `engineMaxPower` times the time: a combustion curve is not held to it (the
 /// BmwX5's gives some 200 kW at 6000 rpm), and since a driven wheel carries its engine's
 /// inertia (`Commands::driveline`), a car on its roof spins that up in the air, its driven
-/// wheels at twice Webots' engine speed (the mean of all four wheels): 750 kJ in 7 s.
+/// wheels at twice Webots' engine speed (the mean of all four wheels): 780 kJ in 6 s.
 fn energy_after_cut(world: &str, cut: f64) -> (f64, f64) {
     let d = sim::world_file::parse_str("energy.toml", world).unwrap();
     let (mut s, _) = Simulation::from_description(&d).unwrap();
