@@ -271,7 +271,9 @@ impl World {
     /// and, on joints, the wheels: translation of the centre of mass and rotation), their
     /// potential energy in the world's gravity (zero at the world's origin), the energy held in
     /// its suspension springs (`½·k·x²` at each wheel's compression), and, for a cast car,
-    /// whose wheels are no bodies, the wheels' spin energy `½·I·ω²` relative to the chassis.
+    /// whose wheels are no bodies, the wheels' spin energy `½·I·ω²` relative to the chassis,
+    /// and, on both, the engaged engine's `½·J·ω²` with each torque-driven wheel's share of its
+    /// reflected inertia (`Commands::driveline`).
     ///
     /// rapier computes a body's mass properties in a step: before the world's first step the
     /// bodies count for nothing here.
@@ -304,11 +306,12 @@ impl World {
             };
             energy += 0.5 * springs.stiffness * x * x;
         }
-        if !vehicle.on_joints() {
-            for (w, omega) in state.wheel_speeds.0.iter().enumerate() {
-                let inertia = spec.wheels.0[w].spin_inertia();
-                energy += 0.5 * inertia * omega * omega;
-            }
+        for (w, omega) in state.wheel_speeds.iter_wheels() {
+            // A cast car's wheels are no bodies: their own spin counts here (on joints it never
+            // did); the engaged engine's share counts on both.
+            let own = (!vehicle.on_joints()).then(|| spec.wheels[w].spin_inertia());
+            let inertia = own.unwrap_or(0.0) + vehicle.reflected_inertia(w);
+            energy += 0.5 * inertia * omega * omega;
         }
         Ok(energy)
     }

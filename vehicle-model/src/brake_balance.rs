@@ -142,7 +142,7 @@ pub fn proportioned_front_share<T: Real>(params: &CarParams<T>) -> T {
 
 /// A wheel's mass (kg) as its `physics` gives it (density × the tyre's cylinder for a
 /// density), 0 for `physics NULL`.
-fn wheel_mass<T: Real>(w: &WheelParams<T>) -> T {
+pub(crate) fn wheel_mass<T: Real>(w: &WheelParams<T>) -> T {
     match w.physics {
         WheelPhysics::None => T::ZERO,
         WheelPhysics::Mass(m) => m,

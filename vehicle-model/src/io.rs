@@ -3,6 +3,7 @@
 
 use ackermann::{PerWheel, Real, WheelAngles};
 
+use crate::driveline::Driveline;
 use crate::lights::Lights;
 use crate::mode::IndicatorState;
 use crate::sound::Sounds;
@@ -123,6 +124,13 @@ pub struct Commands<T: Real> {
     /// opposing the wheel's rotation, which also holds a stopped wheel (Webots: `Brake` devices
     /// `right_front_brake` …, emulated by a damping of `brake·brakeCoefficient/|ω|`).
     pub brake_torque: PerWheel<T>,
+    /// The engine's inertia and the ratio it turns the driven wheels through this step
+    /// ([`Driveline::DISENGAGED`] in neutral and outside torque mode). Not in Webots, whose
+    /// wheels carry no engine: a host that solves the wheels' spin adds
+    /// [`Driveline::reflected_inertia`], shared equally, to the spin inertia of the wheels
+    /// under [`WheelDrive::Torque`], so that a wheel beyond its grip spins up as one dragging
+    /// its engine does; one that ignores it runs Webots' wheels.
+    pub driveline: Driveline<T>,
     /// Every light.
     pub lights: Lights,
     /// Steering wheel, lever, needles, wipers.
@@ -133,8 +141,9 @@ pub struct Commands<T: Real> {
 
 impl<T: Real> Commands<T> {
     /// True if every number is finite: steering targets, drive commands, brake torques,
-    /// cockpit positions, wiper command and engine-sound volume and pitch. Always true for the
-    /// commands of a [`Driver`](crate::Driver); a host or firmware can assert it cheaply.
+    /// driveline, cockpit positions, wiper command and engine-sound volume and pitch. Always
+    /// true for the commands of a [`Driver`](crate::Driver); a host or firmware can assert it
+    /// cheaply.
     pub fn is_finite(&self) -> bool {
         let drive_finite = |d: &WheelDrive<T>| match *d {
             WheelDrive::Free => true,
@@ -150,6 +159,7 @@ impl<T: Real> Commands<T> {
             && self.steering.left.is_finite()
             && self.drive.iter().all(drive_finite)
             && self.brake_torque.iter().all(|t| t.is_finite())
+            && self.driveline.is_finite()
             && k.steering_wheel.is_finite()
             && k.rpm_needle.is_finite()
             && k.speed_needle.is_finite()

@@ -148,6 +148,7 @@ struct ReadmeDoctests;
 pub mod actuator;
 mod aero;
 mod brake_balance;
+mod driveline;
 mod driver;
 pub mod energy;
 mod io;
@@ -166,6 +167,7 @@ pub use aero::{Aero, AeroError, AeroForces, SEA_LEVEL_AIR_DENSITY};
 pub use brake_balance::{
     BrakeBalance, BrakeBalanceError, axle_brake_factor, proportioned_front_share,
 };
+pub use driveline::{Driveline, ENGINE_MASS_FACTOR};
 pub use driver::{
     DEFAULT_BASIC_TIME_STEP_MS, Driver, INDICATOR_AUTO_DISABLING_THRESHOLD, wheel_from_webots_index,
 };

@@ -7,8 +7,8 @@ mod common;
 use common::golden::{close, driver, sensors_at};
 use common::{Plant, all_finite};
 use vehicle_model::{
-    AutoShiftParams, ControlMode, Driver, Gear, Model, PerWheel, Sensors, Warning, Wheel,
-    WheelAngles, WheelDrive,
+    AutoShiftParams, ControlMode, Driveline, Driver, Gear, Model, PerWheel, Sensors, Warning,
+    Wheel, WheelAngles, WheelDrive, WheelPhysics,
 };
 
 #[test]
@@ -464,4 +464,46 @@ fn repeated_and_direct_steering_keep_the_torque_split_current() {
     once.set_steering_angle(0.0);
     once.set_steering_angle(-0.0);
     assert!(once.commanded_wheel_angles().right.is_sign_negative());
+}
+
+/// The driver hands over the engine engaged through the current gear in torque mode, none in
+/// neutral or speed mode. Golden numbers by Wong's `J_e = 0.0025·m·r²` (`Driveline`): a
+/// 1500 kg body on four 25 kg wheels of 0.4 m radius is 1600 kg, `J_e = 0.0025·1600·0.16 =
+/// 0.64 kg·m²`; through the default first gear of 10, `0.64·100 = 64 kg·m²`, through the
+/// reverse of −12, `0.64·144 = 92.16 kg·m²`.
+#[test]
+fn the_commands_carry_the_engaged_engine() {
+    let mut p = Model::Car.params::<f64>();
+    p.body.mass = 1500.0;
+    for w in Wheel::ALL {
+        p.wheels[w].tire_radius = 0.4;
+        p.wheels[w].physics = WheelPhysics::Mass(25.0);
+    }
+    assert!(close(p.vehicle_mass(), 1600.0, 1e-12));
+    assert!(close(p.engine_inertia(), 0.64, 1e-12));
+    let (mut d, report) = Driver::new(p, 10);
+    assert!(report.is_empty(), "{report:?}");
+    assert_eq!(d.commands().driveline, Driveline::DISENGAGED);
+    let mut t = 0.0;
+    let mut step = |d: &mut Driver<f64>| {
+        t += 0.01;
+        *d.step(&sensors_at(t))
+    };
+    d.set_throttle(1.0);
+    d.set_gear(1);
+    let c = step(&mut d);
+    assert!(close(c.driveline.engine_inertia, 0.64, 1e-12));
+    assert!(close(c.driveline.reflected_inertia(), 64.0, 1e-9));
+    d.set_gear(-1);
+    assert!(close(
+        step(&mut d).driveline.reflected_inertia(),
+        92.16,
+        1e-9
+    ));
+    d.set_gear(0);
+    assert_eq!(step(&mut d).driveline, Driveline::DISENGAGED);
+    d.set_gear(1);
+    d.set_cruising_speed(20.0);
+    assert_eq!(d.control_mode(), ControlMode::Speed);
+    assert_eq!(step(&mut d).driveline, Driveline::DISENGAGED);
 }

@@ -86,8 +86,13 @@ impl CycleDriver {
     }
 
     /// The pedals for the step from `t` to `t + dt` (s) of a car at `speed` (m/s): aimed at
-    /// the trace at the step's end, since they act over the step.
-    pub fn pedals(&mut self, t: f64, speed: f64, dt: f64) -> Pedals {
+    /// the trace at the step's end, since they act over the step. `mass_factor`
+    /// (dimensionless, ≥ 1) is the car's effective mass in its engaged gear over the one its
+    /// [`PedalAuthority`] is for: the engine's inertia through the gear makes every pedal
+    /// move the car that much less (Wong's rotating-mass factor; `vehicle_model::Driveline`),
+    /// so the pedals are pushed that much more. A factor that is not finite and ≥ 1 counts
+    /// as 1.
+    pub fn pedals(&mut self, t: f64, speed: f64, dt: f64, mass_factor: f64) -> Pedals {
         let next = t + dt;
         let target = self.trace.speed(next);
         if target < AT_REST && self.trace.acceleration(next) <= 0.0 && speed < HOLD_BELOW {
@@ -97,10 +102,19 @@ impl CycleDriver {
                 brake: HOLD_BRAKE,
             };
         }
+        let k = if mass_factor.is_finite() && mass_factor >= 1.0 {
+            mass_factor
+        } else {
+            1.0
+        };
+        let (full_throttle, full_brake) = (
+            self.authority.full_throttle / k,
+            self.authority.full_brake / k,
+        );
         let error = target - speed;
         let feedforward = self.trace.acceleration(next);
         let unbounded = feedforward + KP * error + self.integral;
-        let asked = unbounded.clamp(-self.authority.full_brake, self.authority.full_throttle);
+        let asked = unbounded.clamp(-full_brake, full_throttle);
         // Anti-windup: the integral moves only while the pedals are not saturated against it.
         if unbounded == asked || (unbounded > asked) != (error > 0.0) {
             self.integral =
@@ -108,13 +122,13 @@ impl CycleDriver {
         }
         if asked >= 0.0 {
             Pedals {
-                throttle: asked / self.authority.full_throttle,
+                throttle: asked / full_throttle,
                 brake: 0.0,
             }
         } else {
             Pedals {
                 throttle: 0.0,
-                brake: -asked / self.authority.full_brake,
+                brake: -asked / full_brake,
             }
         }
     }
@@ -189,7 +203,7 @@ mod tests {
         let (dt, mut v) = (0.01, 0.0_f64);
         for i in 0..6000 {
             let t = f64::from(i) * dt;
-            let p = d.pedals(t, v, dt);
+            let p = d.pedals(t, v, dt, 1.0);
             let drag = if v > 0.0 { 0.2 } else { 0.0 };
             let a = p.throttle * AUTHORITY.full_throttle - p.brake * AUTHORITY.full_brake - drag;
             v = (v + a * dt).max(0.0);

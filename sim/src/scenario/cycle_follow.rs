@@ -110,6 +110,11 @@ pub(crate) struct CycleFollower {
     gears: Option<GearChoice>,
     /// The tolerance band the tracking is measured against.
     tolerance: Band,
+    /// The car's mass plus its wheels' spin inertia over their radius squared (kg): the
+    /// effective mass its pedal authority is for.
+    rolling_mass: f64,
+    /// The driven wheels' radius (m).
+    driven_radius: f64,
     band: BandMeter,
     /// The simulated time of the trace's time 0 (s).
     start: f64,
@@ -143,6 +148,13 @@ impl CycleFollower {
             full_brake: brake_deceleration(&spec, driver, ground),
         };
         let cycle_driver = CycleDriver::new(trace, authority)?;
+        let rolling_mass = spec.chassis.mass
+            + spec
+                .wheels
+                .iter()
+                .map(|w| w.mass + w.spin_inertia() / (w.radius * w.radius))
+                .sum::<f64>();
+        let driven_radius = driver.params().driven_radius();
         let gears = GearChoice::of(driver);
         let auto = AutoShiftParams::for_engine(driver.powertrain().engine());
         let driver = sim.driver_mut(id)?;
@@ -165,6 +177,8 @@ impl CycleFollower {
                 driver: cycle_driver,
                 gears,
                 tolerance,
+                rolling_mass,
+                driven_radius,
                 band: BandMeter::default(),
                 start: sim.world().time(),
                 start_energy: sim.energy(id)?,
@@ -202,8 +216,16 @@ impl CycleFollower {
             return Ok(());
         }
         let t = self.trace_time(sim);
-        let speed = sim.world().vehicle(id)?.state().forward_speed;
-        let pedals = self.driver.pedals(t, speed, sim.world().dt());
+        let vehicle = sim.world().vehicle(id)?;
+        let speed = vehicle.state().forward_speed;
+        // The engine's inertia in the gear of the last step (its commands'), as a mass at the
+        // driven wheels' rim.
+        let engine = vehicle
+            .commands()
+            .map_or(0.0, |c| c.driveline.reflected_inertia())
+            / (self.driven_radius * self.driven_radius);
+        let mass_factor = 1.0 + engine / self.rolling_mass;
+        let pedals = self.driver.pedals(t, speed, sim.world().dt(), mass_factor);
         let d = sim.driver_mut(id)?;
         if let Some(gears) = &mut self.gears
             && let (Ok(gear), Ok(rpm)) = (d.gear(), d.rpm())

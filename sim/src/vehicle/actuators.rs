@@ -86,7 +86,7 @@ impl Vehicle {
             );
         }
         self.ramps[w] = None;
-        let inertia = self.spec.wheels[w].spin_inertia();
+        let inertia = self.spin_inertia(w);
         let wheel = vehicle_model::actuator::WheelSpin {
             inertia,
             damping: self.viscous_wheel_drag(),
@@ -102,6 +102,60 @@ impl Vehicle {
             brake_impulse: (brake * dt) as f32,
         };
         (spin, omega)
+    }
+
+    /// The inertia (kg·m²) wheel `w`'s spin is solved with: its own, plus, under a torque
+    /// command, its equal share of the engine's inertia reflected through the engaged gear
+    /// ([`Commands::driveline`](vehicle_model::Commands::driveline)). Not in Webots, whose
+    /// wheels carry no engine (COMPATIBILITY.md): without it a driven wheel beyond its grip
+    /// spins up at thousands of rad/s² and the driver's wheel-acceleration limiter chatters
+    /// (ARCHITECTURE.md, "Launch chatter"). A velocity-controlled or free wheel keeps its own.
+    pub(super) fn spin_inertia(&self, w: Wheel) -> f64 {
+        self.spec.wheels[w].spin_inertia() + self.reflected_inertia(w)
+    }
+
+    /// Wheel `w`'s share of the engaged engine's reflected inertia (kg·m², ≥ 0; see
+    /// [`spin_inertia`](Self::spin_inertia)): 0 unless it is under a torque command.
+    pub(crate) fn reflected_inertia(&self, w: Wheel) -> f64 {
+        self.driveline_share(w).0
+    }
+
+    /// The inertia (kg·m²) whose angular momentum changes, about wheel `w`'s axis, with its
+    /// spin: its own, plus, under a torque command, its share of the engine's momentum per
+    /// unit wheel speed `J_e·|ξ|` ([`Driveline::engine_momentum`]): the engine turns `|ξ|`
+    /// times as fast as the wheel, and the gears' housings take the rest of the reflected
+    /// `J_e·ξ²` from the chassis. The engine's axis is taken as the wheel's (a transverse
+    /// engine turning with its wheels; a longitudinal one would react in roll).
+    ///
+    /// [`Driveline::engine_momentum`]: vehicle_model::Driveline::engine_momentum
+    pub(super) fn spin_momentum_inertia(&self, w: Wheel) -> f64 {
+        let (_, momentum) = self.driveline_share(w);
+        self.spec.wheels[w].spin_inertia() + momentum
+    }
+
+    /// Wheel `w`'s share of the engaged engine, `(J_e·ξ², J_e·|ξ|)` over the number of
+    /// torque-driven wheels (kg·m² each): an open differential couples the engine to the
+    /// mean of its wheels, which an equal share per wheel is the simple form of (exact while
+    /// they turn alike; it also resists their turning apart, which the differential does
+    /// not). A share in proportion to each wheel's torque was measured too and is worse: on
+    /// the 4x4 Truck it feeds the limited slip's torque shifts between the axles back into
+    /// their inertia, and the engine speed swung by up to 33 rpm (ARCHITECTURE.md, "Launch
+    /// chatter"). `(0, 0)` for a wheel not under a torque command, and before the first
+    /// command.
+    fn driveline_share(&self, w: Wheel) -> (f64, f64) {
+        let Some(c) = &self.commands else {
+            return (0.0, 0.0);
+        };
+        let torque = |d: &WheelDrive<f64>| matches!(d, WheelDrive::Torque(_));
+        if !torque(&c.drive[w]) {
+            return (0.0, 0.0);
+        }
+        // At least 1: wheel `w` itself is one.
+        let driven = c.drive.iter().filter(|d| torque(d)).count() as f64;
+        (
+            c.driveline.reflected_inertia() / driven,
+            c.driveline.engine_momentum() / driven,
+        )
     }
 
     /// Moves the kinematic wipers toward their command for a step of `dt` seconds.

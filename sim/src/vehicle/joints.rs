@@ -35,8 +35,12 @@
 //! from nowhere on it in a 1 m/s² turn at 20 m/s, but it read the link bodies' velocities,
 //! which are a step old (`multibody`), so those two figures are uncertain.) The wheel's spin
 //! inertia enters the solve, and the reaction of its change of spin (`I·Δω`) goes to rapier
-//! as a torque on the wheel about its axle, which the joint passes to the chassis. The gyroscopic moment of the spinning wheels
-//! is left out, as on the cast car (under 2 % of the roll moment of a turn).
+//! as a torque on the wheel about its axle, which the joint passes to the chassis. The
+//! gyroscopic moment of the spinning wheels is left out, as on the cast car (under 2 % of the
+//! roll moment of a turn). So a torque-driven wheel's share of the engaged engine's inertia
+//! (`Vehicle::spin_inertia`, `spin_momentum_inertia`) reaches a car on joints by the same
+//! solve and reaction as a cast one; the wheel bodies keep the wheel's own mass properties,
+//! their spin being locked in rapier.
 //!
 //! # Who solves what
 //!

@@ -57,9 +57,12 @@ impl Vehicle {
                     Spin::Free { brake_impulse, .. } => {
                         // Only a braked wheel is sub-stepped: its spin changes faster than its
                         // tyre relaxes, the case the sub-steps are for. A driven wheel takes
-                        // the whole step: the driver library's wheel-acceleration limiter
-                        // switches the torque of a wheel spinning past its grip on and off
-                        // every step, and a sub-stepped wheel rings under that switching.
+                        // the whole step: without its engine's inertia the driver library's
+                        // wheel-acceleration limiter switched the torque of a wheel spinning
+                        // past its grip on and off every step, and a sub-stepped wheel rang
+                        // under that switching. With it, sub-stepping driven wheels too was
+                        // measured (issue #35, ARCHITECTURE.md "Launch chatter"): it took out
+                        // sub-rpm wiggles of the engine speed but added early slip flips.
                         let braked = *brake_impulse > 0.0;
                         // The rolling resistance and the road-load set's constant drag resist
                         // the spin as the brake does, after the choice above: they do not
@@ -73,7 +76,7 @@ impl Vehicle {
                         let spin = self.state.wheel_speeds[w];
                         let v = contact_velocity(&contact, body, spin as f32);
                         let wheel = FreeSpin {
-                            inertia: self.spec.wheels[w].spin_inertia(),
+                            inertia: self.spin_inertia(w),
                             radius: f64::from(contact.radius),
                             spin,
                             drive: f64::from(row.omega) - spin,
@@ -226,9 +229,11 @@ impl Vehicle {
     /// tyre force at the contact point, which carries the reaction of the torque that the tyre
     /// balances; this adds the part that spun the wheel up or down (I·Δω), so a motor, brake
     /// or damper turning a wheel in the air, or a speed ramp, also turns the chassis the other
-    /// way. Returns that change of the wheel's angular momentum about `axis` (N·m·s).
+    /// way. A torque-driven wheel's `I` includes its share of the engine's momentum
+    /// ([`spin_momentum_inertia`](Self::spin_momentum_inertia)). Returns that change of angular
+    /// momentum about `axis` (N·m·s).
     fn react_to_spin(&self, body: &mut Body, w: Wheel, axis: Vector, omega: f64) -> f64 {
-        let spin_change = self.spec.wheels[w].spin_inertia() * (omega - self.state.wheel_speeds[w]);
+        let spin_change = self.spin_momentum_inertia(w) * (omega - self.state.wheel_speeds[w]);
         body.angvel -= body.inv_inertia * (axis * spin_change as f32);
         spin_change
     }

@@ -11,6 +11,7 @@ use ackermann::{DifferentialRatios, DriveType, Geometry, PerWheel, Real, Wheel, 
 use powertrain::{AutoShift, Brake, Engine, Gear, Gearbox, LimitedSlip, Powertrain};
 
 use crate::brake_balance::{BrakeBalance, axle_brake_factor};
+use crate::driveline::Driveline;
 use crate::io::{Cockpit, Commands, WheelDrive};
 use crate::lights::{DEFAULT_INDICATOR_PERIOD, Lights};
 use crate::mode::{ControlMode, IndicatorState};
@@ -38,6 +39,8 @@ struct Car<T: Real> {
     motors: PerWheel<WheelMotor<T>>,
     engine_sound: bool,
     sound_rpm_reference: T,
+    /// The engine's rotating inertia (kg·m², ≥ 0; [`CarParams::engine_inertia`]).
+    engine_inertia: T,
 }
 
 impl<T: Real> Car<T> {
@@ -56,6 +59,7 @@ impl<T: Real> Car<T> {
             motors: PerWheel::from_fn(|w| p.wheel_motor(w)),
             engine_sound: !p.engine_sound.is_none(),
             sound_rpm_reference: p.engine_sound_rpm_reference,
+            engine_inertia: p.engine_inertia(),
         }
     }
 }
@@ -171,6 +175,7 @@ impl<T: Real> Driver<T> {
                 steering: WheelAngles::STRAIGHT,
                 drive: PerWheel::splat(WheelDrive::Free),
                 brake_torque: PerWheel::splat(T::ZERO),
+                driveline: Driveline::DISENGAGED,
                 lights: Lights::OFF,
                 cockpit: Cockpit {
                     steering_wheel: T::ZERO,
@@ -268,6 +273,7 @@ impl<T: Real> Driver<T> {
             steering: self.wheel_angles,
             drive: self.drive_commands(torques),
             brake_torque,
+            driveline: self.driveline(),
             lights: self.lights,
             cockpit: Cockpit {
                 steering_wheel: saturate(T::from_f64(STEERING_WHEEL_RATIO) * self.steering_angle),
@@ -280,6 +286,18 @@ impl<T: Real> Driver<T> {
                 engine: self.engine_sound,
                 blinker: self.blinker_playing(),
             },
+        }
+    }
+
+    /// The engine engaged through the current gear in torque mode; disengaged in neutral and
+    /// in speed mode, whose wheel motors follow a speed with no engine behind them.
+    fn driveline(&self) -> Driveline<T> {
+        if self.mode != ControlMode::Torque || self.gear.is_neutral() {
+            return Driveline::DISENGAGED;
+        }
+        Driveline {
+            engine_inertia: self.car.engine_inertia,
+            ratio: self.car.powertrain.gearbox().ratio(self.gear),
         }
     }
 

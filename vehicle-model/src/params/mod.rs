@@ -13,6 +13,7 @@ use ackermann::{DriveType, Geometry, GeometryError, PerWheel, Real, Wheel};
 use powertrain::{Brake, Engine, EngineParams, Gearbox, MAX_GEAR_RATIOS, PowertrainError};
 use proto_geom::{SensorSlots, WheelParams};
 
+use crate::brake_balance::wheel_mass;
 use crate::wipers::WiperRange;
 
 pub use body::{
@@ -232,6 +233,33 @@ impl<T: Real> CarParams<T> {
     /// The motor limits of the driven wheels (`None` for a wheel without motor).
     pub fn wheel_motors(&self) -> PerWheel<Option<WheelMotor<T>>> {
         PerWheel::from_fn(|w| self.drive_type.drives(w).then(|| self.wheel_motor(w)))
+    }
+
+    /// The car's mass (kg): the body's plus the four wheels' as their `physics` gives them (a
+    /// density over the tyre's cylinder; none for `physics NULL`).
+    pub fn vehicle_mass(&self) -> T {
+        Wheel::ALL
+            .into_iter()
+            .fold(self.body.mass, |m, w| m + wheel_mass(&self.wheels[w]))
+    }
+
+    /// The tyre radius (m) of the driven wheels: the front's (traction), the rear's
+    /// (propulsion), or their mean (4x4, whose overall ratio turns both axles).
+    pub fn driven_radius(&self) -> T {
+        match self.drive_type {
+            DriveType::Traction => self.radius_front(),
+            DriveType::Propulsion => self.radius_rear(),
+            DriveType::FourByFour => T::HALF * (self.radius_front() + self.radius_rear()),
+        }
+    }
+
+    /// The engine's rotating inertia (kg·m², ≥ 0) by Wong's passenger-car correlation,
+    /// `0.0025·m·r²` of [`vehicle_mass`](Self::vehicle_mass) and
+    /// [`driven_radius`](Self::driven_radius) ([`Driveline`](crate::Driveline), whose docs give
+    /// the source and say where it is an assumption). The [`Driver`](crate::Driver) engages it
+    /// through the gear each step ([`Commands::driveline`](crate::Commands::driveline)).
+    pub fn engine_inertia(&self) -> T {
+        crate::Driveline::engine_inertia_of(self.vehicle_mass(), self.driven_radius())
     }
 
     /// The body inertia a simulator should use (kg·m², `[Ixx, Iyy, Izz, Ixy, Ixz, Iyz]` about
