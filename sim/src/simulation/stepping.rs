@@ -46,7 +46,8 @@ impl Simulation {
     }
 
     /// Runs the drivers of the cars `which` selects with the current sensor readings and
-    /// applies their commands.
+    /// puts their commands in force (the energy meter's limits on them are
+    /// [`Simulation::step_physics`]'s).
     fn run_drivers(&mut self, which: impl Fn(VehicleId) -> bool) -> Result<(), SimError> {
         let t = self.world.time();
         for car in self.cars.iter_mut().filter(|c| which(c.id)) {
@@ -65,10 +66,9 @@ impl Simulation {
                 let state = self.world.vehicle(car.id)?.state();
                 follower.drive(&self.world.config().roads, state, t, &mut car.driver);
             }
-            let mut commands = *car.driver.step(&sensors);
-            if let Some(meter) = &car.energy {
-                meter.limit(&mut commands);
-            }
+            // The energy meter's limits are put on in `step_physics`, which follows every
+            // driver step and applies them to the driver's commands each physics step.
+            let commands = *car.driver.step(&sensors);
             self.world.vehicle_mut(car.id)?.set_commands(&commands);
         }
         Ok(())
@@ -86,9 +86,11 @@ impl Simulation {
         // angles are those its commands already hold. A car without commands yet (no driver
         // step, no car library) has its motors untouched, as in Webots.
         //
-        // An electric car's drive torque is capped to what its battery can feed at the
-        // wheels' spin now (`EnergyMeter::cap_drive`), from the driver's own commands every
-        // step, so that a cap of one step does not stay once the spin allows more.
+        // A car with an energy meter gets the driver's own drive commands each step with the
+        // meter's limits on them: none from a drained battery or a stopped controller
+        // (`EnergyMeter::limit`), and an electric car's capped to what its battery can feed
+        // at the wheels' spin now (`EnergyMeter::cap_drive`), so that a cap of one step does
+        // not stay once the spin allows more.
         for car in &self.cars {
             let vehicle = self.world.vehicle_mut(car.id)?;
             let Some(&in_force) = vehicle.commands() else {
