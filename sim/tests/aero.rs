@@ -4,12 +4,6 @@
 //! lift changes the axle loads by the lift forces.
 #![allow(clippy::unwrap_used)]
 
-// Only its effective mass is used here.
-#[allow(dead_code)]
-#[path = "support/coast_down.rs"]
-mod coast_down;
-
-use coast_down::effective_mass;
 use sim::{CarBuilder, Mounting, Simulation, VehicleId, VehiclePlacement, World, WorldConfig};
 use vehicle_model::{Aero, Model, Wheel};
 
@@ -86,7 +80,7 @@ fn the_extra_speed_lost_with_air_is_the_drag_over_the_effective_mass() {
             let blown = coast(&mut windy, a, seconds);
             let dt = windy.world().dt();
             let spec = windy.world().vehicle(a).unwrap().spec();
-            let expected = drag_loss(&aero, &blown, wind_x, effective_mass(spec), dt);
+            let expected = drag_loss(&aero, &blown, wind_x, spec.effective_mass(), dt);
             let lost_plain = still[0] - still[still.len() - 1];
             let lost_air = blown[0] - blown[blown.len() - 1];
             let measured = lost_air - lost_plain;

@@ -10,12 +10,6 @@
 
 #[path = "support/resisting_force.rs"]
 mod support;
-// Only its effective mass is used here.
-#[allow(dead_code)]
-#[path = "support/coast_down.rs"]
-mod coast_down;
-
-use coast_down::effective_mass;
 use sim::scenario::{self, Cycle, RunReport, Scenario, Value};
 use sim::world_file::parse_str;
 use sim::{CarBuilder, Simulation, World, WorldConfig};
@@ -106,7 +100,7 @@ fn an_electric_car_follows_the_wltc_and_its_wheels_do_the_epa_road_load_s_work()
         engine_inertia: p.engine_inertia(),
         ratio: p.gear_ratios[1],
     };
-    let mass = effective_mass(sim.world().vehicle(id).unwrap().spec())
+    let mass = sim.world().vehicle(id).unwrap().spec().effective_mass()
         + machine.reflected_inertia() / (p.driven_radius() * p.driven_radius());
     let v = Cycle::Wltc.trace().speeds().to_vec();
     let work: f64 = v

@@ -20,7 +20,7 @@
 #[path = "support/coast_down.rs"]
 mod coast_down;
 
-use coast_down::{coast, deceleration_at, effective_mass};
+use coast_down::{coast, deceleration_at};
 use sim::{CarBuilder, Simulation, World, WorldConfig};
 use vehicle_model::Model;
 
@@ -123,7 +123,7 @@ fn every_tested_car_coasts_within_15_percent_of_its_epa_road_load_curve() {
         let (id, _) = sim.add_car(builder).unwrap();
         let speeds = coast(&mut sim, id, 120.0, CHECK_KMH[2] - 5.0);
         let dt = sim.world().dt();
-        let mass = effective_mass(sim.world().vehicle(id).unwrap().spec());
+        let mass = sim.world().vehicle(id).unwrap().spec().effective_mass();
         for kmh in CHECK_KMH {
             let v = kmh / 3.6;
             let force = mass * deceleration_at(&speeds, dt, v, HALF_WINDOW);

@@ -9,7 +9,7 @@ mod coast_down;
 #[path = "support/resisting_force.rs"]
 mod support;
 
-use coast_down::{coast, deceleration_at, effective_mass};
+use coast_down::{coast, deceleration_at};
 use sim::{CarBuilder, Mounting, Simulation, VehicleId, World, WorldConfig};
 use support::resisting_force;
 use vehicle_model::{Model, RoadLoad};
@@ -42,7 +42,7 @@ fn a_coast_down_slows_by_drag_rolling_resistance_and_driveline_losses_over_the_m
         let speeds = coast(&mut sim, id, START_KMH, CHECK_KMH[2] - 5.0);
         let dt = sim.world().dt();
         let spec = *sim.world().vehicle(id).unwrap().spec();
-        let mass = effective_mass(&spec);
+        let mass = spec.effective_mass();
         for kmh in CHECK_KMH {
             let v = kmh / 3.6;
             let measured = deceleration_at(&speeds, dt, v, HALF_WINDOW);

@@ -148,12 +148,7 @@ impl CycleFollower {
             full_brake: brake_deceleration(&spec, driver, ground),
         };
         let cycle_driver = CycleDriver::new(trace, authority)?;
-        let rolling_mass = spec.chassis.mass
-            + spec
-                .wheels
-                .iter()
-                .map(|w| w.mass + w.spin_inertia() / (w.radius * w.radius))
-                .sum::<f64>();
+        let rolling_mass = spec.effective_mass();
         let driven_radius = driver.params().driven_radius();
         let gears = GearChoice::of(driver);
         let auto = AutoShiftParams::for_engine(driver.powertrain().engine());

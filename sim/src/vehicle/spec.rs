@@ -223,6 +223,18 @@ fn fit_tyre(choice: &TyreChoice, radius: f64, load: f64) -> Result<TyreModel<f64
 }
 
 impl VehicleSpec {
+    /// The car's mass as the road sees it when it speeds up or slows down (kg): the chassis
+    /// and the wheels, plus each wheel's spin inertia over its radius squared (its own only:
+    /// the engine's, engaged through a gear, is `Commands::driveline`'s).
+    pub fn effective_mass(&self) -> f64 {
+        self.chassis.mass
+            + self
+                .wheels
+                .iter()
+                .map(|w| w.mass + w.spin_inertia() / (w.radius * w.radius))
+                .sum::<f64>()
+    }
+
     /// The load on each wheel of the car at rest on level ground (N): the body's weight shared
     /// between the axles by its centre of mass, plus the wheel's own weight.
     pub fn static_wheel_loads(&self) -> PerWheel<f64> {

@@ -2,25 +2,11 @@
 //! `tests/epa_road_load.rs`): the car cruises at a speed, then rolls free, and its effective
 //! mass turns the measured deceleration into the resisting force.
 
-use sim::{Simulation, VehicleId, VehicleSpec};
-use vehicle_model::Wheel;
+use sim::{Simulation, VehicleId};
 
 /// How long the car cruises before it coasts (s): the slowest car checked (the Range Rover's
 /// 50 kW) reaches 120 km/h in about 15 s and its cruise settles well within this.
 const CRUISE_SECONDS: f64 = 25.0;
-
-/// The car's mass as the road sees it when it slows down (kg): the chassis and wheels plus
-/// each wheel's spin inertia over its radius squared.
-pub fn effective_mass(spec: &VehicleSpec) -> f64 {
-    spec.chassis.mass
-        + Wheel::ALL
-            .into_iter()
-            .map(|w| {
-                let s = &spec.wheels[w];
-                s.mass + s.spin_inertia() / (s.radius * s.radius)
-            })
-            .sum::<f64>()
-}
 
 /// Cruises at `start_kmh` (km/h), then rolls free in torque mode (throttle 0, no brake) until
 /// it is below `end_kmh` (km/h); returns the speeds (m/s), one per step from the release.
