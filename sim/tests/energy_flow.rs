@@ -140,11 +140,11 @@ fn a_combustion_car_burns_fuel_and_keeps_no_battery() {
 fn a_world_file_turns_the_accounting_on_with_the_engine_s_defaults() {
     let text = "[vehicle]\nmodel = \"ToyotaPrius\"\nenergy = true\n";
     let w = sim::world_file::parse_str("w.toml", text).unwrap();
+    // The engine's defaults, its fuel model's friction sized from the real Prius' 1.798 l.
     let engine = Model::ToyotaPrius.params::<f64>().engine;
-    assert_eq!(
-        w.car().unwrap().energy,
-        Some(EnergyParams::of_engine(&engine))
-    );
+    let expected = EnergyParams::of_engine_displacing(&engine, Some(1.798e-3));
+    assert_eq!(w.car().unwrap().energy, Some(expected));
+    assert_eq!(expected, Model::ToyotaPrius.energy_params());
     let (mut sim, _) = Simulation::from_description(&w).unwrap();
     let id = sim.car_ids().next().unwrap();
     sim.step().unwrap();

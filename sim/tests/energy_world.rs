@@ -17,9 +17,10 @@ fn err(text: &str) -> WorldFileError {
     parse_str("w.toml", text).expect_err("the world should be rejected")
 }
 
-/// The defaults of `model`'s engine type.
+/// The defaults of `model`: its engine type's, a combustion engine's friction sized from the
+/// real car's displacement (`Model::energy_params`).
 fn defaults(model: Model) -> EnergyParams<f64> {
-    EnergyParams::of_engine(&model.params::<f64>().engine)
+    model.energy_params()
 }
 
 #[test]

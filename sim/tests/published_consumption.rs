@@ -28,53 +28,51 @@
 //! drive, before the 5-cycle adjustment of the window label. The rows were read in
 //! `22-testcar-2023-06-13.xlsx` and `19tstcar-2020-10-02.xlsx` as kept in the repository
 //! ydpravinkumar/epa-vehicle-emissions-regression-part2 (`data/`, commit 5f6331d), the copy
-//! the road-load rows were checked against; each constant below names its test number.
+//! the road-load rows were checked against; each constant below names its test number. The
+//! X5's other tests on the same vehicle gave 25.0 and 25.4 mpg (FTP) and 34.8 and 35.5 mpg
+//! (HWFET): repeat tests of one car spread by 3–5 %; the comparison takes the first.
 //!
-//! Measured (release build, 20 ms, 2026-11-29, with the engine's inertia on the driven
-//! wheels, `vehicle_model::Driveline`), l/100 km against the published, first on
-//! the models' Webots `gearRatio`s, then on the EPA test vehicle's transmission:
+//! The cars run on the transmission of the car the EPA tested (`transmission = "epa"`,
+//! `vehicle_model::Model::epa_transmission`: the gearbox's ratios times the row's "Axle
+//! Ratio"), with everything else the shipped model's. Webots' LincolnMKZ and
+//! RangeRoverSportSVR have their gearboxes' ratios without the final drive (first gears
+//! of 4.58 and 4.696 overall), on which their engines turn about three times too slowly to
+//! follow either cycle within the EPA's band; Webots' BmwX5 has five overall ratios of its
+//! own down to 4.0 (the test vehicle's eight-speed reaches 2.25). The fuel model's friction
+//! is sized from the test vehicle's displacement ("Test Veh Displacement (L)": 3.0, 3.0 and
+//! 5.0 l; `vehicle_model::Model::energy_params`), since Webots' MKZ and Range Rover keep
+//! the Car PROTO's default curve `150 + 0.1·rpm` N·m, which at their 5500 rpm top speed
+//! implies a 7 l engine (`vehicle_model::energy::FuelModel::petrol`).
 //!
-//! | car | FTP-75 | HWFET |
-//! |---|---|---|
-//! | BmwX5 | 10.79 vs 8.91 (+21 %) | 8.50 vs 6.55 (+30 %) |
-//! | BmwX5, EPA transmission | 10.56 vs 8.91 (+19 %) | 7.69 vs 6.55 (+17 %) |
-//! | LincolnMKZ | 12.64 vs 10.69 (+18 %; 69 s outside the band) | 9.28 vs 6.11 (+52 %; 4.4 s outside) |
-//! | LincolnMKZ, EPA transmission | 14.44 vs 10.69 (+35 %) | 9.51 vs 6.11 (+56 %) |
-//! | RangeRoverSportSVR | 15.29 vs 13.14 (+16 %; 240 s outside the band) | 12.03 vs 8.68 (+39 %; 16 s outside) |
-//! | RangeRoverSportSVR, EPA transmission | 17.19 vs 13.14 (+31 %; 7.3 s outside) | 11.67 vs 8.68 (+34 %; 15.5 s outside) |
+//! Measured (release build, 20 ms, 2026-11-29), l/100 km against the published; the time
+//! outside the EPA's band, where there is any, in brackets:
+//!
+//! | car | transmission | FTP-75 | HWFET |
+//! |---|---|---|---|
+//! | BmwX5 | EPA (ZF 8HP, axle 3.38) | 9.76 vs 8.91 (+9.5 %) | 7.29 vs 6.55 (+11.3 %) |
+//! | LincolnMKZ | EPA (Ford 6F55, axle 2.77) | 9.24 vs 10.69 (−13.5 %) | 6.53 vs 6.11 (+6.9 %) |
+//! | RangeRoverSportSVR | EPA (ZF 8HP, axle 3.31) | 14.13 vs 13.14 (+7.5 %) | 10.22 vs 8.68 (+17.7 %) |
+//! | BmwX5 | Webots | 9.93 vs 8.91 (+11.4 %) | 7.96 vs 6.55 (+21.6 %) |
+//! | LincolnMKZ | Webots | 8.35 (4.1 s outside) | 6.42 |
+//! | RangeRoverSportSVR | Webots | 12.84 (109 s outside) | 10.46 (7.8 s outside) |
 //!
 //! (MKZ: HR600087, FTP HFMX91003143 22.0 mpg, HWFE HFMX91003142 38.5 mpg, 19tstcar-2020-10-02;
 //! Range Rover: JA164790, FTP JJLX10051722 17.9 mpg, HWFE JJLX10051723 27.1 mpg,
-//! 22-testcar-2023-06-13.)
+//! 22-testcar-2023-06-13.) The MKZ test vehicle drove its front wheels ("2-Wheel Drive,
+//! Front"); the shipped model is four-wheel driven.
 //!
-//! **The transmission.** Webots' BmwX5 has five overall ratios down to 4.0; the EPA's test
-//! vehicle (same rows: 8 gears, "Axle Ratio" 3.38) has ZF's eight-speed 8HP, whose top gear
-//! 0.6667 gives 2.25 overall. On HWFET the Webots car runs in its top gear at about 2200 rpm;
-//! on the 8HP the gear rule (whose `n_min_drive` is 1666 rpm for this curve) keeps it in
-//! sixth or seventh at 1700–1900 rpm, and the Willans line's friction
-//! (`vehicle_model::energy::FuelModel::petrol`, 10 % of the curve's peak torque, growing
-//! with the speed) costs less. [`EPA_BMW_X5_GEARS`] is that transmission: the 8HP's ratios times the row's axle
-//! ratio; given as the world's `gearRatio`, everything else the shipped model's. On it the
-//! BmwX5 is within the issue's 20 % on both cycles, and those two comparisons are the tests
-//! of the fuel model. On its Webots ratios it burns +21 % on FTP-75 and +30 % on HWFET: the
-//! ratios are Webots' PROTO fields, kept for parity. (Before the engine's inertia reached the
-//! wheels it was +15 % on FTP-75: on the Webots ratios' first gear of 12.5 the engine adds
-//! 39 % to the mass the car accelerates, Wong's `0.0025·ξ²`, and the fuel cut on overrun and
-//! the friction brakes do not give all of its energy back.)
+//! Before the friction came from the displacement (10 % of the curve's peak: 35 N·m for the
+//! BmwX5, 70 N·m for the other two, against 29.8, 29.8 and 49.7 N·m now) and before the
+//! cycle driver pushed the throttle by what the engaged gear gives (below), the same runs
+//! gave the BmwX5 +19 %/+17 % on its EPA transmission and +21 %/+30 % on Webots', the MKZ
+//! +35 %/+56 % and the Range Rover +31 %/+34 % with 7.3 s and 15.5 s outside the band on
+//! theirs. The Range Rover left the band because its driver pushed the throttle by the mean
+//! acceleration to 100 km/h (5.9 m/s²), where its seventh gear at 1650 rpm gives 0.7 m/s² at
+//! full throttle on Webots' curve, and lagged up to 5.7 km/h behind the trace's
+//! accelerations; the driver now takes the engine's torque at its speed through the engaged
+//! gear (`sim::scenario` cycle follower).
 //!
-//! **The other combustion cars are not compared,** because their Webots engines are not
-//! the test vehicles': the LincolnMKZ and the RangeRoverSportSVR both keep the Car PROTO's
-//! default curve `150 + 0.1·rpm` N·m (Webots caps a combustion engine's torque by neither
-//! `engineMaxTorque` nor `engineMaxPower`), a torque rising linearly to 700 N·m at their
-//! 5500 rpm top speed, which no engine has, and the fuel model sizes an engine's friction
-//! from its curve's peak (70 N·m for both). On the test vehicles' transmissions (the MKZ's
-//! GM–Ford 6F six-speed, 4.484 … 0.742, Wikipedia "GM–Ford 6-speed automatic transmission",
-//! with the row's axle 2.77; the Range Rover's ZF 8HP with its 3.31) the MKZ burns +35 % and
-//! +56 %, its engine held at 1600–2100 rpm on HWFET by the gear rule, and the Range Rover
-//! still leaves the EPA's band (7.3 s and 15.5 s outside). Matching them would mean
-//! replacing Webots' engine data, which Webots users' controllers were tuned on; the BmwX5,
-//! whose curve is a plausible small petrol engine's, is the check of the fuel
-//! model. The hybrid ToyotaPrius is not compared: Webots' power split holds the engine at
+//! The hybrid ToyotaPrius is not compared: Webots' power split holds the engine at
 //! `hybridPowerSplitRPM` whatever the load and has no charge-sustaining strategy (its
 //! battery gives 67 Wh/km over FTP-75), where the EPA's figure is a charge-balanced one.
 //!
@@ -116,33 +114,33 @@ const BMW_X5_HWFET: Published = Published {
     mpg: 35.9,
 };
 
-/// ZF's 8HP eight-speed automatic, first generation (8HP 70), gear ratios reverse then
-/// first to eighth: Wikipedia, "ZF 8HP transmission", gear-ratio table (R −3.2968, 4.6957,
-/// 3.1304, 2.1039, 1.6667, 1.2845, 1.0000, 0.8392, 0.6667).
-const ZF_8HP: [f64; 9] = [
-    -3.2968, 4.6957, 3.1304, 2.1039, 1.6667, 1.2845, 1.0, 0.8392, 0.6667,
-];
-/// The BMW X5 xDrive40i test vehicle's "Axle Ratio" (LL66867, the rows of [`BMW_X5_FTP`]).
-const BMW_X5_AXLE: f64 = 3.38;
-/// The X5 test vehicle's overall ratios (engine speed over wheel spin): [`ZF_8HP`] times
-/// [`BMW_X5_AXLE`], as a world's `gearRatio`.
-const EPA_BMW_X5_GEARS: [f64; 9] = {
-    let mut g = ZF_8HP;
-    let mut i = 0;
-    while i < g.len() {
-        g[i] *= BMW_X5_AXLE;
-        i += 1;
-    }
-    g
+/// The Lincoln MKZ 3.0 V6's FTP-75 ("Federal fuel 2-day exhaust (w/can load)").
+const LINCOLN_MKZ_FTP: Published = Published {
+    source: "MY2019 MKZ, HR600087, HFMX91003143, 19tstcar-2020-10-02.xlsx",
+    mpg: 22.0,
+};
+/// The Lincoln MKZ 3.0 V6's HWFET ("HWFE").
+const LINCOLN_MKZ_HWFET: Published = Published {
+    source: "MY2019 MKZ, HR600087, HFMX91003142, 19tstcar-2020-10-02.xlsx",
+    mpg: 38.5,
+};
+/// The Range Rover Sport SVR's FTP-75 ("Federal fuel 2-day exhaust (w/can load)").
+const RANGE_ROVER_FTP: Published = Published {
+    source: "MY2022 Range Rover Sport SVR, JA164790, JJLX10051722, 22-testcar-2023-06-13.xlsx",
+    mpg: 17.9,
+};
+/// The Range Rover Sport SVR's HWFET ("HWFE").
+const RANGE_ROVER_HWFET: Published = Published {
+    source: "MY2022 Range Rover Sport SVR, JA164790, JJLX10051723, 22-testcar-2023-06-13.xlsx",
+    mpg: 27.1,
 };
 
-/// `model` on `scenario` with its air, its road-load set and energy accounting, at 20 ms,
-/// on the overall `gears` if given (a world's `gearRatio`), else the model's own.
-fn drive(model: &str, scenario: Scenario, gears: Option<&[f64]>) -> RunReport {
-    let gears = gears.map_or(String::new(), |g| format!("gearRatio = {g:?}\n"));
+/// `model` on `scenario` with its air, its road-load set, energy accounting and its EPA
+/// test vehicle's transmission, at 20 ms.
+fn drive(model: &str, scenario: Scenario) -> RunReport {
     let text = format!(
         "basicTimeStep = 20\n[vehicle]\nmodel = \"{model}\"\naero = true\n\
-         losses = \"road-load\"\nenergy = true\n{gears}"
+         losses = \"road-load\"\nenergy = true\ntransmission = \"epa\"\n"
     );
     let w = parse_str("w.toml", &text).unwrap_or_else(|e| panic!("{e}"));
     scenario::run(&w, scenario, &mut |_| {}).unwrap()
@@ -156,10 +154,10 @@ fn number(r: &RunReport, key: &str) -> f64 {
 }
 
 /// Each run's fuel against its published figure, within the issue's 20 %; the misses.
-fn misses(runs: &[(&str, Scenario, Option<&[f64]>, Published)]) -> Vec<String> {
+fn misses(runs: &[(&str, Scenario, Published)]) -> Vec<String> {
     let mut misses = Vec::new();
-    for (model, scenario, gears, published) in runs {
-        let r = drive(model, *scenario, *gears);
+    for (model, scenario, published) in runs {
+        let r = drive(model, *scenario);
         // The run must be one the EPA accepts: no excursion outside its band of 2 s or more
         // (40 CFR 86.115-78(c)).
         assert!(
@@ -183,11 +181,14 @@ fn misses(runs: &[(&str, Scenario, Option<&[f64]>, Published)]) -> Vec<String> {
 
 #[test]
 #[ignore = "a minute in a debug build each: cargo test --release -p sim --test published_consumption -- --include-ignored (CI does)"]
-fn the_bmw_x5_on_its_epa_transmission_burns_within_20_percent_on_both_cycles() {
-    let gears = Some(&EPA_BMW_X5_GEARS[..]);
+fn the_combustion_cars_on_their_epa_transmissions_burn_within_20_percent_on_both_cycles() {
     let misses = misses(&[
-        ("BmwX5", Scenario::Ftp75, gears, BMW_X5_FTP),
-        ("BmwX5", Scenario::Hwfet, gears, BMW_X5_HWFET),
+        ("BmwX5", Scenario::Ftp75, BMW_X5_FTP),
+        ("BmwX5", Scenario::Hwfet, BMW_X5_HWFET),
+        ("LincolnMKZ", Scenario::Ftp75, LINCOLN_MKZ_FTP),
+        ("LincolnMKZ", Scenario::Hwfet, LINCOLN_MKZ_HWFET),
+        ("RangeRoverSportSVR", Scenario::Ftp75, RANGE_ROVER_FTP),
+        ("RangeRoverSportSVR", Scenario::Hwfet, RANGE_ROVER_HWFET),
     ]);
     assert!(misses.is_empty(), "{misses:#?}");
 }

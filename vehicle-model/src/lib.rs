@@ -174,7 +174,7 @@ pub use driver::{
 pub use io::{Cockpit, Commands, Sensors, WheelDrive};
 pub use lights::{DEFAULT_INDICATOR_PERIOD, Lights, blink_on};
 pub use mode::{ControlMode, IndicatorState, WiperMode};
-pub use model::{EpaTestCar, Model};
+pub use model::{EpaTestCar, EpaTransmission, Model};
 pub use params::{
     BODY_HEIGHT_PER_TRACK, BODY_LENGTH_PER_WHEELBASE, BodyPhysics, CarField, CarParams,
     DEFAULT_BODY_MASS, DEFAULT_GEAR_RATIOS, EngineSound, FieldError, FieldKind, FieldPath,

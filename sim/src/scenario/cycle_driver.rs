@@ -91,8 +91,18 @@ impl CycleDriver {
     /// [`PedalAuthority`] is for: the engine's inertia through the gear makes every pedal
     /// move the car that much less (Wong's rotating-mass factor; `vehicle_model::Driveline`),
     /// so the pedals are pushed that much more. A factor that is not finite and ≥ 1 counts
-    /// as 1.
-    pub fn pedals(&mut self, t: f64, speed: f64, dt: f64, mass_factor: f64) -> Pedals {
+    /// as 1. `full_throttle` (m/s², of the same mass as the authority) replaces the
+    /// [`PedalAuthority::full_throttle`] for this step where the caller knows what full
+    /// throttle gives now (a combustion car: its engine's torque at its speed through the
+    /// engaged gear); `None`, or a value that is not finite and > 0, keeps the authority's.
+    pub fn pedals(
+        &mut self,
+        t: f64,
+        speed: f64,
+        dt: f64,
+        mass_factor: f64,
+        full_throttle: Option<f64>,
+    ) -> Pedals {
         let next = t + dt;
         let target = self.trace.speed(next);
         if target < AT_REST && self.trace.acceleration(next) <= 0.0 && speed < HOLD_BELOW {
@@ -107,10 +117,10 @@ impl CycleDriver {
         } else {
             1.0
         };
-        let (full_throttle, full_brake) = (
-            self.authority.full_throttle / k,
-            self.authority.full_brake / k,
-        );
+        let throttle_authority = full_throttle
+            .filter(|a| a.is_finite() && *a > 0.0)
+            .unwrap_or(self.authority.full_throttle);
+        let (full_throttle, full_brake) = (throttle_authority / k, self.authority.full_brake / k);
         let error = target - speed;
         let feedforward = self.trace.acceleration(next);
         let unbounded = feedforward + KP * error + self.integral;
@@ -185,6 +195,36 @@ mod tests {
         full_brake: 8.0,
     };
 
+    /// The throttle is the acceleration asked for over what full throttle gives: the
+    /// authority's, or the one the caller knows for this step.
+    #[test]
+    fn a_known_full_throttle_acceleration_replaces_the_authority_s() {
+        let trace = Trace::new((0..=20).map(f64::from).collect()).unwrap();
+        let mut d = CycleDriver::new(trace.clone(), AUTHORITY).unwrap();
+        // At t = 5 s on a trace accelerating at 1 m/s², 0.5 m/s behind: 1 + 1.5·0.5 = 1.75
+        // m/s² asked, before the integral moves.
+        let asked = 1.0 + KP * 0.5;
+        let p = d.pedals(4.99, 4.5, 0.01, 1.0, None);
+        assert!(
+            (p.throttle - asked / AUTHORITY.full_throttle).abs() < 1e-9,
+            "{p:?}"
+        );
+        let mut d = CycleDriver::new(trace.clone(), AUTHORITY).unwrap();
+        let p = d.pedals(4.99, 4.5, 0.01, 1.0, Some(2.0));
+        assert!((p.throttle - asked / 2.0).abs() < 1e-9, "{p:?}");
+        // A top gear's 0.7 m/s² saturates the pedal; a bad value keeps the authority.
+        let mut d = CycleDriver::new(trace.clone(), AUTHORITY).unwrap();
+        assert_eq!(d.pedals(4.99, 4.5, 0.01, 1.0, Some(0.7)).throttle, 1.0);
+        for bad in [f64::NAN, 0.0, -1.0, f64::INFINITY] {
+            let mut d = CycleDriver::new(trace.clone(), AUTHORITY).unwrap();
+            let p = d.pedals(4.99, 4.5, 0.01, 1.0, Some(bad));
+            assert!(
+                (p.throttle - asked / AUTHORITY.full_throttle).abs() < 1e-9,
+                "{bad}"
+            );
+        }
+    }
+
     /// A point mass with a road load of 0.2 m/s² follows a ramp to 20 m/s and back within a
     /// few cm/s: the integral learns the road load the feedforward does not know.
     #[test]
@@ -203,7 +243,7 @@ mod tests {
         let (dt, mut v) = (0.01, 0.0_f64);
         for i in 0..6000 {
             let t = f64::from(i) * dt;
-            let p = d.pedals(t, v, dt, 1.0);
+            let p = d.pedals(t, v, dt, 1.0, None);
             let drag = if v > 0.0 { 0.2 } else { 0.0 };
             let a = p.throttle * AUTHORITY.full_throttle - p.brake * AUTHORITY.full_brake - drag;
             v = (v + a * dt).max(0.0);

@@ -85,6 +85,7 @@ pub(super) fn account_energy(cars: &mut [CarDescription], car: &str) -> Vec<Stri
     };
     if c.energy.is_none() {
         c.energy = Some(default_energy_params(
+            c.model,
             &c.params.engine,
             c.road_load.is_some(),
         ));
@@ -220,7 +221,18 @@ impl CycleFollower {
             .map_or(0.0, |c| c.driveline.reflected_inertia())
             / (self.driven_radius * self.driven_radius);
         let mass_factor = 1.0 + engine / self.rolling_mass;
-        let pedals = self.driver.pedals(t, speed, sim.world().dt(), mass_factor);
+        // A combustion car's throttle gives its engine's torque at the engine's speed through
+        // the engaged gear: the mean acceleration to 100 km/h overstates it tenfold in a top
+        // gear at 1500 rpm, and a driver pushing by that mean lags a trace's acceleration.
+        let full_throttle = self.gears.as_ref().and_then(|_| {
+            let d = sim.driver(id).ok()?;
+            let (gear, rpm) = (d.gear().ok()?, d.rpm().ok()?);
+            let wheel_torque = d.powertrain().output_torque(rpm, 1.0, gear, 0.0);
+            Some(wheel_torque / (self.driven_radius * self.rolling_mass))
+        });
+        let pedals = self
+            .driver
+            .pedals(t, speed, sim.world().dt(), mass_factor, full_throttle);
         let d = sim.driver_mut(id)?;
         if let Some(gears) = &mut self.gears
             && let (Ok(gear), Ok(rpm)) = (d.gear(), d.rpm())

@@ -12,8 +12,8 @@
 
 use proto_geom::plausible::Compact;
 use toml::de::DeValue;
-use vehicle_model::EngineParams;
 use vehicle_model::energy::{Battery, EnergyParams, MotorLosses, OCV_POINTS, RegenBlend};
+use vehicle_model::{EngineParams, Model};
 
 use super::error::{WorldFileError, WorldFileErrorKind};
 use super::read::{Section, describe};
@@ -72,11 +72,16 @@ pub(crate) struct EnergySetting {
     pub(crate) webots: Option<WebotsBattery>,
 }
 
-/// The energy accounting's defaults for a car of `engine` ([`EnergyParams::of_engine`]),
-/// without the machine's spin losses on a road-load set (`road_load`), whose drag holds them
-/// ([`EnergyParams::with_spin_losses_in_road_load`]).
-pub(crate) fn default_params(engine: &EngineParams<f64>, road_load: bool) -> EnergyParams<f64> {
-    let params = EnergyParams::of_engine(engine);
+/// The energy accounting's defaults for a car of `model` with `engine`
+/// ([`EnergyParams::of_engine_displacing`] with the model's real engine displacement,
+/// [`Model::engine_displacement`]), without the machine's spin losses on a road-load set
+/// (`road_load`), whose drag holds them ([`EnergyParams::with_spin_losses_in_road_load`]).
+pub(crate) fn default_params(
+    model: Model,
+    engine: &EngineParams<f64>,
+    road_load: bool,
+) -> EnergyParams<f64> {
+    let params = EnergyParams::of_engine_displacing(engine, model.engine_displacement());
     if road_load {
         params.with_spin_losses_in_road_load()
     } else {
@@ -90,6 +95,7 @@ pub(crate) fn default_params(engine: &EngineParams<f64>, road_load: bool) -> Ene
 /// table's `iron` and `windage` are taken as given.
 pub(crate) fn read_energy(
     s: &Section<'_, '_>,
+    model: Model,
     engine: &EngineParams<f64>,
     road_load: bool,
 ) -> Result<Option<EnergySetting>, WorldFileError> {
@@ -119,7 +125,7 @@ pub(crate) fn read_energy(
     } else if switch != Some(true) {
         return Ok(None);
     }
-    let mut params = default_params(engine, road_load);
+    let mut params = default_params(model, engine, road_load);
     let mut soc = 1.0;
     let mut webots = None;
     match s.value(BATTERY) {

@@ -128,6 +128,8 @@ pub enum NameSet {
     ContactPoint,
     /// `[vehicle] losses`: `webots`, `road-load`.
     Losses,
+    /// `[vehicle] transmission`: `webots`, `epa`.
+    Transmission,
     /// A programme's `cycle`: the shipped drive cycles.
     DriveCycle,
     /// A programme's `cycle_unit`: `km/h`, `mph`, `m/s`.
@@ -156,6 +158,7 @@ impl fmt::Display for NameSet {
             NameSet::LineType => "road line type",
             NameSet::ContactPoint => "contact point",
             NameSet::Losses => "wheel loss set",
+            NameSet::Transmission => "transmission",
             NameSet::DriveCycle => "drive cycle",
             NameSet::SpeedUnit => "speed unit",
         })

@@ -49,6 +49,7 @@ mod roads;
 mod robot;
 pub mod shipped;
 mod statics;
+mod transmission;
 mod tyre;
 mod tyre_file;
 mod vehicle;

@@ -21,7 +21,7 @@ use super::error::{
 use super::lane_programme::read_lane_programme;
 use super::programme::{PROGRAMME, read_car_keys, read_car_programme, step_keys};
 use super::read::{Section, as_f64, describe};
-use super::{aero, energy, losses, tyre};
+use super::{aero, energy, losses, transmission, tyre};
 use crate::devices::DeviceSpec;
 use crate::error::ParamError;
 use crate::keyboard::KeyPress;
@@ -46,10 +46,11 @@ const BRAKE_BALANCES: [(&str, BrakeBalance<f64>); 2] = [
 ];
 
 /// The keys of `[vehicle]` that are neither Webots fields nor wheel slots.
-const OWN_KEYS: [&str; 16] = [
+const OWN_KEYS: [&str; 17] = [
     "model",
     aero::KEY,
     losses::KEY,
+    transmission::KEY,
     energy::ENERGY,
     energy::BATTERY,
     energy::MOTOR,
@@ -221,6 +222,9 @@ pub(crate) fn read_vehicle(
             })?,
     };
     let mut params = model.params::<f64>();
+    if let Some(ratios) = transmission::read_transmission(s, model)? {
+        params.gear_ratios = ratios;
+    }
     let brake_balance = read_brake_balance(s)?;
     for (key, value, key_span, _) in s.entries() {
         if OWN_KEYS.contains(&key) {
@@ -323,7 +327,7 @@ pub(crate) fn read_vehicle(
     let keys = read_car_keys(s)?;
     let devices = read_devices(s, model)?;
     let seed = s.unsigned(SEED)?.unwrap_or(0);
-    let energy = energy::read_energy(s, &params.engine, road_load.is_some())?;
+    let energy = energy::read_energy(s, model, &params.engine, road_load.is_some())?;
     let radar_cross_section = s.number(RADAR_CROSS_SECTION)?.unwrap_or(0.0);
     ParamError::non_negative(RADAR_CROSS_SECTION, radar_cross_section).map_err(|e| {
         s.error(

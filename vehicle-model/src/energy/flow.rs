@@ -80,6 +80,15 @@ impl<T: Real> EnergyParams<T> {
     /// machine, the hybrid pack ([`Battery::hybrid`]) and a petrol engine of its curve's
     /// torque; a combustion car that engine alone.
     pub fn of_engine(engine: &EngineParams<T>) -> Self {
+        Self::of_engine_displacing(engine, None)
+    }
+
+    /// [`EnergyParams::of_engine`] with the combustion engine's `displacement` (m³) where it
+    /// is known: its friction is sized from it ([`FuelModel::petrol_of_displacement`]), not
+    /// from the torque curve's peak ([`FuelModel::petrol`]). `None`, or a displacement that
+    /// is not a finite positive number, falls back on the curve. The shipped models' is the
+    /// real car's ([`Model::energy_params`](crate::Model::energy_params)).
+    pub fn of_engine_displacing(engine: &EngineParams<T>, displacement: Option<T>) -> Self {
         let t = engine.engine_type;
         let machine = t.has_electric();
         let peak = peak_torque(engine);
@@ -92,9 +101,12 @@ impl<T: Real> EnergyParams<T> {
                 _ => Battery::hybrid(),
             }),
             regen: machine.then(|| RegenBlend::of_machine(engine.max_power)),
-            fuel: t
-                .has_combustion()
-                .then(|| FuelModel::petrol(peak, top_speed)),
+            fuel: t.has_combustion().then(|| {
+                match displacement.filter(|d| d.is_finite() && *d > T::ZERO) {
+                    Some(d) => FuelModel::petrol_of_displacement(d, top_speed),
+                    None => FuelModel::petrol(peak, top_speed),
+                }
+            }),
         }
     }
 

@@ -30,25 +30,55 @@ pub struct FuelModel<T> {
 /// An engine's indicated efficiency: 0.38 for a modern port- or direct-injected petrol
 /// engine (Heywood, ch. 5: gross indicated efficiencies of 0.35–0.42 at part load).
 const INDICATED_EFFICIENCY: f64 = 0.38;
-/// Friction mean effective pressure at low speed, as a share of the full-load torque: about
-/// 0.1 (Heywood, ch. 13: fmep of 100–150 kPa against a bmep of 1.0–1.3 MPa).
-const FRICTION_SHARE: f64 = 0.1;
+/// Friction mean effective pressure at low speed (Pa): 125 kPa, the middle of the 100–150 kPa
+/// Heywood gives (ch. 13) for car engines. Friction is a property of the engine's size: a
+/// mean effective pressure `p` over a four-stroke displacement `V_d` is the torque
+/// `p·V_d/(4π)`.
+const FRICTION_MEP: f64 = 125.0e3;
+/// Full-load brake mean effective pressure of a naturally aspirated petrol engine (Pa):
+/// 1.25 MPa (Heywood, ch. 13: 1.0–1.3 MPa). It gives the displacement a torque curve's peak
+/// implies when the engine's own is not known ([`FuelModel::petrol`]), so that engine's
+/// friction is a tenth of its peak torque.
+const FULL_LOAD_BMEP: f64 = 1.25e6;
 /// How much the friction grows up to the top speed (dimensionless): fmep roughly doubles
 /// from idle to the rated speed.
 const FRICTION_GROWTH: f64 = 1.0;
+/// Radians per four-stroke cycle (two turns): a mean effective pressure `p` over a
+/// displacement `V_d` does `p·V_d` of work per cycle, a torque of `p·V_d/(4π)`.
+const RAD_PER_CYCLE: f64 = 4.0 * core::f64::consts::PI;
 
 impl<T: Real> FuelModel<T> {
-    /// A petrol engine of `max_torque` (N·m) and top speed `max_speed` (rad/s) with the
-    /// constants' figures.
-    pub fn petrol(max_torque: T, max_speed: T) -> Self {
+    /// A four-stroke petrol engine of `displacement` (m³, > 0) and top speed `max_speed`
+    /// (rad/s): friction `FRICTION_MEP·V_d/(4π)` at low speed, doubling to the top speed, and
+    /// the constants' efficiency and fuel. A non-finite or negative displacement gives no
+    /// friction (a caller validates it first).
+    ///
+    /// ```
+    /// use vehicle_model::energy::FuelModel;
+    /// // 3.0 l: 125 kPa · 0.003 m³ / (4π) = 29.84 N·m.
+    /// let e = FuelModel::<f64>::petrol_of_displacement(0.003, 680.0);
+    /// assert!((e.friction_torque - 29.842).abs() < 1e-3);
+    /// ```
+    pub fn petrol_of_displacement(displacement: T, max_speed: T) -> Self {
         let f = T::from_f64;
-        let t0 = max_torque * f(FRICTION_SHARE);
+        let t0 = (displacement * f(FRICTION_MEP / RAD_PER_CYCLE))
+            .finite_or(T::ZERO)
+            .max(T::ZERO);
         FuelModel {
             indicated_efficiency: f(INDICATED_EFFICIENCY),
             friction_torque: t0,
-            friction_speed: t0 * f(FRICTION_GROWTH) / (max_speed * max_speed),
+            friction_speed: (t0 * f(FRICTION_GROWTH) / (max_speed * max_speed)).finite_or(T::ZERO),
             heating_value: f(PETROL_LHV),
         }
+    }
+
+    /// A petrol engine whose displacement is not known, of `max_torque` (N·m, its curve's
+    /// peak) and top speed `max_speed` (rad/s): the displacement that torque implies at a
+    /// naturally aspirated engine's full-load bmep, `4π·T_max/1.25 MPa`, so its friction is a
+    /// tenth of `max_torque` ([`FuelModel::petrol_of_displacement`]).
+    pub fn petrol(max_torque: T, max_speed: T) -> Self {
+        let displacement = max_torque * T::from_f64(RAD_PER_CYCLE / FULL_LOAD_BMEP);
+        Self::petrol_of_displacement(displacement, max_speed)
     }
 
     /// The fuel mass rate (kg/s, ≥ 0) of the engine giving `torque` (N·m) at `speed` (rad/s,
@@ -97,6 +127,32 @@ mod tests {
         // Fuel cut on overrun, nothing when stopped.
         assert_eq!(e.fuel_rate(-20.0, w), 0.0);
         assert_eq!(e.fuel_rate(100.0, 0.0), 0.0);
+    }
+
+    #[test]
+    fn friction_is_the_friction_mep_over_the_displacement_and_a_tenth_of_an_unknown_engine_s_peak()
+    {
+        let top = 6000.0 * crate::RAD_PER_S_PER_RPM;
+        // 5.0 l: 125 kPa · 0.005 m³ / (4π) = 49.736 N·m, doubling at the top speed.
+        let v8 = FuelModel::petrol_of_displacement(0.005, top);
+        let t0 = 125.0e3 * 0.005 / (4.0 * core::f64::consts::PI);
+        assert!((v8.friction_torque - t0).abs() < 1e-12);
+        assert!((v8.friction_speed * top * top - t0).abs() < 1e-9);
+        // A curve peaking at 700 N·m implies 4π·700/1.25 MPa = 7.04 l: 70 N·m.
+        let curve = FuelModel::petrol(700.0, top);
+        assert!((curve.friction_torque - 70.0).abs() < 1e-9);
+        // Bad displacements give no friction, never NaN; a zero top speed no growth.
+        for d in [f64::NAN, -0.003, f64::INFINITY] {
+            let e = FuelModel::petrol_of_displacement(d, top);
+            assert_eq!((e.friction_torque, e.friction_speed), (0.0, 0.0), "{d}");
+        }
+        assert_eq!(
+            FuelModel::petrol_of_displacement(0.003, 0.0).friction_speed,
+            0.0
+        );
+        // f32 gives the same within its precision.
+        let f = FuelModel::<f32>::petrol_of_displacement(0.005, top as f32);
+        assert!((f64::from(f.friction_torque) - t0).abs() < t0 * 1e-6);
     }
 
     #[test]

@@ -24,8 +24,12 @@
 
 use ackermann::Real;
 
+use powertrain::MAX_GEAR_RATIOS;
+
 use super::Model;
 use crate::RoadLoad;
+use crate::energy::EnergyParams;
+use crate::params::GearRatios;
 
 /// N per lbf (exact: 0.453 592 37 kg × 9.806 65 m/s²).
 const N_PER_LBF: f64 = 4.448_221_615_260_5;
@@ -33,6 +37,8 @@ const N_PER_LBF: f64 = 4.448_221_615_260_5;
 const MS_PER_MPH: f64 = 0.447_04;
 /// kg per lb (exact).
 const KG_PER_LB: f64 = 0.453_592_37;
+/// m³ per litre (exact).
+const M3_PER_LITRE: f64 = 1e-3;
 /// The gravity the rolling resistance is referred to (m/s²): the simulation's static loads'.
 const GRAVITY: f64 = 9.81;
 
@@ -56,6 +62,11 @@ pub struct EpaTestCar {
     pub c_lbf_per_mph2: f64,
     /// "Equivalent Test Weight (lbs.)".
     pub test_weight_lb: f64,
+    /// "Test Veh Displacement (L)" (litres): the combustion engine's swept volume, `None` for
+    /// an electric car. It sizes the fuel model's friction ([`Model::energy_params`]). Read
+    /// on the same test vehicle's rows of the fuel-economy results the consumption tests
+    /// cite (`22-testcar-2023-06-13.xlsx`, `19tstcar-2020-10-02.xlsx`).
+    pub displacement_l: Option<f64>,
 }
 
 impl EpaTestCar {
@@ -96,6 +107,7 @@ const TESLA_MODEL_3: EpaTestCar = EpaTestCar {
     b_lbf_per_mph: 0.047,
     c_lbf_per_mph2: 0.0144,
     test_weight_lb: 4250.0,
+    displacement_l: None,
 };
 
 /// MY2022 Toyota Prius (fourth generation, the shipped model's), configuration 2.
@@ -108,6 +120,7 @@ const TOYOTA_PRIUS: EpaTestCar = EpaTestCar {
     b_lbf_per_mph: 0.29545,
     c_lbf_per_mph2: 0.013793,
     test_weight_lb: 3375.0,
+    displacement_l: Some(1.798),
 };
 
 /// MY2022 BMW X5 xDrive40i (G05, the body of the shipped model's Cd), configuration 1.
@@ -120,6 +133,7 @@ const BMW_X5: EpaTestCar = EpaTestCar {
     b_lbf_per_mph: -0.383,
     c_lbf_per_mph2: 0.03345,
     test_weight_lb: 5250.0,
+    displacement_l: Some(3.0),
 };
 
 /// MY2019 Lincoln MKZ 3.0 V6 (393 hp, the shipped model's 298 kW), listed as "Ford MKZ";
@@ -134,6 +148,7 @@ const LINCOLN_MKZ: EpaTestCar = EpaTestCar {
     b_lbf_per_mph: 0.6011,
     c_lbf_per_mph2: 0.01427,
     test_weight_lb: 4500.0,
+    displacement_l: Some(3.0),
 };
 
 /// MY2022 Land Rover Range Rover Sport SVR (5.0 V8, 575 hp).
@@ -146,9 +161,105 @@ const RANGE_ROVER_SPORT_SVR: EpaTestCar = EpaTestCar {
     b_lbf_per_mph: 0.1154,
     c_lbf_per_mph2: 0.03412,
     test_weight_lb: 5500.0,
+    displacement_l: Some(5.0),
 };
 
+/// A test vehicle's stepped transmission: its gearbox's ratios and the EPA row's "Axle
+/// Ratio", whose products are the overall ratios a world's `gearRatio` holds
+/// (`transmission = "epa"`, [`Model::epa_transmission`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EpaTransmission {
+    /// The gearbox, as the ratios' source names it.
+    pub gearbox: &'static str,
+    /// Its ratios, reverse (negative) then first gear up (dimensionless, input over output
+    /// speed).
+    pub ratios: &'static [f64],
+    /// The test vehicle's "Axle Ratio" (dimensionless): the final drive after the gearbox.
+    pub axle_ratio: f64,
+}
+
+impl EpaTransmission {
+    /// The overall ratios (engine speed over wheel spin), reverse first: each gearbox ratio
+    /// times the axle ratio, in the form of Webots' `gearRatio`.
+    pub fn overall<T: Real>(&self) -> GearRatios<T> {
+        let mut table = GearRatios::new();
+        for &r in self.ratios.iter().take(MAX_GEAR_RATIOS) {
+            // Cannot fail: at most MAX_GEAR_RATIOS values are pushed.
+            let _ = table.push(T::from_f64(r * self.axle_ratio));
+        }
+        table
+    }
+}
+
+/// ZF's eight-speed 8HP as Wikipedia's "ZF 8HP transmission" lists its 2008 8HP 70
+/// (reverse −3.297, then 4.696 … 0.667): the ratios Webots' RangeRoverSportSVR has as its
+/// `gearRatio`, without the axle. The EPA does not say which generation the test vehicles
+/// carry; the table's 2010 and 2014 rows differ from this one by at most 0.4 % (first gear
+/// 4.714, second 3.143) and have the same top gear.
+const ZF_8HP: [f64; 9] = [
+    -3.297, 4.696, 3.130, 2.104, 1.667, 1.285, 1.000, 0.839, 0.667,
+];
+
+/// The Ford 6F55 six-speed of the MKZ 3.0 V6 as Wikipedia's "GM–Ford 6-speed automatic
+/// transmission" lists the family's ratios (4.484 … 0.742, reverse 2.88), close to Webots'
+/// LincolnMKZ's `gearRatio` (4.58 … 0.75, reverse 2.94), which has no axle either.
+const FORD_6F: [f64; 7] = [-2.88, 4.484, 2.872, 1.842, 1.414, 1.000, 0.742];
+
 impl Model {
+    /// The EPA test vehicle's transmission (gearbox ratios from the sources on
+    /// [`EpaTransmission`]'s constants, the axle ratio from the EPA row of
+    /// [`Model::epa_test_car`]'s test vehicle), for the combustion cars with a stepped
+    /// gearbox: BmwX5 (8 gears, axle 3.38), LincolnMKZ (6, 2.77) and RangeRoverSportSVR (8,
+    /// 3.31); `None` for the others. Webots' BmwX5 has five overall ratios of its own; the
+    /// MKZ's and the Range Rover's are their gearboxes' without the final drive, so their
+    /// engines turn 2.8–3.3 times slower than the real cars' and cannot follow a drive cycle.
+    ///
+    /// ```
+    /// use vehicle_model::Model;
+    /// let x5 = Model::BmwX5.epa_transmission().unwrap();
+    /// let overall = x5.overall::<f64>();
+    /// // Eighth gear 0.667 × axle 3.38.
+    /// assert!((overall[8] - 2.254_46).abs() < 1e-9);
+    /// ```
+    pub const fn epa_transmission(self) -> Option<EpaTransmission> {
+        match self {
+            Model::BmwX5 => Some(EpaTransmission {
+                gearbox: "ZF 8HP",
+                ratios: &ZF_8HP,
+                axle_ratio: 3.38,
+            }),
+            Model::LincolnMKZ => Some(EpaTransmission {
+                gearbox: "Ford 6F55",
+                ratios: &FORD_6F,
+                axle_ratio: 2.77,
+            }),
+            Model::RangeRoverSportSVR => Some(EpaTransmission {
+                gearbox: "ZF 8HP",
+                ratios: &ZF_8HP,
+                axle_ratio: 3.31,
+            }),
+            _ => None,
+        }
+    }
+
+    /// The model's energy accounting defaults ([`EnergyParams::of_engine_displacing`]): its
+    /// engine's, with a combustion engine's friction sized from the EPA test vehicle's
+    /// displacement ([`EpaTestCar::displacement_l`]) where there is one, else from the torque
+    /// curve. Webots' LincolnMKZ and RangeRoverSportSVR keep the Car PROTO's curve
+    /// `150 + 0.1·rpm` N·m, which at 5500 rpm implies a 7 l engine; their real engines are
+    /// 3.0 and 5.0 l.
+    pub fn energy_params<T: Real>(self) -> EnergyParams<T> {
+        EnergyParams::of_engine_displacing(&self.params::<T>().engine, self.engine_displacement())
+    }
+
+    /// The real car's engine displacement (m³): the EPA test vehicle's
+    /// ([`EpaTestCar::displacement_l`]), `None` without one or for an electric car.
+    pub fn engine_displacement<T: Real>(self) -> Option<T> {
+        self.epa_test_car()
+            .and_then(|car| car.displacement_l)
+            .map(|litres| T::from_f64(litres * M3_PER_LITRE))
+    }
+
     /// The EPA test car the model's road-load set is derived from, `None` for a model the EPA
     /// has not tested: the CitroenCZero (not sold in the US), the vans, buses, lorries and
     /// the tractor (not light-duty passenger cars) and the plain `Car` (no real car).
@@ -211,6 +322,59 @@ impl Model {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_epa_transmissions_are_the_gearboxes_times_the_axles() {
+        // First and top gears by hand: 4.696·3.38, 0.667·3.38; 4.484·2.77, 0.742·2.77;
+        // 4.696·3.31, 0.667·3.31; reverse negative.
+        let cases = [
+            (Model::BmwX5, 9, 15.872_48, 2.254_46),
+            (Model::LincolnMKZ, 7, 12.420_68, 2.055_34),
+            (Model::RangeRoverSportSVR, 9, 15.543_76, 2.207_77),
+        ];
+        for (model, len, first, top) in cases {
+            let overall = model.epa_transmission().unwrap().overall::<f64>();
+            assert_eq!(overall.len(), len, "{model}");
+            assert!((overall[1] - first).abs() < 1e-9, "{model}: {}", overall[1]);
+            assert!((overall[len - 1] - top).abs() < 1e-9, "{model}");
+            assert!(overall[0] < 0.0, "{model}");
+            // A world's gearRatio must take it as it is.
+            let mut p = model.params::<f64>();
+            p.gear_ratios = overall;
+            assert_eq!(p.validate().len(), 0, "{model}");
+        }
+        for model in Model::ALL {
+            let combustion =
+                model.params::<f64>().engine.engine_type == powertrain::EngineType::Combustion;
+            assert_eq!(
+                model.epa_transmission().is_some(),
+                combustion && model.epa_test_car().is_some(),
+                "{model}"
+            );
+        }
+    }
+
+    #[test]
+    fn the_real_displacement_sizes_the_friction_and_an_electric_car_burns_nothing() {
+        for (model, litres) in [
+            (Model::BmwX5, 3.0),
+            (Model::LincolnMKZ, 3.0),
+            (Model::RangeRoverSportSVR, 5.0),
+            (Model::ToyotaPrius, 1.798),
+        ] {
+            let fuel = model.energy_params::<f64>().fuel.unwrap();
+            let t0 = 125.0e3 * litres * 1e-3 / (4.0 * core::f64::consts::PI);
+            assert!((fuel.friction_torque - t0).abs() < 1e-9, "{model}");
+        }
+        assert_eq!(Model::TeslaModel3.engine_displacement::<f64>(), None);
+        assert_eq!(Model::TeslaModel3.energy_params::<f64>().fuel, None);
+        // Without a test car, the curve rule.
+        let bus = Model::Bus.params::<f64>().engine;
+        assert_eq!(
+            Model::Bus.energy_params::<f64>(),
+            EnergyParams::of_engine(&bus)
+        );
+    }
 
     #[test]
     fn the_units_convert_exactly() {

@@ -7,7 +7,7 @@
 mod epa;
 mod table;
 
-pub use epa::EpaTestCar;
+pub use epa::{EpaTestCar, EpaTransmission};
 
 use core::fmt;
 
