@@ -393,7 +393,9 @@ fn launch_matrix() {
     if only.is_empty() && !cast_only {
         for &(model, mu, dt) in KNOWN_MISSES {
             if dt == dt_ms && !still_missing.contains(&(model, mu)) {
-                failed.push(format!("{model} mu {mu} at {dt} ms: a known miss that passes"));
+                failed.push(format!(
+                    "{model} mu {mu} at {dt} ms: a known miss that passes"
+                ));
             }
         }
     }
