@@ -51,10 +51,10 @@
 //! |---|---|---|---|
 //! | BmwX5 | EPA (ZF 8HP, axle 3.38) | 9.76 vs 8.91 (+9.5 %) | 7.29 vs 6.55 (+11.3 %) |
 //! | LincolnMKZ | EPA (Ford 6F55, axle 2.77) | 9.24 vs 10.69 (−13.5 %) | 6.53 vs 6.11 (+6.9 %) |
-//! | RangeRoverSportSVR | EPA (ZF 8HP, axle 3.31) | 14.13 vs 13.14 (+7.5 %) | 10.22 vs 8.68 (+17.7 %) |
+//! | RangeRoverSportSVR | EPA (ZF 8HP, axle 3.31) | 14.12 vs 13.14 (+7.5 %) | 10.22 vs 8.68 (+17.7 %) |
 //! | BmwX5 | Webots | 9.93 vs 8.91 (+11.4 %) | 7.96 vs 6.55 (+21.6 %) |
 //! | LincolnMKZ | Webots | 8.35 (4.1 s outside) | 6.42 |
-//! | RangeRoverSportSVR | Webots | 12.84 (109 s outside) | 10.46 (7.8 s outside) |
+//! | RangeRoverSportSVR | Webots | 12.85 (109 s outside) | 10.46 (7.8 s outside) |
 //!
 //! (MKZ: HR600087, FTP HFMX91003143 22.0 mpg, HWFE HFMX91003142 38.5 mpg, 19tstcar-2020-10-02;
 //! Range Rover: JA164790, FTP JJLX10051722 17.9 mpg, HWFE JJLX10051723 27.1 mpg,

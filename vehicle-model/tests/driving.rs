@@ -466,6 +466,48 @@ fn repeated_and_direct_steering_keep_the_torque_split_current() {
     assert!(once.commanded_wheel_angles().right.is_sign_negative());
 }
 
+/// With the throttle released a combustion engine that the wheels would turn below
+/// `engineMinRPM` idles behind the clutch: the commands carry no engine. With the throttle
+/// open, or above idle, they carry it. The Car's first gear is 10 and its `engineMinRPM`
+/// 1000 rpm: idle is reached at 1000·2π/60/10 = 10.47 rad/s of the wheels.
+#[test]
+fn below_idle_with_the_throttle_released_the_engine_idles_behind_the_clutch() {
+    let p = Model::Car.params::<f64>();
+    assert_eq!(p.engine.min_rpm, 1000.0);
+    let idle = 1000.0 * 2.0 * std::f64::consts::PI / 60.0 / 10.0;
+    // Wheels turning at `spin` rad/s, steps of 10 ms.
+    let run = |throttle: f64, spin: f64| {
+        let (mut d, _) = Driver::new(p.clone(), 10);
+        d.set_throttle(throttle);
+        d.set_gear(1);
+        let mut c = *d.commands();
+        for k in 1..=5 {
+            let t = f64::from(k) * 0.01;
+            let mut s = sensors_at(t);
+            s.wheel_angles = PerWheel::splat(spin * t);
+            c = *d.step(&s);
+        }
+        c.driveline
+    };
+    assert_eq!(run(0.0, 0.0), Driveline::DISENGAGED);
+    assert_eq!(run(0.0, 0.9 * idle), Driveline::DISENGAGED);
+    assert!(close(
+        run(0.0, 1.1 * idle).reflected_inertia(),
+        100.0 * p.engine_inertia(),
+        1e-9
+    ));
+    assert!(close(
+        run(0.5, 0.0).reflected_inertia(),
+        100.0 * p.engine_inertia(),
+        1e-9
+    ));
+    assert!(close(
+        run(0.5, 0.9 * idle).reflected_inertia(),
+        100.0 * p.engine_inertia(),
+        1e-9
+    ));
+}
+
 /// The driver hands over the engine engaged through the current gear in torque mode, none in
 /// neutral or speed mode. Golden numbers by Wong's `J_e = 0.0025·m·r²` (`Driveline`): a
 /// 1500 kg body on four 25 kg wheels of 0.4 m radius is 1600 kg, `J_e = 0.0025·1600·0.16 =

@@ -8,7 +8,7 @@ mod step;
 use core::cell::Cell;
 
 use ackermann::{DifferentialRatios, DriveType, Geometry, PerWheel, Real, Wheel, WheelAngles};
-use powertrain::{AutoShift, Brake, Engine, Gear, Gearbox, LimitedSlip, Powertrain};
+use powertrain::{AutoShift, Brake, Engine, EngineType, Gear, Gearbox, LimitedSlip, Powertrain};
 
 use crate::brake_balance::{BrakeBalance, axle_brake_factor};
 use crate::driveline::Driveline;
@@ -289,10 +289,24 @@ impl<T: Real> Driver<T> {
         }
     }
 
-    /// The engine engaged through the current gear in torque mode; disengaged in neutral and
-    /// in speed mode, whose wheel motors follow a speed with no engine behind them.
+    /// The engine engaged through the current gear in torque mode; disengaged in neutral, in
+    /// speed mode, whose wheel motors follow a speed with no engine behind them, and while a
+    /// combustion engine with the throttle released would turn below `engineMinRPM`: it
+    /// idles there behind a slipping clutch or torque converter, so the wheels (a stop on
+    /// the brakes, a coast to rest) do not drag its inertia below idle. Webots' engine speed
+    /// never goes below `engineMinRPM` either. With the throttle open the engine stays on
+    /// the wheels below idle too: decoupled there, wheels spinning past their grip at a
+    /// launch set Webots' wheel-acceleration limiter chattering again (ARCHITECTURE.md,
+    /// "Launch chatter").
     fn driveline(&self) -> Driveline<T> {
         if self.mode != ControlMode::Torque || self.gear.is_neutral() {
+            return Driveline::DISENGAGED;
+        }
+        let engine = self.car.powertrain.engine();
+        if engine.engine_type() == EngineType::Combustion
+            && self.throttle <= T::ZERO
+            && self.rpm < engine.min_rpm()
+        {
             return Driveline::DISENGAGED;
         }
         Driveline {

@@ -179,7 +179,7 @@ impl Plant {
 
     /// How wheel `w` spins over a step of `dt` (s) before the tyre acts, and its spin rate
     /// (rad/s): imposed by its velocity motor, or free after its drive torque and damping.
-    fn spin(&mut self, w: Wheel, commands: &Commands<f32>, dt: f32) -> (Spin, f32) {
+    pub(super) fn spin(&mut self, w: Wheel, commands: &Commands<f32>, dt: f32) -> (Spin, f32) {
         let omega = self.wheel_speed[w];
         let brake = commands.brake_torque[w];
         let brake = if brake.is_finite() {
@@ -218,7 +218,22 @@ impl Plant {
             }
             t => t.unwrap_or(0.0),
         };
-        let wheel = self.corners[w].spin;
+        // Under a torque command the wheel carries its equal share of the engaged engine's
+        // inertia (`Commands::driveline`), as the sim crate's wheels do: without it a driven
+        // wheel beyond its grip spins up at thousands of rad/s² and the driver's
+        // wheel-acceleration limiter chatters (ARCHITECTURE.md, "Launch chatter").
+        let mut wheel = self.corners[w].spin;
+        if drive.torque().is_some() {
+            let driven = commands
+                .drive
+                .iter()
+                .filter(|d| d.torque().is_some())
+                .count();
+            let share = commands.driveline.reflected_inertia() / driven as f32;
+            if share.is_finite() {
+                wheel.inertia += share;
+            }
+        }
         let spin = Spin::Free {
             inertia: wheel.inertia,
             capacity: brake * dt,

@@ -9,6 +9,7 @@ use ackermann::Geometry;
 use ackermann::Wheel;
 use vehicle_model::{Driver, Model, WheelDrive};
 
+use super::solve::Spin;
 use super::*;
 
 /// The step sizes the plant must work at (ms).
@@ -260,4 +261,33 @@ fn non_finite_commands_are_counted_and_ignored() {
     assert!(plant.is_finite());
     assert_eq!(plant.pose(), Pose::ORIGIN);
     assert_eq!(plant.steering, WheelAngles::STRAIGHT);
+}
+
+/// In torque mode a driven wheel spins with its own inertia plus its equal share of the
+/// engine's, reflected through the engaged gear (`Commands::driveline`), as the sim crate's
+/// wheels do; an undriven wheel keeps its own.
+#[test]
+fn a_torque_driven_wheel_carries_its_share_of_the_engaged_engine() {
+    let (mut driver, mut plant) = bmw(10);
+    driver.set_gear(1);
+    driver.set_throttle(1.0);
+    let commands = *driver.step(&plant.sensors());
+    let reflected = commands.driveline.reflected_inertia();
+    // Wong's 0.0025·m·r² through the first gear's 12.5: hundreds of times a wheel's 2.1 kg·m².
+    assert!(reflected > 100.0, "{reflected}");
+    let is_driven = |w: Wheel| commands.drive[w].torque().is_some();
+    let driven = Wheel::ALL.into_iter().filter(|w| is_driven(*w)).count();
+    assert!(driven > 0);
+    for w in Wheel::ALL {
+        let own = plant.corners[w].spin.inertia;
+        let Spin::Free { inertia, .. } = plant.spin(w, &commands, 0.01).0 else {
+            panic!("{w:?} is not free");
+        };
+        let expected = if is_driven(w) {
+            own + reflected / driven as f32
+        } else {
+            own
+        };
+        assert_close(inertia, expected, expected * 1e-6);
+    }
 }
