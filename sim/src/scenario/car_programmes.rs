@@ -17,8 +17,8 @@ const V100: f64 = 100.0 / KMH;
 /// tyre that transmits a drive force creeps, so a car whose wheels turn at exactly 100 km/h
 /// settles a few tenths of a km/h below it and would never cross 100.
 const CRUISE_TOLERANCE_KMH: f64 = 1.0;
-/// The car counts as stopped below this speed (m/s).
-const STOPPED: f64 = 0.01;
+/// The car counts as stopped below this ground speed (m/s): the brake and split-μ scenarios'.
+pub(super) const STOPPED: f64 = 0.01;
 /// Largest drift (m) over the half second before the end of the brake scenario for the car
 /// to count as at rest: 2 cm/s on average.
 const REST_DRIFT: f64 = 0.01;

@@ -9,7 +9,7 @@ use crate::placement::heading_of_rotation;
 use crate::world_file::{CarDescription, WorldDescription};
 
 use super::car::{CarRig, KMH};
-use super::car_programmes::Progress;
+use super::car_programmes::{Progress, STOPPED};
 use super::{Metric, Scenario, ScenarioError, ScenarioResult, limit};
 
 /// Speed at which braking starts (km/h).
@@ -33,8 +33,6 @@ const RUN_UP_INTEGRAL_GAIN: f64 = 0.002;
 /// How close to 80 km/h the speed must stay for a second before braking (km/h): the tyres'
 /// slip keeps the car a few tenths below the cruise control's target.
 const STEADY_KMH: f64 = 1.0;
-/// The car counts as stopped below this ground speed (m/s).
-const STOPPED: f64 = 0.01;
 
 /// `world` with the low-friction strip under the right wheels of `car` from its start pose.
 fn split_world(world: &WorldDescription, car: &CarDescription) -> WorldDescription {
