@@ -18,6 +18,7 @@ mod large_steps;
 mod speed_mode;
 mod test_track;
 mod tyre_handling;
+mod tyre_stability;
 mod tyre_straight;
 mod wheel_contact;
 mod wheel_transient;
