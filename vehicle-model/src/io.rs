@@ -1,7 +1,7 @@
 //! What a host exchanges with the [`Driver`](crate::Driver) each step: sensor readings in,
 //! actuator commands out.
 
-use ackermann::{PerWheel, Real, WheelAngles};
+use ackermann::{PerWheel, Real, Wheel, WheelAngles};
 
 use crate::driveline::Driveline;
 use crate::lights::Lights;
@@ -140,6 +140,26 @@ pub struct Commands<T: Real> {
 }
 
 impl<T: Real> Commands<T> {
+    /// Wheel `w`'s equal share of the engaged engine, `(J_e·ξ², J_e·|ξ|)` over the number of
+    /// wheels under [`WheelDrive::Torque`] (kg·m² each): what a host adds to the wheel's spin
+    /// inertia ([`Driveline::reflected_inertia`]) and the engine's angular momentum per unit
+    /// of the wheel's speed its change of spin takes from the chassis
+    /// ([`Driveline::engine_momentum`]). `(0, 0)` for a wheel not under a torque command.
+    /// An equal share is the simple form of an open differential coupling the engine to the
+    /// mean of its wheels: exact while they turn alike.
+    pub fn driveline_share(&self, w: Wheel) -> (T, T) {
+        if self.drive[w].torque().is_none() {
+            return (T::ZERO, T::ZERO);
+        }
+        // At least 1: wheel `w` itself is one.
+        let driven = self.drive.iter().filter(|d| d.torque().is_some()).count();
+        let driven = T::from_f64(driven as f64);
+        (
+            self.driveline.reflected_inertia() / driven,
+            self.driveline.engine_momentum() / driven,
+        )
+    }
+
     /// True if every number is finite: steering targets, drive commands, brake torques,
     /// driveline, cockpit positions, wiper command and engine-sound volume and pitch. Always
     /// true for the commands of a [`Driver`](crate::Driver); a host or firmware can assert it

@@ -536,6 +536,22 @@ fn the_commands_carry_the_engaged_engine() {
     let c = step(&mut d);
     assert!(close(c.driveline.engine_inertia, 0.64, 1e-12));
     assert!(close(c.driveline.reflected_inertia(), 64.0, 1e-9));
+    // Each torque-driven wheel's equal share: 64/n kg·m² and the momentum 0.64·10/n; none for
+    // the others.
+    let driven = Wheel::ALL
+        .into_iter()
+        .filter(|w| c.drive[*w].torque().is_some())
+        .count();
+    assert!(driven > 0);
+    for w in Wheel::ALL {
+        let (inertia, momentum) = c.driveline_share(w);
+        if c.drive[w].torque().is_some() {
+            assert!(close(inertia, 64.0 / driven as f64, 1e-9), "{w:?}");
+            assert!(close(momentum, 6.4 / driven as f64, 1e-9), "{w:?}");
+        } else {
+            assert_eq!((inertia, momentum), (0.0, 0.0), "{w:?}");
+        }
+    }
     d.set_gear(-1);
     assert!(close(
         step(&mut d).driveline.reflected_inertia(),

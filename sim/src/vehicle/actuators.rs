@@ -133,29 +133,17 @@ impl Vehicle {
         self.spec.wheels[w].spin_inertia() + momentum
     }
 
-    /// Wheel `w`'s share of the engaged engine, `(J_e·ξ², J_e·|ξ|)` over the number of
-    /// torque-driven wheels (kg·m² each): an open differential couples the engine to the
-    /// mean of its wheels, which an equal share per wheel is the simple form of (exact while
-    /// they turn alike; it also resists their turning apart, which the differential does
-    /// not). A share in proportion to each wheel's torque was measured too and is worse: on
-    /// the 4x4 Truck it feeds the limited slip's torque shifts between the axles back into
-    /// their inertia, and the engine speed swung by up to 33 rpm (ARCHITECTURE.md, "Launch
-    /// chatter"). `(0, 0)` for a wheel not under a torque command, and before the first
-    /// command.
+    /// Wheel `w`'s share of the engaged engine, `(J_e·ξ², J_e·|ξ|)`
+    /// ([`Commands::driveline_share`](vehicle_model::Commands::driveline_share): equal among
+    /// the torque-driven wheels; it also resists their turning apart, which an open
+    /// differential does not). A share in proportion to each wheel's torque was measured too
+    /// and is worse: on the 4x4 Truck it feeds the limited slip's torque shifts between the
+    /// axles back into their inertia, and the engine speed swung by up to 33 rpm
+    /// (ARCHITECTURE.md, "Launch chatter"). `(0, 0)` before the first command.
     fn driveline_share(&self, w: Wheel) -> (f64, f64) {
-        let Some(c) = &self.commands else {
-            return (0.0, 0.0);
-        };
-        let torque = |d: &WheelDrive<f64>| matches!(d, WheelDrive::Torque(_));
-        if !torque(&c.drive[w]) {
-            return (0.0, 0.0);
-        }
-        // At least 1: wheel `w` itself is one.
-        let driven = c.drive.iter().filter(|d| torque(d)).count() as f64;
-        (
-            c.driveline.reflected_inertia() / driven,
-            c.driveline.engine_momentum() / driven,
-        )
+        self.commands
+            .as_ref()
+            .map_or((0.0, 0.0), |c| c.driveline_share(w))
     }
 
     /// Moves the kinematic wipers toward their command for a step of `dt` seconds.

@@ -223,17 +223,7 @@ impl Plant {
         // wheel beyond its grip spins up at thousands of rad/s² and the driver's
         // wheel-acceleration limiter chatters (ARCHITECTURE.md, "Launch chatter").
         let mut wheel = self.corners[w].spin;
-        if drive.torque().is_some() {
-            let driven = commands
-                .drive
-                .iter()
-                .filter(|d| d.torque().is_some())
-                .count();
-            let share = commands.driveline.reflected_inertia() / driven as f32;
-            if share.is_finite() {
-                wheel.inertia += share;
-            }
-        }
+        wheel.inertia += commands.driveline_share(w).0;
         let spin = Spin::Free {
             inertia: wheel.inertia,
             capacity: brake * dt,
