@@ -1,9 +1,10 @@
 //! A car's energy over a run ([`EnergyMeter`]): after every physics step, the driven wheels'
 //! power goes through `vehicle_model::energy` (machine losses, battery, regenerative braking,
 //! fuel) and the meter integrates what flowed, and keeps the battery's state of charge. An
-//! electric car whose battery is empty gets no more drive torque, and an electric car's drive
-//! torque is capped before each step to what its battery can feed
-//! ([`EnergyMeter::cap_drive`]).
+//! electric car whose battery is empty gets no more drive torque, and the drive torque of a
+//! car with a battery (electric or hybrid) is capped before each step to what its battery
+//! can feed ([`EnergyMeter::cap_drive`]): a hybrid's machine part first, so that its engine
+//! drives on when the pack is empty.
 //!
 //! The wheel power is the driven wheels' commanded torque times their spin, so the meter
 //! counts torque control (throttle and brake, Webots' `wbu_driver_set_throttle`); in speed
@@ -55,6 +56,9 @@ pub(crate) struct EnergyMeter {
     report: EnergyReport,
     /// True if the battery is Webots' Robot battery: empty, it powers the controller off.
     powers_controller: bool,
+    /// The part of the machine's share of the drive the last cap left
+    /// ([`EnergyMeter::cap_drive`]; 1 uncapped), for the step it capped.
+    electric_fraction: f64,
 }
 
 impl EnergyMeter {
@@ -80,6 +84,7 @@ impl EnergyMeter {
                 ..EnergyReport::default()
             },
             powers_controller,
+            electric_fraction: 1.0,
         }
     }
 
@@ -125,49 +130,62 @@ impl EnergyMeter {
         }
     }
 
-    /// Scales an electric car's forward drive torques in `commands` down to what its
-    /// battery can feed through its machine ([`EnergyParams::max_drive_torque`]) with the
-    /// driven wheels spinning at `spin` (rad/s, wheel order), the step's starting spin,
-    /// through a gear of `ratio` (`None` outside torque control: no cap). The meter counts
-    /// the step at its end spin ([`EnergyMeter::step`]), so a step whose driven wheels
-    /// speed up from `ω₀` to `ω₁` may ask the battery for up to `ω₁/ω₀` times its most: the
-    /// end spin is not known before the physics step, and the cap holds at the known one.
+    /// Scales the forward drive torques in `commands` of a car with a battery down to what
+    /// it can feed over the step of `dt` s ([`EnergyParams::drive_cap`]: a hybrid's machine
+    /// part first) with the driven wheels spinning at `spin` (rad/s, wheel order), the
+    /// step's starting spin,
+    /// through a gear of `ratio` (`None` outside torque control: no cap), and keeps the
+    /// machine's part it left for the step's accounting ([`EnergyMeter::step`]). The meter
+    /// counts the step at its end spin, so a step whose driven wheels speed up from `ω₀` to
+    /// `ω₁` may ask the battery for up to `ω₁/ω₀` times its most: the end spin is not known
+    /// before the physics step, and the cap holds at the known one.
     pub(crate) fn cap_drive(
-        &self,
+        &mut self,
         commands: &mut Commands<f64>,
         spin: &PerWheel<f64>,
         ratio: Option<f64>,
+        dt: f64,
     ) {
+        self.electric_fraction = 1.0;
         let Some(ratio) = ratio.filter(|r| r.is_finite() && *r != 0.0) else {
             return;
         };
-        let (mut asked, mut total_spin, mut driven) = (0.0, 0.0, 0.0);
+        let (mut asked, mut total_spin, mut driven, mut pushing) = (0.0, 0.0, 0.0, false);
         for w in Wheel::ALL {
             if let WheelDrive::Torque(t) = commands.drive[w] {
                 asked += t.max(0.0) * spin[w];
                 total_spin += spin[w].abs();
                 driven += 1.0;
+                pushing |= t > 0.0;
             }
         }
-        if driven == 0.0 || !(asked.is_finite() && asked > 0.0) {
+        // Standing, a drive asks no power yet: the cap still sees it, since an empty pack
+        // launches nothing.
+        if driven == 0.0 || !pushing || !asked.is_finite() {
             return;
         }
         let wheel_speed = total_spin / driven;
-        let Some(cap) =
-            self.params
-                .max_drive_torque(&self.engine, self.report.soc, wheel_speed, ratio)
-        else {
-            return;
-        };
-        // The battery's most, at the wheels: the capped torque sum times the mean spin.
-        let most = cap * wheel_speed;
-        if asked > most {
-            let scale = (most / asked).clamp(0.0, 1.0);
+        let cap = self.params.drive_cap(
+            &self.engine,
+            &DriveState {
+                rpm: wheel_speed * ratio.abs() / RAD_PER_S_PER_RPM,
+                wheel_power: asked,
+                brake_torque: 0.0,
+                wheel_speed,
+                rim_speed: 0.0,
+                ratio: ratio.abs(),
+                soc: self.report.soc,
+                electric_fraction: 1.0,
+            },
+            dt,
+        );
+        self.electric_fraction = cap.electric_fraction;
+        if cap.torque_scale < 1.0 {
             for w in Wheel::ALL {
                 if let WheelDrive::Torque(t) = commands.drive[w]
                     && t > 0.0
                 {
-                    commands.drive[w] = WheelDrive::Torque(t * scale);
+                    commands.drive[w] = WheelDrive::Torque(t * cap.torque_scale);
                 }
             }
         }
@@ -221,8 +239,10 @@ impl EnergyMeter {
                 rim_speed,
                 ratio,
                 soc: self.report.soc,
+                electric_fraction: self.electric_fraction,
             },
         );
+        self.electric_fraction = 1.0;
         let r = &mut self.report;
         if let Some(battery) = self.params.battery {
             let s = battery.step(r.soc, flow.battery, dt);

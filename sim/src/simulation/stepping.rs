@@ -88,21 +88,22 @@ impl Simulation {
         //
         // A car with an energy meter gets the driver's own drive commands each step with the
         // meter's limits on them: none from a drained battery or a stopped controller
-        // (`EnergyMeter::limit`), and an electric car's capped to what its battery can feed
-        // at the wheels' spin now (`EnergyMeter::cap_drive`), so that a cap of one step does
-        // not stay once the spin allows more.
-        for car in &self.cars {
+        // (`EnergyMeter::limit`), and capped to what the battery of an electric car or a
+        // hybrid can feed at the wheels' spin now (`EnergyMeter::cap_drive`), so that a cap
+        // of one step does not stay once the spin allows more.
+        let dt = self.world.dt();
+        for car in &mut self.cars {
             let vehicle = self.world.vehicle_mut(car.id)?;
             let Some(&in_force) = vehicle.commands() else {
                 continue;
             };
             let mut commands = in_force;
             commands.steering = car.driver.commanded_wheel_angles();
-            if let Some(meter) = &car.energy {
+            if let Some(meter) = &mut car.energy {
                 commands.drive = car.driver.commands().drive;
                 meter.limit(&mut commands);
                 let spin = vehicle.state().wheel_speeds;
-                meter.cap_drive(&mut commands, &spin, drive_ratio(&car.driver));
+                meter.cap_drive(&mut commands, &spin, drive_ratio(&car.driver), dt);
             }
             if commands != in_force {
                 vehicle.set_commands(&commands);

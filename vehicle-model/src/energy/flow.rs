@@ -71,6 +71,12 @@ pub struct DriveState<T> {
     /// power it can take bounds what regeneration returns ([`Battery::max_charge_power`]).
     /// Unused without a battery.
     pub soc: T,
+    /// The part of the electric machine's share of the drive that ran (dimensionless, in
+    /// [0, 1]; 1 as Webots drives): what the battery could feed, [`DriveCap`]'s. The
+    /// engine's part of a hybrid's drive is not scaled with it.
+    ///
+    /// [`DriveCap`]: super::DriveCap
+    pub electric_fraction: T,
 }
 
 impl<T: Real> EnergyParams<T> {
@@ -126,38 +132,6 @@ impl<T: Real> EnergyParams<T> {
         }
     }
 
-    /// The most drive torque (N·m, the driven wheels' sum) an electric car's battery can
-    /// feed at state of charge `soc` with its driven wheels spinning at `wheel_speed`
-    /// (rad/s) through a gear of `ratio`: the machine's torque at the battery's largest
-    /// discharge power ([`Battery::max_discharge_power`],
-    /// [`MotorLosses::torque_for_electrical`]) times the ratio. `None` (no cap) for a car
-    /// that is not purely electric (a hybrid's engine drives too), without a battery or a
-    /// machine, or standing (no power flows at zero speed; the engine's torque curve bounds
-    /// the launch).
-    pub fn max_drive_torque(
-        &self,
-        engine: &EngineParams<T>,
-        soc: T,
-        wheel_speed: T,
-        ratio: T,
-    ) -> Option<T> {
-        if engine.engine_type != EngineType::Electric {
-            return None;
-        }
-        let (battery, motor) = (self.battery?, self.motor?);
-        let ratio = ratio.finite_or(T::ZERO).abs();
-        let machine_speed = wheel_speed.finite_or(T::ZERO).abs() * ratio;
-        if machine_speed <= T::ZERO {
-            return None;
-        }
-        let most = battery.max_discharge_power(soc);
-        // Below the machine's standing losses it gives nothing.
-        let torque = motor
-            .torque_for_electrical(most, machine_speed)
-            .unwrap_or(T::ZERO);
-        Some(torque.max(T::ZERO) * ratio)
-    }
-
     /// The power flows of one step of a car with `engine` in `state`.
     pub fn flow(&self, engine: &EngineParams<T>, state: &DriveState<T>) -> PowerFlow<T> {
         let zero = PowerFlow {
@@ -168,6 +142,11 @@ impl<T: Real> EnergyParams<T> {
         let omega = rpm * T::from_f64(RAD_PER_S_PER_RPM);
         let wheel_power = state.wheel_power.finite_or(T::ZERO);
         let (combustion, electric) = parts(engine, rpm);
+        let electric = electric
+            * state
+                .electric_fraction
+                .finite_or(T::ONE)
+                .clamp(T::ZERO, T::ONE);
         let total = combustion + electric;
         let electric_share = if total > T::ZERO && electric > T::ZERO {
             (electric / total).clamp(T::ZERO, T::ONE)
@@ -266,7 +245,7 @@ impl<T: Real> EnergyParams<T> {
 
 /// The combustion and electric parts of `engine`'s torque at `rpm` (N·m, before the
 /// throttle), as `powertrain::Engine::torque` sums them.
-fn parts<T: Real>(engine: &EngineParams<T>, rpm: T) -> (T, T) {
+pub(super) fn parts<T: Real>(engine: &EngineParams<T>, rpm: T) -> (T, T) {
     if rpm >= engine.max_rpm {
         return (T::ZERO, T::ZERO);
     }
@@ -330,6 +309,7 @@ mod tests {
             rim_speed: wheel_speed * 0.35,
             ratio: 9.0,
             soc: 0.5,
+            electric_fraction: 1.0,
         }
     }
 
@@ -395,6 +375,7 @@ mod tests {
             rim_speed: 0.0,
             ratio: 9.0,
             soc: 0.5,
+            electric_fraction: 1.0,
         };
         let f = e.flow(&engine, &locked);
         assert_eq!((f.regenerated, f.battery, f.motor_loss), (0.0, 0.0, 0.0));
@@ -440,24 +421,6 @@ mod tests {
             + motor.electrical_power(-generator / split, split);
         assert!((f.battery - expected).abs() < 1e-9, "{f:?} vs {expected}");
         assert!(f.fuel_rate > 0.0);
-    }
-    #[test]
-    fn the_drive_torque_cap_draws_the_battery_s_largest_power() {
-        let engine = Model::TeslaModel3.params::<f64>().engine;
-        let e = EnergyParams::of_engine(&engine);
-        let (battery, motor) = (e.battery.unwrap(), e.motor.unwrap());
-        // Wheels at 60 rad/s in a gear of 9: the capped torque, back through the gear,
-        // draws the battery's most at that charge (to round-off).
-        let cap = e.max_drive_torque(&engine, 0.8, 60.0, 9.0).unwrap();
-        let drawn = motor.electrical_power(cap / 9.0, 540.0);
-        let most = battery.max_discharge_power(0.8);
-        assert!((drawn - most).abs() < 1e-6 * most, "{drawn} vs {most}");
-        // Standing or a combustion car: no cap; empty: nothing.
-        assert_eq!(e.max_drive_torque(&engine, 0.8, 0.0, 9.0), None);
-        let bmw = Model::BmwX5.params::<f64>().engine;
-        let c = EnergyParams::of_engine(&bmw);
-        assert_eq!(c.max_drive_torque(&bmw, 0.8, 60.0, 9.0), None);
-        assert_eq!(e.max_drive_torque(&engine, 0.0, 60.0, 9.0), Some(0.0));
     }
 
     #[test]

@@ -6,12 +6,14 @@
 //! motor's torque × `consumptionFactor`).
 
 mod battery;
+mod drive_cap;
 mod flow;
 mod fuel;
 mod motor;
 mod regen;
 
 pub use battery::{Battery, BatteryError, BatteryStep, OCV_POINTS};
+pub use drive_cap::DriveCap;
 pub use flow::{DriveState, EnergyParams, PowerFlow};
 pub use fuel::{FuelModel, PETROL_DENSITY, PETROL_LHV};
 pub use motor::{MotorError, MotorLosses};

@@ -1,0 +1,297 @@
+//! What a car's battery lets its drive give in one step ([`EnergyParams::drive_cap`]).
+//!
+//! Webots' torque law ignores the battery: an electric car or a hybrid gets its torque curve
+//! times the throttle whatever the pack holds. Left at that, a drained pack would still
+//! drive the wheels, energy from nowhere ([`Battery::step`](super::Battery::step) gives no
+//! more than the cells hold, the wheels would get it all the same). The cap takes the
+//! electric machine's part of the drive first: a hybrid's engine keeps driving on an empty
+//! pack, and a power-split hybrid's generator still feeds its machine (the series path).
+//! Only where the engine's own part needs the pack is that scaled too: Webots' power split
+//! holds the engine at `hybridPowerSplitRPM` and gives the wheels `1 − hybridPowerSplitRatio`
+//! of its torque at the wheels' engine speed, so above the split speed the wheels get more
+//! power than the engine makes, and the generator has to motor.
+
+use ackermann::Real;
+use powertrain::EngineParams;
+
+use super::flow::{DriveState, EnergyParams, parts};
+
+/// How much of its asked forward drive a car may give this step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DriveCap<T> {
+    /// The part of the electric machine's share of the drive the battery can feed
+    /// (dimensionless, in [0, 1]): what [`DriveState::electric_fraction`] is for the step.
+    pub electric_fraction: T,
+    /// What the forward drive torques are multiplied by (dimensionless, in [0, 1]):
+    /// `(c + k·e)/(c + e)`, with `c` and `e` the engine's combustion and electric torque at
+    /// the step's engine speed and `k` the electric fraction.
+    pub torque_scale: T,
+}
+
+impl<T: Real> DriveCap<T> {
+    /// No cap: the drive as asked.
+    pub const NONE: DriveCap<T> = DriveCap {
+        electric_fraction: T::ONE,
+        torque_scale: T::ONE,
+    };
+}
+
+/// Halvings of the drive's interval (of length 2): 2⁻⁴⁰ ≈ 10⁻¹² of it, below f64's
+/// round-off in the battery power and past f32's, so the bisection ends at the representable
+/// answer in both.
+const BISECTIONS: usize = 41;
+
+impl<T: Real> EnergyParams<T> {
+    /// The cap on a step of `dt` (s) of the forward drive of a car with `engine` in `state`, whose
+    /// `wheel_power` (W) is the drive asked at the driven wheels' spin `wheel_speed`, at the
+    /// engine speed `rpm` and the battery's `soc` (the state's `electric_fraction` is
+    /// ignored): the largest drive whose battery power ([`EnergyParams::flow`]) is within
+    /// the battery's largest discharge
+    /// ([`Battery::max_discharge_power`](super::Battery::max_discharge_power), or what
+    /// charge is left for the step, [`Battery::step`](super::Battery::step)), taking the
+    /// machine's part away first and then the engine's, found by bisection, since a
+    /// power-split hybrid's generator makes the battery power no simple function of it.
+    ///
+    /// [`DriveCap::NONE`] without a battery or machine, for an engine with no electric
+    /// part at that speed, and for a drive that asks no power (standing, or rolling back
+    /// against it: the torque curve bounds the launch) with charge in the pack. An
+    /// electric car on an empty pack gets a torque scale of 0, a parallel hybrid its
+    /// engine's share `c/(c + e)` (nothing below `engineMinRPM`, where Webots' hybrid is
+    /// electric alone), standing too.
+    pub fn drive_cap(&self, engine: &EngineParams<T>, state: &DriveState<T>, dt: T) -> DriveCap<T> {
+        let (Some(battery), Some(_)) = (self.battery, self.motor) else {
+            return DriveCap::NONE;
+        };
+        let asked = state.wheel_power.finite_or(T::ZERO);
+        let (combustion, electric) = parts(engine, state.rpm.finite_or(T::ZERO).abs());
+        let total = combustion + electric;
+        if electric <= T::ZERO || total <= T::ZERO {
+            return DriveCap::NONE;
+        }
+        // What the pack can give over the step: its most power, or less where the charge
+        // left runs out within the step.
+        let most = battery
+            .step(state.soc, battery.max_discharge_power(state.soc), dt)
+            .power
+            .max(T::ZERO);
+        if asked <= T::ZERO {
+            // Standing (or rolling back against the drive) no power flows at the step's
+            // start, whatever the torque: the torque curve bounds the launch, but an empty
+            // pack gives the machine nothing to launch with.
+            return if most > T::ZERO {
+                DriveCap::NONE
+            } else {
+                DriveCap {
+                    electric_fraction: T::ZERO,
+                    torque_scale: combustion / total,
+                }
+            };
+        }
+        // The drive at `u` in [0, 2]: above 1 the engine's part whole and the fraction
+        // `u − 1` of the machine's; below it the machine's none and the fraction `u` of the
+        // engine's.
+        let at = |u: T| {
+            let k = (u - T::ONE).max(T::ZERO);
+            let scale = if u >= T::ONE {
+                (combustion + k * electric) / total
+            } else {
+                u * combustion / total
+            };
+            (k, scale)
+        };
+        let drawn = |u: T| {
+            let (k, scale) = at(u);
+            let step = DriveState {
+                wheel_power: asked * scale,
+                electric_fraction: k,
+                ..*state
+            };
+            self.flow(engine, &step).battery
+        };
+        if drawn(T::TWO) <= most {
+            return DriveCap::NONE;
+        }
+        // `lo` always within the battery's most (at 0 no power flows), `hi` beyond it.
+        let (mut lo, mut hi) = (T::ZERO, T::TWO);
+        for _ in 0..BISECTIONS {
+            let mid = (lo + hi) / T::TWO;
+            if drawn(mid) <= most {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        // Charge left that no drive fits in (less than the machine's standing loss over the
+        // step) goes in the least drive there is, which the battery clips to it: the pack
+        // ends empty, rather than keeping joules nothing can use.
+        let u = if at(lo).1 == T::ZERO && most > T::ZERO {
+            hi
+        } else {
+            lo
+        };
+        let (electric_fraction, torque_scale) = at(u);
+        DriveCap {
+            electric_fraction,
+            torque_scale,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Model, RAD_PER_S_PER_RPM};
+    use powertrain::EngineType;
+
+    /// The step (s).
+    const DT: f64 = 0.01;
+
+    /// A drive asking `wheel_power` (W) with the driven wheels at `spin` (rad/s) through a
+    /// gear of 9, the battery at `soc`.
+    fn asking(wheel_power: f64, spin: f64, soc: f64) -> DriveState<f64> {
+        DriveState {
+            rpm: spin * 9.0 / RAD_PER_S_PER_RPM,
+            wheel_power,
+            brake_torque: 0.0,
+            wheel_speed: spin,
+            rim_speed: spin * 0.35,
+            ratio: 9.0,
+            soc,
+            electric_fraction: 1.0,
+        }
+    }
+
+    /// The flow of the drive `asked` capped by `cap`.
+    fn capped(asked: &DriveState<f64>, cap: DriveCap<f64>) -> DriveState<f64> {
+        DriveState {
+            wheel_power: asked.wheel_power * cap.torque_scale,
+            electric_fraction: cap.electric_fraction,
+            ..*asked
+        }
+    }
+
+    #[test]
+    fn an_electric_car_s_capped_drive_draws_the_battery_s_largest_power() {
+        let engine = Model::TeslaModel3.params::<f64>().engine;
+        let e = EnergyParams::of_engine(&engine);
+        let (battery, motor) = (e.battery.unwrap(), e.motor.unwrap());
+        // 1 MW asked at the wheels: far beyond the pack. The scaled torque, back through
+        // the gear to the machine at 540 rad/s, draws the battery's most at that charge.
+        let cap = e.drive_cap(&engine, &asking(1e6, 60.0, 0.8), DT);
+        assert_eq!(cap.electric_fraction, cap.torque_scale);
+        let torque = 1e6 * cap.torque_scale / 540.0;
+        let drawn = motor.electrical_power(torque, 540.0);
+        let most = battery.max_discharge_power(0.8);
+        // 10⁻⁹: the bisection's 2⁻⁴⁰ of the fraction, times the machine's slope.
+        assert!((drawn - most).abs() < 1e-9 * most, "{drawn} vs {most}");
+        // Within the pack's power: as asked. Empty: nothing.
+        assert_eq!(
+            e.drive_cap(&engine, &asking(20_000.0, 60.0, 0.8), DT),
+            DriveCap::NONE
+        );
+        let empty = e.drive_cap(&engine, &asking(20_000.0, 60.0, 0.0), DT);
+        assert_eq!((empty.electric_fraction, empty.torque_scale), (0.0, 0.0));
+        // Charge left below the machine's standing loss over the step (1e-8 of the pack,
+        // 2.7 J): the least drive, which the battery clips to that charge, so the pack
+        // ends empty rather than keeping joules no drive can use.
+        let residue = e.drive_cap(&engine, &asking(20_000.0, 60.0, 1e-8), DT);
+        assert!(
+            residue.torque_scale > 0.0 && residue.torque_scale < 1e-9,
+            "{residue:?}"
+        );
+    }
+
+    #[test]
+    fn standing_on_a_charged_pack_a_combustion_car_or_asking_nothing_is_not_capped() {
+        let engine = Model::TeslaModel3.params::<f64>().engine;
+        let e = EnergyParams::of_engine(&engine);
+        // Standing the asked torque meets no spin: no power.
+        let mut standing = asking(0.0, 0.0, 0.3);
+        assert_eq!(e.drive_cap(&engine, &standing, DT), DriveCap::NONE);
+        // Standing on an empty pack: nothing to launch with.
+        standing.soc = 0.0;
+        let empty = e.drive_cap(&engine, &standing, DT);
+        assert_eq!((empty.electric_fraction, empty.torque_scale), (0.0, 0.0));
+        assert_eq!(
+            e.drive_cap(&engine, &asking(-5e4, 60.0, 0.3), DT),
+            DriveCap::NONE
+        );
+        let bmw = Model::BmwX5.params::<f64>().engine;
+        let c = EnergyParams::of_engine(&bmw);
+        assert_eq!(
+            c.drive_cap(&bmw, &asking(1e6, 60.0, 0.0), DT),
+            DriveCap::NONE
+        );
+    }
+
+    #[test]
+    fn a_parallel_hybrid_on_an_empty_pack_drives_on_its_engine_alone() {
+        // The TeslaModel3's machine behind a petrol curve: a parallel hybrid.
+        let mut engine = Model::TeslaModel3.params::<f64>().engine;
+        engine.engine_type = EngineType::ParallelHybrid;
+        engine.function_coefficients = [150.0, 0.1, 0.0];
+        let e = EnergyParams::of_engine(&engine);
+        let s = asking(60_000.0, 60.0, 0.0);
+        let (c, el) = parts(&engine, s.rpm);
+        assert!(c > 0.0 && el > 0.0);
+        let cap = e.drive_cap(&engine, &s, DT);
+        assert_eq!(cap.electric_fraction, 0.0);
+        assert!((cap.torque_scale - c / (c + el)).abs() < 1e-15, "{cap:?}");
+        // The capped step draws nothing from the pack and burns fuel for all of it.
+        let f = e.flow(&engine, &capped(&s, cap));
+        assert_eq!((f.battery, f.motor_loss), (0.0, 0.0));
+        assert!(f.fuel_rate > 0.0);
+    }
+
+    #[test]
+    fn a_power_split_hybrid_on_an_empty_pack_feeds_its_machine_from_its_generator() {
+        let engine = Model::ToyotaPrius.params::<f64>().engine;
+        let e = EnergyParams::of_engine(&engine);
+        // 40 kW asked at 25 rad/s: the engine speed estimate, 2 149 rpm, is below the
+        // split speed (3 000 rpm), so the generator charges, and it keeps part of the
+        // machine's share: between none and all.
+        let slow = asking(40_000.0, 25.0, 0.0);
+        let (c, el) = parts(&engine, slow.rpm);
+        let cap = e.drive_cap(&engine, &slow, DT);
+        assert!(
+            cap.electric_fraction > 0.0 && cap.electric_fraction < 1.0,
+            "{cap:?}"
+        );
+        assert!(cap.torque_scale > c / (c + el) && cap.torque_scale < 1.0);
+        // The machine draws what the generator gives: the pack's net power is zero, within
+        // the bisection's step (2⁻⁴⁰ of the drive times the battery power's slope, tens of
+        // kW per unit: well under a milliwatt).
+        let f = e.flow(&engine, &capped(&slow, cap));
+        assert!(f.battery <= 0.0 && f.battery > -1e-3, "{f:?}");
+        // With charge in the pack the same drive is not capped.
+        assert_eq!(
+            e.drive_cap(&engine, &asking(40_000.0, 25.0, 0.6), DT),
+            DriveCap::NONE
+        );
+        // At 60 rad/s (5 157 rpm) the wheels would get more than the engine at the split
+        // speed makes: the generator would motor, on the pack, and draw the machine's
+        // standing losses at any drive. On an empty pack nothing drives there; with 2 kW
+        // left the engine's part is scaled to what they give.
+        let fast = asking(40_000.0, 60.0, 0.0);
+        let none = e.drive_cap(&engine, &fast, DT);
+        assert_eq!((none.electric_fraction, none.torque_scale), (0.0, 0.0));
+        let mut low = e;
+        let mut battery = low.battery.unwrap();
+        battery.max_discharge_current = 2_000.0 / battery.open_circuit_voltage(0.3);
+        low.battery = Some(battery);
+        let fast = asking(40_000.0, 60.0, 0.3);
+        let (c, el) = parts(&engine, fast.rpm);
+        let cap = low.drive_cap(&engine, &fast, DT);
+        assert_eq!(cap.electric_fraction, 0.0);
+        assert!(
+            cap.torque_scale > 0.0 && cap.torque_scale < c / (c + el),
+            "{cap:?}"
+        );
+        let most = battery.max_discharge_power(0.3);
+        let f = low.flow(&engine, &capped(&fast, cap));
+        assert!(
+            f.battery <= most && f.battery > most - 1e-3,
+            "{f:?} vs {most}"
+        );
+    }
+}
