@@ -95,7 +95,7 @@ pub use row::{
 #[cfg(feature = "app")]
 pub(crate) use runner::thread_count;
 #[cfg(feature = "app")]
-pub use runner::{Ended, MAX_THREADS, RunError, RunFrom, run, run_from};
+pub use runner::{Ended, MAX_THREADS, RunError, RunFrom, WINDOW_PER_THREAD, run, run_from};
 pub use shard::{MAX_SHARDS, Shard, ShardError};
 pub use value::AxisValue;
 
