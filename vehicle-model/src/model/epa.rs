@@ -24,12 +24,10 @@
 
 use ackermann::Real;
 
-use powertrain::MAX_GEAR_RATIOS;
-
 use super::Model;
 use crate::RoadLoad;
 use crate::energy::EnergyParams;
-use crate::params::GearRatios;
+use crate::params::{GearRatios, gear_ratios_times};
 
 /// N per lbf (exact: 0.453 592 37 kg × 9.806 65 m/s²).
 const N_PER_LBF: f64 = 4.448_221_615_260_5;
@@ -182,12 +180,7 @@ impl EpaTransmission {
     /// The overall ratios (engine speed over wheel spin), reverse first: each gearbox ratio
     /// times the axle ratio, in the form of Webots' `gearRatio`.
     pub fn overall<T: Real>(&self) -> GearRatios<T> {
-        let mut table = GearRatios::new();
-        for &r in self.ratios.iter().take(MAX_GEAR_RATIOS) {
-            // Cannot fail: at most MAX_GEAR_RATIOS values are pushed.
-            let _ = table.push(T::from_f64(r * self.axle_ratio));
-        }
-        table
+        gear_ratios_times(self.ratios, self.axle_ratio)
     }
 }
 

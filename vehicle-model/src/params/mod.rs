@@ -142,10 +142,15 @@ impl<T: Real> Default for CarParams<T> {
 
 /// Converts a ratio table (at most [`MAX_GEAR_RATIOS`] entries are kept).
 pub(crate) fn gear_ratios<T: Real>(ratios: &[f64]) -> GearRatios<T> {
+    gear_ratios_times(ratios, 1.0)
+}
+
+/// [`gear_ratios`] with each ratio multiplied by `factor` (a final drive, dimensionless).
+pub(crate) fn gear_ratios_times<T: Real>(ratios: &[f64], factor: f64) -> GearRatios<T> {
     let mut table = GearRatios::new();
     for &r in ratios.iter().take(MAX_GEAR_RATIOS) {
         // Cannot fail: at most MAX_GEAR_RATIOS values are pushed.
-        let _ = table.push(T::from_f64(r));
+        let _ = table.push(T::from_f64(r * factor));
     }
     table
 }
