@@ -198,9 +198,20 @@ fn a_full_throttle_launch_asks_the_battery_for_its_most_at_the_step_s_starting_s
 /// The most power the ToyotaPrius's drive asked of its pack in a step that started with it
 /// empty, over the wheels' power then (dimensionless: the flow's battery power before the
 /// battery clips it), its report, and its speed (m/s) after a full-throttle launch of
-/// `seconds` from standing with its pack at `soc`.
-fn prius_launch(soc: f64, seconds: f64) -> (f64, EnergyReport, f64) {
-    let (mut sim, id) = car(Model::ToyotaPrius, soc);
+/// `seconds` from standing with its pack at `soc`, with a charge-sustaining engine below
+/// `sustain_below` (`None`: Webots' power split alone).
+fn prius_launch(soc: f64, seconds: f64, sustain_below: Option<f64>) -> (f64, EnergyReport, f64) {
+    let mut sim = Simulation::new(World::new(WorldConfig::default()).unwrap());
+    let model = Model::ToyotaPrius;
+    let params = EnergyParams {
+        sustain_below,
+        ..EnergyParams::of_engine(&model.params::<f64>().engine)
+    };
+    let builder = CarBuilder::of_model(model)
+        .aero(Some(model.aero()))
+        .road_load(Some(RoadLoad::default()))
+        .energy(Some(params), soc);
+    let (id, _) = sim.add_car(builder).unwrap();
     let d = sim.driver_mut(id).unwrap();
     d.set_gear(1);
     d.set_throttle(1.0);
@@ -227,25 +238,39 @@ fn prius_launch(soc: f64, seconds: f64) -> (f64, EnergyReport, f64) {
 const END_SPIN_SLACK: f64 = 0.005;
 
 #[test]
-fn an_empty_pack_launches_no_hybrid() {
+fn without_a_charge_sustaining_engine_an_empty_pack_launches_no_hybrid() {
     // Webots' ToyotaPrius is electric alone below `engineMinRPM`: on an empty pack nothing
     // launches it. Before the cap took the machine's part away, the empty pack "gave" its
     // launch about 10 kW.
-    let (_, r, _) = prius_launch(0.0, 3.0);
+    let (_, r, _) = prius_launch(0.0, 3.0, None);
     assert!(r.distance.abs() < 0.01, "{r:?}");
     assert_eq!((r.battery_energy, r.wheel_energy), (0.0, 0.0), "{r:?}");
 }
 
 #[test]
-fn a_hybrid_whose_pack_empties_drives_on_its_engine() {
+fn without_a_charge_sustaining_engine_a_hybrid_whose_pack_empties_drives_on_its_engine() {
     // 2 % of the pack launches the car past `engineMinRPM` in first gear (1 % leaves it at
     // 5 m/s, where Webots' hybrid is still electric alone); then the pack is empty, and
     // the engine drives on with what the generator feeds the machine.
-    let (asked, r, speed) = prius_launch(0.02, 10.0);
-    let (_, _, charged) = prius_launch(0.6, 10.0);
+    let (asked, r, speed) = prius_launch(0.02, 10.0, None);
+    let (_, _, charged) = prius_launch(0.6, 10.0, None);
     assert_eq!(r.soc, 0.0, "{r:?}");
     assert!(speed > 0.0 && speed < charged, "{speed} vs {charged} m/s");
     assert!(r.fuel > 0.0 && r.wheel_power > 0.0, "{r:?}");
+    assert!(
+        asked <= END_SPIN_SLACK,
+        "the empty pack was asked for {asked} W per W at the wheels"
+    );
+}
+
+#[test]
+fn a_charge_sustaining_hybrid_launches_from_an_empty_pack() {
+    // The default ToyotaPrius's engine charges its pack below half of it: from empty it
+    // charges in its first step, launches, and never asks the pack for what it has not.
+    let (asked, r, speed) = prius_launch(0.0, 10.0, Some(vehicle_model::energy::SUSTAIN_BELOW));
+    let (_, _, pure) = prius_launch(0.02, 10.0, None);
+    assert!(speed > pure, "{speed} vs {pure} m/s");
+    assert!(r.fuel > 0.0, "{r:?}");
     assert!(
         asked <= END_SPIN_SLACK,
         "the empty pack was asked for {asked} W per W at the wheels"

@@ -249,3 +249,25 @@ fn tables_on_a_combustion_car_or_with_energy_off_are_refused_not_ignored() {
     let (_, key, _) = refusal("[vehicle]\nmodel = \"BmwX5\"\n[vehicle.motor]\niron = 1\n");
     assert_eq!(key, "vehicle.motor");
 }
+
+#[test]
+fn the_charge_sustaining_threshold_is_a_power_split_hybrid_s_and_checked() {
+    let prius = "[vehicle]\nmodel = \"ToyotaPrius\"\n[vehicle.battery]\n";
+    // The default, then a value, then 0: never.
+    let e = car(&format!("{prius}capacity = 6.5\n")).energy.unwrap();
+    assert_eq!(e.sustain_below, Some(vehicle_model::energy::SUSTAIN_BELOW));
+    for (v, expected) in [(0.35, 0.35), (0.0, 0.0)] {
+        let e = car(&format!("{prius}sustain_below = {v}\n"))
+            .energy
+            .unwrap();
+        assert_eq!(e.sustain_below, Some(expected));
+    }
+    let (line, key, message) = refusal(&format!("{prius}sustain_below = 1.5\n"));
+    assert_eq!((line, key.as_str()), (4, "vehicle.battery.sustain_below"));
+    assert!(message.contains("within [0, 1]"), "{message}");
+    // An electric car has no engine to charge with.
+    let (line, key, message) =
+        refusal("[vehicle]\nmodel = \"TeslaModel3\"\n[vehicle.battery]\nsustain_below = 0.4\n");
+    assert_eq!((line, key.as_str()), (4, "vehicle.battery.sustain_below"));
+    assert!(message.contains("power-split hybrid"), "{message}");
+}

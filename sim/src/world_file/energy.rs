@@ -13,7 +13,7 @@
 use proto_geom::plausible::Compact;
 use toml::de::DeValue;
 use vehicle_model::energy::{Battery, EnergyParams, MotorLosses, OCV_POINTS, RegenBlend};
-use vehicle_model::{EngineParams, Model};
+use vehicle_model::{EngineParams, EngineType, Model};
 
 use super::error::{WorldFileError, WorldFileErrorKind};
 use super::read::{Section, describe};
@@ -27,16 +27,20 @@ pub(crate) const MOTOR: &str = "motor";
 
 /// The keys of `[vehicle.battery]` (as [`vehicle_model::energy::BatteryError::field`] names
 /// them, and the starting charge).
-const BATTERY_KEYS: [&str; 6] = [
+const BATTERY_KEYS: [&str; 7] = [
     "capacity",
     "ocv",
     "resistance",
     "max_discharge_current",
     "max_charge_current",
     STATE_OF_CHARGE,
+    SUSTAIN_BELOW,
 ];
 /// The starting state of charge in `[vehicle.battery]` (dimensionless, in [0, 1]).
 const STATE_OF_CHARGE: &str = "state_of_charge";
+/// The state of charge below which a power-split hybrid's engine charges the pack, in
+/// `[vehicle.battery]` (dimensionless, in [0, 1]; 0: never; `EnergyParams::sustain_below`).
+const SUSTAIN_BELOW: &str = "sustain_below";
 /// The keys of `[vehicle.motor]`: the loss coefficients and the regenerative limits.
 const MOTOR_KEYS: [&str; 7] = [
     "copper",
@@ -140,6 +144,23 @@ pub(crate) fn read_energy(
         Some(DeValue::Table(_)) => {
             if let (Some(t), Some(pack)) = (s.table(BATTERY)?, &mut params.battery) {
                 soc = read_battery_table(&t, pack)?;
+                if let Some(v) = t.number(SUSTAIN_BELOW)? {
+                    if engine.engine_type != EngineType::PowerSplitHybrid {
+                        return Err(t.error(
+                            SUSTAIN_BELOW,
+                            WorldFileErrorKind::Structure(format!(
+                                "'{}' needs a power-split hybrid's engine to charge the pack: \
+                                 engineType \"{}\" has none",
+                                t.key_path(SUSTAIN_BELOW),
+                                engine.engine_type.webots_name()
+                            )),
+                        ));
+                    }
+                    if !(0.0..=1.0).contains(&v) {
+                        return Err(invalid(&t, SUSTAIN_BELOW, v, "within [0, 1] (0: never)"));
+                    }
+                    params.sustain_below = Some(v);
+                }
             }
         }
         Some(v) => {

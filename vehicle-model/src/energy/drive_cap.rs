@@ -12,7 +12,9 @@
 //! power than the engine makes, and the generator has to motor.
 
 use ackermann::Real;
-use powertrain::EngineParams;
+use powertrain::{EngineParams, EngineType};
+
+use crate::RAD_PER_S_PER_RPM;
 
 use super::flow::{DriveState, EnergyParams, parts};
 
@@ -59,7 +61,7 @@ impl<T: Real> EnergyParams<T> {
     /// engine's share `c/(c + e)` (nothing below `engineMinRPM`, where Webots' hybrid is
     /// electric alone), standing too.
     pub fn drive_cap(&self, engine: &EngineParams<T>, state: &DriveState<T>, dt: T) -> DriveCap<T> {
-        let (Some(battery), Some(_)) = (self.battery, self.motor) else {
+        let (Some(battery), Some(motor)) = (self.battery, self.motor) else {
             return DriveCap::NONE;
         };
         let asked = state.wheel_power.finite_or(T::ZERO);
@@ -111,6 +113,20 @@ impl<T: Real> EnergyParams<T> {
         if drawn(T::TWO) <= most {
             return DriveCap::NONE;
         }
+        // An electric car's machine draws the drive's power alone: the torque at the pack's
+        // most is the inverse of its losses, with no bisection (a step of a capped launch
+        // would otherwise cost tens of flows).
+        let omega = state.rpm.finite_or(T::ZERO).abs() * T::from_f64(RAD_PER_S_PER_RPM);
+        if engine.engine_type == EngineType::Electric
+            && let Some(torque) = motor.torque_for_electrical(most, omega)
+            && torque > T::ZERO
+        {
+            let k = (torque * omega / asked).min(T::ONE);
+            return DriveCap {
+                electric_fraction: k,
+                torque_scale: k,
+            };
+        }
         // `lo` always within the battery's most (at 0 no power flows), `hi` beyond it.
         let (mut lo, mut hi) = (T::ZERO, T::TWO);
         for _ in 0..BISECTIONS {
@@ -140,8 +156,7 @@ impl<T: Real> EnergyParams<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Model, RAD_PER_S_PER_RPM};
-    use powertrain::EngineType;
+    use crate::Model;
 
     /// The step (s).
     const DT: f64 = 0.01;
@@ -245,8 +260,12 @@ mod tests {
 
     #[test]
     fn a_power_split_hybrid_on_an_empty_pack_feeds_its_machine_from_its_generator() {
+        // Webots' power split alone: no charge-sustaining engine.
         let engine = Model::ToyotaPrius.params::<f64>().engine;
-        let e = EnergyParams::of_engine(&engine);
+        let e = EnergyParams {
+            sustain_below: None,
+            ..EnergyParams::of_engine(&engine)
+        };
         // 40 kW asked at 25 rad/s: the engine speed estimate, 2 149 rpm, is below the
         // split speed (3 000 rpm), so the generator charges, and it keeps part of the
         // machine's share: between none and all.
@@ -293,5 +312,29 @@ mod tests {
             f.battery <= most && f.battery > most - 1e-3,
             "{f:?} vs {most}"
         );
+    }
+
+    #[test]
+    fn a_charge_sustaining_power_split_hybrid_drives_on_its_generator_s_charge() {
+        // With the engine charging below half the pack, the empty pack's ToyotaPrius at
+        // 25 rad/s gets more of its machine's share than without, and still asks the pack
+        // for nothing.
+        let engine = Model::ToyotaPrius.params::<f64>().engine;
+        let sustaining = EnergyParams::of_engine(&engine);
+        let pure = EnergyParams {
+            sustain_below: None,
+            ..sustaining
+        };
+        let slow = asking(40_000.0, 25.0, 0.0);
+        let (with, without) = (
+            sustaining.drive_cap(&engine, &slow, DT),
+            pure.drive_cap(&engine, &slow, DT),
+        );
+        assert!(
+            with.torque_scale > without.torque_scale,
+            "{with:?} {without:?}"
+        );
+        let f = sustaining.flow(&engine, &capped(&slow, with));
+        assert!(f.battery <= 0.0 && f.fuel_rate > 0.0, "{f:?}");
     }
 }

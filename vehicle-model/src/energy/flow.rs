@@ -32,7 +32,18 @@ pub struct EnergyParams<T> {
     pub regen: Option<RegenBlend<T>>,
     /// The combustion engine's fuel; `None` for an electric car.
     pub fuel: Option<FuelModel<T>>,
+    /// The state of charge below which a power-split hybrid's engine charges its pack
+    /// (dimensionless, in [0, 1]; `None`: never): it runs at full load at
+    /// `hybridPowerSplitRPM`, the wheels take their share of it as Webots' torque law gives
+    /// it, and the generator the rest, as far as the pack takes it. Webots' hybrids have no
+    /// such strategy; without one a pack that empties leaves Webots' hybrid, electric alone
+    /// below `engineMinRPM`, unable to launch. Unused by other engine types.
+    pub sustain_below: Option<T>,
 }
+
+/// The default [`EnergyParams::sustain_below`] of a power-split hybrid (dimensionless): half
+/// the pack, an assumption (Toyota does not publish the window its Prius keeps its pack in).
+pub const SUSTAIN_BELOW: f64 = 0.5;
 
 /// A step's power flows (W, and kg/s of fuel).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -113,6 +124,7 @@ impl<T: Real> EnergyParams<T> {
                     None => FuelModel::petrol(peak, top_speed),
                 }
             }),
+            sustain_below: (t == EngineType::PowerSplitHybrid).then(|| T::from_f64(SUSTAIN_BELOW)),
         }
     }
 
@@ -166,31 +178,16 @@ impl<T: Real> EnergyParams<T> {
         }
         // The engine's share.
         let combustion_power = wheel_power - electric_power;
-        if let Some(fuel) = self.fuel
-            && combustion_power > T::ZERO
-        {
+        if let Some(fuel) = self.fuel {
             match engine.engine_type {
                 EngineType::PowerSplitHybrid => {
-                    // The engine at the split speed gives its torque `θ·f`; the wheels get
-                    // `(1 − r)·θ·f` at the engine-speed estimate, the generator the rest of
-                    // the engine's power.
-                    let split = engine.hybrid_power_split_rpm * T::from_f64(RAD_PER_S_PER_RPM);
-                    let to_wheels = T::ONE - engine.hybrid_power_split_ratio;
-                    if omega > T::ZERO && to_wheels > T::ZERO {
-                        let engine_torque = combustion_power / (to_wheels * omega);
-                        flow.fuel_rate += fuel.fuel_rate(engine_torque, split);
-                        let generator = engine_torque * split - combustion_power;
-                        if let Some(motor) = self.motor {
-                            let torque = -generator / split;
-                            flow.battery += motor.electrical_power(torque, split);
-                            flow.motor_loss += motor.loss(torque, split);
-                        }
-                    }
+                    self.power_split(engine, fuel, state, combustion_power, omega, &mut flow);
                 }
-                _ => {
+                _ if combustion_power > T::ZERO => {
                     let w = omega.max(engine.min_rpm * T::from_f64(RAD_PER_S_PER_RPM));
                     flow.fuel_rate += fuel.fuel_rate(combustion_power / w, w);
                 }
+                _ => {}
             }
         }
         // A combustion engine not driving: below its idle speed (`engineMinRPM`; the car at
@@ -240,6 +237,60 @@ impl<T: Real> EnergyParams<T> {
             }
         }
         flow
+    }
+
+    /// The power-split hybrid's engine and generator in a step whose wheels take
+    /// `combustion_power` (W) of the engine at the engine-speed estimate `omega` (rad/s):
+    /// the engine at the split speed gives its torque `θ·f`, the wheels get `(1 − r)·θ·f` at
+    /// `omega`, the generator the rest of the engine's power. Below
+    /// [`EnergyParams::sustain_below`] the engine runs at full load `f` instead (or less,
+    /// where the pack takes no more: the generator's most is the pack's charge power plus
+    /// what the machine draws this step), so the generator charges the pack.
+    fn power_split(
+        &self,
+        engine: &EngineParams<T>,
+        fuel: FuelModel<T>,
+        state: &DriveState<T>,
+        combustion_power: T,
+        omega: T,
+        flow: &mut PowerFlow<T>,
+    ) {
+        let split = engine.hybrid_power_split_rpm * T::from_f64(RAD_PER_S_PER_RPM);
+        let to_wheels = T::ONE - engine.hybrid_power_split_ratio;
+        let driving = combustion_power > T::ZERO && omega > T::ZERO && to_wheels > T::ZERO;
+        let mut engine_torque = if driving {
+            combustion_power / (to_wheels * omega)
+        } else {
+            T::ZERO
+        };
+        let wheels = if driving { combustion_power } else { T::ZERO };
+        let sustaining = self
+            .sustain_below
+            .is_some_and(|low| state.soc.finite_or(T::ONE) < low);
+        if let (true, Some(battery), Some(motor)) = (sustaining, self.battery, self.motor)
+            && split > T::ZERO
+        {
+            let room = battery.max_charge_power(state.soc.finite_or(T::ONE)) + flow.battery;
+            let most_generator = if room > T::ZERO {
+                motor
+                    .torque_for_electrical(-room, split)
+                    .map_or(T::ZERO, |t| (-t).max(T::ZERO))
+            } else {
+                T::ZERO
+            };
+            let full = curve(engine, engine.hybrid_power_split_rpm).max(T::ZERO);
+            engine_torque = engine_torque.max(full.min(wheels / split + most_generator));
+        }
+        if engine_torque <= T::ZERO {
+            return;
+        }
+        flow.fuel_rate += fuel.fuel_rate(engine_torque, split);
+        let generator = engine_torque * split - wheels;
+        if let Some(motor) = self.motor {
+            let torque = -generator / split;
+            flow.battery += motor.electrical_power(torque, split);
+            flow.motor_loss += motor.loss(torque, split);
+        }
     }
 }
 
@@ -421,6 +472,56 @@ mod tests {
             + motor.electrical_power(-generator / split, split);
         assert!((f.battery - expected).abs() < 1e-9, "{f:?} vs {expected}");
         assert!(f.fuel_rate > 0.0);
+    }
+
+    #[test]
+    fn below_its_sustaining_charge_a_power_split_hybrid_s_engine_charges_the_pack() {
+        let engine = Model::ToyotaPrius.params::<f64>().engine;
+        let e = EnergyParams::of_engine(&engine);
+        assert_eq!(e.sustain_below, Some(SUSTAIN_BELOW));
+        let split = engine.hybrid_power_split_rpm * RAD_PER_S_PER_RPM;
+        let full = curve(&engine, engine.hybrid_power_split_rpm);
+        let (battery, motor, fuel) = (e.battery.unwrap(), e.motor.unwrap(), e.fuel.unwrap());
+        // Standing at 0.3: the engine's power all through the generator, as much as the
+        // hybrid pack takes (less than the engine's full load gives).
+        let mut standing = state(0.0, 0.0, 0.0);
+        standing.soc = 0.3;
+        let f = e.flow(&engine, &standing);
+        let taken = battery.max_charge_power(0.3);
+        assert!((f.battery + taken).abs() < 1e-6 * taken, "{f:?} vs {taken}");
+        assert!(
+            f.fuel_rate > 0.0 && f.fuel_rate < fuel.fuel_rate(full, split),
+            "{f:?}"
+        );
+        // A pack that takes it all (1 000 A): the engine at full load.
+        let mut big = e;
+        let mut b = battery;
+        b.max_charge_current = 1000.0;
+        big.battery = Some(b);
+        let f = big.flow(&engine, &standing);
+        let generating = motor.electrical_power(-full, split);
+        assert!(
+            (f.battery - generating).abs() < 1e-9,
+            "{f:?} vs {generating}"
+        );
+        assert!(
+            (f.fuel_rate - fuel.fuel_rate(full, split)).abs() < 1e-15,
+            "{f:?}"
+        );
+        // At 0.6, or with no strategy, the engine is off standing: nothing flows.
+        standing.soc = 0.6;
+        assert_eq!(e.flow(&engine, &standing), PowerFlow::default());
+        standing.soc = 0.3;
+        let pure = EnergyParams {
+            sustain_below: None,
+            ..e
+        };
+        assert_eq!(pure.flow(&engine, &standing), PowerFlow::default());
+        // Other engine types have none.
+        for model in [Model::TeslaModel3, Model::BmwX5] {
+            let engine = model.params::<f64>().engine;
+            assert_eq!(EnergyParams::of_engine(&engine).sustain_below, None);
+        }
     }
 
     #[test]

@@ -14,7 +14,7 @@ mod regen;
 
 pub use battery::{Battery, BatteryError, BatteryStep, OCV_POINTS};
 pub use drive_cap::DriveCap;
-pub use flow::{DriveState, EnergyParams, PowerFlow};
+pub use flow::{DriveState, EnergyParams, PowerFlow, SUSTAIN_BELOW};
 pub use fuel::{FuelModel, PETROL_DENSITY, PETROL_LHV};
 pub use motor::{MotorError, MotorLosses};
 pub use regen::{BrakeSplit, RegenBlend};
