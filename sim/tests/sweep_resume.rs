@@ -26,16 +26,16 @@ fn read(path: &Path) -> String {
     std::fs::read_to_string(path).unwrap()
 }
 
+/// The threads of the tests' runs.
+const THREADS: usize = 2;
+
 /// Ten short braking cases.
 fn sweep() -> Sweep {
-    let text = "world = \"BmwX5\"\nscenario = \"brake\"\n[set]\nduration = 0.3\n[axes]\n\
-                \"ground.friction\" = { from = 0.5, to = 1.4, steps = 10 }\n";
-    Sweep::parse("s.toml", text, Path::new(".")).unwrap()
+    braking(10, 1.4)
 }
 
-/// `cases` short braking cases, on frictions from 0.5 up by 0.01.
-fn braking(cases: usize) -> Sweep {
-    let to = 0.5 + 0.01 * (cases - 1) as f64;
+/// `cases` short braking cases, on frictions from 0.5 to `to`.
+fn braking(cases: usize, to: f64) -> Sweep {
     let text = format!(
         "world = \"BmwX5\"\nscenario = \"brake\"\n[set]\nduration = 0.3\n[axes]\n\
          \"ground.friction\" = {{ from = 0.5, to = {to}, steps = {cases} }}\n"
@@ -44,7 +44,7 @@ fn braking(cases: usize) -> Sweep {
 }
 
 fn write(sweep: &Sweep, shard: Shard, dir: &Path, options: WriteOptions<'_>) -> sweep::RunSummary {
-    sweep::write_sweep(sweep, shard, Some(2), dir, options, &mut |_, _| {}).unwrap()
+    sweep::write_sweep(sweep, shard, Some(THREADS), dir, options, &mut |_, _| {}).unwrap()
 }
 
 /// The data lines of a CSV file (its header left out).
@@ -55,12 +55,11 @@ fn data_lines(path: &Path) -> usize {
 #[test]
 fn a_stopped_run_is_consistent_and_resume_finishes_it_byte_for_byte() {
     let dir = scratch("stop");
-    // More cases than the two workers may run ahead of the rows written (their window):
+    // More cases than the workers may run ahead of the rows written (their window):
     // however fast they are next to the thread writing the rows, the stop comes before
     // every case has started.
-    let threads = 2;
-    let cases = 4 + sweep::WINDOW_PER_THREAD * threads + 1;
-    let sweep = braking(cases);
+    let cases = 4 + sweep::WINDOW_PER_THREAD * THREADS + 1;
+    let sweep = braking(cases, 0.5 + 0.01 * (cases - 1) as f64);
     write(
         &sweep,
         Shard::WHOLE,
@@ -79,7 +78,7 @@ fn a_stopped_run_is_consistent_and_resume_finishes_it_byte_for_byte() {
     let summary = sweep::write_sweep(
         &sweep,
         Shard::WHOLE,
-        Some(threads),
+        Some(THREADS),
         &out,
         options,
         &mut |n, _| {
