@@ -267,8 +267,9 @@ impl<T: Real> EnergyParams<T> {
         let sustaining = self
             .sustain_below
             .is_some_and(|low| state.soc.finite_or(T::ONE) < low);
-        if let (true, Some(battery), Some(motor)) = (sustaining, self.battery, self.motor)
+        if sustaining
             && split > T::ZERO
+            && let (Some(battery), Some(motor)) = (self.battery, self.motor)
         {
             let room = battery.max_charge_power(state.soc.finite_or(T::ONE)) + flow.battery;
             let most_generator = if room > T::ZERO {
