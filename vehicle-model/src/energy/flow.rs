@@ -211,13 +211,9 @@ impl<T: Real> EnergyParams<T> {
             let mut most = engine.max_torque * ratio;
             if let Some(battery) = self.battery {
                 let charge = battery.max_charge_power(state.soc.finite_or(T::ONE));
-                let by_battery = if charge > T::ZERO {
-                    motor
-                        .torque_for_electrical(-charge, machine_speed)
-                        .map_or(most, |t| (-t).max(T::ZERO) * ratio)
-                } else {
-                    T::ZERO
-                };
+                let by_battery = motor
+                    .generating_torque_within(charge, machine_speed)
+                    .map_or(most, |t| t * ratio);
                 most = most.min(by_battery);
             }
             let split = regen.split(state.brake_torque, state.rim_speed, wheel_speed, most);
@@ -272,14 +268,10 @@ impl<T: Real> EnergyParams<T> {
             && let (Some(battery), Some(motor)) = (self.battery, self.motor)
         {
             let room = battery.max_charge_power(state.soc.finite_or(T::ONE)) + flow.battery;
-            let most_generator = if room > T::ZERO {
-                motor
-                    .torque_for_electrical(-room, split)
-                    .map_or(T::ZERO, |t| (-t).max(T::ZERO))
-            } else {
-                T::ZERO
-            };
             let full = curve(engine, engine.hybrid_power_split_rpm).max(T::ZERO);
+            // Where the machine cannot return what the pack takes, the pack does not bound
+            // the generator, and the engine's full load does.
+            let most_generator = motor.generating_torque_within(room, split).unwrap_or(full);
             engine_torque = engine_torque.max(full.min(wheels / split + most_generator));
         }
         if engine_torque <= T::ZERO {
@@ -501,6 +493,32 @@ mod tests {
         big.battery = Some(b);
         let f = big.flow(&engine, &standing);
         let generating = motor.electrical_power(-full, split);
+        assert!(
+            (f.battery - generating).abs() < 1e-9,
+            "{f:?} vs {generating}"
+        );
+        assert!(
+            (f.fuel_rate - fuel.fuel_rate(full, split)).abs() < 1e-15,
+            "{f:?}"
+        );
+        // A machine that cannot return what that pack takes at the split speed (no spin
+        // losses, copper `k_c = ω²/(2·room)`: its largest return `ω²/(4k_c)` is half the
+        // room) no longer bounds the engine by the pack: full load, returning what the
+        // machine makes of it.
+        let room = b.max_charge_power(0.3);
+        let lossy = MotorLosses {
+            copper: split * split / (2.0 * room),
+            iron: 0.0,
+            windage: 0.0,
+            constant: 0.0,
+        };
+        assert!(
+            lossy.electrical_power(-full, split) < 0.0,
+            "still generating"
+        );
+        big.motor = Some(lossy);
+        let f = big.flow(&engine, &standing);
+        let generating = lossy.electrical_power(-full, split);
         assert!(
             (f.battery - generating).abs() < 1e-9,
             "{f:?} vs {generating}"

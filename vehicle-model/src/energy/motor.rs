@@ -149,6 +149,21 @@ impl<T: Real> MotorLosses<T> {
         Some(if speed < T::ZERO { -torque } else { torque })
     }
 
+    /// The largest generating torque (N·m, ≥ 0, braking the machine) at `speed` (rad/s,
+    /// ≥ 0) whose returned electrical power stays within `charge` (W, what the battery
+    /// takes): 0 when it takes nothing (`charge` ≤ 0 or NaN), the inverse of
+    /// [`MotorLosses::electrical_power`] when it bounds the machine, and `None` when it does
+    /// not (standing, or the machine returns less than `charge` at any torque at that speed):
+    /// then the caller's own limit of the machine holds. Regenerative braking and a
+    /// power-split hybrid's generator share it.
+    pub fn generating_torque_within(&self, charge: T, speed: T) -> Option<T> {
+        if charge.is_nan() || charge <= T::ZERO {
+            return Some(T::ZERO);
+        }
+        self.torque_for_electrical(-charge, speed.abs())
+            .map(|t| (-t).max(T::ZERO))
+    }
+
     /// The efficiency (dimensionless, in [0, 1)) at `torque` (N·m) and `speed` (rad/s):
     /// mechanical over electrical power motoring, electrical over mechanical generating; 0
     /// where no power flows out (standing, or generating less than the losses).
@@ -271,5 +286,21 @@ mod tests {
         assert_eq!(m.torque_for_electrical(-1e9, 100.0), None);
         assert_eq!(m.torque_for_electrical(1000.0, 0.0), None);
         assert_eq!(m.torque_for_electrical(f64::NAN, 100.0), None);
+    }
+
+    #[test]
+    fn the_generating_torque_within_a_charge_returns_that_charge_or_is_unbounded() {
+        let m = machine();
+        // Within the machine's reach: the torque whose return is the charge, exactly.
+        let torque = m.generating_torque_within(20_000.0, 400.0).unwrap();
+        assert!(torque > 0.0);
+        assert!((m.electrical_power(-torque, 400.0) + 20_000.0).abs() < 1e-6);
+        // No room, or NaN: no generating torque.
+        assert_eq!(m.generating_torque_within(0.0, 400.0), Some(0.0));
+        assert_eq!(m.generating_torque_within(f64::NAN, 400.0), Some(0.0));
+        // More than the machine returns at that speed, or standing: the battery does not
+        // bound the torque.
+        assert_eq!(m.generating_torque_within(1e9, 100.0), None);
+        assert_eq!(m.generating_torque_within(1000.0, 0.0), None);
     }
 }
