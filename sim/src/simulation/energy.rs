@@ -150,21 +150,14 @@ impl EnergyMeter {
         let Some(ratio) = ratio.filter(|r| r.is_finite() && *r != 0.0) else {
             return;
         };
-        let (mut asked, mut total_spin, mut driven, mut pushing) = (0.0, 0.0, 0.0, false);
-        for w in Wheel::ALL {
-            if let WheelDrive::Torque(t) = commands.drive[w] {
-                asked += t.max(0.0) * spin[w];
-                total_spin += spin[w].abs();
-                driven += 1.0;
-                pushing |= t > 0.0;
-            }
-        }
+        let driven = Driven::sum(commands, spin, [0.0; 4]);
+        let asked = driven.forward_power;
         // Standing, a drive asks no power yet: the cap still sees it, since an empty pack
         // launches nothing.
-        if driven == 0.0 || !pushing || !asked.is_finite() {
+        if !driven.pushing || !asked.is_finite() {
             return;
         }
-        let wheel_speed = total_spin / driven;
+        let wheel_speed = driven.mean_spin();
         let cap = self.params.drive_cap(
             &self.engine,
             &DriveState {
@@ -204,26 +197,13 @@ impl EnergyMeter {
         ratio: Option<f64>,
         dt: f64,
     ) {
-        let mut wheel_power = 0.0;
-        let mut brake_torque = 0.0;
-        let mut spin = 0.0;
-        let mut rim = 0.0;
-        let mut driven = 0.0;
-        for (k, w) in Wheel::ALL.into_iter().enumerate() {
-            if let WheelDrive::Torque(t) = commands.drive[w] {
-                let omega = state.wheel_speeds[w];
-                wheel_power += t * omega;
-                brake_torque += commands.brake_torque[w].max(0.0);
-                spin += omega.abs();
-                rim += omega.abs() * radii[k];
-                driven += 1.0;
-            }
-        }
+        let driven = Driven::sum(commands, &state.wheel_speeds, radii);
+        let (wheel_power, brake_torque) = (driven.power, driven.brake);
         let ratio = ratio.filter(|r| r.is_finite()).unwrap_or(0.0).abs();
-        let wheel_speed = if driven > 0.0 { spin / driven } else { 0.0 };
+        let wheel_speed = driven.mean_spin();
         // Regeneration fades with the speed the machine turns at: the driven wheels' rim
         // speed, not the car's (locked wheels of a sliding car turn the machine not at all).
-        let rim_speed = if driven > 0.0 { rim / driven } else { 0.0 };
+        let rim_speed = driven.mean_rim();
         let rpm = wheel_speed * ratio / RAD_PER_S_PER_RPM;
         let flow = self.params.flow(
             &self.engine,
@@ -258,6 +238,64 @@ impl EnergyMeter {
         r.fuel += flow.fuel_rate * dt;
         r.distance += state.forward_speed * dt;
         r.last = flow;
+    }
+}
+
+/// The torque-driven wheels of a step, summed: what the cap and the accounting read of them.
+#[derive(Debug, Clone, Copy, Default)]
+struct Driven {
+    /// How many wheels are under a torque command.
+    count: f64,
+    /// Their power, `Σ T·ω` (W; a braking curve's torque counted negative).
+    power: f64,
+    /// Their forward drive's power, `Σ max(T, 0)·ω` (W).
+    forward_power: f64,
+    /// True if one of them is driven forward (`T > 0`), standing or not (so `count` > 0).
+    pushing: bool,
+    /// `Σ |ω|` (rad/s).
+    spin: f64,
+    /// `Σ |ω|·r` (m/s).
+    rim: f64,
+    /// Their brakes' torque, `Σ max(T_brake, 0)` (N·m).
+    brake: f64,
+}
+
+impl Driven {
+    /// The wheels `commands` drive by torque, spinning at `spin` (rad/s) on tyres of `radii`
+    /// (m, wheel order).
+    fn sum(commands: &Commands<f64>, spin: &PerWheel<f64>, radii: [f64; 4]) -> Self {
+        let mut d = Driven::default();
+        for (k, w) in Wheel::ALL.into_iter().enumerate() {
+            if let WheelDrive::Torque(t) = commands.drive[w] {
+                let omega = spin[w];
+                d.count += 1.0;
+                d.power += t * omega;
+                d.forward_power += t.max(0.0) * omega;
+                d.pushing |= t > 0.0;
+                d.spin += omega.abs();
+                d.rim += omega.abs() * radii[k];
+                d.brake += commands.brake_torque[w].max(0.0);
+            }
+        }
+        d
+    }
+
+    /// Their mean spin (rad/s, ≥ 0; 0 with none).
+    fn mean_spin(&self) -> f64 {
+        self.mean(self.spin)
+    }
+
+    /// Their mean rim speed (m/s, ≥ 0; 0 with none).
+    fn mean_rim(&self) -> f64 {
+        self.mean(self.rim)
+    }
+
+    fn mean(&self, sum: f64) -> f64 {
+        if self.count > 0.0 {
+            sum / self.count
+        } else {
+            0.0
+        }
     }
 }
 
