@@ -1,5 +1,5 @@
 //! The two sides of the FMU's overhead benchmark (issue #32), shared by the criterion bench
-//! (`benches/fmu.rs`) and the instruction counts (`benches/callgrind.rs`): a controller
+//! (`benches/fmu.rs`) and the instruction counts (`benches/callgrind/`): a controller
 //! stepping the TeslaModel3's default world through the Rust API, and a tool stepping the same
 //! world through the FMU's `fmi2*` entry points. Each step sets the cruising speed (50 km/h)
 //! and the steering angle, advances 10 ms and reads x, y, yaw, speed, yaw rate and engine
