@@ -6,7 +6,8 @@
 //! torque split), `simulation` (physics steps of the `sim` world beside the peer),
 //! `callgrind` (instruction counts under valgrind), `replay` (what `replay.glb` adds to a
 //! run), `sweep` (a sweep's cases per second on 1 and 2 threads) and `fmu` (an FMU step
-//! against the native one). See `README.md` for the commands and the
+//! against the native one), `energy` (what the road load, the air and the energy accounting
+//! add to a car step). See `README.md` for the commands and the
 //! latest numbers.
 //!
 //! ```
@@ -20,6 +21,7 @@
 //! ```
 
 pub mod control;
+pub mod energy;
 pub mod fixtures;
 pub mod fmu;
 pub mod peer;

@@ -30,7 +30,9 @@ mod scenes;
 use kernels::{
     run_driver, run_engine_torque_f64, run_torque_split_f32, run_tyre, run_wheel_angles_f64,
 };
-use scenes::{run_car, run_fmu, run_fmu_native, run_joints_car, run_peer, run_road_car, run_robot};
+use scenes::{
+    run_car, run_energy, run_fmu, run_fmu_native, run_joints_car, run_peer, run_road_car, run_robot,
+};
 
 /// `run_driver`'s and `run_car`'s mode: torque control.
 const TORQUE: bool = true;
@@ -156,6 +158,24 @@ const CASES: &[Case] = &[
         run: run_robot,
     },
     Case {
+        name: "energy_webots",
+        function: "cg_energy_step",
+        steps: 100,
+        run: run_energy::<0>,
+    },
+    Case {
+        name: "energy_road_load_and_air",
+        function: "cg_energy_step",
+        steps: 100,
+        run: run_energy::<1>,
+    },
+    Case {
+        name: "energy_road_load_air_and_energy",
+        function: "cg_energy_step",
+        steps: 100,
+        run: run_energy::<2>,
+    },
+    Case {
         name: "peer_raycast_car",
         function: "cg_peer_step",
         steps: 300,
@@ -248,6 +268,19 @@ fn bench_all() -> ExitCode {
                 println!(
                     "  {car} / peer_raycast_car = {:.2}x (target <= 6x)",
                     c / peer
+                );
+            }
+        }
+    }
+    if let Some(webots) = ir("energy_webots") {
+        for case in [
+            "energy_road_load_and_air",
+            "energy_road_load_air_and_energy",
+        ] {
+            if let Some(c) = ir(case) {
+                println!(
+                    "  {case} / energy_webots = {:.3}x (target <= 1.1x)",
+                    c / webots
                 );
             }
         }

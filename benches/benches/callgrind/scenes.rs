@@ -4,10 +4,11 @@
 use std::hint::black_box;
 
 use benches::control::LoopMode;
+use benches::energy::{EnergyCase, SETTLE_STEPS as ENERGY_SETTLE_STEPS, energy_scene};
 use benches::fmu::{FmuLoop, NativeLoop};
 use benches::peer::{PeerParams, RayCastCar};
 use benches::scenes::{CarScene, RobotScene, ring_road_world};
-use sim::{Mounting, TyreChoice};
+use sim::{Mounting, Simulation, TyreChoice};
 
 /// Steps run (uncounted) before the counted ones in the simulation cases: 8 s, so the cars
 /// cruise on their circles (speed mode reaches 10 m/s in 3 s, the torque-mode throttle
@@ -128,5 +129,19 @@ pub(crate) fn run_peer(steps: u64) {
     }
     for _ in 0..steps {
         cg_peer_step(&mut car, black_box(0.1));
+    }
+}
+
+#[inline(never)]
+fn cg_energy_step(sim: &mut Simulation) {
+    sim.step().unwrap();
+}
+
+/// The energy benchmark's TeslaModel3 of `CASE` (an `EnergyCase` by its place in
+/// `EnergyCase::ALL`), settled as the criterion bench's.
+pub(crate) fn run_energy<const CASE: usize>(steps: u64) {
+    let mut sim = energy_scene(EnergyCase::ALL[CASE], ENERGY_SETTLE_STEPS).unwrap();
+    for _ in 0..steps {
+        cg_energy_step(&mut sim);
     }
 }
