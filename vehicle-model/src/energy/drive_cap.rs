@@ -58,8 +58,9 @@ impl<T: Real> EnergyParams<T> {
     /// the battery's largest discharge
     /// ([`Battery::max_discharge_power`](super::Battery::max_discharge_power), or what
     /// charge is left for the step, [`Battery::step`](super::Battery::step)), taking the
-    /// machine's part away first and then the engine's, found by bisection, since a
-    /// power-split hybrid's generator makes the battery power no simple function of it.
+    /// machine's part away first and then the engine's, found by a bracketed search (false
+    /// position, bisecting where it crawls), since a power-split hybrid's generator makes the
+    /// battery power no simple function of it; an electric car's in closed form.
     ///
     /// [`DriveCap::NONE`] without a battery or machine, for an engine with no electric
     /// part at that speed, and for a drive that asks no power (standing, or rolling back
@@ -122,8 +123,8 @@ impl<T: Real> EnergyParams<T> {
             return DriveCap::NONE;
         }
         // An electric car's machine draws the drive's power alone: the torque at the pack's
-        // most is the inverse of its losses, with no bisection (a step of a capped launch
-        // would otherwise cost tens of flows).
+        // most is the inverse of its losses, with no search (a step of a capped launch
+        // would otherwise cost several flows).
         let omega = state.rpm.finite_or(T::ZERO).abs() * T::from_f64(RAD_PER_S_PER_RPM);
         if engine.engine_type == EngineType::Electric
             && let Some(torque) = motor.torque_for_electrical(most, omega)
@@ -247,7 +248,7 @@ mod tests {
         let torque = 1e6 * cap.torque_scale / 540.0;
         let drawn = motor.electrical_power(torque, 540.0);
         let most = battery.max_discharge_power(0.8);
-        // 10⁻⁹: the bisection's 2⁻⁴⁰ of the fraction, times the machine's slope.
+        // Closed form: equal to round-off; 10⁻⁹ of the most is a loose bound on it.
         assert!((drawn - most).abs() < 1e-9 * most, "{drawn} vs {most}");
         // Within the pack's power: as asked. Empty: nothing.
         assert_eq!(
@@ -328,8 +329,8 @@ mod tests {
         );
         assert!(cap.torque_scale > c / (c + el) && cap.torque_scale < 1.0);
         // The machine draws what the generator gives: the pack's net power is zero, within
-        // the bisection's step (2⁻⁴⁰ of the drive times the battery power's slope, tens of
-        // kW per unit: well under a milliwatt).
+        // the search's end (a bracket of 2⁻⁴⁰ of the drive times the battery power's slope,
+        // tens of kW per unit, or 10⁻¹² of the most: well under a milliwatt).
         let f = e.flow(&engine, &capped(&slow, cap));
         assert!(f.battery <= 0.0 && f.battery > -1e-3, "{f:?}");
         // With charge in the pack the same drive is not capped.
