@@ -486,21 +486,25 @@ mod tests {
             f.fuel_rate > 0.0 && f.fuel_rate < fuel.fuel_rate(full, split),
             "{f:?}"
         );
+        // The engine at full load at the split speed, its generator returning what `machine`
+        // makes of all of it.
+        let at_full_load = |f: PowerFlow<f64>, machine: MotorLosses<f64>| {
+            let generating = machine.electrical_power(-full, split);
+            assert!(
+                (f.battery - generating).abs() < 1e-9,
+                "{f:?} vs {generating}"
+            );
+            assert!(
+                (f.fuel_rate - fuel.fuel_rate(full, split)).abs() < 1e-15,
+                "{f:?}"
+            );
+        };
         // A pack that takes it all (1 000 A): the engine at full load.
         let mut big = e;
         let mut b = battery;
         b.max_charge_current = 1000.0;
         big.battery = Some(b);
-        let f = big.flow(&engine, &standing);
-        let generating = motor.electrical_power(-full, split);
-        assert!(
-            (f.battery - generating).abs() < 1e-9,
-            "{f:?} vs {generating}"
-        );
-        assert!(
-            (f.fuel_rate - fuel.fuel_rate(full, split)).abs() < 1e-15,
-            "{f:?}"
-        );
+        at_full_load(big.flow(&engine, &standing), motor);
         // A machine that cannot return what that pack takes at the split speed (no spin
         // losses, copper `k_c = ω²/(2·room)`: its largest return `ω²/(4k_c)` is half the
         // room) no longer bounds the engine by the pack: full load, returning what the
@@ -517,16 +521,7 @@ mod tests {
             "still generating"
         );
         big.motor = Some(lossy);
-        let f = big.flow(&engine, &standing);
-        let generating = lossy.electrical_power(-full, split);
-        assert!(
-            (f.battery - generating).abs() < 1e-9,
-            "{f:?} vs {generating}"
-        );
-        assert!(
-            (f.fuel_rate - fuel.fuel_rate(full, split)).abs() < 1e-15,
-            "{f:?}"
-        );
+        at_full_load(big.flow(&engine, &standing), lossy);
         // At 0.6, or with no strategy, the engine is off standing: nothing flows.
         standing.soc = 0.6;
         assert_eq!(e.flow(&engine, &standing), PowerFlow::default());
